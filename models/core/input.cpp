@@ -1,0 +1,264 @@
+#include "models/core/input.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace impact {
+
+namespace {
+
+std::string join_problems(const std::vector<std::string>& problems) {
+  std::string text;
+  for (const auto& p : problems) {
+    if (!text.empty()) text += '\n';
+    text += p;
+  }
+  return text;
+}
+
+std::string json_type_name(const Json& v) {
+  if (v.is_number()) return "a number " + v.dump();
+  if (v.is_string()) return "the string " + v.dump();
+  if (v.is_boolean()) return std::string("the boolean ") + (v.get<bool>() ? "true" : "false");
+  if (v.is_null()) return "null";
+  if (v.is_array()) return "an array";
+  return "an object";
+}
+
+std::string with_meaning(std::string message, std::string_view meaning) {
+  if (!meaning.empty()) message += " (" + std::string(meaning) + ")";
+  return message;
+}
+
+std::string format_number(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const std::size_t cost = (std::tolower(a[i - 1]) == std::tolower(b[j - 1])) ? 0 : 1;
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+InputError::InputError(std::vector<std::string> problems)
+    : std::runtime_error(join_problems(problems)), problems_(std::move(problems)) {}
+
+void InputProblems::add(std::string_view key_path, std::string_view message) {
+  std::string where = key_path.empty() ? "/" : std::string(key_path);
+  problems_.push_back(file_ + ": " + where + ": " + std::string(message));
+}
+
+void InputProblems::throw_if_any() const {
+  if (!problems_.empty()) throw InputError(problems_);
+}
+
+bool Range::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  const bool above = min_open ? v > min : v >= min;
+  const bool below = max_open ? v < max : v <= max;
+  return above && below;
+}
+
+std::string Range::describe() const {
+  const auto bound = [](double v) {
+    if (std::isinf(v)) return std::string(v > 0 ? "inf" : "-inf");
+    return format_number(v);
+  };
+  return std::string(min_open || std::isinf(min) ? "(" : "[") + bound(min) + ", " + bound(max) +
+         (max_open || std::isinf(max) ? ")" : "]");
+}
+
+const Json& empty_json_object() {
+  static const Json empty = Json::object();
+  return empty;
+}
+
+JsonReader::JsonReader(const Json& node, std::string path, InputProblems& problems)
+    : node_(&node), path_(std::move(path)), problems_(&problems) {}
+
+const Json* JsonReader::find(std::string_view key) {
+  used_.insert(std::string(key));
+  if (!node_->is_object()) return nullptr;
+  const auto it = node_->find(std::string(key));
+  return it == node_->end() ? nullptr : &*it;
+}
+
+bool JsonReader::has(std::string_view key) const {
+  return node_->is_object() && node_->contains(std::string(key));
+}
+
+double JsonReader::number(std::string_view key, Range range, std::string_view meaning) {
+  const Json* v = find(key);
+  if (v == nullptr) {
+    problems_->add(key_path(key),
+                   with_meaning("missing required number in " + range.describe(), meaning));
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  if (!v->is_number()) {
+    problems_->add(key_path(key), with_meaning("expected a number in " + range.describe() +
+                                                   ", got " + json_type_name(*v),
+                                               meaning));
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const double x = v->get<double>();
+  if (!range.contains(x)) {
+    problems_->add(key_path(key), with_meaning("expected a number in " + range.describe() +
+                                                   ", got " + format_number(x),
+                                               meaning));
+  }
+  return x;
+}
+
+double JsonReader::number_or(std::string_view key, double fallback, Range range,
+                             std::string_view meaning) {
+  if (!has(key)) {
+    used_.insert(std::string(key));
+    return fallback;
+  }
+  return number(key, range, meaning);
+}
+
+bool JsonReader::boolean_or(std::string_view key, bool fallback, std::string_view meaning) {
+  const Json* v = find(key);
+  if (v == nullptr) return fallback;
+  if (!v->is_boolean()) {
+    problems_->add(key_path(key),
+                   with_meaning("expected true or false, got " + json_type_name(*v), meaning));
+    return fallback;
+  }
+  return v->get<bool>();
+}
+
+std::string JsonReader::string(std::string_view key, std::string_view meaning) {
+  const Json* v = find(key);
+  if (v == nullptr) {
+    problems_->add(key_path(key), with_meaning("missing required string", meaning));
+    return {};
+  }
+  if (!v->is_string()) {
+    problems_->add(key_path(key),
+                   with_meaning("expected a string, got " + json_type_name(*v), meaning));
+    return {};
+  }
+  return v->get<std::string>();
+}
+
+std::string JsonReader::string_or(std::string_view key, std::string_view fallback,
+                                  std::string_view meaning) {
+  if (!has(key)) {
+    used_.insert(std::string(key));
+    return std::string(fallback);
+  }
+  return string(key, meaning);
+}
+
+std::string JsonReader::choice(std::string_view key, std::initializer_list<std::string_view> known,
+                               std::string_view meaning, std::optional<std::string_view> fallback) {
+  std::string known_list;
+  std::vector<std::string> candidates;
+  for (auto k : known) {
+    known_list += (known_list.empty() ? "" : ", ") + std::string(k);
+    candidates.emplace_back(k);
+  }
+  if (!has(key) && fallback) {
+    used_.insert(std::string(key));
+    return std::string(*fallback);
+  }
+  if (!has(key)) {
+    used_.insert(std::string(key));
+    problems_->add(key_path(key), with_meaning("missing; expected one of: " + known_list, meaning));
+    return {};
+  }
+  const bool valid_string = has(key) && (*node_)[std::string(key)].is_string();
+  const std::string value = string(key, meaning);  // reports a missing key or a wrong type
+  if (!valid_string) return fallback ? std::string(*fallback) : std::string();
+  if (std::find(candidates.begin(), candidates.end(), value) == candidates.end()) {
+    std::string message = "unknown name \"" + value + "\"; known: " + known_list;
+    if (auto near = nearest_name(value, candidates)) message += " (did you mean " + *near + "?)";
+    problems_->add(key_path(key), with_meaning(message, meaning));
+    return fallback ? std::string(*fallback) : std::string();
+  }
+  return value;
+}
+
+JsonReader JsonReader::child(std::string_view key, std::string_view meaning) {
+  const Json* v = find(key);
+  if (v == nullptr) {
+    problems_->add(key_path(key), with_meaning("missing required object", meaning));
+    return JsonReader(empty_json_object(), key_path(key), *problems_);
+  }
+  if (!v->is_object()) {
+    problems_->add(key_path(key),
+                   with_meaning("expected an object, got " + json_type_name(*v), meaning));
+    return JsonReader(empty_json_object(), key_path(key), *problems_);
+  }
+  return JsonReader(*v, key_path(key), *problems_);
+}
+
+std::optional<JsonReader> JsonReader::optional_child(std::string_view key,
+                                                     std::string_view meaning) {
+  if (!has(key)) {
+    used_.insert(std::string(key));
+    return std::nullopt;
+  }
+  return child(key, meaning);
+}
+
+void JsonReader::ignore(std::string_view key) {
+  used_.insert(std::string(key));
+}
+
+void JsonReader::reject_unknown_keys() {
+  if (!node_->is_object()) return;
+  std::vector<std::string> known(used_.begin(), used_.end());
+  for (const auto& item : node_->items()) {
+    if (used_.count(item.key()) != 0) continue;
+    std::string message = "unknown key";
+    if (auto near = nearest_name(item.key(), known)) message += " (did you mean " + *near + "?)";
+    problems_->add(key_path(item.key()), message);
+  }
+}
+
+Json load_json_file(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError({file + ": cannot open the file (does it exist, and is it readable?)"});
+  try {
+    return Json::parse(in, nullptr, true, /*ignore_comments=*/false);
+  } catch (const Json::parse_error& e) {
+    throw InputError({file + ": JSON syntax error at byte " + std::to_string(e.byte) + ": " +
+                      std::string(e.what())});
+  }
+}
+
+std::optional<std::string> nearest_name(std::string_view word,
+                                        const std::vector<std::string>& candidates) {
+  std::optional<std::string> best;
+  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const auto& c : candidates) {
+    const std::size_t d = edit_distance(word, c);
+    if (d < best_distance) {
+      best_distance = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+}  // namespace impact

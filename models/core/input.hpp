@@ -1,0 +1,111 @@
+// Reading JSON input with errors a user can act on: every problem names the file, the JSON key path
+// (RFC 6901 pointer) and what was expected, and all problems of a document are reported at once.
+#pragma once
+
+#include <initializer_list>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impact {
+
+using Json = nlohmann::json;
+
+/// A bad input: one or more problems, each "file: /key/path: expected ..., got ... (meaning)".
+class InputError : public std::runtime_error {
+ public:
+  explicit InputError(std::vector<std::string> problems);
+  const std::vector<std::string>& problems() const { return problems_; }
+
+ private:
+  std::vector<std::string> problems_;
+};
+
+/// Problems found while reading one document; collected so the user sees all of them in one run.
+class InputProblems {
+ public:
+  explicit InputProblems(std::string file) : file_(std::move(file)) {}
+  void add(std::string_view key_path, std::string_view message);
+  bool empty() const { return problems_.empty(); }
+  /// Throws InputError with every problem collected so far; does nothing when there are none.
+  void throw_if_any() const;
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+  std::vector<std::string> problems_;
+};
+
+/// An interval of admissible values, open or closed at each end.
+struct Range {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_open = false;
+  bool max_open = false;
+
+  bool contains(double v) const;
+  std::string describe() const;  ///< e.g. "(0, 1]"
+
+  static Range any() { return {}; }
+  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity()}; }
+  static Range closed(double a, double b) { return {a, b, false, false}; }
+  static Range open_closed(double a, double b) { return {a, b, true, false}; }
+  static Range open(double a, double b) { return {a, b, true, true}; }
+};
+
+/// A view of one JSON object at a key path. Reads record which keys were used, so that
+/// reject_unknown_keys() can flag misspellings with a nearest-key suggestion. A failed read records
+/// a problem and returns a quiet NaN or the fallback: call problems.throw_if_any() before using
+/// them.
+class JsonReader {
+ public:
+  JsonReader(const Json& node, std::string path, InputProblems& problems);
+
+  const std::string& path() const { return path_; }
+  std::string key_path(std::string_view key) const { return path_ + "/" + std::string(key); }
+  bool has(std::string_view key) const;
+  InputProblems& problems() const { return *problems_; }
+
+  double number(std::string_view key, Range range, std::string_view meaning);
+  double number_or(std::string_view key, double fallback, Range range, std::string_view meaning);
+  bool boolean_or(std::string_view key, bool fallback, std::string_view meaning);
+  std::string string(std::string_view key, std::string_view meaning);
+  std::string string_or(std::string_view key, std::string_view fallback, std::string_view meaning);
+  /// A string that must be one of `known`; the error lists the known names.
+  std::string choice(std::string_view key, std::initializer_list<std::string_view> known,
+                     std::string_view meaning, std::optional<std::string_view> fallback = {});
+  /// The object at `key`; a missing or non-object value is a problem and yields an empty object.
+  JsonReader child(std::string_view key, std::string_view meaning);
+  /// The object at `key` if present (a present non-object is a problem).
+  std::optional<JsonReader> optional_child(std::string_view key, std::string_view meaning);
+  /// Marks a key as handled elsewhere (documentation-only keys such as "source").
+  void ignore(std::string_view key);
+  /// Records "unknown key (did you mean ...?)" for every key that no read touched.
+  void reject_unknown_keys();
+
+ private:
+  const Json* find(std::string_view key);
+  const Json* node_;
+  std::string path_;
+  InputProblems* problems_;
+  std::set<std::string, std::less<>> used_;
+};
+
+/// Parses a JSON file; a missing file or a syntax error becomes an InputError naming the file and,
+/// for syntax errors, the byte position.
+Json load_json_file(const std::string& file);
+
+/// The candidate closest to `word` by edit distance, if it is close enough to be a likely typo.
+std::optional<std::string> nearest_name(std::string_view word,
+                                        const std::vector<std::string>& candidates);
+
+/// The empty object used as a stand-in where a child is missing.
+const Json& empty_json_object();
+
+}  // namespace impact

@@ -1,0 +1,25 @@
+// The history one material point carries from step to step: a plain struct, copied by value, so the
+// update reads the start-of-step state s0 and writes the end-of-step state s1 (MFront's split).
+#pragma once
+
+#include <cstdint>
+
+#include "models/core/tensor.hpp"
+
+namespace impact {
+
+struct PointState {
+  Mat3 stress = Mat3::Zero();   ///< Cauchy stress in the lab frame [Pa], tension positive
+  Mat3 F = Mat3::Identity();    ///< deformation gradient [-]
+  Mat3 R = Mat3::Identity();    ///< rotation of F = R U, kept so a step needs one decomposition
+  double plastic_strain = 0.0;  ///< equivalent plastic strain [-]
+  double plastic_strain_rate = 0.0;  ///< equivalent plastic strain rate of the last step [1/s]
+  double temperature = 294.0;        ///< [K]
+  double internal_energy = 0.0;      ///< specific internal energy above the reference state [J/kg]
+  double damage = 0.0;               ///< Johnson-Cook damage D [-]
+  double porosity = 0.0;             ///< void volume fraction f [-]
+  bool melted = false;               ///< T reached the melting temperature this step
+  bool failed = false;               ///< localized by TEPLA, melting or a stability check (sticky)
+};
+
+}  // namespace impact

@@ -1,0 +1,111 @@
+// Radial return (report eq. 6): the returned stress lies on the rate-dependent yield surface, the
+// increment matches closed forms (linear hardening) and an independent bisection (JC with rate),
+// and non-convergence is reported rather than accepted.
+#include "models/plasticity/radial_return.hpp"
+
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+using namespace impact;
+
+namespace {
+
+constexpr double kMu = 26e9;
+
+JohnsonCookParams al6061() {
+  JohnsonCookParams p;
+  p.A = 324e6;
+  p.B = 114e6;
+  p.n = 0.42;
+  p.C = 0.002;
+  p.m = 1.34;
+  return p;
+}
+
+// A deviatoric trial stress of von Mises value q in a fixed non-trivial direction.
+Mat3 trial_with_von_mises(double q) {
+  Mat3 s;
+  s << 2.0, 0.3, -0.1, 0.3, -0.5, 0.2, -0.1, 0.2, -1.5;
+  s = deviator(s);
+  return s * (q / std::sqrt(1.5 * ddot(s, s)));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(plasticity_radial_return)
+
+BOOST_AUTO_TEST_CASE(trial_inside_the_static_yield_surface_is_elastic) {
+  const auto p = al6061();
+  const auto flow = [&](double ep, double rate) { return johnson_cook(p, ep, rate, 294.0); };
+  const Mat3 s = trial_with_von_mises(300e6);
+  const auto r = radial_return(s, kMu, 0.0, 1e-6, flow, ReturnAlgorithm::newton);
+  BOOST_TEST(!r.plastic);
+  BOOST_TEST((r.deviator - s).norm() == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(linear_hardening_increment_equals_closed_form) {
+  // sigma_y = A + B ep (n = 1, C = 0): d = (q_tr - sigma_y(ep_n)) / (3 mu + B) exactly.
+  JohnsonCookParams p = al6061();
+  p.n = 1.0;
+  p.C = 0.0;
+  const auto flow = [&](double ep, double rate) { return johnson_cook(p, ep, rate, 294.0); };
+  const double ep0 = 0.05, q = 700e6;
+  const auto r =
+      radial_return(trial_with_von_mises(q), kMu, ep0, 1e-6, flow, ReturnAlgorithm::newton);
+  const double expected = (q - (p.A + p.B * ep0)) / (3.0 * kMu + p.B);
+  BOOST_TEST(r.converged);
+  BOOST_TEST(r.delta_plastic_strain == expected, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(r.iterations <= 3);
+}
+
+BOOST_AUTO_TEST_CASE(rate_dependent_return_lands_on_the_yield_surface_at_the_step_rate) {
+  const auto p = al6061();
+  const auto flow = [&](double ep, double rate) { return johnson_cook(p, ep, rate, 400.0); };
+  for (double dt : {1e-9, 1e-6, 1e-3})
+    for (double ep0 : {0.0, 0.01, 0.5})
+      for (double q : {400e6, 600e6, 2e9}) {
+        const auto r =
+            radial_return(trial_with_von_mises(q), kMu, ep0, dt, flow, ReturnAlgorithm::newton);
+        if (!r.plastic) continue;
+        BOOST_TEST(r.converged);
+        BOOST_TEST(r.iterations <= 20);
+        const double d = r.delta_plastic_strain;
+        const double sigma_y = johnson_cook(p, ep0 + d, d / dt, 400.0).value;
+        BOOST_TEST(std::sqrt(1.5 * ddot(r.deviator, r.deviator)) == sigma_y,
+                   boost::test_tools::tolerance(1e-11));
+        // Consistency: q_tr - 3 mu d = sigma_y (radial return geometry).
+        BOOST_TEST(q - 3.0 * kMu * d == sigma_y, boost::test_tools::tolerance(1e-11));
+        // Independent root by plain bisection of g(d) on [0, q/(3 mu)].
+        double lo = 0.0, hi = q / (3.0 * kMu);
+        for (int i = 0; i < 200; ++i) {
+          const double mid = 0.5 * (lo + hi);
+          const double g = q - 3.0 * kMu * mid - johnson_cook(p, ep0 + mid, mid / dt, 400.0).value;
+          (g > 0.0 ? lo : hi) = mid;
+        }
+        BOOST_TEST(d == 0.5 * (lo + hi), boost::test_tools::tolerance(1e-9));
+      }
+}
+
+BOOST_AUTO_TEST_CASE(unconverged_return_is_reported_not_accepted) {
+  const auto p = al6061();
+  const auto flow = [&](double ep, double rate) { return johnson_cook(p, ep, rate, 294.0); };
+  ReturnTolerance tol;
+  tol.max_iterations = 1;
+  const auto r = radial_return(trial_with_von_mises(900e6), kMu, 0.0, 1e-7, flow,
+                               ReturnAlgorithm::newton, 0.0, tol);
+  BOOST_TEST(r.plastic);
+  BOOST_TEST(!r.converged);
+}
+
+BOOST_AUTO_TEST_CASE(report_2004_variant_rescales_the_trial_onto_the_flow_stress_in_one_shot) {
+  const auto p = al6061();
+  const auto flow = [&](double ep, double rate) { return johnson_cook(p, ep, rate, 294.0); };
+  const double rate_norm = 1e4, dt = 1e-7, q = 500e6;
+  const Mat3 s = trial_with_von_mises(q);
+  const auto r = radial_return(s, kMu, 0.1, dt, flow, ReturnAlgorithm::report_2004, rate_norm);
+  const double sigma_y = johnson_cook(p, 0.1 + rate_norm * dt, rate_norm, 294.0).value;
+  BOOST_TEST(r.delta_plastic_strain == rate_norm * dt);
+  BOOST_TEST((r.deviator - s * (sigma_y / q)).norm() <= 1e-12 * q);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
