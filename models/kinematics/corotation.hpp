@@ -1,0 +1,56 @@
+// Objective stress rates for the hypoelastic update (report sec. 2; reference_code_notes.md sec. 0
+// item 2 and stage 1 items 4-7, stage 5 item 23).
+//
+// Green-Naghdi (polar) update (Dienes 1979, Acta Mech. 32:217-232; Flanagan & Taylor 1987, CMAME
+// 62:305-320). With F = R U, the unrotated stress sigma_hat = R^T sigma R obeys an ordinary rate
+// equation d(sigma_hat)/dt = C : D_hat with D_hat = R^T D R, D = sym L. One step:
+//
+//   sigma_hat_n = R_n^T sigma_n R_n                      un-rotate with the OLD rotation
+//   D_hat       = R_{n+1/2}^T D R_{n+1/2},  R_{n+1/2} = nearest_rotation((R_n + R_{n+1}) / 2)
+//   sigma_hat_{n+1} = sigma_hat_n + (material update with D_hat)
+//   sigma_{n+1} = R_{n+1} sigma_hat_{n+1} R_{n+1}^T      re-rotate with the NEW rotation
+//
+// The midpoint rotation makes the D rotation second order in dt (Flanagan & Taylor 1987); the
+// average of two rotations about one axis is cos(dtheta/2) times the rotation through the average
+// angle, so nearest_rotation recovers exactly that rotation.
+//
+// The 2004 code un-rotated and re-rotated with the same R_{n+1}: the two rotations cancel and the
+// stress is never carried with the material (a stressed body spun rigidly keeps its lab-frame
+// stress), which is not objective. Fixed in the code only in 2011. corotation_test shows both.
+//
+// Jaumann rate (option "jaumann", for comparison): sigma is rotated with the spin W = skew L by the
+// Hughes-Winget increment Q = (I - W dt/2)^{-1} (I + W dt/2) (Hughes & Winget 1980, IJNME
+// 15:1862-1867), sigma <- Q sigma Q^T, and the material update is then done in the lab frame with
+// D. Q is exactly orthogonal for skew W (a Cayley transform, rotation angle 2 atan(|w| dt/2)).
+// Under simple shear the Jaumann rate makes the elastic shear stress oscillate (mu sin gamma).
+#pragma once
+
+#include "models/core/tensor.hpp"
+
+namespace impact {
+
+enum class ObjectiveRate { green_naghdi, jaumann };
+
+struct Corotation {
+  Mat3 R_old;  ///< R_n: un-rotates the old stress
+  Mat3 R_new;  ///< R_{n+1} = rotation of F_{n+1}: re-rotates the new stress
+  Mat3 R_mid;  ///< R_{n+1/2}: rotates D into the unrotated frame
+};
+
+/// The rotations of one Green-Naghdi step; R_new from polar_decomposition(F_new), det F_new > 0.
+Corotation corotation(const Mat3& R_old, const Mat3& F_new);
+
+/// R^T a R: lab frame -> unrotated frame.
+inline Mat3 unrotate(const Mat3& a, const Mat3& R) {
+  return R.transpose() * a * R;
+}
+
+/// R a R^T: unrotated frame -> lab frame.
+inline Mat3 rotate(const Mat3& a, const Mat3& R) {
+  return R * a * R.transpose();
+}
+
+/// Hughes-Winget increment Q = (I - W dt/2)^{-1} (I + W dt/2) for a spin W [1/s] over dt [s].
+Mat3 hughes_winget_rotation(const Mat3& W, double dt);
+
+}  // namespace impact
