@@ -1,0 +1,93 @@
+#include "models/eos/mie_gruneisen.hpp"
+
+#include <limits>
+#include <string>
+
+namespace impact {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+/// Cold (e = 0) part rho0 C0^2 eta (1 - Gamma0 eta/2)/(1 - S eta)^2; requires admissibility.
+double cold_pressure(const MieGruneisenParams& p, double rho0, double eta) {
+  const double denominator = 1.0 - p.S_alpha * eta;
+  return rho0 * p.C0 * p.C0 * eta * (1.0 - 0.5 * p.Gamma0 * eta) / (denominator * denominator);
+}
+
+}  // namespace
+
+bool mie_gruneisen_admissible(const MieGruneisenParams& p, double rho0, double rho) {
+  if (!(rho > 0.0)) return false;
+  const double eta = 1.0 - rho0 / rho;
+  return p.S_alpha * eta < 1.0;
+}
+
+double mie_gruneisen_pressure(const MieGruneisenParams& p, double rho0, double rho, double e) {
+  if (!mie_gruneisen_admissible(p, rho0, rho)) return infinity;
+  const double eta = 1.0 - rho0 / rho;
+  return cold_pressure(p, rho0, eta) + rho0 * p.Gamma0 * e;
+}
+
+HugoniotPoint mie_gruneisen_hugoniot(const MieGruneisenParams& p, double rho0, double rho) {
+  if (!mie_gruneisen_admissible(p, rho0, rho)) return {infinity, infinity};
+  const double eta = 1.0 - rho0 / rho;
+  const double denominator = 1.0 - p.S_alpha * eta;
+  HugoniotPoint h;
+  h.pressure = rho0 * p.C0 * p.C0 * eta / (denominator * denominator);
+  h.internal_energy = h.pressure * eta / (2.0 * rho0);  // Rayleigh-line work from rest
+  return h;
+}
+
+double mie_gruneisen_bulk_modulus(const MieGruneisenParams& p, double rho0, double rho, double e) {
+  if (!mie_gruneisen_admissible(p, rho0, rho)) return infinity;
+  const double eta = 1.0 - rho0 / rho;
+  const double denominator = 1.0 - p.S_alpha * eta;
+  // rho dp/drho|_e = (rho0/rho) dp_c/deta = (1 - eta) A (1 + (S - Gamma0) eta)/(1 - S eta)^3;
+  // (p/rho) dp/de = (p/rho) rho0 Gamma0 = (1 - eta) Gamma0 p.
+  const double d_cold = rho0 * p.C0 * p.C0 * (1.0 + (p.S_alpha - p.Gamma0) * eta) /
+                        (denominator * denominator * denominator);
+  const double pressure = cold_pressure(p, rho0, eta) + rho0 * p.Gamma0 * e;
+  return (1.0 - eta) * (d_cold + p.Gamma0 * pressure);
+}
+
+MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, double rho_old,
+                                      double rho_new, double p_old, double e_old,
+                                      double heat_per_mass, double specific_heat,
+                                      double temperature_new, double room_temperature) {
+  MieGruneisenStep step;
+  if (!mie_gruneisen_admissible(p, rho0, rho_new)) return {infinity, e_old, false};
+  const double cold = cold_pressure(p, rho0, 1.0 - rho0 / rho_new);
+  const double stiffness = rho0 * p.Gamma0;  // dp/de at fixed rho
+  if (p.energy == MieGruneisenEnergy::cp_temperature) {
+    step.internal_energy = specific_heat * (temperature_new - room_temperature);
+  } else {
+    // e1 = e0 - (p0 + cold + stiffness e1) dv/2 + dq, linear in e1.
+    const double dv = 1.0 / rho_new - 1.0 / rho_old;
+    const double divisor = 1.0 + 0.5 * stiffness * dv;
+    if (!(divisor > 0.0)) return {infinity, e_old, false};
+    step.internal_energy = (e_old + heat_per_mass - 0.5 * (p_old + cold) * dv) / divisor;
+  }
+  step.pressure = cold + stiffness * step.internal_energy;
+  return step;
+}
+
+MieGruneisenParams read_mie_gruneisen(JsonReader& r) {
+  MieGruneisenParams p;
+  r.ignore("type");
+  p.C0 = r.number("C0", Range::positive(), "Mie-Gruneisen bulk sound speed C0 [m/s]");
+  p.Gamma0 =
+      r.number("Gamma0", Range::non_negative(), "Mie-Gruneisen Gruneisen coefficient Gamma0 [-]");
+  // Physically S ~ 1-2 for metals; [0, 10] only rejects typos and sign errors.
+  p.S_alpha = r.number("S_alpha", Range::closed(0.0, 10.0),
+                       "Mie-Gruneisen Hugoniot slope S in U_s = C0 + S u_p [-]");
+  const std::string energy = r.choice(
+      "energy", {"evolved", "cp_temperature"},
+      "internal energy: evolved from -p dv + heat, or the report's Cp (T - T_room)", "evolved");
+  p.energy =
+      energy == "cp_temperature" ? MieGruneisenEnergy::cp_temperature : MieGruneisenEnergy::evolved;
+  r.reject_unknown_keys();
+  return p;
+}
+
+}  // namespace impact
