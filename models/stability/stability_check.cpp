@@ -1,0 +1,42 @@
+#include "models/stability/stability_check.hpp"
+
+namespace impact {
+
+StabilityParams read_stability(JsonReader& r) {
+  StabilityParams p;
+  const std::string type = r.choice("type", {"none", "drucker", "becker", "drucker_becker"},
+                                    "stability check run on plastically flowing points");
+  if (type == "drucker") p.check = StabilityCheck::drucker;
+  if (type == "becker") p.check = StabilityCheck::becker;
+  if (type == "drucker_becker") p.check = StabilityCheck::drucker_becker;
+  const std::string search = r.choice(
+      "normal_search", {"principal_plane", "full_sphere"},
+      "Becker band-normal search: max-min principal plane or the whole sphere", "principal_plane");
+  if (search == "full_sphere") p.search = NormalSearch::full_sphere;
+  const std::string rate = r.choice(
+      "rate_slope", {"constant_rate", "algorithmic"},
+      "rate term of the hardening slope H: none at constant rate, or d sigma_y/d rate / dt",
+      "constant_rate");
+  if (rate == "algorithmic") p.rate_slope = RateSlope::algorithmic;
+  r.reject_unknown_keys();
+  return p;
+}
+
+StabilityResult check_stability(const StabilityParams& params, double bulk_modulus,
+                                double shear_modulus, const Mat3& stress, double H, const Mat3& D,
+                                const Mat3& Dp) {
+  StabilityResult r;
+  if (params.check == StabilityCheck::none) return r;
+  const Tensor4 tangent = elastic_plastic_tangent(bulk_modulus, shear_modulus, stress, H);
+  if (params.check == StabilityCheck::drucker || params.check == StabilityCheck::drucker_becker) {
+    r.drucker = drucker_check(tangent, D, Dp);
+  }
+  if (params.check == StabilityCheck::becker || params.check == StabilityCheck::drucker_becker) {
+    r.becker = becker_check(tangent, isotropic_elasticity(bulk_modulus, shear_modulus), stress,
+                            params.search);
+  }
+  r.unstable = r.drucker.unstable || r.becker.unstable;
+  return r;
+}
+
+}  // namespace impact
