@@ -1,0 +1,197 @@
+#include "models/material/elastic_plastic.hpp"
+
+#include <cmath>
+
+namespace impact {
+
+std::string_view to_string(UpdateStatus s) {
+  switch (s) {
+    case UpdateStatus::ok:
+      return "ok";
+    case UpdateStatus::negative_jacobian:
+      return "negative Jacobian det F <= 0";
+    case UpdateStatus::return_mapping_not_converged:
+      return "radial return did not converge";
+    case UpdateStatus::non_finite_stress:
+      return "non-finite stress";
+    case UpdateStatus::eos_out_of_range:
+      return "compression beyond the Mie-Gruneisen limit";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(FailureCause c) {
+  switch (c) {
+    case FailureCause::none:
+      return "none";
+    case FailureCause::melting:
+      return "melting";
+    case FailureCause::tepla:
+      return "tepla";
+    case FailureCause::drucker:
+      return "drucker";
+    case FailureCause::becker:
+      return "becker";
+  }
+  return "unknown";
+}
+
+PointState ElasticPlastic::initial_state(double temperature) const {
+  PointState s;
+  s.temperature = temperature;
+  s.porosity = p_.tepla.initial_porosity;
+  return s;
+}
+
+double ElasticPlastic::wave_speed(const PointState& s) const {
+  const double rho = p_.density / s.F.determinant();
+  double bulk = 0.0;
+  if (const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state)) {
+    bulk = default_hypo_effective_bulk_modulus(p_.bulk_modulus, p_.shear_modulus, *hypo);
+  } else {
+    const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
+    bulk = mie_gruneisen_bulk_modulus(mg, p_.density, rho, s.internal_energy);
+  }
+  return std::sqrt((bulk + 4.0 * p_.shear_modulus / 3.0) / rho);
+}
+
+StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
+                                  PointState& s1) const {
+  StepReport report;
+  const double J1 = F1.determinant();
+  if (!(J1 > 0.0)) {
+    report.status = UpdateStatus::negative_jacobian;
+    return report;
+  }
+  const double mu = p_.shear_modulus;
+  const double rho0_n = p_.density / s0.F.determinant();
+  const double rho1 = p_.density / J1;
+  s1 = s0;
+  s1.F = F1;
+  s1.melted = false;
+
+  // 1. Kinematics: work in the unrotated frame (Green-Naghdi) or in the lab frame after a
+  //    Hughes-Winget rotation of the old stress (Jaumann).
+  const Mat3 D = sym(L);
+  Mat3 stress_n;  // old stress in the working frame
+  Mat3 D_hat;     // rate of deformation in the working frame
+  Mat3 R_out;     // rotation back to the lab frame
+  if (p_.objective_rate == ObjectiveRate::green_naghdi) {
+    const Corotation c = corotation(s0.R, F1);
+    stress_n = unrotate(s0.stress, c.R_old);
+    D_hat = unrotate(D, c.R_mid);
+    R_out = c.R_new;
+    s1.R = c.R_new;
+  } else {
+    stress_n = rotate(s0.stress, hughes_winget_rotation(skew(L), dt));
+    D_hat = D;
+    R_out = Mat3::Identity();
+  }
+  const double p_n = -mean(stress_n);
+
+  // 2. Deviatoric update (eq. 4) and radial return (eq. 5-6) at the start-of-step temperature.
+  const Mat3 s_trial = deviator(stress_n) + 2.0 * mu * deviator(D_hat) * dt;
+  const double T0 = s0.temperature;
+  Mat3 s_new;
+  double d_ep = 0.0;
+  FlowStress flow;
+  const bool molten = p_.melting.do_melting && is_melted(T0, p_.melt_temperature);
+  if (molten) {
+    s_new = Mat3::Zero();  // no deviatoric strength once molten; the EOS still acts
+    s1.melted = true;
+  } else {
+    const auto flow_at = [&](double ep, double rate) {
+      return johnson_cook(p_.flow_stress, ep, rate, T0);
+    };
+    const Mat3 eta = deviator(D_hat);
+    const ReturnResult r =
+        radial_return(s_trial, mu, s0.plastic_strain, dt, flow_at, p_.return_algorithm,
+                      std::sqrt(2.0 / 3.0 * ddot(eta, eta)), p_.return_tolerance);
+    report.return_iterations = r.iterations;
+    if (!r.converged) report.status = UpdateStatus::return_mapping_not_converged;
+    s_new = r.deviator;
+    d_ep = r.delta_plastic_strain;
+    flow = r.flow;
+    report.plastic = r.plastic;
+  }
+  s1.plastic_strain = s0.plastic_strain + d_ep;
+  s1.plastic_strain_rate = d_ep / dt;
+
+  // 3. Adiabatic heating (eq. 8): the Taylor-Quinney fraction of the plastic work.
+  report.plastic_work = flow.value * d_ep;
+  const double heat_per_mass = p_.heating.taylor_quinney * report.plastic_work / rho1;
+  if (p_.heating.enabled && d_ep > 0.0) {
+    report.temperature_rise = adiabatic_temperature_rise(p_.heating.taylor_quinney, flow.value,
+                                                         d_ep, rho1, p_.specific_heat);
+    s1.temperature = T0 + report.temperature_rise;
+  }
+
+  // 4. Pressure from the equation of state; the specific internal energy follows the work
+  //    -p dv (trapezoidal) plus the plastic heat.
+  double p_new = 0.0;
+  const double dv = 1.0 / rho1 - 1.0 / rho0_n;
+  if (const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state)) {
+    p_new = default_hypo_pressure(p_n, D_hat.trace(), dt, p_.bulk_modulus, mu, *hypo);
+    s1.internal_energy = s0.internal_energy - 0.5 * (p_n + p_new) * dv + heat_per_mass;
+  } else {
+    const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
+    const double eta = 1.0 - p_.density / rho1;
+    if (!(mg.S_alpha * eta < 1.0)) {
+      report.status = UpdateStatus::eos_out_of_range;
+      return report;
+    }
+    const MieGruneisenStep m =
+        mie_gruneisen_update(mg, p_.density, rho0_n, rho1, p_n, s0.internal_energy, heat_per_mass,
+                             p_.specific_heat, s1.temperature, p_.room_temperature);
+    p_new = m.pressure;
+    s1.internal_energy = m.internal_energy;
+  }
+  Mat3 stress_new = s_new - p_new * Mat3::Identity();
+
+  // 5. Johnson-Cook damage (eq. 7) and optional porosity growth.
+  if (p_.damage && d_ep > 0.0) {
+    s1.damage +=
+        jc_damage_increment(*p_.damage, d_ep, triaxiality(stress_new), s1.plastic_strain_rate, T0);
+  }
+  if (p_.tepla.evolve_porosity) {
+    s1.porosity =
+        porosity_update(p_.tepla, s0.porosity, D_hat.trace(), s0.plastic_strain, d_ep, dt);
+  }
+
+  // 6. Failure detection, only with an erosion algorithm (report sec. 3), then erosion.
+  if (p_.erosion != Erosion::none) {
+    if (!s0.failed) {
+      if (s1.melted) {
+        report.failure = FailureCause::melting;
+      } else if (report.plastic && p_.tepla.enabled &&
+                 tepla_indicator(s1.porosity, p_.tepla.critical_porosity, s1.damage) >= 1.0) {
+        report.failure = FailureCause::tepla;
+      } else if (report.plastic && d_ep > 0.0 && p_.stability.check != StabilityCheck::none) {
+        const double H =
+            effective_hardening(FlowSlopes{flow.d_plastic_strain, flow.d_rate, flow.d_temperature},
+                                flow.value, dt, p_.stability.rate_slope, p_.heating.enabled,
+                                p_.heating.taylor_quinney, rho1, p_.specific_heat);
+        const Mat3 Dp = s1.plastic_strain_rate * 1.5 * s_new / flow.value;
+        const StabilityResult st =
+            check_stability(p_.stability, p_.bulk_modulus, mu, stress_new, H, D_hat, Dp);
+        report.drucker_indicator = st.drucker.indicator;
+        report.becker_indicator = st.becker.indicator;
+        if (st.drucker.unstable) {
+          report.failure = FailureCause::drucker;
+        } else if (st.becker.unstable) {
+          report.failure = FailureCause::becker;
+        }
+      }
+      if (report.failure != FailureCause::none) s1.failed = true;
+    }
+    if (s1.failed) stress_new = erode_stress(p_.erosion, stress_new);
+  }
+
+  // 7. Back to the lab frame.
+  s1.stress = rotate(stress_new, R_out);
+  if (!s1.stress.allFinite()) report.status = UpdateStatus::non_finite_stress;
+  report.wave_speed = wave_speed(s1);
+  return report;
+}
+
+}  // namespace impact

@@ -1,0 +1,109 @@
+// The composed `elastic_plastic` model (the report's constitutive_model block, sec. 2-3): a
+// hypoelastic update in the unrotated (Green-Naghdi) frame with a chosen equation of state for the
+// pressure, von Mises radial return on the Johnson-Cook flow stress for the deviator, and optional
+// adiabatic heating, Johnson-Cook damage, TEPLA failure, melting, stability checks and erosion.
+//
+// One step, for a point with start-of-step state s0, velocity gradient L and new deformation
+// gradient F1 (the caller integrates F):
+//  1. kinematics: D = sym L; un-rotate sigma_n with R_n, rotate D with R_{n+1/2}   (kinematics/)
+//  2. deviator:   s_tr = s_n + 2 mu dev(D) dt  (report eq. 4), radial return       (plasticity/)
+//                 on sigma_y(ep, rate, T_n) (eq. 5-6); molten points keep no deviator (melting)
+//  3. heating:    T += chi sigma_y d_ep / (rho cp)  (eq. 8)                         (thermal/)
+//  4. pressure:   default_hypo (eq. 2, with K) or Mie-Gruneisen (eq. 3)            (eos/)
+//  5. damage:     D += d_ep / eps_f(triaxiality, rate, T)  (eq. 7)                  (damage/)
+//  6. failure:    only when an erosion algorithm is chosen (as in the report): melting, TEPLA
+//                 (eq. 9), Drucker (eq. 10), Becker (eq. 11); failed points get the erosion
+//                 operation every step                                               (failure/)
+//  7. re-rotate with R_{n+1}.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "models/core/input.hpp"
+#include "models/core/point_state.hpp"
+#include "models/damage/johnson_cook_damage.hpp"
+#include "models/eos/default_hypo.hpp"
+#include "models/eos/mie_gruneisen.hpp"
+#include "models/failure/erosion.hpp"
+#include "models/failure/tepla.hpp"
+#include "models/flow_stress/johnson_cook.hpp"
+#include "models/kinematics/corotation.hpp"
+#include "models/plasticity/radial_return.hpp"
+#include "models/stability/stability_check.hpp"
+#include "models/thermal/adiabatic_heating.hpp"
+#include "models/thermal/melting.hpp"
+
+namespace impact {
+
+using EquationOfState = std::variant<DefaultHypoParams, MieGruneisenParams>;
+
+struct ElasticPlasticParams {
+  double density = 0.0;             ///< reference density rho0 [kg/m^3]
+  double bulk_modulus = 0.0;        ///< K [Pa]
+  double shear_modulus = 0.0;       ///< mu [Pa]
+  double specific_heat = 0.0;       ///< cp [J/(kg K)]
+  double room_temperature = 294.0;  ///< [K]
+  double melt_temperature = 925.0;  ///< [K]
+  ObjectiveRate objective_rate = ObjectiveRate::green_naghdi;
+  ReturnAlgorithm return_algorithm = ReturnAlgorithm::newton;
+  ReturnTolerance return_tolerance;
+  EquationOfState equation_of_state = DefaultHypoParams{};
+  JohnsonCookParams flow_stress;
+  std::optional<JohnsonCookDamageParams> damage;  ///< absent: no damage evolution
+  TeplaParams tepla;
+  MeltingParams melting;
+  AdiabaticHeatingParams heating;
+  StabilityParams stability;
+  Erosion erosion = Erosion::none;  ///< none also switches failure detection off (report sec. 3)
+};
+
+enum class UpdateStatus : std::uint8_t {
+  ok,
+  negative_jacobian,             ///< det F_{n+1} <= 0
+  return_mapping_not_converged,  ///< the radial return missed its tolerance
+  non_finite_stress,             ///< NaN or Inf in the updated stress
+  eos_out_of_range,              ///< compression beyond the Mie-Gruneisen limit 1 - S eta > 0
+};
+
+enum class FailureCause : std::uint8_t { none, melting, tepla, drucker, becker };
+
+/// What one update did, beyond the new state: for the caller's time step, ledger and diagnostics.
+struct StepReport {
+  UpdateStatus status = UpdateStatus::ok;
+  bool plastic = false;
+  int return_iterations = 0;
+  double wave_speed = 0.0;        ///< longitudinal sound speed sqrt((K_s + 4 mu/3)/rho) [m/s]
+  double plastic_work = 0.0;      ///< sigma_y d_ep, per unit current volume [J/m^3]
+  double temperature_rise = 0.0;  ///< adiabatic heating of this step [K]
+  FailureCause failure = FailureCause::none;  ///< set on the step a point fails
+  double drucker_indicator = 0.0;  ///< sigma_dot : D^p when the Drucker check ran [Pa/s^2]
+  double becker_indicator = 1.0;   ///< min det A_ep / det A_e when the Becker check ran [-]
+};
+
+std::string_view to_string(UpdateStatus);
+std::string_view to_string(FailureCause);
+
+class ElasticPlastic {
+ public:
+  explicit ElasticPlastic(ElasticPlasticParams params) : p_(std::move(params)) {}
+
+  const ElasticPlasticParams& params() const { return p_; }
+
+  /// A point at rest in the reference configuration at temperature T.
+  PointState initial_state(double temperature) const;
+
+  /// Advances s0 over dt with velocity gradient L to the deformation gradient F1; writes s1.
+  StepReport update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
+                    PointState& s1) const;
+
+  /// Longitudinal wave speed of a state (for the first time step).
+  double wave_speed(const PointState& s) const;
+
+ private:
+  ElasticPlasticParams p_;
+};
+
+}  // namespace impact

@@ -1,0 +1,212 @@
+#include "models/material/material.hpp"
+
+namespace impact {
+
+namespace {
+
+ObjectiveRate read_objective_rate(JsonReader& r) {
+  const std::string name =
+      r.choice("objective_rate", {"green_naghdi", "jaumann"},
+               "stress rate: polar (Green-Naghdi) rotation or Jaumann spin", "green_naghdi");
+  return name == "jaumann" ? ObjectiveRate::jaumann : ObjectiveRate::green_naghdi;
+}
+
+EquationOfState read_equation_of_state(JsonReader& cm) {
+  JsonReader eos = cm.child("equation_of_state", "pressure model");
+  const std::string type =
+      eos.choice("type", {"default_hypo", "mie_gruneisen"}, "equation of state", "default_hypo");
+  // Parameter blocks of every EOS may be present, so that switching EOS is a one-key overlay;
+  // each present block is validated whether chosen or not.
+  DefaultHypoParams hypo;
+  if (auto block = eos.optional_child("default_hypo", "default_hypo parameters")) {
+    hypo = read_default_hypo(*block);
+  }
+  std::optional<MieGruneisenParams> mg;
+  if (auto block = eos.optional_child("mie_gruneisen", "Mie-Gruneisen parameters")) {
+    mg = read_mie_gruneisen(*block);
+  }
+  eos.reject_unknown_keys();
+  if (type == "mie_gruneisen") {
+    if (!mg) {
+      eos.problems().add(eos.key_path("mie_gruneisen"),
+                         "missing object with C0, Gamma0, S_alpha (required when type is "
+                         "mie_gruneisen)");
+      return hypo;
+    }
+    return *mg;
+  }
+  return hypo;
+}
+
+}  // namespace
+
+Material read_material(const Json& document, const std::string& file) {
+  InputProblems problems(file);
+  if (!document.is_object()) {
+    problems.add("", "expected a JSON object with the material's properties");
+    problems.throw_if_any();
+  }
+  JsonReader root(document, "", problems);
+  ElasticPlasticParams p;
+  const std::string name = root.string("name", "material name");
+  root.ignore("description");
+  root.ignore("sources");
+  // Ranges are physical plausibility in SI units: they catch g/cm^3 or GPa typed by mistake.
+  p.density = root.number("density", Range::closed(100.0, 30000.0), "reference density [kg/m^3]");
+  p.shear_modulus = root.number("shear_modulus", Range::closed(1e6, 2e12), "shear modulus mu [Pa]");
+  p.bulk_modulus = root.number("bulk_modulus", Range::closed(1e6, 2e12), "bulk modulus K [Pa]");
+  p.specific_heat =
+      root.number("specific_heat", Range::closed(10.0, 1e5), "specific heat cp [J/(kg K)]");
+  const double conductivity = root.number_or("thermal_conductivity", 0.0, Range::non_negative(),
+                                             "thermal conductivity [W/(m K)]");
+  p.room_temperature = root.number_or("room_temperature", 294.0, Range::open(0.0, 1e4),
+                                      "room (reference) temperature T_r [K]");
+  p.melt_temperature =
+      root.number("melt_temperature", Range::open(0.0, 1e4), "melting temperature T_m [K]");
+  if (p.melt_temperature <= p.room_temperature) {
+    problems.add("/melt_temperature", "expected a melting temperature above room_temperature");
+  }
+
+  JsonReader cm = root.child("constitutive_model", "the constitutive model and its sub-models");
+  cm.choice("type", {"elastic_plastic"}, "constitutive model", "elastic_plastic");
+  p.objective_rate = read_objective_rate(cm);
+  const std::string algorithm =
+      cm.choice("return_algorithm", {"newton", "report_2004"},
+                "plastic return: consistent Newton or the report's one-shot rescale", "newton");
+  p.return_algorithm =
+      algorithm == "report_2004" ? ReturnAlgorithm::report_2004 : ReturnAlgorithm::newton;
+  p.return_tolerance.relative_residual = cm.number_or(
+      "return_tolerance", 1e-12, Range::open(0.0, 1e-3), "relative residual of the radial return");
+  p.equation_of_state = read_equation_of_state(cm);
+
+  JsonReader flow = cm.child("flow_stress", "flow stress model");
+  flow.choice("type", {"johnson_cook"}, "flow stress model");
+  p.flow_stress = read_johnson_cook(flow, p.room_temperature, p.melt_temperature);
+
+  if (auto yield = cm.optional_child("yield_condition", "yield condition")) {
+    yield->choice("type", {"von_mises"}, "yield condition", "von_mises");
+    yield->reject_unknown_keys();
+  }
+  if (auto damage = cm.optional_child("damage", "damage model")) {
+    const std::string type =
+        damage->choice("type", {"johnson_cook", "none"}, "damage model", "johnson_cook");
+    if (type == "johnson_cook") {
+      p.damage = read_johnson_cook_damage(*damage, p.room_temperature, p.melt_temperature);
+    } else {
+      // "none" switches damage off by overlay while the constants stay in the file for later.
+      for (const char* key : {"D1", "D2", "D3", "D4", "D5", "reference_strain_rate",
+                              "min_fracture_strain"}) {
+        damage->ignore(key);
+      }
+      damage->reject_unknown_keys();
+    }
+  }
+  if (auto block = cm.optional_child("tepla", "TEPLA-F failure")) p.tepla = read_tepla(*block);
+  if (auto block = cm.optional_child("melting", "melting")) p.melting = read_melting(*block);
+  if (auto block = cm.optional_child("adiabatic_heating", "adiabatic heating")) {
+    p.heating = read_adiabatic_heating(*block);
+  }
+  if (auto block = cm.optional_child("stability_check", "stability check")) {
+    p.stability = read_stability(*block);
+  }
+  if (auto block = cm.optional_child("erosion", "erosion of failed points")) {
+    p.erosion = read_erosion(*block);
+  }
+  cm.reject_unknown_keys();
+  root.reject_unknown_keys();
+  problems.throw_if_any();
+  return Material{name, file, conductivity, ElasticPlastic(std::move(p))};
+}
+
+Material load_material(const std::string& file, const Json& overrides) {
+  Json document = load_json_file(file);
+  if (!overrides.is_null() && !(overrides.is_object() && overrides.empty())) {
+    document.merge_patch(overrides);
+  }
+  return read_material(document, file);
+}
+
+Material load_material(const std::string& file, const std::vector<Json>& patches) {
+  Json document = load_json_file(file);
+  for (const Json& patch : patches) document.merge_patch(patch);
+  return read_material(document, file);
+}
+
+Json to_json(const Material& material) {
+  const ElasticPlasticParams& p = material.model.params();
+  Json j;
+  j["name"] = material.name;
+  j["density"] = p.density;
+  j["shear_modulus"] = p.shear_modulus;
+  j["bulk_modulus"] = p.bulk_modulus;
+  j["specific_heat"] = p.specific_heat;
+  j["thermal_conductivity"] = material.thermal_conductivity;
+  j["room_temperature"] = p.room_temperature;
+  j["melt_temperature"] = p.melt_temperature;
+  Json& cm = j["constitutive_model"];
+  cm["type"] = "elastic_plastic";
+  cm["objective_rate"] = p.objective_rate == ObjectiveRate::jaumann ? "jaumann" : "green_naghdi";
+  cm["return_algorithm"] =
+      p.return_algorithm == ReturnAlgorithm::report_2004 ? "report_2004" : "newton";
+  cm["return_tolerance"] = p.return_tolerance.relative_residual;
+  if (const auto* hypo = std::get_if<DefaultHypoParams>(&p.equation_of_state)) {
+    cm["equation_of_state"] = {
+        {"type", "default_hypo"},
+        {"default_hypo",
+         {{"modulus", hypo->modulus == HypoModulus::bulk ? "bulk" : "report_eq2_lame"}}}};
+  } else {
+    const auto& mg = std::get<MieGruneisenParams>(p.equation_of_state);
+    cm["equation_of_state"] = {
+        {"type", "mie_gruneisen"},
+        {"mie_gruneisen",
+         {{"C0", mg.C0},
+          {"Gamma0", mg.Gamma0},
+          {"S_alpha", mg.S_alpha},
+          {"energy", mg.energy == MieGruneisenEnergy::evolved ? "evolved" : "cp_temperature"}}}};
+  }
+  const auto& f = p.flow_stress;
+  cm["flow_stress"] = {
+      {"type", "johnson_cook"},
+      {"A", f.A},
+      {"B", f.B},
+      {"n", f.n},
+      {"C", f.C},
+      {"m", f.m},
+      {"reference_strain_rate", f.reference_strain_rate},
+      {"rate_form", f.rate_form == JohnsonCookRateForm::clamped ? "clamped" : "report_2004"}};
+  cm["yield_condition"] = {{"type", "von_mises"}};
+  if (p.damage) {
+    const auto& d = *p.damage;
+    cm["damage"] = {{"type", "johnson_cook"},
+                    {"D1", d.D1},
+                    {"D2", d.D2},
+                    {"D3", d.D3},
+                    {"D4", d.D4},
+                    {"D5", d.D5},
+                    {"reference_strain_rate", d.reference_strain_rate},
+                    {"min_fracture_strain", d.min_fracture_strain}};
+  } else {
+    cm["damage"] = {{"type", "none"}};
+  }
+  cm["tepla"] = {{"enabled", p.tepla.enabled},
+                 {"critical_porosity", p.tepla.critical_porosity},
+                 {"initial_porosity", p.tepla.initial_porosity},
+                 {"evolve_porosity", p.tepla.evolve_porosity},
+                 {"nucleation_fraction", p.tepla.nucleation_fraction},
+                 {"nucleation_strain", p.tepla.nucleation_strain},
+                 {"nucleation_std", p.tepla.nucleation_std}};
+  cm["melting"] = {{"do_melting", p.melting.do_melting}};
+  cm["adiabatic_heating"] = {{"enabled", p.heating.enabled},
+                             {"taylor_quinney", p.heating.taylor_quinney}};
+  static constexpr const char* kChecks[] = {"none", "drucker", "becker", "drucker_becker"};
+  cm["stability_check"] = {
+      {"type", kChecks[static_cast<int>(p.stability.check)]},
+      {"normal_search",
+       p.stability.search == NormalSearch::principal_plane ? "principal_plane" : "full_sphere"},
+      {"rate_slope",
+       p.stability.rate_slope == RateSlope::constant_rate ? "constant_rate" : "algorithmic"}};
+  cm["erosion"] = {{"algorithm", std::string(erosion_name(p.erosion))}};
+  return j;
+}
+
+}  // namespace impact

@@ -1,0 +1,277 @@
+// The composed elastic_plastic model along strain paths, against closed forms and independently
+// derived numbers (issue 2's list): elastic uniaxial strain, uniaxial stress to 20 % against the
+// Johnson-Cook curve, objectivity under rigid rotation, heating, damage, melting, failure.
+#include "models/material/elastic_plastic.hpp"
+
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "models/material/material.hpp"
+
+using namespace impact;
+
+namespace {
+
+const std::string kMaterialFile = std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json";
+
+Material al6061(const Json& overrides = Json::object()) {
+  return load_material(kMaterialFile, overrides);
+}
+
+// No failure detection, no heating: the pure hypoelastic-plastic response.
+const Json kPlain = Json::parse(R"({"constitutive_model": {
+    "erosion": {"algorithm": "none"}, "adiabatic_heating": {"enabled": false}}})");
+
+Mat3 diag(double a, double b, double c) {
+  return Vec3(a, b, c).asDiagonal();
+}
+
+// Exact F for a constant diagonal velocity gradient over dt.
+Mat3 stretch(const Mat3& F, const Vec3& rates, double dt) {
+  return diag(std::exp(rates(0) * dt), std::exp(rates(1) * dt), std::exp(rates(2) * dt)) * F;
+}
+
+// One step of uniaxial stress along x at axial rate `rate`: the lateral rates are found by a
+// fixed-point iteration with the elastic lateral stiffness (sigma_yy = sigma_zz = 0 to 1e-6 Pa).
+StepReport uniaxial_stress_step(const ElasticPlastic& model, const PointState& s0, double rate,
+                                double dt, PointState& s1, double& lateral_rate) {
+  const auto& p = model.params();
+  // d sigma_yy / d L_yy with L_yy = L_zz moving together, elastic: 2 (K + mu/3) dt.
+  const double lateral_stiffness = 2.0 * (p.bulk_modulus + p.shear_modulus / 3.0) * dt;
+  StepReport r;
+  for (int it = 0; it < 50; ++it) {
+    const Vec3 rates(rate, lateral_rate, lateral_rate);
+    r = model.update(s0, Mat3(rates.asDiagonal()), stretch(s0.F, rates, dt), dt, s1);
+    const double residual = 0.5 * (s1.stress(1, 1) + s1.stress(2, 2));
+    if (std::abs(residual) < 1e-6) break;
+    lateral_rate -= residual / lateral_stiffness;
+  }
+  return r;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(material_elastic_plastic)
+
+BOOST_AUTO_TEST_CASE(elastic_uniaxial_strain_gives_K_plus_four_thirds_mu_and_lambda) {
+  const Material m = al6061(kPlain);
+  const double K = 66.4e9, mu = 26e9, rate = 10.0, dt = 1e-6;
+  PointState s = m.model.initial_state(294.0), s1;
+  for (int i = 0; i < 100; ++i) {
+    const Vec3 rates(rate, 0.0, 0.0);
+    const StepReport r =
+        m.model.update(s, Mat3(rates.asDiagonal()), stretch(s.F, rates, dt), dt, s1);
+    BOOST_REQUIRE(r.status == UpdateStatus::ok);
+    BOOST_REQUIRE(!r.plastic);
+    s = s1;
+  }
+  const double eps = rate * 100 * dt;  // logarithmic strain, exact for constant D
+  BOOST_TEST(s.stress(0, 0) == (K + 4.0 * mu / 3.0) * eps, boost::test_tools::tolerance(1e-10));
+  BOOST_TEST(s.stress(1, 1) == (K - 2.0 * mu / 3.0) * eps, boost::test_tools::tolerance(1e-10));
+  BOOST_TEST(s.stress(2, 2) == (K - 2.0 * mu / 3.0) * eps, boost::test_tools::tolerance(1e-10));
+}
+
+BOOST_AUTO_TEST_CASE(report_eq2_lame_option_reproduces_the_2004_uniaxial_strain_modulus) {
+  const Material m = al6061(Json::parse(R"({"constitutive_model": {"equation_of_state":
+      {"default_hypo": {"modulus": "report_eq2_lame"}}, "erosion": {"algorithm": "none"}}})"));
+  const double K = 66.4e9, mu = 26e9, eps = 1e-4;
+  const Vec3 rates(eps / 1e-6, 0.0, 0.0);
+  PointState s1;
+  m.model.update(m.model.initial_state(294.0), Mat3(rates.asDiagonal()),
+                 stretch(Mat3::Identity(), rates, 1e-6), 1e-6, s1);
+  // lambda + 4 mu / 3 = K + 2 mu / 3: the report's eq. (2) as printed.
+  BOOST_TEST(s1.stress(0, 0) == (K + 2.0 * mu / 3.0) * eps, boost::test_tools::tolerance(1e-10));
+}
+
+BOOST_AUTO_TEST_CASE(uniaxial_stress_to_twenty_percent_follows_the_johnson_cook_curve) {
+  // Independent check: in uniaxial stress ep = eps - sigma/E (log strains, small elastic part)
+  // and, once yielded, the plastic rate equals the applied rate to within sigma_dot/E. The axial
+  // stress must equal sigma_JC(eps - sigma/E, rate, 294 K) within 0.1 % at every step past yield.
+  const Material m = al6061(kPlain);
+  const auto& p = m.model.params();
+  const double E =
+      9.0 * p.bulk_modulus * p.shear_modulus / (3.0 * p.bulk_modulus + p.shear_modulus);
+  const double rate = 1000.0, dt = 2e-7;
+  const int steps = 1000;  // 20 % strain
+  PointState s = m.model.initial_state(294.0), s1;
+  double lateral_rate = -0.5 * rate, worst = 0.0;
+  for (int i = 1; i <= steps; ++i) {
+    const StepReport r = uniaxial_stress_step(m.model, s, rate, dt, s1, lateral_rate);
+    BOOST_REQUIRE(r.status == UpdateStatus::ok);
+    s = s1;
+    BOOST_TEST(std::abs(s.stress(1, 1)) < 1.0);  // lateral stresses vanish (Pa)
+    BOOST_TEST(std::abs(s.stress(2, 2)) < 1.0);
+    const double eps = rate * dt * i;
+    const double sigma = s.stress(0, 0);
+    const double ep = eps - sigma / E;
+    if (ep < 2e-3) continue;  // past the elastic-plastic transition
+    const double jc = johnson_cook(p.flow_stress, ep, rate, 294.0).value;
+    worst = std::max(worst, std::abs(sigma - jc) / jc);
+  }
+  BOOST_TEST(worst < 1e-3);
+  BOOST_TEST(s.plastic_strain > 0.19);
+  BOOST_TEST_MESSAGE("uniaxial stress: worst relative deviation from JC = " << worst);
+}
+
+BOOST_AUTO_TEST_CASE(rigid_rotation_of_a_stressed_point_rotates_the_stress_exactly) {
+  const Material m = al6061(kPlain);
+  PointState s = m.model.initial_state(294.0), s1;
+  // Pre-stress by an elastic uniaxial-strain step with some shear.
+  Mat3 L;
+  L << 50.0, 20.0, 0.0, 0.0, -10.0, 5.0, 0.0, 0.0, 5.0;
+  const double dt0 = 1e-5;
+  m.model.update(s, L, (Mat3::Identity() + L * dt0), dt0, s1);  // F via any exact path
+  s = s1;
+  const Mat3 sigma0 = s.stress;
+  const Mat3 F0 = s.F;
+  // Spin about z through 90 degrees in 1000 steps with the exact rotation F = Q(t) F0.
+  const int steps = 1000;
+  const double omega = 1e3, dt = (M_PI / 2.0) / omega / steps;
+  Mat3 W = Mat3::Zero();
+  W(0, 1) = -omega;
+  W(1, 0) = omega;
+  for (int i = 1; i <= steps; ++i) {
+    const double a = omega * dt * i;
+    Mat3 Q = Mat3::Identity();
+    Q(0, 0) = std::cos(a);
+    Q(0, 1) = -std::sin(a);
+    Q(1, 0) = std::sin(a);
+    Q(1, 1) = std::cos(a);
+    BOOST_REQUIRE(m.model.update(s, W, Q * F0, dt, s1).status == UpdateStatus::ok);
+    s = s1;
+  }
+  Mat3 Q90;
+  Q90 << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  const Mat3 expected = Q90 * sigma0 * Q90.transpose();
+  BOOST_TEST((s.stress - expected).norm() <= 1e-10 * sigma0.norm());
+  BOOST_TEST(von_mises(s.stress) == von_mises(sigma0), boost::test_tools::tolerance(1e-10));
+  BOOST_TEST(s.stress.trace() == sigma0.trace(), boost::test_tools::tolerance(1e-10));
+}
+
+BOOST_AUTO_TEST_CASE(adiabatic_heating_equals_chi_sigma_dot_Dp_dt_over_rho_cp) {
+  const Material m =
+      al6061(Json::parse(R"({"constitutive_model": {"erosion": {"algorithm": "none"}}})"));
+  const auto& p = m.model.params();
+  PointState s = m.model.initial_state(294.0), s1;
+  double lateral_rate = -0.5 * 1e4;
+  for (int i = 0; i < 300; ++i) {  // into the plastic range at 1e4 /s
+    uniaxial_stress_step(m.model, s, 1e4, 1e-7, s1, lateral_rate);
+    s = s1;
+  }
+  const StepReport r = uniaxial_stress_step(m.model, s, 1e4, 1e-7, s1, lateral_rate);
+  BOOST_REQUIRE(r.plastic);
+  // D^p = ep_dot (3/2) s / sigma_eq with the end-of-step stress; sigma:D^p dt = sigma_eq d_ep.
+  const Mat3 dev = deviator(s1.stress);
+  const double q = von_mises(s1.stress);
+  const Mat3 Dp = s1.plastic_strain_rate * 1.5 * dev / q;
+  const double rho = p.density / s1.F.determinant();
+  const double expected = 0.9 * ddot(s1.stress, Dp) * 1e-7 / (rho * p.specific_heat);
+  BOOST_TEST(s1.temperature - s.temperature == expected, boost::test_tools::tolerance(1e-9));
+}
+
+BOOST_AUTO_TEST_CASE(damage_at_constant_triaxiality_is_plastic_strain_over_fracture_strain) {
+  // Uniaxial stress keeps triaxiality at 1/3; isothermal, D4 = 0: D = ep / eps_f with
+  // eps_f = D1 + D2 exp(D3 / 3) = 0.470 (verification_problems.md 4.8).
+  const Material m = al6061(kPlain);
+  PointState s = m.model.initial_state(294.0), s1;
+  double lateral_rate = -500.0;
+  for (int i = 0; i < 1000; ++i) {
+    uniaxial_stress_step(m.model, s, 1000.0, 2e-7, s1, lateral_rate);
+    s = s1;
+  }
+  const double eps_f = -0.77 + 1.45 * std::exp(-0.47 / 3.0);
+  BOOST_TEST(s.damage == s.plastic_strain / eps_f, boost::test_tools::tolerance(1e-5));
+}
+
+BOOST_AUTO_TEST_CASE(melting_zeroes_the_deviator_and_keeps_the_pressure) {
+  const Material m = al6061(kPlain);
+  PointState s = m.model.initial_state(925.0), s1;
+  const Vec3 rates(1e3, 0.0, 0.0);
+  const StepReport r =
+      m.model.update(s, Mat3(rates.asDiagonal()), stretch(s.F, rates, 1e-7), 1e-7, s1);
+  BOOST_TEST(s1.melted);
+  BOOST_TEST(!r.plastic);
+  BOOST_TEST(deviator(s1.stress).norm() == 0.0);
+  BOOST_TEST(mean(s1.stress) == 66.4e9 * 1e-4, boost::test_tools::tolerance(1e-10));
+}
+
+BOOST_AUTO_TEST_CASE(drucker_check_fails_a_point_softening_adiabatically_at_700_K) {
+  // At T = 700 K and ep = 0.3, thermal softening under adiabatic heating beats strain hardening
+  // (H < 0, see stability tests); with erosion on, the point is flagged with cause drucker.
+  const Material m = al6061(Json::parse(
+      R"({"constitutive_model": {"stability_check": {"type": "drucker"}, "tepla": {"enabled": false}}})"));
+  PointState s = m.model.initial_state(700.0), s1;
+  s.plastic_strain = 0.3;
+  double lateral_rate = -5e3;
+  FailureCause cause = FailureCause::none;
+  for (int i = 0; i < 200 && cause == FailureCause::none; ++i) {
+    cause = uniaxial_stress_step(m.model, s, 1e4, 1e-7, s1, lateral_rate).failure;
+    s = s1;
+  }
+  BOOST_TEST(to_string(cause) == "drucker");
+  BOOST_TEST(s.failed);
+}
+
+BOOST_AUTO_TEST_CASE(hardening_point_at_room_temperature_is_never_flagged_by_drucker) {
+  const Material m = al6061(Json::parse(
+      R"({"constitutive_model": {"stability_check": {"type": "drucker"}, "tepla": {"enabled": false}}})"));
+  PointState s = m.model.initial_state(294.0), s1;
+  double lateral_rate = -500.0;
+  for (int i = 0; i < 1000; ++i) {
+    BOOST_REQUIRE(uniaxial_stress_step(m.model, s, 1000.0, 2e-7, s1, lateral_rate).failure ==
+                  FailureCause::none);
+    s = s1;
+  }
+  BOOST_TEST(!s.failed);
+}
+
+BOOST_AUTO_TEST_CASE(allow_no_tension_drops_the_tensile_mean_stress_of_a_failed_point) {
+  const Material m = al6061(
+      Json::parse(R"({"constitutive_model": {"erosion": {"algorithm": "AllowNoTension"}}})"));
+  PointState s = m.model.initial_state(294.0), s1;
+  s.failed = true;
+  const Vec3 rates(1e3, 1e3, 1e3);  // hydrostatic tension
+  m.model.update(s, Mat3(rates.asDiagonal()), stretch(s.F, rates, 1e-7), 1e-7, s1);
+  BOOST_TEST(mean(s1.stress) == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(mie_gruneisen_pressure_in_uniaxial_compression_matches_the_eos) {
+  const Material m = al6061(Json::parse(R"({"constitutive_model": {
+      "equation_of_state": {"type": "mie_gruneisen"}, "erosion": {"algorithm": "none"}}})"));
+  PointState s = m.model.initial_state(294.0), s1;
+  const Vec3 rates(-1e4, 0.0, 0.0);
+  for (int i = 0; i < 100; ++i) {
+    BOOST_REQUIRE(
+        m.model.update(s, Mat3(rates.asDiagonal()), stretch(s.F, rates, 1e-7), 1e-7, s1).status ==
+        UpdateStatus::ok);
+    s = s1;
+  }
+  const auto& mg = std::get<MieGruneisenParams>(m.model.params().equation_of_state);
+  const double rho = 2700.0 / s.F.determinant();
+  BOOST_TEST(-mean(s.stress) == mie_gruneisen_pressure(mg, 2700.0, rho, s.internal_energy),
+             boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(s.internal_energy > 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(negative_jacobian_is_reported_not_integrated) {
+  const Material m = al6061();
+  PointState s1;
+  const StepReport r =
+      m.model.update(m.model.initial_state(294.0), Mat3::Zero(), diag(-1.0, 1.0, 1.0), 1e-7, s1);
+  BOOST_TEST(to_string(r.status) == "negative Jacobian det F <= 0");
+}
+
+BOOST_AUTO_TEST_CASE(resolved_parameters_read_back_to_the_same_material) {
+  // to_json must name every parameter: reading its output again reproduces it exactly, including
+  // values that differ from the defaults.
+  const Material m = al6061(Json::parse(R"({"constitutive_model": {
+      "tepla": {"evolve_porosity": true, "nucleation_strain": 0.25},
+      "equation_of_state": {"type": "mie_gruneisen"}, "return_algorithm": "report_2004"}})"));
+  const Json first = to_json(m);
+  const Json second = to_json(read_material(first, "resolved"));
+  BOOST_TEST(first == second);
+  BOOST_TEST(first["constitutive_model"]["tepla"]["nucleation_strain"].get<double>() == 0.25);
+  BOOST_TEST(first["constitutive_model"]["equation_of_state"]["type"] == "mie_gruneisen");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
