@@ -1,0 +1,91 @@
+// JSON reading: every problem names the file and the JSON key path, all problems are reported at
+// once, unknown keys get a nearest-key suggestion.
+#include "models/core/input.hpp"
+
+#include <boost/test/unit_test.hpp>
+
+using namespace impact;
+
+namespace {
+
+std::string problems_text(const InputProblems& problems) {
+  try {
+    problems.throw_if_any();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(core_input)
+
+BOOST_AUTO_TEST_CASE(a_valid_object_reads_without_problems) {
+  const Json j = Json::parse(R"({"a": 2.5, "flag": true, "kind": "x", "sub": {"b": 1}})");
+  InputProblems problems("f.json");
+  JsonReader r(j, "", problems);
+  BOOST_TEST(r.number("a", Range::positive(), "") == 2.5);
+  BOOST_TEST(r.boolean_or("flag", false, "") == true);
+  BOOST_TEST(r.choice("kind", {"x", "y"}, "") == "x");
+  JsonReader sub = r.child("sub", "");
+  BOOST_TEST(sub.number_or("b", 0.0, Range::any(), "") == 1.0);
+  BOOST_TEST(sub.number_or("c", 7.0, Range::any(), "") == 7.0);
+  sub.reject_unknown_keys();
+  r.reject_unknown_keys();
+  BOOST_TEST(problems.empty());
+}
+
+BOOST_AUTO_TEST_CASE(every_problem_is_reported_with_file_and_key_path) {
+  const Json j = Json::parse(R"({"a": -1, "b": "text", "sub": {"kind": "z", "extra": 1}})");
+  InputProblems problems("model.json");
+  JsonReader r(j, "", problems);
+  r.number("a", Range::positive(), "a positive thing [Pa]");
+  r.number("b", Range::any(), "");
+  r.number("missing", Range::closed(0.0, 1.0), "");
+  JsonReader sub = r.child("sub", "");
+  sub.choice("kind", {"x", "y"}, "the kind");
+  sub.reject_unknown_keys();
+  r.reject_unknown_keys();
+  const std::string text = problems_text(problems);
+  BOOST_TEST(contains(
+      text, "model.json: /a: expected a number in (0, inf), got -1 (a positive thing [Pa])"));
+  BOOST_TEST(
+      contains(text, "model.json: /b: expected a number in (-inf, inf), got the string \"text\""));
+  BOOST_TEST(contains(text, "model.json: /missing: missing required number in [0, 1]"));
+  BOOST_TEST(contains(text, "model.json: /sub/kind: unknown name \"z\"; known: x, y"));
+  BOOST_TEST(contains(text, "model.json: /sub/extra: unknown key"));
+}
+
+BOOST_AUTO_TEST_CASE(unknown_key_suggests_the_nearest_known_key) {
+  const Json j = Json::parse(R"({"densty": 2700})");
+  InputProblems problems("m.json");
+  JsonReader r(j, "", problems);
+  r.number_or("density", 1.0, Range::positive(), "");
+  r.reject_unknown_keys();
+  BOOST_TEST(contains(problems_text(problems), "/densty: unknown key (did you mean density?)"));
+}
+
+BOOST_AUTO_TEST_CASE(nearest_name_ignores_names_that_are_too_different) {
+  BOOST_TEST(!nearest_name("temperature", {"A", "B", "n"}).has_value());
+  BOOST_TEST(nearest_name("johnson_cok", {"johnson_cook", "none"}).value() == "johnson_cook");
+}
+
+BOOST_AUTO_TEST_CASE(syntax_errors_and_missing_files_name_the_file) {
+  BOOST_CHECK_EXCEPTION(load_json_file("/nonexistent/x.json"), InputError, [](const InputError& e) {
+    return contains(e.what(), "/nonexistent/x.json: cannot open the file");
+  });
+}
+
+BOOST_AUTO_TEST_CASE(range_descriptions_show_open_and_closed_ends) {
+  BOOST_TEST(Range::open_closed(0.0, 1.0).describe() == "(0, 1]");
+  BOOST_TEST(Range::closed(0.0, 1.0).contains(1.0));
+  BOOST_TEST(!Range::open(0.0, 1.0).contains(1.0));
+  BOOST_TEST(!Range::any().contains(std::numeric_limits<double>::quiet_NaN()));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
