@@ -1,0 +1,128 @@
+// Point-update throughput of the constitutive library (docs/performance.md). Not a test: timings
+// never decide pass or fail. Usage: models_benchmark [--points N] [--steps S]
+//
+// Each scenario advances N independent points S steps with the MPM's forward-Euler F update
+// (I + L dt) F and a velocity gradient with spin, so every update includes the polar
+// decomposition and both rotations. Single thread: the figure is updates per second per core.
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "models/kinematics/polar_decomposition.hpp"
+#include "models/material/material.hpp"
+
+using namespace impact;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Scenario {
+  const char* name;
+  const char* overrides;  // merge patch on the shipped material
+  double axial_rate;      // [1/s]
+  double dt;              // [s]
+  int warmup_steps;       // steps before timing (to reach the plastic range)
+};
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Mat3 velocity_gradient(double rate, int i) {
+  // Uniaxial-strain rate along x with a point-dependent spin about z and a little shear.
+  const double w = 0.2 * rate * (1.0 + 0.001 * (i % 17));
+  Mat3 L = Mat3::Zero();
+  L(0, 0) = rate;
+  L(0, 1) = 0.1 * rate - w;
+  L(1, 0) = w;
+  return L;
+}
+
+void run(const Scenario& sc, const std::string& material_file, int points, int steps) {
+  const Material m = load_material(material_file, Json::parse(sc.overrides));
+  std::vector<PointState> state(points, m.model.initial_state(294.0));
+  std::vector<PointState> next(points);
+  std::vector<Mat3> L(points);
+  for (int i = 0; i < points; ++i) L[i] = velocity_gradient(sc.axial_rate, i);
+
+  long plastic = 0, failed = 0, iterations = 0;
+  const auto advance = [&](bool count) {
+    for (int i = 0; i < points; ++i) {
+      const Mat3 F1 = (Mat3::Identity() + L[i] * sc.dt) * state[i].F;
+      const StepReport r = m.model.update(state[i], L[i], F1, sc.dt, next[i]);
+      if (count) {
+        plastic += r.plastic;
+        iterations += r.return_iterations;
+      }
+    }
+    std::swap(state, next);
+  };
+  for (int s = 0; s < sc.warmup_steps; ++s) advance(false);
+  const auto t0 = Clock::now();
+  for (int s = 0; s < steps; ++s) advance(true);
+  const double elapsed = seconds_since(t0);
+  for (const auto& p : state) failed += p.failed;
+  const double updates = double(points) * steps;
+  std::printf("%-34s %10.2f M/s %8.1f ns %7.1f%% %8.2f %7ld\n", sc.name, updates / elapsed / 1e6,
+              elapsed / updates * 1e9, 100.0 * plastic / updates,
+              plastic ? double(iterations) / plastic : 0.0, failed);
+}
+
+void run_parts(int points) {
+  // Where the time goes: the pieces of one plastic update, timed alone.
+  std::vector<Mat3> F(points);
+  for (int i = 0; i < points; ++i) {
+    F[i] = Mat3::Identity() + velocity_gradient(1e4, i) * 1e-5 * (1 + i % 7);
+  }
+  double sink = 0.0;
+  auto t0 = Clock::now();
+  for (int rep = 0; rep < 10; ++rep)
+    for (int i = 0; i < points; ++i) sink += polar_decomposition(F[i]).R(0, 1);
+  std::printf("%-34s %10.1f ns\n", "polar decomposition",
+              seconds_since(t0) / (10.0 * points) * 1e9);
+
+  const Material m =
+      load_material(std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json");
+  const auto& jc = m.model.params().flow_stress;
+  t0 = Clock::now();
+  for (int rep = 0; rep < 10; ++rep)
+    for (int i = 0; i < points; ++i)
+      sink += johnson_cook(jc, 0.01 + 1e-6 * i, 1e4 + i, 400.0).value;
+  std::printf("%-34s %10.1f ns\n", "Johnson-Cook flow stress + slopes",
+              seconds_since(t0) / (10.0 * points) * 1e9);
+  if (sink == 42.0) std::puts("");  // keep the loops alive
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int points = 20000, steps = 100;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--points") == 0 && i + 1 < argc) {
+      points = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
+      steps = std::atoi(argv[++i]);
+    } else {
+      std::fprintf(stderr, "usage: models_benchmark [--points N] [--steps S]\n");
+      return 1;
+    }
+  }
+  const std::string file = std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json";
+  const Scenario scenarios[] = {
+      {"elastic", R"({"constitutive_model": {"erosion": {"algorithm": "none"}}})", 1.0, 1e-8, 0},
+      {"plastic (JC rate + temperature)",
+       R"({"constitutive_model": {"erosion": {"algorithm": "none"}, "damage": {"type": "none"}}})",
+       1e4, 1e-8, 200},
+      {"plastic + damage + drucker_becker",
+       R"({"constitutive_model": {"erosion": {"algorithm": "AllowNoTension"}}})", 1e4, 1e-8, 200},
+  };
+  std::printf("models_benchmark: %d points x %d steps, one thread\n", points, steps);
+  std::printf("%-34s %12s %11s %8s %8s %7s\n", "scenario", "updates", "per update", "plastic",
+              "iters", "failed");
+  for (const auto& sc : scenarios) run(sc, file, points, steps);
+  std::printf("\nparts of a plastic update\n");
+  run_parts(points);
+  return 0;
+}
