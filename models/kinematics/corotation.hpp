@@ -12,7 +12,8 @@
 //
 // The midpoint rotation makes the D rotation second order in dt (Flanagan & Taylor 1987); the
 // average of two rotations about one axis is cos(dtheta/2) times the rotation through the average
-// angle, so nearest_rotation recovers exactly that rotation.
+// angle, so nearest_rotation recovers exactly that rotation; midpoint_rotation gets it in closed
+// form from the quaternion of R_n^T R_{n+1}.
 //
 // The 2004 code un-rotated and re-rotated with the same R_{n+1}: the two rotations cancel and the
 // stress is never carried with the material (a stressed body spun rigidly keeps its lab-frame
@@ -37,7 +38,12 @@ struct Corotation {
   Mat3 R_mid;  ///< R_{n+1/2}: rotates D into the unrotated frame
 };
 
-/// The rotations of one Green-Naghdi step; R_new from polar_decomposition(F_new), det F_new > 0.
+/// R_old (R_old^T R_new)^{1/2}: the rotation halfway from R_old to R_new, by the square root of the
+/// unit quaternion of R_old^T R_new (closed form, no iteration). Equals
+/// nearest_rotation((R_old + R_new) / 2), which is used beyond a 130-degree step.
+Mat3 midpoint_rotation(const Mat3& R_old, const Mat3& R_new);
+
+/// The rotations of one Green-Naghdi step; R_new = polar_rotation(F_new, R_old), det F_new > 0.
 Corotation corotation(const Mat3& R_old, const Mat3& F_new);
 
 /// R^T a R: lab frame -> unrotated frame.

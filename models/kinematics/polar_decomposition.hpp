@@ -34,6 +34,19 @@ struct PolarDecomposition {
 /// steps.
 PolarDecomposition polar_decomposition(const Mat3& F);
 
+/// The rotation R of F = R U, warm-started from a nearby rotation `guess` (in an explicit solver,
+/// the previous step's R: F_{n+1} rotates little in one step). Newton on the rotation vector phi
+/// of R = guess * cay(phi) for the condition skew(R^T F) = 0: with S = R^T F the correction solves
+///   ((tr S) I - sym S) delta = 2 axial(skew S)
+/// (from [d]x S + S [d]x = [((tr S) I - S) d]x for symmetric S) and is applied as the exactly
+/// orthogonal Cayley rotation through 2 atan(|delta|/2). Quadratic convergence: two or three steps
+/// from a guess within a few degrees, each with no square root of a matrix and one 3x3 solve. A
+/// final Newton-Schulz step removes the round-off drift of repeated products. Falls back to
+/// polar_decomposition (Higham) when the guess is far (no convergence in 8 steps, or R^T F not
+/// positive definite, i.e. a different stationary rotation), so the answer is always the polar
+/// factor. `iterations`, when given, receives the steps taken (fallback steps included).
+Mat3 polar_rotation(const Mat3& F, const Mat3& guess, int* iterations = nullptr);
+
 /// The rotation nearest to a nearly orthogonal Q (singular values in (0, sqrt 3), e.g. the average
 /// (R_n + R_{n+1})/2 of two rotations, whose singular values are cos of half the step's rotation
 /// angle): Newton-Schulz iteration X <- X (3 I - X^T X) / 2 until ||X^T X - I||_F < 1e-15 (at most

@@ -3,6 +3,8 @@
 // exact midpoint rotation of two rotations about one axis.
 #include "models/kinematics/polar_decomposition.hpp"
 
+#include "models/kinematics/corotation.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -120,6 +122,46 @@ BOOST_AUTO_TEST_CASE(nearest_rotation_agrees_with_the_polar_factor_of_a_perturbe
     Mat3 Q = rodrigues(Vec3(u(gen), u(gen), u(gen)), 3.0 * u(gen));
     for (int i = 0; i < 9; ++i) Q(i / 3, i % 3) += 0.05 * u(gen);
     BOOST_TEST((nearest_rotation(Q) - polar_decomposition(Q).R).norm() < 1e-14);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(warm_started_rotation_equals_the_cold_polar_factor_from_any_guess) {
+  // F = R1 diag(s) R2 with stretches in [0.5, 2]; guesses: the answer rotated by 1e-6, 1e-2, 0.5
+  // and 3 rad (the last two far: the fallback must still return the polar factor). Near guesses
+  // must converge in at most 3 Newton steps; every result is orthogonal to 1e-14.
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Mat3 R1 = rodrigues(Vec3(u(gen), u(gen), u(gen)), 3.0 * u(gen));
+    const Mat3 R2 = rodrigues(Vec3(u(gen), u(gen), u(gen)), 3.0 * u(gen));
+    const Mat3 F =
+        R1 *
+        Vec3(std::exp(0.7 * u(gen)), std::exp(0.7 * u(gen)), std::exp(0.7 * u(gen))).asDiagonal() *
+        R2;
+    const Mat3 R = polar_decomposition(F).R;
+    for (double angle : {1e-6, 1e-2, 0.5, 3.0}) {
+      const Mat3 guess = rodrigues(Vec3(u(gen), u(gen), u(gen)), angle) * R;
+      int iterations = 0;
+      const Mat3 warm = polar_rotation(F, guess, &iterations);
+      BOOST_TEST_CONTEXT("trial " << trial << ", guess off by " << angle << " rad") {
+        BOOST_TEST((warm - R).norm() < 1e-13);
+        BOOST_TEST((warm.transpose() * warm - Mat3::Identity()).norm() < 1e-14);
+        if (angle <= 1e-2) BOOST_TEST(iterations <= 3);
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(midpoint_rotation_is_the_half_rotation_for_any_step_angle) {
+  // R_old rotated about a fixed axis by a; the midpoint must be R_old rotated by a/2, from tiny
+  // steps through the 130-degree switch to the Newton-Schulz form.
+  const Mat3 R_old = rodrigues(Vec3(0.3, -1.0, 0.4), 0.8);
+  const Vec3 axis(1.0, 2.0, 2.0);
+  for (double a : {1e-9, 1e-3, 0.3, 2.0, 2.4, 3.0}) {
+    const Mat3 mid = midpoint_rotation(R_old, R_old * rodrigues(axis, a));
+    BOOST_TEST_CONTEXT("step angle " << a) {
+      BOOST_TEST((mid - R_old * rodrigues(axis, 0.5 * a)).norm() < 1e-13);
+    }
   }
 }
 
