@@ -5,8 +5,26 @@
 
 namespace impact {
 
+JohnsonCookThermal johnson_cook_thermal(const JohnsonCookParams& p, double temperature) {
+  const double t_star = homologous_temperature(temperature, p.room_temperature, p.melt_temperature);
+  JohnsonCookThermal th;
+  if (t_star >= 1.0) {
+    th.factor = 0.0;
+  } else if (t_star > 0.0) {
+    const double t_m = std::pow(t_star, p.m);
+    th.factor = 1.0 - t_m;
+    th.d_factor = -p.m * t_m / t_star / (p.melt_temperature - p.room_temperature);
+  }
+  return th;
+}
+
 FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
                         double plastic_strain_rate, double temperature) {
+  return johnson_cook(p, plastic_strain, plastic_strain_rate, johnson_cook_thermal(p, temperature));
+}
+
+FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
+                        double plastic_strain_rate, const JohnsonCookThermal& thermal) {
   // Strain hardening A + B ep^n; its slope is unbounded at ep = 0 for n < 1.
   const double ep = plastic_strain > 0.0 ? plastic_strain : 0.0;
   double hardening = p.A;
@@ -31,17 +49,8 @@ FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
     d_rate_factor = p.C * rate_factor / (1.0 + rate_star) / p.reference_strain_rate;
   }
 
-  // Temperature factor.
-  const double t_star = homologous_temperature(temperature, p.room_temperature, p.melt_temperature);
-  double thermal_factor = 1.0;
-  double d_thermal_factor = 0.0;  // d factor / d T
-  if (t_star >= 1.0) {
-    thermal_factor = 0.0;
-  } else if (t_star > 0.0) {
-    const double t_m = std::pow(t_star, p.m);
-    thermal_factor = 1.0 - t_m;
-    d_thermal_factor = -p.m * t_m / t_star / (p.melt_temperature - p.room_temperature);
-  }
+  const double thermal_factor = thermal.factor;
+  const double d_thermal_factor = thermal.d_factor;  // d factor / d T
 
   FlowStress f;
   f.value = hardening * rate_factor * thermal_factor;

@@ -37,9 +37,21 @@ struct FlowStress {
   double d_temperature = 0.0;     ///< d sigma_y / d T [Pa/K]
 };
 
+/// The temperature factor 1 - T*^m and its slope d/dT [1/K]. A return mapping at fixed
+/// temperature evaluates it once instead of once per Newton step (it holds a pow).
+struct JohnsonCookThermal {
+  double factor = 1.0;
+  double d_factor = 0.0;
+};
+JohnsonCookThermal johnson_cook_thermal(const JohnsonCookParams& p, double temperature);
+
 /// sigma_y(ep, rate, T) and its derivatives; ep >= 0, rate >= 0 [1/s], T [K].
 FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
                         double plastic_strain_rate, double temperature);
+
+/// The same with the temperature factor evaluated beforehand (johnson_cook_thermal).
+FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
+                        double plastic_strain_rate, const JohnsonCookThermal& thermal);
 
 /// Homologous temperature T* = (T - T_room)/(T_melt - T_room), unclamped.
 inline double homologous_temperature(double temperature, double room, double melt) {

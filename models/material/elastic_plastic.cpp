@@ -100,13 +100,15 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     s_new = Mat3::Zero();  // no deviatoric strength once molten; the EOS still acts
     s1.melted = true;
   } else {
+    const JohnsonCookThermal thermal = johnson_cook_thermal(p_.flow_stress, T0);
     const auto flow_at = [&](double ep, double rate) {
-      return johnson_cook(p_.flow_stress, ep, rate, T0);
+      return johnson_cook(p_.flow_stress, ep, rate, thermal);
     };
     const Mat3 eta = deviator(D_hat);
-    const ReturnResult r =
-        radial_return(s_trial, mu, s0.plastic_strain, dt, flow_at, p_.return_algorithm,
-                      std::sqrt(2.0 / 3.0 * ddot(eta, eta)), p_.return_tolerance);
+    // The previous step's plastic rate is a close first guess under steady loading.
+    const ReturnResult r = radial_return(s_trial, mu, s0.plastic_strain, dt, flow_at,
+                                         p_.return_algorithm, std::sqrt(2.0 / 3.0 * ddot(eta, eta)),
+                                         p_.return_tolerance, s0.plastic_strain_rate * dt);
     report.return_iterations = r.iterations;
     if (!r.converged) report.status = UpdateStatus::return_mapping_not_converged;
     s_new = r.deviator;

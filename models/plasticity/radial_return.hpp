@@ -38,11 +38,14 @@ struct ReturnResult {
 };
 
 /// `flow(ep, rate)` returns the FlowStress at the step's temperature. `deviatoric_rate_norm` is
-/// sqrt(2/3 eta:eta), used only by ReturnAlgorithm::report_2004.
+/// sqrt(2/3 eta:eta), used only by ReturnAlgorithm::report_2004. `guess` is a first estimate of
+/// the increment d (e.g. the previous step's plastic rate times dt); 0 or a value outside the
+/// bracket selects the perfectly plastic estimate. It changes the iteration count, not the root.
 template <class Flow>
 ReturnResult radial_return(const Mat3& s_trial, double shear_modulus, double plastic_strain,
                            double dt, const Flow& flow, ReturnAlgorithm algorithm,
-                           double deviatoric_rate_norm = 0.0, const ReturnTolerance& tol = {}) {
+                           double deviatoric_rate_norm = 0.0, const ReturnTolerance& tol = {},
+                           double guess = 0.0) {
   ReturnResult out;
   const double q_trial = std::sqrt(1.5 * ddot(s_trial, s_trial));
   const FlowStress static_flow = flow(plastic_strain, 0.0);
@@ -71,6 +74,7 @@ ReturnResult radial_return(const Mat3& s_trial, double shear_modulus, double pla
   double hi = q_trial / three_mu;  // g(hi) <= 0
   // Perfectly plastic estimate: an upper bound, close to the root when hardening is small.
   double d = (q_trial - static_flow.value) / three_mu;
+  if (guess > 0.0 && guess < d) d = guess;
   FlowStress f;
   out.converged = false;
   for (int it = 1; it <= tol.max_iterations; ++it) {

@@ -86,6 +86,27 @@ BOOST_AUTO_TEST_CASE(rate_dependent_return_lands_on_the_yield_surface_at_the_ste
       }
 }
 
+BOOST_AUTO_TEST_CASE(a_first_guess_changes_the_iterations_not_the_root) {
+  // Guesses below, at and above the root (and outside the bracket) give the same increment to
+  // round-off; a guess within 1e-4 of the root (the previous step's rate under steady loading)
+  // needs no more Newton steps than the default start.
+  const auto p = al6061();
+  const auto flow = [&](double ep, double rate) { return johnson_cook(p, ep, rate, 400.0); };
+  const Mat3 s = trial_with_von_mises(600e6);
+  const double dt = 1e-8, ep0 = 0.05;
+  const auto plain = radial_return(s, kMu, ep0, dt, flow, ReturnAlgorithm::newton);
+  const double d = plain.delta_plastic_strain;
+  for (double guess : {0.5 * d, 0.9999 * d, d, 1.0001 * d, 2.0 * d, 1.0}) {
+    const auto r = radial_return(s, kMu, ep0, dt, flow, ReturnAlgorithm::newton, 0.0, {}, guess);
+    BOOST_TEST_CONTEXT("guess " << guess) {
+      BOOST_TEST(r.converged);
+      BOOST_TEST(r.delta_plastic_strain == d, boost::test_tools::tolerance(1e-12));
+      if (std::abs(guess - d) <= 1e-4 * d) BOOST_TEST(r.iterations <= plain.iterations);
+      if (guess == d) BOOST_TEST(r.iterations == 1);  // the first residual already meets it
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(unconverged_return_is_reported_not_accepted) {
   const auto p = al6061();
   const auto flow = [&](double ep, double rate) { return johnson_cook(p, ep, rate, 294.0); };
