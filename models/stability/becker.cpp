@@ -167,4 +167,47 @@ BeckerResult becker_check(const Tensor4& tangent, const Tensor4& elastic, const 
   return r;
 }
 
+BeckerResult becker_check_j2(double bulk_modulus, double shear_modulus, const Mat3& stress,
+                             double H) {
+  if (!stress.allFinite() || std::isnan(H)) {
+    return BeckerResult{std::numeric_limits<double>::quiet_NaN(), Vec3::Zero(), false};
+  }
+  Eigen::SelfAdjointEigenSolver<Mat3> eig;
+  eig.computeDirect(sym(stress));  // closed-form 3x3; eigenvalues ascending
+  const Vec3 lambda = eig.eigenvalues();
+  const Mat3& Q = eig.eigenvectors();
+  const Vec3 dev = lambda - Vec3::Constant(lambda.mean());
+  const double sigma_eq = std::sqrt(1.5 * dev.squaredNorm());
+  BeckerResult r;
+  r.normal = Q.col(2);
+  if (sigma_eq == 0.0) return r;  // no deviator: the tangent is elastic, indicator 1
+  const double mu = shear_modulus;
+  const double a = std::isinf(H) ? 0.0 : 4.0 * mu * mu / (3.0 * mu + H);
+  const double beta = (bulk_modulus + mu / 3.0) / (bulk_modulus + 4.0 * mu / 3.0);
+  const double n_max = 1.5 * dev(2) / sigma_eq, n_min = 1.5 * dev(0) / sigma_eq;
+  const double dn = n_max - n_min;
+  const auto ratio = [&](double x) {
+    const double nv = n_min + dn * x;
+    const double f = n_min * n_min + (n_max * n_max - n_min * n_min) * x - beta * nv * nv;
+    return 1.0 - a / mu * f;
+  };
+  double x_best = 1.0;
+  r.indicator = ratio(1.0);
+  const auto consider = [&](double x) {
+    const double v = ratio(x);
+    if (v < r.indicator) {
+      r.indicator = v;
+      x_best = x;
+    }
+  };
+  consider(0.0);
+  if (dn > 0.0) {
+    const double x_star = ((n_max + n_min) - 2.0 * beta * n_min) / (2.0 * beta * dn);
+    if (x_star > 0.0 && x_star < 1.0) consider(x_star);
+  }
+  r.normal = (std::sqrt(x_best) * Q.col(2) + std::sqrt(1.0 - x_best) * Q.col(0)).normalized();
+  r.unstable = r.indicator <= 0.0;
+  return r;
+}
+
 }  // namespace impact

@@ -73,4 +73,17 @@ struct BeckerResult {
 BeckerResult becker_check(const Tensor4& tangent, const Tensor4& elastic, const Mat3& stress,
                           NormalSearch search);
 
+/// Becker's principal-plane check for the associated J2 tangent
+/// C^ep = C^e - (2 mu)^2 N (x) N / (3 mu + H), N = 3 s / (2 sigma_eq), in closed form. By the
+/// matrix determinant lemma, with A^e = mu I + (K + mu/3) n (x) n and v = N n,
+///   det A^ep / det A^e = 1 - (a / mu) [ |v|^2 - beta (n.v)^2 ],  a = 4 mu^2 / (3 mu + H),
+///   beta = (K + mu/3) / (K + 4 mu/3).
+/// With n = sqrt(x) e_max + sqrt(1 - x) e_min the bracket is a concave quadratic in x = cos^2 t,
+///   f(x) = N_min^2 + (N_max^2 - N_min^2) x - beta (N_min + (N_max - N_min) x)^2,
+/// so the minimum over the plane is at x in {0, 1, x*} with f'(x*) = 0. Same answer as
+/// becker_check(elastic_plastic_tangent(...), ..., principal_plane) (tested), ~100 times cheaper:
+/// the MPM runs it on every plastic point of every step.
+BeckerResult becker_check_j2(double bulk_modulus, double shear_modulus, const Mat3& stress,
+                             double H);
+
 }  // namespace impact

@@ -27,13 +27,21 @@ StabilityResult check_stability(const StabilityParams& params, double bulk_modul
                                 const Mat3& Dp) {
   StabilityResult r;
   if (params.check == StabilityCheck::none) return r;
-  const Tensor4 tangent = elastic_plastic_tangent(bulk_modulus, shear_modulus, stress, H);
-  if (params.check == StabilityCheck::drucker || params.check == StabilityCheck::drucker_becker) {
-    r.drucker = drucker_check(tangent, D, Dp);
-  }
-  if (params.check == StabilityCheck::becker || params.check == StabilityCheck::drucker_becker) {
-    r.becker = becker_check(tangent, isotropic_elasticity(bulk_modulus, shear_modulus), stress,
-                            params.search);
+  const bool drucker =
+      params.check == StabilityCheck::drucker || params.check == StabilityCheck::drucker_becker;
+  const bool becker =
+      params.check == StabilityCheck::becker || params.check == StabilityCheck::drucker_becker;
+  // The 9x9 tangent only where a check needs it: Becker in Becker's plane has a closed form.
+  const bool need_tangent = drucker || (becker && params.search == NormalSearch::full_sphere);
+  const Tensor4 tangent = need_tangent
+                              ? elastic_plastic_tangent(bulk_modulus, shear_modulus, stress, H)
+                              : Tensor4::Zero();
+  if (drucker) r.drucker = drucker_check(tangent, D, Dp);
+  if (becker) {
+    r.becker = params.search == NormalSearch::principal_plane
+                   ? becker_check_j2(bulk_modulus, shear_modulus, stress, H)
+                   : becker_check(tangent, isotropic_elasticity(bulk_modulus, shear_modulus),
+                                  stress, params.search);
   }
   r.unstable = r.drucker.unstable || r.becker.unstable;
   return r;

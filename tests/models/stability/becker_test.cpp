@@ -354,4 +354,46 @@ BOOST_AUTO_TEST_CASE(non_finite_input_gives_a_nan_indicator_that_is_not_unstable
   BOOST_TEST(!r.unstable);
 }
 
+BOOST_AUTO_TEST_CASE(j2_closed_form_equals_the_numerical_plane_search) {
+  // The closed form (matrix determinant lemma, quadratic in cos^2 t) against the 36-sample sweep
+  // plus Brent refinement on the assembled 9x9 tangent, for rotated triaxial stresses and
+  // hardening from stiff to far past the critical softening: same indicator to 1e-7 and the
+  // same band normal up to the mirror symmetry of the plane.
+  const Tensor4 Ce = isotropic_elasticity(kK, kMu);
+  const double Hs[] = {5e9, 3e8, 0.0, -2e9, -1e10, -3e10};
+  const Vec3 principal[] = {Vec3(400e6, -50e6, -120e6), Vec3(300e6, 0.0, 0.0),
+                            Vec3(-350e6, 20e6, 80e6), Vec3(200e6, 100e6, -300e6)};
+  for (int k = 0; k < 4; ++k) {
+    const Mat3 Q = Eigen::AngleAxisd(0.3 + k, Vec3(1.0, 2.0, -0.5 * k).normalized()).matrix();
+    const Mat3 stress = Q * Mat3(principal[k].asDiagonal()) * Q.transpose() -
+                        1e8 * Mat3::Identity();  // a mean stress must not matter
+    for (const double H : Hs) {
+      const BeckerResult numeric = becker_check(elastic_plastic_tangent(kK, kMu, stress, H), Ce,
+                                                stress, NormalSearch::principal_plane);
+      const BeckerResult closed = becker_check_j2(kK, kMu, stress, H);
+      BOOST_TEST_CONTEXT("stress state " << k << ", H = " << H) {
+        BOOST_TEST(closed.indicator == numeric.indicator, boost::test_tools::tolerance(1e-7));
+        BOOST_TEST(closed.unstable == numeric.unstable);
+        BOOST_TEST(closed.normal.norm() == 1.0, boost::test_tools::tolerance(1e-9));
+        // Normals at +-t about e_max are mirror images with the same indicator: compare the
+        // components along e_max and e_min. Uniaxial (k = 1) has a cone: any member is right.
+        const Eigen::SelfAdjointEigenSolver<Mat3> eig(stress);
+        if (k != 1 && closed.indicator < 0.999) {
+          for (int c : {0, 2}) {
+            const Vec3 e = eig.eigenvectors().col(c);
+            BOOST_TEST(std::abs(closed.normal.dot(e)) == std::abs(numeric.normal.dot(e)),
+                       boost::test_tools::tolerance(1e-5));
+          }
+        }
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(j2_closed_form_of_a_deviator_free_state_is_elastic) {
+  const BeckerResult r = becker_check_j2(kK, kMu, -2e9 * Mat3::Identity(), -1e10);
+  BOOST_TEST(r.indicator == 1.0);
+  BOOST_TEST(!r.unstable);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
