@@ -94,8 +94,8 @@ Material read_material(const Json& document, const std::string& file) {
       p.damage = read_johnson_cook_damage(*damage, p.room_temperature, p.melt_temperature);
     } else {
       // "none" switches damage off by overlay while the constants stay in the file for later.
-      for (const char* key : {"D1", "D2", "D3", "D4", "D5", "reference_strain_rate",
-                              "min_fracture_strain"}) {
+      for (const char* key :
+           {"D1", "D2", "D3", "D4", "D5", "reference_strain_rate", "min_fracture_strain"}) {
         damage->ignore(key);
       }
       damage->reject_unknown_keys();
