@@ -88,6 +88,8 @@ std::string_view to_string(FailureCause);
 
 class ElasticPlastic {
  public:
+  /// A placeholder with no properties, to be assigned a configured model before use.
+  ElasticPlastic() = default;
   explicit ElasticPlastic(ElasticPlasticParams params) : p_(std::move(params)) {}
 
   const ElasticPlasticParams& params() const { return p_; }

@@ -1,0 +1,6 @@
+#include "pointdriver/commands.hpp"
+namespace impact::pointdriver {
+int command_batch(const std::vector<std::string>&) {
+  return 1;
+}
+}  // namespace impact::pointdriver

@@ -1,0 +1,36 @@
+// A small command-line option parser: declared options only (unknown ones are an error), values
+// that may repeat (--y a --y b) or take several words (--paths a.json b.json), positionals.
+#pragma once
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace impact::pointdriver {
+
+struct OptionSpec {
+  std::string name;  ///< e.g. "--out"; aliases separated by '|': "-o|--output"
+  int arity = 1;     ///< 0: a flag; 1: one value; -1: every following word up to the next option
+};
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Options {
+  std::map<std::string, std::vector<std::string>> values;  ///< by the first alias
+  std::vector<std::string> positional;
+  bool help = false;
+
+  bool has(const std::string& name) const { return values.count(name) != 0; }
+  std::string get(const std::string& name, const std::string& fallback) const;
+  const std::vector<std::string>& all(const std::string& name) const;
+};
+
+/// Parses `args`; throws UsageError naming an unknown option or a missing value.
+Options parse_options(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs,
+                      std::size_t max_positional);
+
+}  // namespace impact::pointdriver

@@ -1,0 +1,107 @@
+// pointdriver run: one path, one CSV row per step, a summary beside it, a replay file on failure.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/options.hpp"
+#include "pointdriver/driver/driver.hpp"
+#include "pointdriver/output/csv_writer.hpp"
+
+namespace impact::pointdriver {
+
+namespace {
+
+const char* run_help =
+    "usage: pointdriver run PATH.json [-o OUT.csv] [--set JSON_MERGE_PATCH]...\n"
+    "Runs the path and writes one CSV row per step (header `name [unit]`, SI units; columns in\n"
+    "docs/pointdriver.md), OUT.summary.json (resolved path, how the run ended) and, when a step\n"
+    "cannot be solved after the cut-backs, OUT.replay.json: the state at the start of that step "
+    "as\n"
+    "a path file that reproduces it. Default OUT: the path file's name with .csv, in the current\n"
+    "directory. --set applies a JSON merge patch to the path before validation (repeatable).\n"
+    "Exit codes: 0 done (including a failure stopped by the failure policy), 1 usage, 2 input\n"
+    "error, 3 a step could not be solved.\n";
+
+const char* cause_name(FailureCause c) {
+  return to_string(c).data();
+}
+
+}  // namespace
+
+int command_run(const std::vector<std::string>& args) {
+  Options o;
+  try {
+    o = parse_options(args, {{"-o|--output", 1}, {"--set", 1}}, 1);
+  } catch (const UsageError& e) {
+    std::cerr << "pointdriver run: " << e.what() << '\n' << run_help;
+    return 1;
+  }
+  if (o.help) {
+    std::cout << run_help;
+    return 0;
+  }
+  if (o.positional.empty()) {
+    std::cerr << "pointdriver run: missing PATH.json\n" << run_help;
+    return 1;
+  }
+  const std::string file = o.positional[0];
+  std::vector<Json> patches;
+  for (const auto& s : o.all("--set")) {
+    try {
+      patches.push_back(Json::parse(s));
+    } catch (const Json::parse_error& e) {
+      std::cerr << "pointdriver run: --set: invalid JSON: " << e.what() << '\n';
+      return 1;
+    }
+  }
+  Path path;
+  try {
+    path = load_path(file, patches);
+  } catch (const InputError& e) {
+    std::cerr << e.what() << '\n';
+    return 2;
+  }
+  const std::filesystem::path out =
+      o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
+  std::filesystem::path stem = out;
+  stem.replace_extension();
+  RunResult r;
+  try {
+    CsvWriter csv(out.string(), path.material.model.params());
+    r = run_path(path, [&](const Row& row) { csv.write(row); });
+  } catch (const std::runtime_error& e) {
+    std::cerr << "pointdriver run: " << e.what() << '\n';
+    return 2;
+  }
+
+  Json summary = {{"path_file", file},
+                  {"csv", out.string()},
+                  {"completed", r.completed},
+                  {"steps", r.steps},
+                  {"end_time [s]", r.end_time},
+                  {"failure_cause", cause_name(r.failure)},
+                  {"failure_time [s]", r.failure_time},
+                  {"error", r.error},
+                  {"columns", csv_columns()},
+                  {"resolved_path", path.resolved}};
+  const std::string summary_file = stem.string() + ".summary.json";
+  std::ofstream(summary_file) << summary.dump(2) << '\n';
+  if (!r.completed) {
+    const std::string replay_file = stem.string() + ".replay.json";
+    std::ofstream(replay_file) << r.replay->dump(2) << '\n';
+    std::cerr << "pointdriver run: " << file << ": " << r.error
+              << "\n  rows up to the last solved step are in " << out.string()
+              << "; the state at the start of the failed step is in " << replay_file
+              << " (reproduce with: pointdriver run " << replay_file << ")\n";
+    return 3;
+  }
+  std::cout << file << ": " << r.steps << " steps to t = " << r.end_time << " s";
+  if (r.failure != FailureCause::none) {
+    std::cout << "; failed (" << cause_name(r.failure) << ") at t = " << r.failure_time << " s";
+  }
+  std::cout << " -> " << out.string() << '\n';
+  return 0;
+}
+
+}  // namespace impact::pointdriver
