@@ -4,11 +4,13 @@
 #   ./run.sh test    install missing packages, build, run the whole test suite (release, then the
 #                    unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
+#   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
 set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian packages the build needs; each is installed only when missing.
-PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev)
+# python3-matplotlib draws the point driver's figures (pointdriver plot, verify, convergence).
+PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev python3-matplotlib)
 
 install_missing_packages() {
   local missing=() p
@@ -33,7 +35,7 @@ case "${1:-}" in
     install_missing_packages
     build release
     build/bin/material_check data/materials/al6061_t6.json >/dev/null
-    build/bin/models_benchmark
+    build/bin/pointdriver verify --out build/pointdriver_verify
     ;;
   test)
     install_missing_packages
@@ -46,9 +48,15 @@ case "${1:-}" in
     install_missing_packages
     build release
     build/bin/models_benchmark "${@:2}"
+    build/bin/pointdriver_benchmark
+    ;;
+  study)
+    install_missing_packages
+    build release
+    build/bin/pointdriver convergence --out docs/figures
     ;;
   *)
-    sed -n '2,7p' "$0"
+    sed -n '2,8p' "$0"
     exit 1
     ;;
 esac

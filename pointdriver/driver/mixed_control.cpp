@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "models/kinematics/deformation_gradient.hpp"
@@ -81,9 +82,13 @@ class StepProblem {
     return s;
   }
 
-  bool converged(const Vector& r, double& max_stress, double& max_strain) const {
+  bool converged(const Trial& t, double& max_stress, double& max_strain) const {
+    const Vector& r = t.residual;
     max_stress = max_strain = 0.0;
     bool ok = true;
+    const double stress_tol =
+        ctx_.settings->stress_tolerance +
+        ctx_.settings->relative_stress_tolerance * t.state.stress.cwiseAbs().maxCoeff();
     for (std::size_t e = 0; e < plan_.equations.size(); ++e) {
       const double a = std::abs(r(static_cast<Eigen::Index>(e)));
       if (plan_.equations[e].kind == ControlEquation::Kind::deformation) {
@@ -91,7 +96,7 @@ class StepProblem {
         ok = ok && a <= ctx_.settings->strain_tolerance;
       } else {
         max_stress = std::max(max_stress, a);
-        ok = ok && a <= ctx_.settings->stress_tolerance;
+        ok = ok && a <= stress_tol;
       }
     }
     return ok;
@@ -212,8 +217,9 @@ ControlPlan make_plan(const Leg& leg, const Mat3& F_start, const Mat3& stress_st
       q.oi = stress_index[leg.ratio_of][0], q.oj = stress_index[leg.ratio_of][1];
     } else {
       q.kind = ControlEquation::Kind::stress;
-      q.start = stress_start(i, j);
-      q.end = leg.stress[c].value_or(0.0);  // not given: stress-free
+      // Given: ramped from the leg's start. Not given: stress-free throughout (MTest's rule).
+      q.start = leg.stress[c] ? stress_start(i, j) : 0.0;
+      q.end = leg.stress[c].value_or(0.0);
     }
     plan.equations.push_back(q);
   }
@@ -246,7 +252,7 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
   }
   const SolverSettings& st = *ctx.settings;
   for (int it = 0;; ++it) {
-    if (t.ok && problem.converged(t.residual, out.max_stress_residual, out.max_strain_residual)) {
+    if (t.ok && problem.converged(t, out.max_stress_residual, out.max_strain_residual)) {
       out.iterations = it;
       return finish(t, true, "");
     }
@@ -255,7 +261,12 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
     }
     if (it == st.max_iterations) {
       out.iterations = it;
-      return finish(t, false, "Newton did not converge in " + std::to_string(it) + " iterations");
+      char buf[160];
+      std::snprintf(buf, sizeof buf,
+                    "Newton did not converge in %d iterations (largest stress residual %.3g Pa, "
+                    "strain residual %.3g)",
+                    it, out.max_stress_residual, out.max_strain_residual);
+      return finish(t, false, buf);
     }
     bool jac_ok = true;
     const Eigen::MatrixXd J = st.jacobian == SolverSettings::Jacobian::elastic
@@ -279,8 +290,13 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
       // Stagnation at round-off: accept only if it is already within tolerance.
       out.iterations = it + 1;
       const bool conv =
-          t.ok && problem.converged(t.residual, out.max_stress_residual, out.max_strain_residual);
-      return finish(t, conv, conv ? "" : "line search found no decrease of the residual");
+          t.ok && problem.converged(t, out.max_stress_residual, out.max_strain_residual);
+      char buf[160];
+      std::snprintf(buf, sizeof buf,
+                    "line search found no decrease of the residual (largest stress residual %.3g "
+                    "Pa, strain residual %.3g)",
+                    out.max_stress_residual, out.max_strain_residual);
+      return finish(t, conv, conv ? "" : buf);
     }
     u += alpha * du;
     t = std::move(next);

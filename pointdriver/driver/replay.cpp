@@ -33,6 +33,7 @@ Json replay_path(const Path& path, const Leg& leg, const ControlPlan& plan, cons
   doc["temperature"] = s0.temperature;
   doc["failure_policy"] = "stop";
   doc["solver"] = {{"stress_tolerance", path.solver.stress_tolerance},
+                   {"relative_stress_tolerance", path.solver.relative_stress_tolerance},
                    {"strain_tolerance", path.solver.strain_tolerance},
                    {"max_iterations", path.solver.max_iterations},
                    {"max_cutbacks", path.solver.max_cutbacks},

@@ -1,6 +1,7 @@
 #include "pointdriver/path/named_paths.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <string>
@@ -8,6 +9,12 @@
 namespace impact::pointdriver {
 
 namespace {
+
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
 
 /// Keys every named type shares; copied onto each generated leg.
 struct Common {
@@ -250,10 +257,10 @@ void expand_jumps(JsonReader& r, Builder& b, const Json& raw, bool temperature) 
         return;
       }
       b.uniaxial_stress_leg(strains[i], std::copysign(rate, strains[i]),
-                            "T = " + std::to_string(values[i]) + " K");
+                            "T = " + short_number(values[i]) + " K");
     } else {
       b.uniaxial_stress_leg(strains[i], std::copysign(values[i], strains[i]),
-                            "rate " + std::to_string(values[i]) + " /s");
+                            "rate " + short_number(values[i]) + " /s");
     }
   }
 }

@@ -176,10 +176,13 @@ Leg read_leg(JsonReader& r, const Json& raw, Thermal default_thermal) {
   }
   if (r.has("first_step")) {
     const double h0 = r.number("first_step", Range::positive(), "first of log-spaced steps [s]");
-    if (h0 < leg.duration && leg.steps > 0) {
+    if (leg.steps > 0 && h0 <= leg.duration / leg.steps) {
       leg.growth = log_spacing_growth(h0, leg.duration, leg.steps);
-    } else {
-      r.problems().add(r.key_path("first_step"), "expected a first step shorter than duration");
+    } else if (leg.steps > 0) {
+      r.problems().add(
+          r.key_path("first_step"),
+          "expected a first step <= duration / steps = " + Json(leg.duration / leg.steps).dump() +
+              " s (log-spaced steps grow from the first one)");
     }
   }
 
@@ -280,6 +283,9 @@ Path read_path(const Json& document, const std::string& file) {
     auto& st = path.solver;
     st.stress_tolerance = s->number_or("stress_tolerance", st.stress_tolerance, Range::positive(),
                                        "tolerance on each controlled stress component [Pa]");
+    st.relative_stress_tolerance = s->number_or(
+        "relative_stress_tolerance", st.relative_stress_tolerance, Range::non_negative(),
+        "tolerance on each controlled stress component relative to the largest stress [-]");
     st.strain_tolerance = s->number_or("strain_tolerance", st.strain_tolerance, Range::positive(),
                                        "tolerance on each controlled F component [-]");
     st.max_iterations = static_cast<int>(s->number_or(
@@ -323,6 +329,8 @@ Path read_path(const Json& document, const std::string& file) {
 
   // Legs: explicit, or named (with "type") expanded into explicit ones first.
   Json resolved_legs = Json::array();
+  std::vector<std::string> origins;  // key path of each resolved leg: /legs/i, or /legs/i[k] for
+                                     // the k-th leg a named leg expanded into
   if (!document.contains("legs") || !document["legs"].is_array() || document["legs"].empty()) {
     problems.add("/legs", "required: a non-empty array of legs");
   } else {
@@ -336,22 +344,32 @@ Path read_path(const Json& document, const std::string& file) {
       }
       if (legs[i].contains("type")) {
         JsonReader named(legs[i], where, problems);
-        for (Json& l : expand_named_leg(named, legs[i])) resolved_legs.push_back(std::move(l));
+        int k = 0;
+        for (Json& l : expand_named_leg(named, legs[i])) {
+          resolved_legs.push_back(std::move(l));
+          origins.push_back(where + "[" + std::to_string(k++) + "]");
+        }
       } else {
         resolved_legs.push_back(legs[i]);
+        origins.push_back(where);
       }
     }
-    // Read the expanded legs; key paths name the resolved leg (the same index when no named leg
-    // precedes it).
     for (std::size_t i = 0; i < resolved_legs.size(); ++i) {
-      JsonReader lr(resolved_legs[i], "/legs/" + std::to_string(i), problems);
+      JsonReader lr(resolved_legs[i], origins[i], problems);
       path.legs.push_back(read_leg(lr, resolved_legs[i], default_thermal));
     }
   }
   root.reject_unknown_keys();
+  const std::string material_path = locate_material(material_file, file);
+  if (!material_file.empty() && !fs::exists(material_path)) {
+    problems.add(document["material"].is_string() ? "/material" : "/material/file",
+                 "cannot find the material file '" + material_file +
+                     "' (looked in the working directory, beside the path file and in its parent "
+                     "directories)");
+  }
   problems.throw_if_any();
 
-  path.material = load_material(locate_material(material_file, file), overrides);
+  path.material = load_material(material_path, overrides);
   const ElasticPlastic& model = path.material.model;
   path.initial_state = has_state ? s0 : model.initial_state(path.temperature);
   if (has_state) path.initial_state.temperature = path.temperature;

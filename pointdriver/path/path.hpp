@@ -59,7 +59,9 @@ struct Leg {
 };
 
 struct SolverSettings {
-  double stress_tolerance = 1e-3;   ///< on each stress-controlled component [Pa]
+  double stress_tolerance = 1e-3;            ///< on each stress-controlled component [Pa], plus:
+  double relative_stress_tolerance = 1e-10;  ///< times the largest stress component [-]: the
+                                             ///< material's own return tolerance bounds accuracy
   double strain_tolerance = 1e-12;  ///< on each deformation-gradient-controlled component [-]
   int max_iterations = 25;          ///< Newton iterations per attempt
   int max_cutbacks = 8;             ///< halvings of a step that does not converge
