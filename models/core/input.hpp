@@ -32,6 +32,7 @@ class InputProblems {
   explicit InputProblems(std::string file) : file_(std::move(file)) {}
   void add(std::string_view key_path, std::string_view message);
   bool empty() const { return problems_.empty(); }
+  std::size_t count() const { return problems_.size(); }
   /// Throws InputError with every problem collected so far; does nothing when there are none.
   void throw_if_any() const;
   const std::string& file() const { return file_; }

@@ -1,6 +1,265 @@
+// pointdriver batch: every material on every path in one process (study/batch.hpp), one CSV per
+// run and a summary table.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include "models/material/material.hpp"
 #include "pointdriver/commands.hpp"
+#include "pointdriver/commands/options.hpp"
+#include "pointdriver/output/csv_writer.hpp"
+#include "pointdriver/study/batch.hpp"
+
 namespace impact::pointdriver {
-int command_batch(const std::vector<std::string>&) {
-  return 1;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* batch_help =
+    "usage: pointdriver batch --paths P1.json [P2.json ...] [--materials M1 [M2 ...]]\n"
+    "                         [--set JSON]... [--out DIR] [--threads N] [--no-csv]\n"
+    "Runs every material on every path in one process, over N threads (default: all cores).\n"
+    "Each material is one of\n"
+    "  - a material file (a JSON document with both \"density\" and \"constitutive_model\"):\n"
+    "    used as it is on every path;\n"
+    "  - any other JSON file, or inline JSON starting with '{': a merge patch over each path's\n"
+    "    own material (e.g. '{\"constitutive_model\": {\"flow_stress\": {\"A\": 3.0e8}}}').\n"
+    "Without --materials each path runs with its own material. --set applies a JSON merge patch\n"
+    "to every path (repeatable), as in `pointdriver run`.\n"
+    "Writes DIR/<path>__<material>.csv per run (columns as `pointdriver run`; not with --no-csv)\n"
+    "and DIR/batch_summary.csv: path, material, steps, completed, failure cause, failure time,\n"
+    "final stress_xx, plastic strain and temperature, wall time, error. Default DIR: batch.\n"
+    "Names: the file stems; an inline patch is set<k>, k its position in --materials.\n"
+    "Exit codes: 0 every run completed, 1 usage, 2 input error, 3 a step could not be solved in\n"
+    "some run (its error is in the summary).\n";
+
+struct MaterialEntry {
+  std::string name;
+  std::optional<Material> material;  ///< a complete material file
+  Json patch;                        ///< else a merge patch over the path's material
+};
+
+std::string unique(const std::string& base, std::map<std::string, int>& seen) {
+  const int n = seen[base]++;
+  return n == 0 ? base : base + "_" + std::to_string(n + 1);
 }
+
+MaterialEntry read_material_entry(const std::string& arg, int index) {
+  MaterialEntry e;
+  if (!arg.empty() && arg.front() == '{') {
+    try {
+      e.patch = Json::parse(arg);
+    } catch (const Json::parse_error& err) {
+      throw InputError(
+          {"--materials: inline JSON #" + std::to_string(index + 1) + ": " + err.what()});
+    }
+    if (!e.patch.is_object()) throw InputError({"--materials: inline JSON must be an object"});
+    e.name = "set" + std::to_string(index + 1);
+    return e;
+  }
+  const Json doc = load_json_file(arg);
+  e.name = fs::path(arg).stem().string();
+  if (doc.is_object() && doc.contains("density") && doc.contains("constitutive_model")) {
+    e.material = read_material(doc, arg);
+  } else if (doc.is_object()) {
+    e.patch = doc;
+  } else {
+    throw InputError({arg + ": expected a material file or a JSON merge patch (an object)"});
+  }
+  return e;
+}
+
+/// The path document with `patch` merged into its material's overrides.
+Json with_material_patch(Json document, const Json& patch) {
+  Json m = document.value("material", Json());
+  if (m.is_string()) m = Json{{"file", m}};
+  if (m.is_object()) {
+    if (!m.contains("overrides") || !m["overrides"].is_object()) m["overrides"] = Json::object();
+    m["overrides"].merge_patch(patch);
+    document["material"] = m;
+  }
+  return document;
+}
+
+std::string csv_number(double v) {
+  std::ostringstream s;
+  s << std::setprecision(10) << v;
+  return s.str();
+}
+
+std::string csv_text(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return q + "\"";
+}
+
+}  // namespace
+
+int command_batch(const std::vector<std::string>& args) {
+  Options o;
+  try {
+    o = parse_options(args,
+                      {{"--paths", -1},
+                       {"--materials", -1},
+                       {"--set", 1},
+                       {"--out", 1},
+                       {"--threads", 1},
+                       {"--no-csv", 0}},
+                      0);
+  } catch (const UsageError& e) {
+    std::cerr << "pointdriver batch: " << e.what() << '\n' << batch_help;
+    return 1;
+  }
+  if (o.help) {
+    std::cout << batch_help;
+    return 0;
+  }
+  if (!o.has("--paths")) {
+    std::cerr << "pointdriver batch: missing --paths\n" << batch_help;
+    return 1;
+  }
+  int threads = 0;
+  if (o.has("--threads")) {
+    try {
+      threads = std::stoi(o.get("--threads", "0"));
+    } catch (const std::exception&) {
+      threads = -1;
+    }
+    if (threads < 1) {
+      std::cerr << "pointdriver batch: --threads expects a positive integer\n";
+      return 1;
+    }
+  }
+  std::vector<Json> sets;
+  for (const auto& s : o.all("--set")) {
+    try {
+      sets.push_back(Json::parse(s));
+    } catch (const Json::parse_error& e) {
+      std::cerr << "pointdriver batch: --set: invalid JSON: " << e.what() << '\n';
+      return 1;
+    }
+  }
+  const fs::path out_dir = o.get("--out", "batch");
+  const bool write_csv = !o.has("--no-csv");
+
+  // Paths x materials. Material files are shared by every path; patches make one Path each.
+  std::vector<std::string> path_names, material_names;
+  std::vector<std::unique_ptr<Path>> paths;                 // as given, one per file
+  std::vector<std::vector<std::unique_ptr<Path>>> patched;  // [path][material] for patches
+  std::vector<MaterialEntry> materials;
+  std::vector<BatchJob> jobs;
+  std::vector<std::pair<std::size_t, std::size_t>> job_index;  // (path, material)
+  try {
+    std::map<std::string, int> seen_materials, seen_paths;
+    const auto& mats = o.all("--materials");
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+      materials.push_back(read_material_entry(mats[i], static_cast<int>(i)));
+      material_names.push_back(unique(materials.back().name, seen_materials));
+    }
+    for (const auto& f : o.all("--paths")) {
+      Json doc = load_json_file(f);
+      for (const Json& p : sets) doc.merge_patch(p);
+      paths.push_back(std::make_unique<Path>(read_path(doc, f)));
+      path_names.push_back(unique(fs::path(f).stem().string(), seen_paths));
+      std::vector<std::unique_ptr<Path>> row;
+      for (const auto& m : materials) {
+        row.push_back(
+            m.material ? nullptr
+                       : std::make_unique<Path>(read_path(with_material_patch(doc, m.patch), f)));
+      }
+      patched.push_back(std::move(row));
+    }
+  } catch (const InputError& e) {
+    std::cerr << e.what() << '\n';
+    return 2;
+  }
+  if (materials.empty()) material_names.push_back("path_material");
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    if (materials.empty()) {
+      jobs.push_back({paths[p].get(), &paths[p]->material.model});
+      job_index.emplace_back(p, 0);
+      continue;
+    }
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+      if (materials[m].material) {
+        jobs.push_back({paths[p].get(), &materials[m].material->model});
+      } else {
+        const Path* q = patched[p][m].get();
+        jobs.push_back({q, &q->material.model});
+      }
+      job_index.emplace_back(p, m);
+    }
+  }
+
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) {
+    std::cerr << "pointdriver batch: cannot create " << out_dir.string() << ": " << ec.message()
+              << '\n';
+    return 2;
+  }
+  BatchOptions options;
+  options.threads = threads;
+  if (write_csv) {
+    options.make_sink = [&](std::size_t i, const BatchJob& job) -> RowSink {
+      const auto [p, m] = job_index[i];
+      const fs::path file = out_dir / (path_names[p] + "__" + material_names[m] + ".csv");
+      auto csv = std::make_shared<CsvWriter>(file.string(), job.model->params());
+      return [csv](const Row& row) { csv->write(row); };
+    };
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<BatchResult> results = run_batch_jobs(jobs, options);
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const fs::path summary = out_dir / "batch_summary.csv";
+  std::ofstream s(summary);
+  if (!s) {
+    std::cerr << "pointdriver batch: cannot write " << summary.string() << '\n';
+    return 2;
+  }
+  s << "path,material,steps,completed,failure cause,failure time [s],final stress_xx [Pa],"
+       "final plastic strain [-],final temperature [K],wall time [s],error\n";
+  bool all_completed = true;
+  long steps = 0;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const BatchResult& r = results[i];
+    const auto [p, m] = job_index[i];
+    all_completed = all_completed && r.result.completed;
+    steps += r.result.steps;
+    s << csv_text(path_names[p]) << ',' << csv_text(material_names[m]) << ',' << r.result.steps
+      << ',' << (r.result.completed ? 1 : 0) << ',' << to_string(r.result.failure) << ','
+      << csv_number(r.result.failure_time) << ',' << csv_number(r.last.stress_path(0, 0)) << ','
+      << csv_number(r.last.state.plastic_strain) << ',' << csv_number(r.last.state.temperature)
+      << ',' << csv_number(r.wall_time) << ',' << csv_text(r.result.error) << '\n';
+    std::cout << std::left << std::setw(28) << path_names[p] << ' ' << std::setw(20)
+              << material_names[m] << ' ' << std::right << std::setw(7) << r.result.steps
+              << " steps  stress_xx " << std::setw(12) << std::setprecision(5)
+              << r.last.stress_path(0, 0) << " Pa  eps_p " << std::setw(9)
+              << r.last.state.plastic_strain << "  "
+              << (r.result.completed ? std::string(to_string(r.result.failure)) == "none"
+                                           ? "completed"
+                                           : "failed: " + std::string(to_string(r.result.failure))
+                                     : "UNSOLVED: " + r.result.error)
+              << '\n';
+  }
+  const std::size_t workers =
+      std::min<std::size_t>(std::max<std::size_t>(results.size(), 1),
+                            threads > 0 ? static_cast<std::size_t>(threads)
+                                        : std::max(1u, std::thread::hardware_concurrency()));
+  std::cout << results.size() << " runs, " << steps << " steps in " << std::setprecision(3) << total
+            << " s (" << workers << " threads) -> " << summary.string() << '\n';
+  return all_completed ? 0 : 3;
+}
+
 }  // namespace impact::pointdriver

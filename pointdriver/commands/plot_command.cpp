@@ -1,6 +1,173 @@
+// pointdriver plot: a quick figure from one or more run CSV files, drawn by plot.py (matplotlib).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+
 #include "pointdriver/commands.hpp"
+#include "pointdriver/commands/options.hpp"
+#include "pointdriver/commands/plot_script.hpp"
+
 namespace impact::pointdriver {
-int command_plot(const std::vector<std::string>&, const char*) {
-  return 1;
+
+namespace {
+
+const char* plot_help =
+    "usage: pointdriver plot OUT.csv [MORE.csv ...] --x COL --y COL [--y COL ...] -o FIG.png\n"
+    "                        [--title T] [--logx] [--logy] [--label NAME ...]\n"
+    "Draws --y against --x from point-driver CSV files (one line per file and y column; several\n"
+    "files are overlaid with a legend, labelled by file name or by --label, one per file).\n"
+    "Columns are named as in the CSV header, with or without the unit: `stress_xx` matches\n"
+    "`stress_xx [Pa]`; axis labels show the units. The figure format follows -o (.png, .pdf,\n"
+    ".svg). Needs python3 and matplotlib (Debian: apt-get install -y python3-matplotlib); the\n"
+    "script is pointdriver/plot/plot.py in the source tree, or $POINTDRIVER_PLOT_SCRIPT; the\n"
+    "interpreter the first of python3, /usr/bin/python3 that has matplotlib, or "
+    "$POINTDRIVER_PYTHON.\n"
+    "Exit codes: 0 done, 1 usage error or python3/matplotlib missing, 2 input error.\n";
+
+/// Runs `argv` (argv[0] looked up on PATH); returns the exit status, 127 when it cannot start.
+int spawn(const std::vector<std::string>& argv, bool quiet) {
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = fork();
+  if (pid < 0) return 127;
+  if (pid == 0) {
+    std::vector<char*> cargs;
+    for (const auto& a : argv) cargs.push_back(const_cast<char*>(a.c_str()));
+    cargs.push_back(nullptr);
+    if (quiet) {
+      if (std::FILE* null = std::fopen("/dev/null", "w")) {
+        dup2(fileno(null), STDOUT_FILENO);
+        dup2(fileno(null), STDERR_FILENO);
+      }
+    }
+    execvp(cargs[0], cargs.data());
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
+
+}  // namespace
+
+std::string plot_script_path() {
+  if (const char* env = std::getenv("POINTDRIVER_PLOT_SCRIPT"); env && *env) return env;
+  return std::string(IMPACT_SOURCE_DIR) + "/pointdriver/plot/plot.py";
+}
+
+PlotRun run_plot_script(const std::vector<std::string>& args) {
+  PlotRun r;
+  const std::string script = plot_script_path();
+  if (!std::filesystem::is_regular_file(script)) {
+    r.status = PlotRun::Status::no_script;
+    r.message = "plotting script not found: " + script +
+                " (set POINTDRIVER_PLOT_SCRIPT to the path of pointdriver/plot/plot.py)";
+    return r;
+  }
+  // The first interpreter that can import matplotlib: $POINTDRIVER_PYTHON, else python3 on PATH,
+  // else Debian's /usr/bin/python3 (where python3-matplotlib installs; a pyenv or venv python3
+  // earlier on PATH may lack it).
+  std::vector<std::string> candidates{"python3", "/usr/bin/python3"};
+  if (const char* env = std::getenv("POINTDRIVER_PYTHON"); env && *env) candidates = {env};
+  std::string python;
+  bool any_python = false;
+  for (const auto& c : candidates) {
+    const int code = spawn({c, "-c", "import matplotlib"}, true);
+    any_python = any_python || code != 127;
+    if (code == 0) {
+      python = c;
+      break;
+    }
+  }
+  if (!any_python) {
+    r.status = PlotRun::Status::no_python;
+    r.exit_code = 127;
+    r.message = std::string("python3 is not installed; install it and matplotlib with: ") +
+                plot_install_hint;
+    return r;
+  }
+  if (python.empty()) {
+    r.status = PlotRun::Status::no_matplotlib;
+    r.exit_code = 1;
+    r.message =
+        std::string("python3 cannot import matplotlib; install it with: ") + plot_install_hint;
+    return r;
+  }
+  std::vector<std::string> argv{python, script};
+  argv.insert(argv.end(), args.begin(), args.end());
+  r.exit_code = spawn(argv, false);
+  if (r.exit_code == 0) return r;
+  r.status = r.exit_code == 2   ? PlotRun::Status::input_error
+             : r.exit_code == 4 ? PlotRun::Status::no_matplotlib
+                                : PlotRun::Status::failed;
+  r.message = r.status == PlotRun::Status::no_matplotlib
+                  ? std::string("matplotlib missing; install it with: ") + plot_install_hint
+                  : "plot.py exited with code " + std::to_string(r.exit_code);
+  return r;
+}
+
+int command_plot(const std::vector<std::string>& args, const char*) {
+  Options o;
+  try {
+    o = parse_options(args,
+                      {{"--x", 1},
+                       {"--y", 1},
+                       {"-o|--output", 1},
+                       {"--title", 1},
+                       {"--logx", 0},
+                       {"--logy", 0},
+                       {"--label", 1}},
+                      std::numeric_limits<std::size_t>::max());
+  } catch (const UsageError& e) {
+    std::cerr << "pointdriver plot: " << e.what() << '\n' << plot_help;
+    return 1;
+  }
+  if (o.help) {
+    std::cout << plot_help;
+    return 0;
+  }
+  std::string missing;
+  if (o.positional.empty()) missing = "a CSV file";
+  if (!o.has("--x")) missing = "--x COL";
+  if (!o.has("--y")) missing = "--y COL";
+  if (!o.has("--output")) missing = "-o FIG.png";
+  if (!missing.empty()) {
+    std::cerr << "pointdriver plot: missing " << missing << '\n' << plot_help;
+    return 1;
+  }
+  if (o.has("--x") && o.all("--x").size() > 1) {
+    std::cerr << "pointdriver plot: --x given more than once\n";
+    return 1;
+  }
+  if (o.has("--label") && o.all("--label").size() != o.positional.size()) {
+    std::cerr << "pointdriver plot: give --label once per CSV file (" << o.positional.size()
+              << " files, " << o.all("--label").size() << " labels)\n";
+    return 1;
+  }
+  for (const auto& f : o.positional) {
+    if (!std::filesystem::is_regular_file(f)) {
+      std::cerr << "pointdriver plot: " << f << ": no such file\n";
+      return 2;
+    }
+  }
+  std::vector<std::string> a = o.positional;
+  // `--key=value` so that values starting with '-' reach argparse intact.
+  a.push_back("--x=" + o.get("--x", ""));
+  a.push_back("--output=" + o.get("--output", ""));
+  for (const auto& y : o.all("--y")) a.push_back("--y=" + y);
+  for (const auto& l : o.all("--label")) a.push_back("--label=" + l);
+  if (o.has("--title")) a.push_back("--title=" + o.get("--title", ""));
+  if (o.has("--logx")) a.push_back("--logx");
+  if (o.has("--logy")) a.push_back("--logy");
+  const PlotRun r = run_plot_script(a);
+  if (r.status == PlotRun::Status::ok) return 0;
+  std::cerr << "pointdriver plot: " << r.message << '\n';
+  return r.status == PlotRun::Status::input_error ? 2 : 1;
+}
+
 }  // namespace impact::pointdriver

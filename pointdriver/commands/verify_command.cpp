@@ -1,6 +1,222 @@
+// pointdriver verify: the verification suite (verify/verification_suite.hpp): a table of checks
+// on stdout, DIR/verification.csv, the figure data CSVs and, when python3 + matplotlib are there,
+// the figures (PNG) drawn by pointdriver/plot/plot.py.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
 #include "pointdriver/commands.hpp"
+#include "pointdriver/commands/options.hpp"
+#include "pointdriver/commands/plot_script.hpp"
+#include "pointdriver/verify/verification_suite.hpp"
+
 namespace impact::pointdriver {
-int command_verify(const std::vector<std::string>&) {
-  return 1;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* verify_help =
+    "usage: pointdriver verify [--out DIR] [--case NAME]... [--list]\n"
+    "Runs the point driver's verification suite: each case drives the material along paths\n"
+    "built in code and compares with references derived independently (closed forms, integrals\n"
+    "of the driver's own rows), with a stated tolerance. Prints the table (case, quantity,\n"
+    "expected, got, error, tolerance, pass), writes it to DIR/verification.csv with the figure\n"
+    "data (CSV) of the cases and, when python3 and matplotlib are installed, the figures (PNG).\n"
+    "  --out DIR    output directory (default: pointdriver_verify/ in the current directory)\n"
+    "  --case NAME  run only this case (repeatable); --list prints the case names\n"
+    "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed.\n";
+
+std::string fmt(double v, const char* f = "%.6g") {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
 }
+
+/// A CSV cell: quoted when it holds a comma or a quote.
+std::string cell(const std::string& s) {
+  if (s.find_first_of(",\"") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+/// The header cells of a CSV (names without units), or none when it cannot be read.
+std::vector<std::string> csv_header(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::vector<std::string> names;
+  if (!std::getline(in, line)) return names;
+  std::stringstream ss(line);
+  for (std::string c; std::getline(ss, c, ',');) names.push_back(c.substr(0, c.find(" [")));
+  return names;
+}
+
+struct Figure {
+  std::string png;
+  std::vector<std::string> csvs;
+  std::string x;
+  std::vector<std::string> y;  ///< columns; a trailing '*' selects every column with that prefix
+  std::string title;
+  std::vector<std::string> labels;
+};
+
+const std::vector<Figure>& figures() {
+  static const std::vector<Figure> list = {
+      {"johnson_cook_flow_curves.png",
+       {"johnson_cook_flow_curves.csv"},
+       "log_strain_xx",
+       {"driver_*"},
+       "Johnson-Cook uniaxial stress, 4 rates x 3 temperatures",
+       {}},
+      {"adiabatic_compression_stress.png",
+       {"adiabatic_compression.csv"},
+       "plastic_strain",
+       {"von_mises"},
+       "Adiabatic compression at 4000 /s: Drucker fires at the maximum",
+       {}},
+      {"adiabatic_compression_temperature.png",
+       {"adiabatic_compression.csv"},
+       "plastic_strain",
+       {"temperature", "temperature_reference"},
+       "Adiabatic heating: driver vs chi int sigma d eps_p / (rho cp)",
+       {}},
+      {"simple_shear.png",
+       {"simple_shear.csv"},
+       "gamma",
+       {"green_naghdi_xy", "dienes_xy", "jaumann_xy", "mu_sin_gamma"},
+       "Simple shear: Green-Naghdi vs Dienes (1979), Jaumann oscillates",
+       {}},
+      {"mie_gruneisen_hugoniot.png",
+       {"mie_gruneisen_path.csv", "mie_gruneisen_hugoniot.csv",
+        "mie_gruneisen_hugoniot_experiments.csv"},
+       "volume_ratio",
+       {"pressure"},
+       "Mie-Gruneisen uniaxial strain vs the Hugoniot and experiments",
+       {"driver path", "Hugoniot (closed form)", "experiments (McQueen, Mitchell, Vaidya)"}},
+  };
+  return list;
+}
+
+/// Draws the figures whose data exist; says so once when plotting is not possible.
+void draw_figures(const fs::path& out) {
+  for (const Figure& f : figures()) {
+    std::vector<std::string> args;
+    std::vector<std::string> labels;
+    for (std::size_t i = 0; i < f.csvs.size(); ++i) {
+      if (!fs::exists(out / f.csvs[i])) continue;
+      args.push_back((out / f.csvs[i]).string());
+      if (i < f.labels.size()) labels.push_back(f.labels[i]);
+    }
+    if (args.empty()) continue;
+    args.insert(args.end(), {"--x", f.x});
+    for (const std::string& y : f.y) {
+      if (!y.empty() && y.back() == '*') {
+        const std::string prefix = y.substr(0, y.size() - 1);
+        for (const std::string& name : csv_header(args.front())) {
+          if (name.rfind(prefix, 0) == 0) args.insert(args.end(), {"--y", name});
+        }
+      } else {
+        args.insert(args.end(), {"--y", y});
+      }
+    }
+    // Legend labels only when every file of the figure is present (one label per file).
+    if (labels.size() == f.labels.size() && !labels.empty()) {
+      for (const std::string& l : labels) args.insert(args.end(), {"--label", l});
+    }
+    args.insert(args.end(), {"--title", f.title, "-o", (out / f.png).string()});
+    const PlotRun r = run_plot_script(args);
+    if (r.status == PlotRun::Status::no_python || r.status == PlotRun::Status::no_matplotlib ||
+        r.status == PlotRun::Status::no_script) {
+      std::cout << "figures skipped (" << r.message << "); the figure data are in " << out.string()
+                << '\n';
+      return;
+    }
+    if (r.status != PlotRun::Status::ok) {
+      std::cout << "figure " << f.png << " not drawn: " << r.message << '\n';
+    }
+  }
+}
+
+}  // namespace
+
+int command_verify(const std::vector<std::string>& args) {
+  Options o;
+  try {
+    o = parse_options(args, {{"--out", 1}, {"--case", 1}, {"--list", 0}}, 0);
+  } catch (const UsageError& e) {
+    std::cerr << "pointdriver verify: " << e.what() << '\n' << verify_help;
+    return 1;
+  }
+  if (o.help) {
+    std::cout << verify_help;
+    return 0;
+  }
+  const auto& cases = verification_cases();
+  if (o.has("--list")) {
+    for (const auto& c : cases) std::cout << c.name << "  " << c.description << '\n';
+    return 0;
+  }
+  std::vector<const VerificationCase*> selected;
+  for (const std::string& name : o.all("--case")) {
+    const VerificationCase* found = nullptr;
+    for (const auto& c : cases) {
+      if (c.name == name) found = &c;
+    }
+    if (!found) {
+      std::cerr << "pointdriver verify: unknown case '" << name << "'; known:";
+      for (const auto& c : cases) std::cerr << ' ' << c.name;
+      std::cerr << '\n';
+      return 1;
+    }
+    selected.push_back(found);
+  }
+  if (selected.empty()) {
+    for (const auto& c : cases) selected.push_back(&c);
+  }
+
+  const fs::path out = o.get("--out", "pointdriver_verify");
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) {
+    std::cerr << "pointdriver verify: cannot create " << out.string() << ": " << ec.message()
+              << '\n';
+    return 1;
+  }
+  const SuiteContext ctx = default_suite_context(out.string());
+
+  std::vector<Check> all;
+  int failed = 0;
+  std::cout << "pass  case / quantity\n      expected | got | error | tolerance\n";
+  for (const VerificationCase* c : selected) {
+    const std::vector<Check> checks = run_case(*c, ctx);
+    for (const Check& k : checks) {
+      std::cout << (k.pass ? "ok    " : "FAIL  ") << k.case_name << ": " << k.quantity << "\n      "
+                << fmt(k.expected, "%.10g") << " | " << fmt(k.got, "%.10g") << " | "
+                << fmt(k.error, "%.3g") << " | " << fmt(k.tolerance, "%.3g") << '\n';
+      failed += k.pass ? 0 : 1;
+      all.push_back(k);
+    }
+  }
+
+  const fs::path table = out / "verification.csv";
+  std::ofstream csv(table);
+  csv << "case,quantity,expected,got,error,tolerance,pass\n";
+  for (const Check& k : all) {
+    csv << cell(k.case_name) << ',' << cell(k.quantity) << ',' << fmt(k.expected, "%.15g") << ','
+        << fmt(k.got, "%.15g") << ',' << fmt(k.error, "%.6g") << ',' << fmt(k.tolerance, "%.6g")
+        << ',' << (k.pass ? "yes" : "no") << '\n';
+  }
+  if (!csv) {
+    std::cerr << "pointdriver verify: cannot write " << table.string() << '\n';
+    return 1;
+  }
+  draw_figures(out);
+  std::cout << all.size() - static_cast<std::size_t>(failed) << " of " << all.size()
+            << " checks pass; table in " << table.string() << '\n';
+  return failed == 0 ? 0 : 3;
+}
+
 }  // namespace impact::pointdriver

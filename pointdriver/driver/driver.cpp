@@ -49,15 +49,20 @@ struct Advance {
   StepReport report;
   FailureCause failure = FailureCause::none;
   double stress_work = 0.0, dissipated = 0.0;
-  int iterations = 0, substeps = 0;
+  int iterations = 0, jacobians = 0, substeps = 0;
   std::string error;
 };
 
 class LegRunner {
  public:
   LegRunner(const Path& path, const Leg& leg, const ControlPlan& plan, const ElasticPlastic& model,
-            double leg_start_temperature)
-      : path_(path), leg_(leg), plan_(plan), model_(model), T_start_(leg_start_temperature) {
+            const ElasticPlastic& keep_stress_twin, double leg_start_temperature)
+      : path_(path),
+        leg_(leg),
+        plan_(plan),
+        model_(model),
+        twin_(keep_stress_twin),
+        T_start_(leg_start_temperature) {
     rate_axis_ = leg.rotation_axis;
     rate_ = leg.rotation_angle / leg.duration;
   }
@@ -67,7 +72,10 @@ class LegRunner {
   bool advance(const PointState& s0, const Mat3& F_path0, const Mat3& Q0, double t0, double dt,
                const Mat3& guess, int depth, Advance& a) const {
     StepContext ctx;
-    ctx.model = &model_;
+    const bool erodes = model_.params().erosion == Erosion::allow_no_tension ||
+                        model_.params().erosion == Erosion::zero_stress;
+    ctx.model = erodes && !s0.failed ? &twin_ : &model_;
+    ctx.eroding_model = erodes && !s0.failed ? &model_ : nullptr;
     ctx.settings = &path_.solver;
     ctx.Q_mid = rotation(rate_axis_, rate_ * dt / 2) * Q0;
     ctx.Q_new = rotation(rate_axis_, rate_ * dt) * Q0;
@@ -75,8 +83,9 @@ class LegRunner {
     PointState start = s0;
     if (leg_.thermal == Thermal::prescribed) start.temperature = temperature_at(t0 + dt / 2);
     const StepSolution sol =
-        solve_step(plan_, ctx, start, F_path0, dt, (t0 + dt) / leg_.duration, guess);
+        solve_step(plan_, ctx, start, F_path0, dt, (t0 + dt) / leg_.duration, guess, &jacobian_);
     a.iterations += sol.iterations;
+    a.jacobians += sol.jacobian_evaluations;
     if (sol.converged) {
       a.state = sol.state;
       if (leg_.thermal == Thermal::prescribed) a.state.temperature = temperature_at(t0 + dt);
@@ -114,7 +123,9 @@ class LegRunner {
   const Leg& leg_;
   const ControlPlan& plan_;
   const ElasticPlastic& model_;
+  const ElasticPlastic& twin_;
   double T_start_;
+  mutable Eigen::MatrixXd jacobian_;  // the last Newton matrix, reused by the next step
   Vec3 rate_axis_;
   double rate_ = 0.0;
 };
@@ -147,6 +158,9 @@ RunResult run_path(const Path& path, const ElasticPlastic& model, const RowSink&
   heated.heating.enabled = true;
   held.heating.enabled = false;
   const ElasticPlastic adiabatic(heated), isothermal(held);
+  // KeepStress twins for the Newton iterations of a point that may fail (StepContext).
+  heated.erosion = held.erosion = Erosion::keep_stress;
+  const ElasticPlastic adiabatic_twin(heated), isothermal_twin(held);
   const ElasticPlasticParams& params = model.params();
 
   RunResult result;
@@ -164,7 +178,9 @@ RunResult run_path(const Path& path, const ElasticPlastic& model, const RowSink&
     if (leg.start_temperature) s.temperature = *leg.start_temperature;
     const ControlPlan plan = make_plan(leg, F_path, Q.transpose() * s.stress * Q);
     const ElasticPlastic& m = leg.thermal == Thermal::adiabatic ? adiabatic : isothermal;
-    const LegRunner runner(path, leg, plan, m, s.temperature);
+    const ElasticPlastic& twin =
+        leg.thermal == Thermal::adiabatic ? adiabatic_twin : isothermal_twin;
+    const LegRunner runner(path, leg, plan, m, twin, s.temperature);
     double t_leg = 0.0;
     for (double dt : step_sizes(leg)) {
       ++step;
@@ -194,6 +210,7 @@ RunResult run_path(const Path& path, const ElasticPlastic& model, const RowSink&
       if (!frozen) guess = a.L_path;
       Row row = make_row(t, step, static_cast<int>(li), s, Q, a.L_lab, params);
       row.iterations = a.iterations;
+      row.jacobian_evaluations = a.jacobians;
       row.substeps = a.substeps;
       row.stress_work = stress_work;
       row.dissipated_energy = dissipated;

@@ -32,6 +32,7 @@ struct Row {
   double stress_work = 0.0;        ///< integral of J sigma : D dt, per reference volume [J/m^3]
   double dissipated_energy = 0.0;  ///< plastic work, per reference volume [J/m^3]
   int iterations = 0;              ///< Newton iterations of the step (summed over sub-steps)
+  int jacobian_evaluations = 0;    ///< fresh Newton matrices computed in the step
   int substeps = 1;                ///< 1, or 2^k after k cut-backs
 };
 

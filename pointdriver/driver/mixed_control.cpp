@@ -39,7 +39,9 @@ class StepProblem {
 
   std::size_t size() const { return plan_.generators.size(); }
 
-  Trial evaluate(const Vector& u) const {
+  Trial evaluate(const Vector& u) const { return evaluate(u, *ctx_.model); }
+
+  Trial evaluate(const Vector& u, const ElasticPlastic& model) const {
     Trial t;
     t.L_path = plan_.L_fixed;
     for (std::size_t m = 0; m < size(); ++m) t.L_path += u(m) * plan_.generators[m];
@@ -47,7 +49,7 @@ class StepProblem {
     // Superposed rotation (Brannon-style): F* = Q F, L* = Omega + Q L Q^T (exact in time).
     const Mat3 L_lab = ctx_.spin + ctx_.Q_mid * t.L_path * ctx_.Q_mid.transpose();
     const Mat3 F_lab = ctx_.Q_new * t.F_path;
-    t.report = ctx_.model->update(s0_, L_lab, F_lab, dt_, t.state);
+    t.report = model.update(s0_, L_lab, F_lab, dt_, t.state);
     t.ok = t.report.status == UpdateStatus::ok;
     const Mat3 stress = ctx_.Q_new.transpose() * t.state.stress * ctx_.Q_new;
     t.residual.resize(static_cast<Eigen::Index>(plan_.equations.size()));
@@ -227,7 +229,8 @@ ControlPlan make_plan(const Leg& leg, const Mat3& F_start, const Mat3& stress_st
 }
 
 StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const PointState& s0,
-                        const Mat3& F_path0, double dt, double s_end, const Mat3& guess) {
+                        const Mat3& F_path0, double dt, double s_end, const Mat3& guess,
+                        Eigen::MatrixXd* jacobian) {
   StepProblem problem(plan, ctx, s0, F_path0, dt, s_end);
   StepSolution out;
   const auto n = static_cast<Eigen::Index>(problem.size());
@@ -238,7 +241,12 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
     u(m) = ddot(guess, G) / ddot(G, G);
   }
   Trial t = problem.evaluate(u);
-  const auto finish = [&](const Trial& tr, bool converged, std::string message) {
+  const auto finish = [&](const Trial& trial, bool converged, std::string message) {
+    // The failing step: apply the real (eroding) model once at the converged unknowns.
+    const bool erode =
+        converged && ctx.eroding_model != nullptr && trial.state.failed && !s0.failed;
+    const Trial eroded = erode ? problem.evaluate(u, *ctx.eroding_model) : Trial{};
+    const Trial& tr = erode ? eroded : trial;
     out.converged = converged;
     out.L_path = tr.L_path;
     out.F_path = tr.F_path;
@@ -251,6 +259,7 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
     return finish(t, t.ok, t.ok ? "" : std::string(to_string(t.report.status)));
   }
   const SolverSettings& st = *ctx.settings;
+  bool fresh_needed = false;
   for (int it = 0;; ++it) {
     if (t.ok && problem.converged(t, out.max_stress_residual, out.max_strain_residual)) {
       out.iterations = it;
@@ -268,11 +277,22 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
                     it, out.max_stress_residual, out.max_strain_residual);
       return finish(t, false, buf);
     }
-    bool jac_ok = true;
-    const Eigen::MatrixXd J = st.jacobian == SolverSettings::Jacobian::elastic
-                                  ? problem.elastic_jacobian()
-                                  : problem.central_difference_jacobian(u, jac_ok);
+    // The Jacobian: reused from the previous step while it keeps Newton contracting (a chord
+    // iteration, MTest's stiffness-update policy), recomputed when it does not.
     const Vector r = problem.scaled(t.residual);
+    const bool reuse =
+        jacobian != nullptr && !fresh_needed && jacobian->rows() == n && jacobian->cols() == n;
+    Eigen::MatrixXd J;
+    bool jac_ok = true;
+    if (reuse) {
+      J = *jacobian;
+    } else {
+      J = st.jacobian == SolverSettings::Jacobian::elastic
+              ? problem.elastic_jacobian()
+              : problem.central_difference_jacobian(u, jac_ok);
+      out.jacobian_evaluations += 1;
+      if (jacobian != nullptr) *jacobian = J;
+    }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
     if (!jac_ok || qr.rank() < n) {
       out.iterations = it;
@@ -285,6 +305,11 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
     for (int ls = 0; ls < 12; ++ls, alpha *= 0.5) {
       next = problem.evaluate(u + alpha * du);
       if (next.ok && problem.scaled(next.residual).norm() < r.norm()) break;
+    }
+    const bool decreased = next.ok && problem.scaled(next.residual).norm() < r.norm();
+    if (reuse && (!decreased || problem.scaled(next.residual).norm() > 0.1 * r.norm())) {
+      fresh_needed = true;  // the old Jacobian no longer contracts well: recompute it
+      if (!decreased) continue;
     }
     if (!next.ok || !(problem.scaled(next.residual).norm() < r.norm())) {
       // Stagnation at round-off: accept only if it is already within tolerance.

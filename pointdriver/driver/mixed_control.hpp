@@ -10,6 +10,7 @@
 // it back, and after the cut-back limit stops with a replay file).
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <vector>
 
@@ -41,7 +42,15 @@ ControlPlan make_plan(const Leg& leg, const Mat3& F_start, const Mat3& stress_st
 
 /// What the step solver needs besides the plan: the frame rotation and the material call.
 struct StepContext {
+  /// The model Newton iterates with. For a point that has not failed yet and a material whose
+  /// erosion changes the stress (AllowNoTension, ZeroStress), it is the KeepStress twin of the
+  /// material: failure detection is the same but the residual stays continuous, so the step on
+  /// which the point fails still converges; the real model (`eroding_model`) is then applied
+  /// once at the converged velocity gradient, and that failing step is accepted with the eroded
+  /// stress even though it no longer meets the stress targets (the material can no longer carry
+  /// them).
   const ElasticPlastic* model = nullptr;
+  const ElasticPlastic* eroding_model = nullptr;
   const SolverSettings* settings = nullptr;
   Mat3 Q_mid = Mat3::Identity(), Q_new = Mat3::Identity();  ///< superposed rotation
   Mat3 spin = Mat3::Zero();  ///< Omega = Q_dot Q^T of the superposed rotation [1/s]
@@ -50,6 +59,7 @@ struct StepContext {
 struct StepSolution {
   bool converged = false;
   int iterations = 0;
+  int jacobian_evaluations = 0;      ///< fresh Newton matrices computed
   double max_stress_residual = 0.0;  ///< [Pa]
   double max_strain_residual = 0.0;  ///< [-]
   Mat3 L_path = Mat3::Zero();        ///< solved velocity gradient in the path frame
@@ -60,8 +70,11 @@ struct StepSolution {
 };
 
 /// Solves one step of length dt from `s0` (lab frame) and path-frame F `F_path0`, with targets at
-/// leg fraction `s_end`; `guess` is a velocity gradient to start Newton from.
+/// leg fraction `s_end`; `guess` is a velocity gradient to start Newton from. `jacobian`, when
+/// given, is the previous step's Newton matrix: it is reused while Newton contracts by at least
+/// a factor 10 per iteration and replaced by a fresh one otherwise (and on return holds the last).
 StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const PointState& s0,
-                        const Mat3& F_path0, double dt, double s_end, const Mat3& guess);
+                        const Mat3& F_path0, double dt, double s_end, const Mat3& guess,
+                        Eigen::MatrixXd* jacobian = nullptr);
 
 }  // namespace impact::pointdriver

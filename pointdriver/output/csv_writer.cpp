@@ -1,7 +1,7 @@
 #include "pointdriver/output/csv_writer.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <cstdio>
+#include <charconv>
 #include <stdexcept>
 
 namespace impact::pointdriver {
@@ -102,12 +102,18 @@ CsvWriter::CsvWriter(const std::string& file, ElasticPlasticParams params)
 
 void CsvWriter::write(const Row& row) {
   const std::vector<double> v = csv_values(row, params_);
+  // std::to_chars: 4x faster than snprintf here (a row cost more than a step; see
+  // docs/performance.md), same 12 significant digits.
+  std::string line;
+  line.reserve(v.size() * 20);
   char buf[32];
   for (std::size_t i = 0; i < v.size(); ++i) {
-    std::snprintf(buf, sizeof buf, "%.12g", v[i]);
-    out_ << (i ? "," : "") << buf;
+    if (i) line += ',';
+    const auto res = std::to_chars(buf, buf + sizeof buf, v[i], std::chars_format::general, 12);
+    line.append(buf, res.ptr);
   }
-  out_ << '\n';
+  line += '\n';
+  out_ << line;
 }
 
 }  // namespace impact::pointdriver

@@ -59,8 +59,18 @@ Json fixed_velocity_gradient(std::initializer_list<std::pair<const char*, double
   return L;
 }
 
+/// The given components plus zero shear components: for an isotropic material a path with no
+/// shear stress has no shear strain, and fixing them halves the mixed-control unknowns.
+Json no_shear(std::initializer_list<std::pair<const char*, double>> given) {
+  Json L = Json::object();
+  for (const char* name : {"xy", "xz", "yx", "yz", "zx", "zy"}) L[name] = 0.0;
+  for (const auto& [name, value] : given) L[name] = value;
+  return L;
+}
+
 /// Duration of a leg that reaches `strain` at `rate`; both signed and of the same sign.
 double duration_of(JsonReader& r, double strain, double rate) {
+  if (std::isnan(strain) || std::isnan(rate)) return 1.0;  // already reported as missing
   if (!(strain * rate > 0.0)) {
     r.problems().add(r.key_path("strain_rate"),
                      "expected a nonzero strain_rate with the sign of strain (got strain " +
@@ -88,7 +98,7 @@ class Builder {
 
   Json uniaxial_stress_leg(double strain, double rate, const std::string& label) {
     Json& l = add(duration_of(r_, strain, rate), label);
-    l["velocity_gradient"] = {{"xx", rate}};
+    l["velocity_gradient"] = no_shear({{"xx", rate}});
     l["stress"] = {{"yy", 0.0}, {"zz", 0.0}};
     return l;
   }
@@ -138,7 +148,7 @@ const std::map<std::string, Expander>& expanders() {
          const double e = r.number("strain", Range::any(), "final in-plane log strain [-]");
          const double rate = r.number("strain_rate", Range::any(), "in-plane strain rate [1/s]");
          Json& l = b.add(duration_of(r, e, rate), "equibiaxial stress");
-         l["velocity_gradient"] = {{"xx", rate}, {"yy", rate}};
+         l["velocity_gradient"] = no_shear({{"xx", rate}, {"yy", rate}});
          l["stress"] = {{"zz", 0.0}};
        }},
       {"pure_shear",
@@ -172,9 +182,11 @@ const std::map<std::string, Expander>& expanders() {
                                     "duration of the hydrostatic confinement leg [s]");
          const double e = r.number("strain", Range::any(), "final axial log strain [-]");
          const double rate = r.number("strain_rate", Range::any(), "axial strain rate [1/s]");
-         b.add(tc, "confinement")["stress"] = {{"xx", -p}, {"yy", -p}, {"zz", -p}};
+         Json& c = b.add(tc, "confinement");
+         c["stress"] = {{"xx", -p}, {"yy", -p}, {"zz", -p}};
+         c["velocity_gradient"] = no_shear({});
          Json& l = b.add(duration_of(r, e, rate), "axial loading");
-         l["velocity_gradient"] = {{"xx", rate}};
+         l["velocity_gradient"] = no_shear({{"xx", rate}});
          l["stress"] = {{"yy", -p}, {"zz", -p}};
        }},
       {"load_unload_reverse",
@@ -186,7 +198,9 @@ const std::map<std::string, Expander>& expanders() {
          const double er = r.number("reverse_strain", Range::positive(),
                                     "magnitude of the reverse strain increment [-]");
          b.uniaxial_stress_leg(e, rate, "load");
-         b.add(tu, "unload")["stress"] = {{"xx", 0.0}, {"yy", 0.0}, {"zz", 0.0}};
+         Json& u = b.add(tu, "unload");
+         u["stress"] = {{"xx", 0.0}, {"yy", 0.0}, {"zz", 0.0}};
+         u["velocity_gradient"] = no_shear({});
          b.uniaxial_stress_leg(-std::copysign(er, e), -rate, "reverse");
        }},
       // Arrays of equal length, read by expand_jumps().
@@ -215,7 +229,7 @@ const std::map<std::string, Expander>& expanders() {
                             "expected strain > 0 for triaxiality >= 0 and < 0 for triaxiality < 0");
          }
          Json& l = b.add(duration_of(r, e, rate), "constant triaxiality");
-         l["velocity_gradient"] = {{"xx", rate}};
+         l["velocity_gradient"] = no_shear({{"xx", rate}});
          l["stress_ratio"] = {{"of", "xx"}, {"yy", k}, {"zz", k}};
        }},
   };
@@ -288,8 +302,13 @@ Json expand_named_leg(JsonReader& r, const Json& raw) {
                                              "; known: " + known);
     return Json::array();
   }
+  const std::size_t problems_before = r.problems().count();
   Builder b(r, read_common(r));
   it->second(r, b);
+  if (r.problems().count() != problems_before) {
+    r.reject_unknown_keys();
+    return Json::array();  // its own keys are wrong: expanding would only repeat the problem
+  }
   if (type == "strain_rate_jump" || type == "temperature_jump") {
     expand_jumps(r, b, raw, type == "temperature_jump");
   }

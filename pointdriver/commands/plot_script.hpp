@@ -1,0 +1,36 @@
+// Running the plotting helper pointdriver/plot/plot.py (python3 + matplotlib) from the commands:
+// `pointdriver plot` hands its arguments over; `pointdriver convergence` draws its figures with it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace impact::pointdriver {
+
+/// The command that installs what the plots need (printed when python3 or matplotlib is missing).
+inline constexpr const char* plot_install_hint = "apt-get install -y python3 python3-matplotlib";
+
+/// plot.py: $POINTDRIVER_PLOT_SCRIPT when set, else <source dir>/pointdriver/plot/plot.py.
+std::string plot_script_path();
+
+/// How a plot.py run ended.
+struct PlotRun {
+  enum class Status {
+    ok,
+    no_python,      ///< python3 could not be started
+    no_matplotlib,  ///< python3 runs but cannot import matplotlib
+    no_script,      ///< plot.py not found
+    input_error,    ///< plot.py rejected the input (missing file or column): exit 2
+    failed          ///< any other non-zero exit
+  } status = Status::ok;
+  int exit_code = 0;
+  std::string message;  ///< for the user, with the fix where there is one
+};
+
+/// Runs `python3 plot.py args...` (no shell: arguments are passed as they are; the interpreter is
+/// $POINTDRIVER_PYTHON, else the first of python3 on PATH and /usr/bin/python3 that imports
+/// matplotlib), with plot.py's
+/// output going to this process's stdout/stderr.
+PlotRun run_plot_script(const std::vector<std::string>& args);
+
+}  // namespace impact::pointdriver
