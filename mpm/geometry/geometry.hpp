@@ -1,0 +1,59 @@
+// Solid shapes that objects are seeded from: an inside test for particle seeding and the exact
+// volume that `mpm check` compares the seeded particle volume with. Lengths in metres.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "models/core/input.hpp"
+#include "models/core/tensor.hpp"
+
+namespace impact::mpm {
+
+struct Box {
+  Vec3 lower, upper;
+};
+struct Sphere {
+  Vec3 center;
+  double radius;
+};
+/// Solid circular cylinder between the centres of its end faces.
+struct Cylinder {
+  Vec3 bottom, top;
+  double radius;
+};
+/// Tube of outer radius `radius` and wall `thickness`, optionally closed at its bottom end by a
+/// solid cap `cap_thickness` long (the report's end plate plus hollow cylinder is one such tube).
+struct HollowCylinder {
+  Vec3 bottom, top;
+  double radius, thickness, cap_thickness;
+};
+struct Geometry;
+/// Union of parts; volume() is the sum of the parts' volumes, exact only if they do not overlap
+/// (seeding counts a shared point once, so `mpm check` then shows particle volume < geometry).
+struct Union {
+  std::vector<Geometry> parts;
+};
+struct Geometry {
+  std::variant<Box, Sphere, Cylinder, HollowCylinder, Union> shape;
+};
+
+bool inside(const Geometry& g, const Vec3& x);
+/// Exact volume [m^3] (a union: the sum of its parts).
+double volume(const Geometry& g);
+/// Axis-aligned bounding box (lower, upper).
+std::pair<Vec3, Vec3> bounds(const Geometry& g);
+
+/// Reads {"type": "box"|"sphere"|"cylinder"|"hollow_cylinder"|"union", ...}; problems go to
+/// r.problems() with their key paths.
+Geometry read_geometry(JsonReader& r, const Json& node);
+Json to_json(const Geometry& g);
+
+/// A 3-vector at `key` of `node` (the object `r` reads); problems name the key path.
+Vec3 read_vec3(JsonReader& r, const Json& node, std::string_view key, std::string_view meaning,
+               std::optional<Vec3> fallback = {});
+
+}  // namespace impact::mpm

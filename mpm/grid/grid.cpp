@@ -1,0 +1,111 @@
+#include "mpm/grid/grid.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+
+namespace impact::mpm {
+
+Grid::Grid(const GridSpec& spec, int threads)
+    : spec_(spec),
+      dx_(spec.spacing()),
+      inv_dx_(dx_.cwiseInverse()),
+      nx_(spec.cells[0] + 3),
+      ny_(spec.cells[1] + 3),
+      nz_(spec.cells[2] + 3),
+      buffers_(std::max(threads, 1), std::vector<NodeData>(node_count())) {
+  const int n = node_count();
+  mass.assign(n, 0.0);
+  velocity.assign(n, Vec3::Zero());
+  velocity_new.assign(n, Vec3::Zero());
+  increment.assign(n, Vec3::Zero());
+  velocity_L.assign(n, Vec3::Zero());
+  bc_increment.assign(n, Vec3::Zero());
+  std::vector<char> mark(n, 0);
+  for (int face = 0; face < 6; ++face) {
+    constrained_[face] = spec_.faces[face] != FaceCondition::free;
+    if (!constrained_[face]) continue;
+    const int axis = face / 2;
+    const int c[3] = {spec_.cells[0], spec_.cells[1], spec_.cells[2]};
+    const int layers[2] = {face % 2 == 0 ? 0 : c[axis], face % 2 == 0 ? -1 : c[axis] + 1};
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    for (int layer : layers)
+      for (int u = -1; u <= c[a] + 1; ++u)
+        for (int w = -1; w <= c[b] + 1; ++w) {
+          int ijk[3];
+          ijk[axis] = layer;
+          ijk[a] = u;
+          ijk[b] = w;
+          mark[index(ijk[0], ijk[1], ijk[2])] = 1;
+        }
+  }
+  for (int i = 0; i < n; ++i)
+    if (mark[i]) boundary_nodes_.push_back(i);
+}
+
+void Grid::clear() {
+  const int n = node_count();
+  const int nt = threads();
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (int i = 0; i < n; ++i) {
+    for (int t = 0; t < nt; ++t) buffers_[t][i] = NodeData{};
+  }
+}
+
+void Grid::reduce() {
+  const int n = node_count();
+  const int nt = threads();
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (int i = 0; i < n; ++i) {
+    NodeData& a = buffers_[0][i];
+    for (int t = 1; t < nt; ++t) {  // fixed order: deterministic sums
+      const NodeData& b = buffers_[t][i];
+      a.mass += b.mass;
+      for (int d = 0; d < 3; ++d) {
+        a.momentum[d] += b.momentum[d];
+        a.force[d] += b.force[d];
+      }
+    }
+    mass[i] = a.mass;
+  }
+}
+
+void Grid::clear_momentum() {
+  const int n = node_count();
+  const int nt = threads();
+  if (remap_buffers_.empty()) remap_buffers_.assign(nt, std::vector<Vec3>(n));
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (int i = 0; i < n; ++i) {
+    for (int t = 0; t < nt; ++t) remap_buffers_[t][i].setZero();
+  }
+}
+
+void Grid::reduce_momentum() {
+  const int n = node_count();
+  const int nt = threads();
+  if (nt == 1) return;
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (int i = 0; i < n; ++i) {
+    for (int t = 1; t < nt; ++t) remap_buffers_[0][i] += remap_buffers_[t][i];
+  }
+}
+
+bool Grid::touches_boundary(const std::array<int, 3>& base, int n) const {
+  for (int d = 0; d < 3; ++d) {
+    if (constrained_[2 * d] && base[d] <= 0) return true;
+    if (constrained_[2 * d + 1] && base[d] + n - 1 >= spec_.cells[d]) return true;
+  }
+  return false;
+}
+
+std::size_t Grid::bytes() const {
+  std::size_t b = buffers_.size() * node_count() * sizeof(NodeData);
+  for (const auto& r : remap_buffers_) b += r.size() * sizeof(Vec3);
+  b += mass.size() * sizeof(double) +
+       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size() +
+        bc_increment.size()) *
+           sizeof(Vec3);
+  return b;
+}
+
+}  // namespace impact::mpm

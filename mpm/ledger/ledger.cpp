@@ -1,0 +1,101 @@
+#include "mpm/ledger/ledger.hpp"
+
+namespace impact::mpm {
+
+int Ledger::add_sink_column(std::string name) {
+  sink_names_.push_back(std::move(name));
+  sinks_.push_back(0.0);
+  return static_cast<int>(sinks_.size()) - 1;
+}
+
+void Ledger::start(double time, double kinetic_energy, const Vec3& momentum) {
+  time_ = time;
+  kinetic_ = kinetic_energy;
+  initial_energy_ = kinetic_energy;  // the initial strain energy is zero: stress-free start
+  momentum_ = momentum;
+  p0_ = momentum;
+}
+
+void Ledger::record_step(double time, double kinetic_energy, const Vec3& momentum,
+                         double strain_energy_increment, const Vec3& boundary_impulse,
+                         double boundary_work, double boundary_dissipation,
+                         const Vec3& external_impulse, double external_work) {
+  time_ = time;
+  kinetic_ = kinetic_energy;
+  momentum_ = momentum;
+  strain_ += strain_energy_increment;
+  boundary_impulse_ += boundary_impulse;
+  boundary_work_ += boundary_work;
+  boundary_dissipation_ += boundary_dissipation;
+  external_impulse_ += external_impulse;
+  external_work_ += external_work;
+}
+
+LedgerRow Ledger::row() const {
+  LedgerRow r;
+  r.time = time_;
+  r.kinetic_energy = kinetic_;
+  r.strain_energy = strain_;
+  r.total_energy = kinetic_ + strain_;
+  r.momentum = momentum_;
+  r.boundary_impulse = boundary_impulse_;
+  r.boundary_work = boundary_work_;
+  r.boundary_dissipation = boundary_dissipation_;
+  r.sinks = sinks_;
+  r.external_impulse = external_impulse_;
+  r.external_work = external_work_;
+  double sunk = 0.0;
+  for (double s : sinks_) sunk += s;
+  const double scale = initial_energy_ > 0.0 ? initial_energy_ : 1.0;
+  r.energy_error =
+      (r.total_energy + boundary_dissipation_ + sunk - initial_energy_ - boundary_work_ -
+       external_work_) /
+      scale;
+  return r;
+}
+
+std::vector<std::string> Ledger::columns() const {
+  std::vector<std::string> c = {"time [s]",
+                                "kinetic_energy [J]",
+                                "strain_energy [J]",
+                                "total_energy [J]",
+                                "momentum_x [kg m/s]",
+                                "momentum_y [kg m/s]",
+                                "momentum_z [kg m/s]",
+                                "boundary_impulse_x [N s]",
+                                "boundary_impulse_y [N s]",
+                                "boundary_impulse_z [N s]",
+                                "boundary_work [J]",
+                                "boundary_dissipation [J]"};
+  for (const std::string& s : sink_names_) c.push_back(s + " [J]");
+  if (with_external_) {
+    c.insert(c.end(), {"external_impulse_x [N s]", "external_impulse_y [N s]",
+                       "external_impulse_z [N s]", "external_work [J]"});
+  }
+  c.push_back("energy_error [-]");
+  return c;
+}
+
+std::vector<double> Ledger::values(const LedgerRow& r, bool with_external) {
+  std::vector<double> v = {r.time,
+                           r.kinetic_energy,
+                           r.strain_energy,
+                           r.total_energy,
+                           r.momentum(0),
+                           r.momentum(1),
+                           r.momentum(2),
+                           r.boundary_impulse(0),
+                           r.boundary_impulse(1),
+                           r.boundary_impulse(2),
+                           r.boundary_work,
+                           r.boundary_dissipation};
+  v.insert(v.end(), r.sinks.begin(), r.sinks.end());
+  if (with_external) {
+    v.insert(v.end(), {r.external_impulse(0), r.external_impulse(1), r.external_impulse(2),
+                       r.external_work});
+  }
+  v.push_back(r.energy_error);
+  return v;
+}
+
+}  // namespace impact::mpm

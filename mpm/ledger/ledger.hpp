@@ -1,0 +1,78 @@
+// Energy and momentum ledger (history.csv). Definitions (docs/mpm.md#ledger):
+//   kinetic_energy  = sum_p 1/2 m_p |v_p|^2, end-of-step velocity            (report eq. 13)
+//   strain_energy   = sum_steps sum_p 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt   (eq. 14)
+//   total_energy    = kinetic + strain                                  (the report's quantity)
+//   boundary_impulse, boundary_work: what the grid-face conditions exerted (grid/boundary.cpp)
+//   boundary_dissipation = sum_steps sum_p 1/2 m_p (|v_p^free|^2 - |v_p^{n+1}|^2): the kinetic
+//                     energy the faces' velocity projection took from the particles
+//   energy_error    = (kinetic + strain + boundary_dissipation + sum of sinks - E0 - boundary_work
+//                      - external_work) / E0
+// Column names carry their unit, `name [unit]` (the point driver's convention).
+// with E0 the initial kinetic + strain energy (1 J if E0 = 0, i.e. then an absolute error in J).
+// A later dissipation (artificial-viscosity work, contact dissipation) is one more Sink: a new
+// column, and a term of energy_error, without touching the rest.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "models/core/tensor.hpp"
+
+namespace impact::mpm {
+
+struct LedgerRow {
+  double time = 0.0;
+  double kinetic_energy = 0.0;
+  double strain_energy = 0.0;
+  double total_energy = 0.0;
+  Vec3 momentum = Vec3::Zero();
+  Vec3 boundary_impulse = Vec3::Zero();
+  double boundary_work = 0.0;
+  double boundary_dissipation = 0.0;
+  std::vector<double> sinks;  ///< in Ledger::sink_names() order
+  Vec3 external_impulse = Vec3::Zero();
+  double external_work = 0.0;
+  double energy_error = 0.0;
+};
+
+class Ledger {
+ public:
+  /// `with_external`: gravity is on, so body-force impulse and work get columns too.
+  explicit Ledger(bool with_external = false) : with_external_(with_external) {}
+
+  /// Registers an energy sink column (J, accumulated; `name` without unit: the header gets
+  /// "name [J]"); returns its index for add_sink().
+  int add_sink_column(std::string name);
+  const std::vector<std::string>& sink_names() const { return sink_names_; }
+
+  /// The state at t = 0 (E0 and p0).
+  void start(double time, double kinetic_energy, const Vec3& momentum);
+  /// One step's increments and end-of-step particle totals.
+  void record_step(double time, double kinetic_energy, const Vec3& momentum,
+                   double strain_energy_increment, const Vec3& boundary_impulse,
+                   double boundary_work, double boundary_dissipation, const Vec3& external_impulse,
+                   double external_work);
+  void add_sink(int index, double energy) { sinks_[index] += energy; }
+
+  LedgerRow row() const;
+  double initial_energy() const { return initial_energy_; }
+  const Vec3& initial_momentum() const { return p0_; }
+
+  /// CSV header: "time [s]", "kinetic_energy [J]", ..., "energy_error [-]" (issue 4's names with
+  /// their units).
+  std::vector<std::string> columns() const;
+  static std::vector<double> values(const LedgerRow& r, bool with_external);
+  bool with_external() const { return with_external_; }
+
+ private:
+  bool with_external_;
+  double time_ = 0.0, kinetic_ = 0.0, strain_ = 0.0, boundary_work_ = 0.0, external_work_ = 0.0;
+  double boundary_dissipation_ = 0.0;
+  double initial_energy_ = 0.0;
+  Vec3 momentum_ = Vec3::Zero(), p0_ = Vec3::Zero(), boundary_impulse_ = Vec3::Zero();
+  Vec3 external_impulse_ = Vec3::Zero();
+  std::vector<std::string> sink_names_;
+  std::vector<double> sinks_;
+};
+
+}  // namespace impact::mpm

@@ -1,0 +1,39 @@
+// Material points in structure-of-arrays storage: one std::vector per field, index p throughout.
+// The constitutive history (stress, F, R, plastic strain, temperature, damage, ...) is the
+// library's PointState, so a new model variable costs no change here.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "models/core/point_state.hpp"
+#include "mpm/scene/scene.hpp"
+
+namespace impact::mpm {
+
+struct Particles {
+  std::vector<Vec3> x;                  ///< position [m]
+  std::vector<Vec3> v;                  ///< velocity [m/s]
+  std::vector<double> mass;             ///< [kg], constant
+  std::vector<double> volume0;          ///< initial volume [m^3]
+  std::vector<double> volume;           ///< current volume V0 det F [m^3]
+  std::vector<Mat3> L;                  ///< velocity gradient of the last step [1/s]
+  std::vector<PointState> state;        ///< stress, F, history (models/core/point_state.hpp)
+  std::vector<double> wave_speed;       ///< longitudinal sound speed of the last update [m/s]
+  std::vector<std::uint16_t> material;  ///< index into Scene::materials
+  std::vector<std::uint16_t> object;    ///< index into Scene::objects (GIMP half-width, output)
+
+  std::size_t size() const { return x.size(); }
+  void reserve(std::size_t n);
+  /// Approximate storage per particle [bytes] (for `mpm check` and the benchmark).
+  static std::size_t bytes_per_particle();
+};
+
+/// Seeds every object at the ppc^3 sub-cell centres of the grid cells that lie inside its
+/// geometry; a point already claimed by an earlier object is skipped. mass = rho0 * cell/ppc^3.
+Particles seed_particles(const Scene& scene);
+
+/// Per object: GIMP half-width l_d = 1/(2 ppc_d) in cells (fixed at creation, as in the report).
+std::vector<Vec3> half_widths(const Scene& scene);
+
+}  // namespace impact::mpm

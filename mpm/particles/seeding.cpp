@@ -1,0 +1,81 @@
+#include <algorithm>
+#include <cmath>
+
+#include "mpm/particles/particles.hpp"
+
+namespace impact::mpm {
+
+void Particles::reserve(std::size_t n) {
+  x.reserve(n);
+  v.reserve(n);
+  mass.reserve(n);
+  volume0.reserve(n);
+  volume.reserve(n);
+  L.reserve(n);
+  state.reserve(n);
+  wave_speed.reserve(n);
+  material.reserve(n);
+  object.reserve(n);
+}
+
+std::size_t Particles::bytes_per_particle() {
+  return 2 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(Mat3) + sizeof(PointState) +
+         sizeof(double) + 2 * sizeof(std::uint16_t);
+}
+
+std::vector<Vec3> half_widths(const Scene& scene) {
+  std::vector<Vec3> l;
+  for (const SceneObject& o : scene.objects) {
+    l.emplace_back(0.5 / o.particles_per_cell[0], 0.5 / o.particles_per_cell[1],
+                   0.5 / o.particles_per_cell[2]);
+  }
+  return l;
+}
+
+Particles seed_particles(const Scene& scene) {
+  Particles p;
+  const GridSpec& g = scene.grid;
+  const Vec3 h = g.spacing();
+  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+    const SceneObject& o = scene.objects[oi];
+    const ElasticPlastic& model = scene.materials[o.material].material.model;
+    const auto [lo, hi] = bounds(o.geometry);
+    std::array<int, 3> c0{}, c1{};
+    for (int d = 0; d < 3; ++d) {
+      c0[d] = std::clamp(static_cast<int>(std::floor((lo(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
+      c1[d] = std::clamp(static_cast<int>(std::ceil((hi(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
+    }
+    const auto& ppc = o.particles_per_cell;
+    const double v0 = h.prod() / (ppc[0] * ppc[1] * ppc[2]);
+    const PointState s0 = model.initial_state(o.temperature);
+    const double c = model.wave_speed(s0);
+    for (int i = c0[0]; i < c1[0]; ++i)
+      for (int j = c0[1]; j < c1[1]; ++j)
+        for (int k = c0[2]; k < c1[2]; ++k)
+          for (int a = 0; a < ppc[0]; ++a)
+            for (int b = 0; b < ppc[1]; ++b)
+              for (int e = 0; e < ppc[2]; ++e) {
+                const Vec3 x =
+                    g.lower + h.cwiseProduct(Vec3(i + (a + 0.5) / ppc[0], j + (b + 0.5) / ppc[1],
+                                                  k + (e + 0.5) / ppc[2]));
+                if (!inside(o.geometry, x)) continue;
+                const bool claimed = std::any_of(
+                    scene.objects.begin(), scene.objects.begin() + oi,
+                    [&](const SceneObject& earlier) { return inside(earlier.geometry, x); });
+                if (claimed) continue;
+                p.x.push_back(x);
+                p.v.push_back(o.velocity);
+                p.mass.push_back(model.params().density * v0);
+                p.volume0.push_back(v0);
+                p.volume.push_back(v0);
+                p.L.push_back(Mat3::Zero());
+                p.state.push_back(s0);
+                p.wave_speed.push_back(c);
+                p.material.push_back(static_cast<std::uint16_t>(o.material));
+                p.object.push_back(static_cast<std::uint16_t>(oi));
+              }
+  }
+  return p;
+}
+
+}  // namespace impact::mpm

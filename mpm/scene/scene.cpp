@@ -1,0 +1,257 @@
+#include "mpm/scene/scene.hpp"
+
+#include <filesystem>
+#include <limits>
+
+namespace impact::mpm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Relative material paths in a file are relative to that file; rewrite them before merging so a
+// base scene reached through `extends` keeps pointing at its own materials.
+void resolve_material_paths(Json& doc, const fs::path& dir) {
+  if (!doc.is_object() || !doc.contains("materials") || !doc["materials"].is_object()) return;
+  for (auto& item : doc["materials"].items()) {
+    Json& m = item.value();
+    if (!m.is_object() || !m.contains("file") || !m["file"].is_string()) continue;
+    const fs::path p(m["file"].get<std::string>());
+    if (p.is_relative()) m["file"] = (dir / p).lexically_normal().string();
+  }
+}
+
+Json load_with_extends(const std::string& file, int depth) {
+  if (depth > 16) throw InputError({file + ": /extends: chain longer than 16 (a cycle?)"});
+  Json doc = load_json_file(file);
+  if (!doc.is_object()) throw InputError({file + ": expected a JSON object (a scene)"});
+  const fs::path dir = fs::path(file).parent_path();
+  resolve_material_paths(doc, dir);
+  if (!doc.contains("extends")) return doc;
+  if (!doc["extends"].is_string()) {
+    throw InputError({file + ": /extends: expected a string (path of the base scene), got " +
+                      doc["extends"].dump()});
+  }
+  const fs::path base = fs::path(doc["extends"].get<std::string>());
+  Json merged =
+      load_with_extends((base.is_relative() ? dir / base : base).lexically_normal(), depth + 1);
+  doc.erase("extends");
+  merged.merge_patch(doc);  // RFC 7396: objects merge key by key, null deletes, arrays replace
+  return merged;
+}
+
+std::array<int, 3> read_int3(JsonReader& r, const Json& node, std::string_view key, int lo, int hi,
+                             std::string_view meaning, std::optional<std::array<int, 3>> fallback) {
+  const Vec3 v =
+      read_vec3(r, node, key, meaning,
+                fallback ? std::optional<Vec3>(Vec3((*fallback)[0], (*fallback)[1], (*fallback)[2]))
+                         : std::nullopt);
+  std::array<int, 3> out{};
+  for (int d = 0; d < 3; ++d) {
+    if (!(v(d) >= lo && v(d) <= hi && v(d) == std::floor(v(d)))) {
+      if (!std::isnan(v(d))) {
+        r.problems().add(r.key_path(key), "expected integers in [" + std::to_string(lo) + ", " +
+                                              std::to_string(hi) + "] (" + std::string(meaning) +
+                                              ")");
+      }
+      return fallback.value_or(std::array<int, 3>{1, 1, 1});
+    }
+    out[d] = static_cast<int>(v(d));
+  }
+  return out;
+}
+
+const Json& at(const Json& node, const char* key) {
+  return node.is_object() && node.contains(key) ? node[key] : empty_json_object();
+}
+
+void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
+  JsonReader r = root.child("grid", "background grid");
+  const Json& n = at(doc, "grid");
+  g.lower = read_vec3(r, n, "lower", "lower corner of the grid [m]");
+  g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m]");
+  g.cells = read_int3(r, n, "cells", 1, 100000, "cells per axis", std::nullopt);
+  if (!((g.upper - g.lower).array() > 0.0).all()) {
+    r.problems().add(r.key_path("upper"), "expected upper > lower on every axis");
+  }
+  g.faces.fill(FaceCondition::symmetric);
+  if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed or free")) {
+    for (int f = 0; f < 6; ++f) {
+      const std::string c =
+          b->choice(kFaceNames[f], {"symmetric", "fixed", "free"},
+                    "grid face condition (symmetric: frictionless rigid wall)", "symmetric");
+      g.faces[f] = c == "fixed"  ? FaceCondition::fixed
+                   : c == "free" ? FaceCondition::free
+                                 : FaceCondition::symmetric;
+    }
+    b->reject_unknown_keys();
+  }
+  r.reject_unknown_keys();
+}
+
+void read_time(JsonReader& root, TimeSpec& t) {
+  JsonReader r = root.child("time", "time stepping (the report's <Time> block)");
+  t.max_time = r.number("max_time", Range::positive(), "end time [s]");
+  t.initial_dt = r.number_or("initial_dt", kInf, Range::positive(),
+                             "first step, capped at the stable step [s]; default: stable step");
+  t.min_dt = r.number_or("min_dt", 0.0, Range::non_negative(),
+                         "the run stops when the step falls below this [s]");
+  t.max_dt = r.number_or("max_dt", kInf, Range::positive(), "cap on the step [s]");
+  t.multiplier = r.number_or("multiplier", 0.5, Range::open_closed(0.0, 1.0),
+                             "factor on the stable step (CFL number) [-]");
+  if (t.min_dt > t.max_dt) r.problems().add(r.key_path("min_dt"), "expected min_dt <= max_dt");
+  r.reject_unknown_keys();
+}
+
+void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
+  // Every solver and output key has a default, so the blocks themselves are optional.
+  JsonReader r = root.optional_child("solver", "algorithm choices")
+                     .value_or(JsonReader(empty_json_object(), "/solver", root.problems()));
+  s.interpolation =
+      r.choice("interpolation", {"linear", "gimp"},
+               "shape functions: linear (8 nodes) or gimp (27-node uGIMP)", "gimp") == "linear"
+          ? Interpolation::linear
+          : Interpolation::gimp;
+  s.scheme = r.choice("scheme", {"usl", "musl"}, "update scheme", "musl") == "usl" ? Scheme::usl
+                                                                                   : Scheme::musl;
+  s.f_integration =
+      r.choice("deformation_gradient", {"forward_euler", "exponential"},
+               "F_{n+1} = (I + L dt) F_n or exp(L dt) F_n", "forward_euler") == "exponential"
+          ? FIntegration::exponential
+          : FIntegration::forward_euler;
+  s.gravity =
+      read_vec3(r, at(doc, "solver"), "gravity", "body force per unit mass [m/s^2]", Vec3::Zero());
+  r.reject_unknown_keys();
+}
+
+void read_output(JsonReader& root, const Json& doc, const std::string& file, double max_time,
+                 OutputSpec& o) {
+  JsonReader r = root.optional_child("output", "what is written and where")
+                     .value_or(JsonReader(empty_json_object(), "/output", root.problems()));
+  const Json& n = at(doc, "output");
+  o.directory = r.string_or("directory", "out/" + fs::path(file).stem().string(),
+                            "output directory (relative to the working directory)");
+  o.interval = r.number_or("interval", max_time / 100.0, Range::positive(),
+                           "history row and snapshot interval [s]; default max_time/100");
+  o.snapshots = r.boolean_or("snapshots", true, "write particles/step_NNNNNN.vtu and a .pvd");
+  r.ignore("fields");
+  o.fields = {"velocity", "stress", "plastic_strain", "temperature", "damage", "mass"};
+  if (n.is_object() && n.contains("fields")) {
+    const Json& f = n["fields"];
+    o.fields.clear();
+    if (!f.is_array()) {
+      r.problems().add(r.key_path("fields"), "expected an array of field names");
+    } else {
+      for (std::size_t i = 0; i < f.size(); ++i) {
+        const auto& known = known_output_fields();
+        if (!f[i].is_string() ||
+            std::find(known.begin(), known.end(), f[i].get<std::string>()) == known.end()) {
+          std::string list;
+          for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+          r.problems().add(r.key_path("fields") + "/" + std::to_string(i),
+                           "unknown field " + f[i].dump() + "; known: " + list);
+        } else {
+          o.fields.push_back(f[i].get<std::string>());
+        }
+      }
+    }
+  }
+  r.reject_unknown_keys();
+}
+
+void read_materials(JsonReader& root, const Json& doc, std::vector<SceneMaterial>& out) {
+  JsonReader r = root.child("materials", "named materials");
+  const Json& n = at(doc, "materials");
+  if (!n.is_object()) return;
+  for (const auto& item : n.items()) {
+    JsonReader m = r.child(item.key(), "a material: file and inline overrides");
+    const std::string file = m.string("file", "material file, e.g. data/materials/al6061_t6.json");
+    m.ignore("overrides");
+    const Json& ov = at(item.value(), "overrides");
+    if (item.value().is_object() && item.value().contains("overrides") && !ov.is_object()) {
+      m.problems().add(m.key_path("overrides"), "expected an object (a JSON merge patch)");
+    }
+    m.reject_unknown_keys();
+    if (file.empty()) continue;
+    try {
+      out.push_back({item.key(), load_material(file, ov.is_object() ? ov : Json::object())});
+    } catch (const InputError& e) {
+      // The material reader names the material file; say which scene entry asked for it.
+      for (const auto& p : e.problems()) {
+        m.problems().add(m.key_path("file"), "in material " + p);
+      }
+    }
+  }
+  if (out.empty() && r.problems().empty()) {
+    r.problems().add("/materials", "expected at least one material");
+  }
+}
+
+void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMaterial>& materials,
+                  std::vector<SceneObject>& out) {
+  JsonReader r = root.child("objects", "named objects (bodies) to seed with particles");
+  const Json& n = at(doc, "objects");
+  if (!n.is_object()) return;
+  for (const auto& item : n.items()) {
+    JsonReader o = r.child(item.key(), "an object");
+    const Json& on = item.value();
+    SceneObject obj;
+    obj.name = item.key();
+    const std::string mat = o.string("material", "name of an entry of /materials");
+    auto it = std::find_if(materials.begin(), materials.end(),
+                           [&](const SceneMaterial& m) { return m.name == mat; });
+    if (it == materials.end() && !mat.empty()) {
+      std::string list;
+      for (const auto& m : materials) list += (list.empty() ? "" : ", ") + m.name;
+      o.problems().add(o.key_path("material"), "unknown material \"" + mat + "\"; known: " + list);
+    } else {
+      obj.material = static_cast<int>(it - materials.begin());
+    }
+    JsonReader g = o.child("geometry", "shape of the object");
+    obj.geometry = read_geometry(g, at(on, "geometry"));
+    g.reject_unknown_keys();
+    obj.velocity = read_vec3(o, on, "velocity", "initial velocity [m/s]", Vec3::Zero());
+    obj.temperature =
+        o.number_or("temperature", 294.0, Range::open(0.0, 1e4), "initial temperature [K]");
+    obj.particles_per_cell =
+        read_int3(o, on, "particles_per_cell", 1, 16,
+                  "particles per cell per axis (the report's res)", std::array<int, 3>{2, 2, 2});
+    o.reject_unknown_keys();
+    out.push_back(std::move(obj));
+  }
+  if (out.empty() && r.problems().empty()) {
+    r.problems().add("/objects", "expected at least one object");
+  }
+}
+
+}  // namespace
+
+Json load_scene_document(const std::string& file) {
+  return load_with_extends(file, 0);
+}
+
+Scene read_scene(const Json& document, const std::string& file) {
+  InputProblems problems(file);
+  JsonReader root(document, "", problems);
+  Scene s;
+  s.file = file;
+  s.resolved = document;
+  root.ignore("description");
+  read_grid(root, document, s.grid);
+  read_time(root, s.time);
+  read_solver(root, document, s.solver);
+  read_output(root, document, file, s.time.max_time, s.output);
+  read_materials(root, document, s.materials);
+  read_objects(root, document, s.materials, s.objects);
+  root.reject_unknown_keys();
+  problems.throw_if_any();
+  return s;
+}
+
+Scene load_scene(const std::string& file) {
+  return read_scene(load_scene_document(file), file);
+}
+
+}  // namespace impact::mpm

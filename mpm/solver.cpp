@@ -1,0 +1,287 @@
+#include "mpm/solver.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "mpm/output/output.hpp"
+#include "mpm/step/parallel.hpp"
+
+namespace impact::mpm {
+
+namespace {
+
+// Attributes wall time to the phases of a step.
+class PhaseClock {
+ public:
+  explicit PhaseClock(PhaseTimes& times) : times_(times), last_(omp_get_wtime()) {}
+  void lap(double PhaseTimes::*phase) {
+    const double now = omp_get_wtime();
+    times_.*phase += now - last_;
+    last_ = now;
+  }
+
+ private:
+  PhaseTimes& times_;
+  double last_;
+};
+
+// One explicit step (USL or MUSL). Equations: Sulsky, Chen & Schreyer (1994) 20-26; MUSL:
+// Sulsky, Zhou & Schreyer (1995) and Nairn (2003); strain energy: report eq. 14.
+template <class Shape>
+StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S,
+                   const std::vector<const ElasticPlastic*>& models, const SolverSpec& s, double dt,
+                   std::optional<Failure>& failure) {
+  StepTotals t;
+  PhaseClock clock(t.seconds);
+  const bool usl = s.scheme == Scheme::usl;
+  compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n, once per step
+  particles_to_grid<Shape>(P, G, S);                  // m_I, p_I, f_int_I           (eqs. 20-22)
+  clock.lap(&PhaseTimes::particles_to_grid);
+  t.grid = grid_update(G, dt, s.gravity, usl);  // v*_I, mirror faces            (eq. 24)
+  clock.lap(&PhaseTimes::grid_update);
+  // FLIP velocity, x from v*_I; USL: L from v^L_I (= v*_I but at light nodes)   (eqs. 23, 25-26)
+  t.particles = grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, failure);
+  clock.lap(&PhaseTimes::grid_to_particles);
+  if (failure) return t;
+  if (!usl) {
+    remap_and_gradient<Shape>(P, G, S);  // MUSL: L from v^{n+1}_I re-mapped from the particles
+    clock.lap(&PhaseTimes::remap);
+  }
+  t.stress = update_stress(P, models, dt, s.f_integration, failure);  // sigma, F, V; eq. 14
+  clock.lap(&PhaseTimes::stress);
+  return t;
+}
+
+std::variant<LinearShape, GimpShape> make_shape(const Scene& scene) {
+  const GridSpec& g = scene.grid;
+  const Vec3 inv_dx = g.spacing().cwiseInverse();
+  if (scene.solver.interpolation == Interpolation::linear) {
+    return LinearShape{g.lower, inv_dx, g.cells};
+  }
+  return GimpShape{g.lower, inv_dx, g.cells, half_widths(scene)};
+}
+
+std::variant<Stencils<LinearShape>, Stencils<GimpShape>> make_stencils(
+    const std::variant<LinearShape, GimpShape>& shape) {
+  if (std::holds_alternative<LinearShape>(shape)) return Stencils<LinearShape>{};
+  return Stencils<GimpShape>{};
+}
+
+int thread_count(int requested) {
+  if (requested > 0) omp_set_num_threads(std::min(requested, kMaxThreads));
+  return std::min(omp_get_max_threads(), kMaxThreads);
+}
+
+std::string describe(const Failure& f, const Particles& P, const Scene& scene, long step,
+                     double time) {
+  std::ostringstream m;
+  m.precision(9);
+  m << "step " << step << ", time " << time << " s: particle " << f.particle;
+  if (f.particle < P.size()) {
+    m << " (material " << scene.materials[P.material[f.particle]].name << ", object "
+      << scene.objects[P.object[f.particle]].name << ", x = [" << P.x[f.particle].transpose()
+      << "] m)";
+  }
+  m << ": " << f.field << ": " << f.message;
+  return m.str();
+}
+
+}  // namespace
+
+Simulation::Simulation(const Scene& scene, int threads)
+    : scene_(scene),
+      particles_(seed_particles(scene)),
+      grid_(scene.grid, thread_count(threads)),
+      shape_(make_shape(scene)),
+      stencils_(make_stencils(shape_)),
+      ledger_(!scene.solver.gravity.isZero(0.0)) {
+  for (const SceneMaterial& m : scene_.materials) models_.push_back(&m.material.model);
+  if (!particles_.mass.empty()) {
+    grid_.light_mass =
+        kLightNodeMassFraction * *std::min_element(particles_.mass.begin(), particles_.mass.end());
+  }
+  restart_ledger();
+}
+
+void Simulation::restart_ledger() {
+  double ke = 0.0;
+  Vec3 p = Vec3::Zero();
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    ke += 0.5 * particles_.mass[i] * particles_.v[i].squaredNorm();
+    p += particles_.mass[i] * particles_.v[i];
+  }
+  ledger_.start(0.0, ke, p);
+  max_signal_speed_ = max_signal_speed(particles_);
+}
+
+double Simulation::next_dt() const {
+  double dt = stable_time_step(grid_.spacing(), max_signal_speed_, scene_.time.multiplier);
+  if (steps_ == 0) dt = std::min(dt, scene_.time.initial_dt);
+  return std::min(dt, scene_.time.max_dt);
+}
+
+const StepTotals& Simulation::step() {
+  double dt = next_dt();
+  if (!(dt >= scene_.time.min_dt) || !std::isfinite(dt) || !(dt > 0.0)) {
+    std::ostringstream m;
+    m << "step " << steps_ << ", time " << time_ << " s: time step " << dt
+      << " s below min_dt = " << scene_.time.min_dt << " s (fastest signal " << max_signal_speed_
+      << " m/s)";
+    throw SolverFailure(m.str());
+  }
+  dt = std::min(dt, scene_.time.max_time - time_);  // land on max_time
+  std::optional<Failure> failure;
+  last_ = std::visit(
+      [&](const auto& shape) {
+        using Shape = std::decay_t<decltype(shape)>;
+        auto& S = std::get<Stencils<Shape>>(stencils_);
+        return advance(particles_, grid_, shape, S, models_, scene_.solver, dt, failure);
+      },
+      shape_);
+  if (failure) throw SolverFailure(describe(*failure, particles_, scene_, steps_ + 1, time_ + dt));
+  time_ += dt;
+  ++steps_;
+  max_signal_speed_ = last_.stress.max_signal_speed;
+  ledger_.record_step(time_, last_.particles.kinetic_energy, last_.particles.momentum,
+                      last_.stress.strain_energy_increment, last_.grid.boundary.impulse,
+                      last_.grid.boundary.work, last_.particles.boundary_dissipation,
+                      last_.grid.external_impulse,
+                      last_.grid.external_work);
+  return last_;
+}
+
+namespace {
+
+Json vec_json(const Vec3& v) {
+  return Json::array({v(0), v(1), v(2)});
+}
+
+Json row_json(const Ledger& ledger) {
+  const LedgerRow r = ledger.row();
+  const auto cols = ledger.columns();
+  const auto vals = Ledger::values(r, ledger.with_external());
+  Json j;
+  for (std::size_t i = 0; i < cols.size(); ++i) j[cols[i]] = vals[i];
+  return j;
+}
+
+}  // namespace
+
+Json check_report(const Scene& scene, int threads) {
+  const Particles P = seed_particles(scene);
+  Json objects = Json::object();
+  double total_mass = 0.0;
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    std::size_t n = 0;
+    double mass = 0.0, vol = 0.0;
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      if (P.object[p] != o) continue;
+      ++n;
+      mass += P.mass[p];
+      vol += P.volume0[p];
+    }
+    const double exact = volume(scene.objects[o].geometry);
+    const double rho = scene.materials[scene.objects[o].material].material.model.params().density;
+    objects[scene.objects[o].name] = {
+        {"particles", n},
+        {"mass [kg]", mass},
+        {"particle_volume [m^3]", vol},
+        {"geometric_volume [m^3]", exact},
+        {"geometric_mass [kg]", rho * exact},
+        {"volume_ratio", exact > 0 ? vol / exact : 0.0},
+        {"kinetic_energy [J]", 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
+    total_mass += mass;
+  }
+  const double dt =
+      std::min(stable_time_step(scene.grid.spacing(), max_signal_speed(P), scene.time.multiplier),
+               scene.time.max_dt);
+  const Grid g(scene.grid, std::max(threads, 1));
+  const double particle_bytes = double(P.size()) * Particles::bytes_per_particle();
+  return {{"objects", objects},
+          {"particles", P.size()},
+          {"mass [kg]", total_mass},
+          {"stable_dt [s]", dt},
+          {"estimated_steps", std::ceil(scene.time.max_time / dt)},
+          {"memory [MB]", (particle_bytes + double(g.bytes())) / 1e6},
+          {"memory_per_particle [B]", Particles::bytes_per_particle()},
+          {"threads", threads}};
+}
+
+int run(const Scene& scene, const RunOptions& options) {
+  namespace fs = std::filesystem;
+  const std::string dir = options.out_dir.empty() ? scene.output.directory : options.out_dir;
+  fs::create_directories(dir);
+  {
+    std::ofstream copy(fs::path(dir) / "scene.json");
+    copy << scene.resolved.dump(2) << '\n';
+  }
+  Simulation sim(scene, options.threads);
+  HistoryCsv history((fs::path(dir) / "history.csv").string(), sim.ledger());
+  std::optional<SnapshotWriter> snapshots;
+  if (scene.output.snapshots) snapshots.emplace(dir, scene.output.fields);
+  const auto write_outputs = [&] {
+    history.write(sim.ledger().row());
+    if (snapshots) snapshots->write(sim.particles(), sim.steps(), sim.time());
+  };
+  write_outputs();
+  const auto t0 = std::chrono::steady_clock::now();
+  auto last_progress = t0;
+  double next_output = scene.output.interval;
+  std::string status = "completed", message;
+  int code = 0;
+  try {
+    while (!sim.finished()) {
+      sim.step();
+      if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
+        write_outputs();
+        while (next_output <= sim.time() * (1.0 + 1e-12)) next_output += scene.output.interval;
+      }
+      const auto now = std::chrono::steady_clock::now();
+      if (options.progress && now - last_progress > std::chrono::milliseconds(500)) {
+        last_progress = now;
+        const double wall = std::chrono::duration<double>(now - t0).count();
+        const double eta = wall * (scene.time.max_time - sim.time()) / sim.time();
+        std::fprintf(stderr, "\rstep %ld  t %.4e s  dt %.3e s  energy_error %+.3e  ETA %.0f s   ",
+                     sim.steps(), sim.time(), sim.next_dt(), sim.ledger().row().energy_error, eta);
+      }
+    }
+  } catch (const SolverFailure& e) {
+    status = "failed";
+    message = e.what();
+    code = 3;
+    std::cerr << (options.progress ? "\n" : "") << "mpm: run failed: " << message << '\n';
+    if (snapshots) snapshots->write(sim.particles(), sim.steps() + 1, sim.time());
+    history.write(sim.ledger().row());
+  }
+  if (options.progress) std::fprintf(stderr, "\n");
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Json summary = check_report(scene, sim.threads());
+  summary.erase("estimated_steps");
+  summary.erase("stable_dt [s]");
+  summary["status"] = status;
+  if (!message.empty()) summary["message"] = message;
+  summary["steps"] = sim.steps();
+  summary["time [s]"] = sim.time();
+  summary["wall_time [s]"] = wall;
+  summary["particle_steps_per_second"] =
+      wall > 0 ? double(sim.particles().size()) * double(sim.steps()) / wall : 0.0;
+  summary["initial_energy [J]"] = sim.ledger().initial_energy();
+  summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
+  summary["final"] = row_json(sim.ledger());
+  summary["units"] = {{"time", "s"},
+                      {"energy", "J"},
+                      {"momentum", "kg m/s"},
+                      {"boundary_impulse", "N s"},
+                      {"energy_error", "-"}};
+  std::ofstream(fs::path(dir) / "summary.json") << summary.dump(2) << '\n';
+  return code;
+}
+
+}  // namespace impact::mpm

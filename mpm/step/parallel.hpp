@@ -1,0 +1,22 @@
+// Helpers shared by the particle loops: static partition of [0, n) per thread (so sums and the
+// scatter are deterministic for a given thread count) and the first-failure merge.
+#pragma once
+
+#include <omp.h>
+
+#include <optional>
+
+#include "mpm/step/step.hpp"
+
+namespace impact::mpm {
+
+/// Per-thread partial sums live in fixed arrays of this size (no allocation in a step); the
+/// Simulation caps its thread count at it.
+inline constexpr int kMaxThreads = 256;
+
+/// Keeps the failure with the lowest particle index (deterministic whichever thread saw it).
+inline void merge_failure(std::optional<Failure>& into, const std::optional<Failure>& f) {
+  if (f && (!into || f->particle < into->particle)) into = f;
+}
+
+}  // namespace impact::mpm

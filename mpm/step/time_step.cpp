@@ -1,0 +1,20 @@
+// Stable time step (reference_code_notes.md sec. 16): dt = multiplier * min_d dx_d /
+// max_p (c_p + |v_p|), c_p the longitudinal wave speed of the particle's current state.
+#include <limits>
+
+#include "mpm/step/step.hpp"
+
+namespace impact::mpm {
+
+double stable_time_step(const Vec3& dx, double max_signal_speed, double multiplier) {
+  if (!(max_signal_speed > 0.0)) return std::numeric_limits<double>::infinity();
+  return multiplier * dx.minCoeff() / max_signal_speed;
+}
+
+double max_signal_speed(const Particles& P) {
+  double s = 0.0;
+  for (std::size_t p = 0; p < P.size(); ++p) s = std::max(s, P.wave_speed[p] + P.v[p].norm());
+  return s;
+}
+
+}  // namespace impact::mpm

@@ -1,0 +1,142 @@
+// Scene reading: `extends` merge-patch rule, defaults, seeding volume against exact volumes, and
+// input errors that name the file and the JSON key path.
+#include "mpm/scene/scene.hpp"
+
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "mpm/particles/particles.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+const std::string kScenes = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/";
+
+// Every problem line of the InputError raised by reading `doc`.
+std::string error_of(const Json& doc) {
+  try {
+    read_scene(doc, "test.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Json base() {
+  return load_scene_document(kScenes + "verification/rigid_translation.json");
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mpm_scene)
+
+BOOST_AUTO_TEST_CASE(extends_applies_the_file_as_a_merge_patch_over_its_base) {
+  const Json doc = base();
+  // From the base: the material and the time multiplier; from the file: max_time and the object.
+  BOOST_TEST(doc["materials"]["elastic_al"]["overrides"]["constitutive_model"]["flow_stress"]["A"]
+                 .get<double>() == 1e15);
+  BOOST_TEST(doc["time"]["multiplier"].get<double>() == 0.5);
+  BOOST_TEST(doc["time"]["max_time"].get<double>() == 2e-4);
+  BOOST_TEST(!doc.contains("extends"));
+  // The base's relative material path is resolved against the base's own directory.
+  BOOST_TEST(std::filesystem::exists(doc["materials"]["elastic_al"]["file"].get<std::string>()));
+  // A null in a patch deletes: uniaxial_compression replaces the elastic material.
+  const Json uc = load_scene_document(kScenes + "verification/uniaxial_compression.json");
+  BOOST_TEST(!uc["materials"].contains("elastic_al"));
+  BOOST_TEST(uc["materials"].contains("jc_al"));
+}
+
+BOOST_AUTO_TEST_CASE(absent_keys_take_their_documented_defaults) {
+  const Scene s = read_scene(base(), "rigid_translation.json");
+  BOOST_TEST(s.time.min_dt == 0.0);
+  BOOST_TEST(std::isinf(s.time.max_dt));
+  BOOST_TEST(std::isinf(s.time.initial_dt));
+  BOOST_TEST(s.output.interval == s.time.max_time / 100.0);
+  BOOST_TEST(s.objects[0].particles_per_cell[0] == 2);
+  BOOST_TEST(s.objects[0].temperature == 294.0);
+  BOOST_TEST((s.solver.interpolation == Interpolation::gimp));
+  BOOST_TEST((s.solver.scheme == Scheme::musl));
+  BOOST_TEST(s.solver.gravity.isZero());
+}
+
+BOOST_AUTO_TEST_CASE(geometry_volumes_are_exact) {
+  constexpr double pi = std::numbers::pi;
+  const Geometry tube{
+      HollowCylinder{Vec3(15e-3, 0, 0), Vec3(119e-3, 0, 0), 31.8e-3, 3.2e-3, 13.919e-3}};
+  const double ri = 31.8e-3 - 3.2e-3;
+  BOOST_TEST(volume(tube) == pi * (31.8e-3 * 31.8e-3 - ri * ri) * 104e-3 + pi * ri * ri * 13.919e-3,
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(inside(tube, Vec3(20e-3, 0, 0)));       // in the cap
+  BOOST_TEST(!inside(tube, Vec3(60e-3, 0, 0)));      // in the bore
+  BOOST_TEST(inside(tube, Vec3(60e-3, 30e-3, 0)));   // in the wall
+  BOOST_TEST(!inside(tube, Vec3(60e-3, 32e-3, 0)));  // outside
+  const Geometry cyl{Cylinder{Vec3(0, 0, 0), Vec3(0, 0, 2), 0.5}};
+  BOOST_TEST(volume(cyl) == pi * 0.25 * 2, boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(seeded_box_volume_and_mass_equal_the_exact_ones) {
+  const Scene s = read_scene(base(), "rigid_translation.json");
+  const Particles p = seed_particles(s);
+  double v = 0.0, m = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    v += p.volume0[i];
+    m += p.mass[i];
+  }
+  BOOST_TEST(p.size() == 4u * 4u * 4u * 8u);  // 4 cells per side, 2 x 2 x 2 per cell
+  BOOST_TEST(v == 8e-6, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(m == 2700.0 * 8e-6, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(seeded_sphere_volume_converges_to_the_exact_volume) {
+  Json doc = load_scene_document(kScenes + "verification/two_spheres.json");
+  double previous = 1.0;
+  for (int ppc : {1, 2, 4}) {
+    doc["objects"]["left"]["particles_per_cell"] = {ppc, ppc, ppc};
+    const Scene s = read_scene(doc, "two_spheres.json");
+    const Particles p = seed_particles(s);
+    double v = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) v += p.object[i] == 0 ? p.volume0[i] : 0.0;
+    const double err = std::abs(v / volume(s.objects[0].geometry) - 1.0);
+    BOOST_TEST_MESSAGE("ppc " << ppc << ": particle/exact volume - 1 = " << err);
+    BOOST_TEST(err < std::max(previous, 0.02));
+    previous = err;
+  }
+  BOOST_TEST(previous < 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(errors_name_the_key_path_and_what_was_expected) {
+  Json doc = base();
+  doc["grid"]["cell"] = {1, 2, 3};               // misspelt key
+  doc["time"]["multiplier"] = 1.5;               // out of range
+  doc["objects"]["block"]["velocity"] = "fast";  // wrong type
+  doc["solver"]["scheme"] = "usf";               // unknown name
+  const std::string e = error_of(doc);
+  BOOST_TEST_MESSAGE(e);
+  BOOST_TEST(e.find("test.json: /grid/cell: unknown key (did you mean cells?)") !=
+             std::string::npos);
+  BOOST_TEST(e.find("/time/multiplier: expected a number in (0, 1]") != std::string::npos);
+  BOOST_TEST(e.find("/objects/block/velocity: expected an array of 3 numbers") !=
+             std::string::npos);
+  BOOST_TEST(e.find("/solver/scheme: unknown name \"usf\"; known: usl, musl") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(an_unknown_material_reference_lists_the_known_ones) {
+  Json doc = base();
+  doc["objects"]["block"]["material"] = "steel";
+  BOOST_TEST(error_of(doc).find("/objects/block/material: unknown material \"steel\"; known: "
+                                "elastic_al") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_bad_material_override_names_the_scene_entry_and_the_material_key) {
+  Json doc = base();
+  doc["materials"]["elastic_al"]["overrides"]["density"] = 2.7;
+  const std::string e = error_of(doc);
+  BOOST_TEST(e.find("/materials/elastic_al/file") != std::string::npos);
+  BOOST_TEST(e.find("/density") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

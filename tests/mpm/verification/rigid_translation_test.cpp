@@ -1,0 +1,58 @@
+// A stress-free block translating uniformly on a free grid, through more than a cell: with exact
+// partition of unity the grid velocity is the block's velocity, so positions are exact, the
+// velocity gradient and hence the stress vanish, and the energy is constant. Tolerances: positions
+// 1e-12 m, stress 1e-3 Pa (against rho c |v| = 6e8 Pa), energy 1e-12 relative. All four
+// shape/scheme combinations: linear/USL relies on the light-node limiter of its velocity
+// gradient (docs/mpm.md#usl-and-light-nodes), without which round-off grows ~1e37-fold.
+#include <boost/test/unit_test.hpp>
+
+#include "../verification_helpers.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+void check_rigid_translation(const char* interpolation, const char* scheme) {
+  const Scene scene =
+      test::verification_scene("rigid_translation.json", test::with_solver(interpolation, scheme));
+  Simulation sim(scene);
+  const std::vector<Vec3> x0 = sim.particles().x;
+  const Vec3 v0 = scene.objects[0].velocity;
+  const double e0 = sim.ledger().initial_energy();
+  double worst_x = 0.0, worst_stress = 0.0, worst_energy = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const Particles& P = sim.particles();
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      worst_x = std::max(worst_x, (P.x[p] - x0[p] - v0 * sim.time()).cwiseAbs().maxCoeff());
+      worst_stress = std::max(worst_stress, P.state[p].stress.cwiseAbs().maxCoeff());
+    }
+    worst_energy = std::max(worst_energy, std::abs(sim.ledger().row().total_energy / e0 - 1.0));
+  }
+  BOOST_TEST_MESSAGE(interpolation << "/" << scheme << ": " << sim.steps() << " steps, position "
+                                   << worst_x << " m, stress " << worst_stress << " Pa, energy "
+                                   << worst_energy);
+  BOOST_TEST(worst_x < 1e-12);
+  BOOST_TEST(worst_stress < 1e-3);
+  BOOST_TEST(worst_energy < 1e-12);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mpm_rigid_translation)
+
+BOOST_AUTO_TEST_CASE(gimp_musl_translates_exactly_without_stress) {
+  check_rigid_translation("gimp", "musl");
+}
+BOOST_AUTO_TEST_CASE(gimp_usl_translates_exactly_without_stress) {
+  check_rigid_translation("gimp", "usl");
+}
+BOOST_AUTO_TEST_CASE(linear_musl_translates_exactly_without_stress) {
+  check_rigid_translation("linear", "musl");
+}
+BOOST_AUTO_TEST_CASE(linear_usl_translates_exactly_without_stress) {
+  check_rigid_translation("linear", "usl");
+}
+
+BOOST_AUTO_TEST_SUITE_END()

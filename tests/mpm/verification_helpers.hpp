@@ -1,0 +1,28 @@
+// Shared by the MPM verification tests: load a data/scenes/verification scene with a JSON merge
+// patch on top (how a test varies interpolation or scheme), and small measurements.
+#pragma once
+
+#include <string>
+
+#include "mpm/solver.hpp"
+
+namespace impact::mpm::test {
+
+inline Scene verification_scene(const std::string& name, const Json& patch = Json::object()) {
+  const std::string file = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/verification/" + name;
+  Json doc = load_scene_document(file);
+  doc.merge_patch(patch);
+  return read_scene(doc, file);
+}
+
+inline Json with_solver(const char* interpolation, const char* scheme) {
+  return {{"solver", {{"interpolation", interpolation}, {"scheme", scheme}}}};
+}
+
+/// Longitudinal (uniaxial-strain) wave speed sqrt((K + 4 mu/3)/rho0) of the first material.
+inline double longitudinal_wave_speed(const Scene& s) {
+  const auto& p = s.materials.front().material.model.params();
+  return std::sqrt((p.bulk_modulus + 4.0 * p.shear_modulus / 3.0) / p.density);
+}
+
+}  // namespace impact::mpm::test
