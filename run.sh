@@ -49,6 +49,7 @@ case "${1:-}" in
     build release
     build/bin/models_benchmark "${@:2}"
     build/bin/pointdriver_benchmark
+    build/bin/mpm_benchmark
     ;;
   study)
     install_missing_packages
