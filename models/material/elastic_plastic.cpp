@@ -83,9 +83,14 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     R_out = c.R_new;
     s1.R = c.R_new;
   } else {
-    stress_n = rotate(s0.stress, hughes_winget_rotation(skew(L), dt));
+    // Midpoint form: the increment C:D dt is added in the mid-step orientation, between two
+    // half-step Hughes-Winget rotations, sigma_{n+1} = Q_h (Q_h sigma_n Q_h^T + C:D dt) Q_h^T.
+    // Adding it after a full-step rotation drops the commutator [W, C:D] dt^2 / 2 per step and is
+    // only first order (docs/theory.md).
+    const Mat3 Qh = hughes_winget_rotation(skew(L), 0.5 * dt);
+    stress_n = rotate(s0.stress, Qh);
     D_hat = D;
-    R_out = Mat3::Identity();
+    R_out = Qh;
   }
   const double p_n = -mean(stress_n);
 
