@@ -11,6 +11,8 @@ int command_run(const std::vector<std::string>& args);
 int command_verify(const std::vector<std::string>& args);
 int command_batch(const std::vector<std::string>& args);
 int command_convergence(const std::vector<std::string>& args);
+int command_fit(const std::vector<std::string>& args);
+int command_check(const std::vector<std::string>& args);
 int command_plot(const std::vector<std::string>& args, const char* argv0);
 
 }  // namespace impact::pointdriver

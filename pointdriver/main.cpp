@@ -4,6 +4,8 @@
 //   pointdriver batch --paths P1.json ... [--materials M.json ...] [--out DIR]
 //   pointdriver convergence [--out DIR]                     accuracy versus cost study
 //   pointdriver plot out.csv --x COL --y COL [--y COL ...] -o fig.png
+//   pointdriver fit FIT.json [--out DIR]                   Johnson-Cook fit through the driver
+//   pointdriver check CHECK.json [--out DIR]               a parameter set against data
 // Exit codes: 0 success, 1 usage error, 2 input error, 3 a step could not be solved or a
 // verification case failed.
 #include <cstring>
@@ -24,6 +26,8 @@ const char* usage =
     "                                            every material on every path in one process\n"
     "  convergence [--out DIR] [--quick]         accuracy versus cost of three paths\n"
     "  plot OUT.csv --x COL --y COL... -o FIG.png   quick figure (python3-matplotlib)\n"
+    "  fit FIT.json [--out DIR]                  fit Johnson-Cook parameters to measured curves\n"
+    "  check CHECK.json [--out DIR]              check a parameter set against measured curves\n"
     "exit codes: 0 success, 1 usage, 2 input error, 3 unsolved step or failed verification\n";
 
 }  // namespace
@@ -40,6 +44,8 @@ int main(int argc, char** argv) {
   if (command == "verify") return command_verify(args);
   if (command == "batch") return command_batch(args);
   if (command == "convergence") return command_convergence(args);
+  if (command == "fit") return command_fit(args);
+  if (command == "check") return command_check(args);
   if (command == "plot") return command_plot(args, argv[0]);
   std::cerr << "pointdriver: unknown command '" << command << "'\n" << usage;
   return 1;

@@ -1,0 +1,84 @@
+// pointdriver fit FIT.json: Johnson-Cook strength parameters from measured curves, through the
+// driver (pointdriver/fit/, docs/fitting.md).
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/options.hpp"
+#include "pointdriver/fit/damage_fit.hpp"
+#include "pointdriver/fit/fit_config.hpp"
+#include "pointdriver/fit/fit_report.hpp"
+#include "pointdriver/fit/strength_fit.hpp"
+
+namespace impact::pointdriver {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* fit_help =
+    "usage: pointdriver fit FIT.json [--out DIR] [--no-figures]\n"
+    "Fits Johnson-Cook parameters to measured curves (docs/fitting.md).\n"
+    "mode \"strength\": staged initial guess (A, B, n; C; m), then GSL multifit_nlinear (LM with\n"
+    "geodesic acceleration) whose residuals are the stress errors of the driver's uniaxial-stress\n"
+    "path for each test (elasticity; adiabatic heating at and above adiabatic_above_rate).\n"
+    "mode \"damage\": D1..D5 from fracture strains (eq. 7, constant triaxiality).\n"
+    "Prints the report and writes DIR/fit_report.json, DIR/<material>_fitted.json (a material\n"
+    "file the driver and MPM read) and one figure per temperature group (DIR/fit_<T>K.png).\n"
+    "DIR: --out, else output.directory of FIT.json (default: fit).\n"
+    "Exit codes: 0 done, 1 usage, 2 input error, 3 the fit did not converge.\n";
+
+}  // namespace
+
+int command_fit(const std::vector<std::string>& args) {
+  Options o;
+  try {
+    o = parse_options(args, {{"--out", 1}, {"--no-figures", 0}}, 1);
+  } catch (const UsageError& e) {
+    std::cerr << "pointdriver fit: " << e.what() << '\n' << fit_help;
+    return 1;
+  }
+  if (o.help) {
+    std::cout << fit_help;
+    return 0;
+  }
+  if (o.positional.size() != 1) {
+    std::cerr << "pointdriver fit: expected one FIT.json\n" << fit_help;
+    return 1;
+  }
+  try {
+    fit::FitConfig config = fit::read_fit_config(o.positional[0]);
+    if (o.has("--out")) config.output_directory = o.get("--out", "fit");
+    if (o.has("--no-figures")) config.figures = false;
+    fs::create_directories(config.output_directory);
+    if (config.mode == "damage") return fit::run_damage_fit(config, std::cout);
+    const fit::StrengthFit result = fit::fit_strength(config);
+    fit::print_fit_report(std::cout, config, result);
+    const fs::path dir = config.output_directory;
+    std::ofstream(dir / "fit_report.json") << fit::fit_report_json(config, result).dump(2) << '\n';
+    const Json material = fit::fitted_material(config, result);
+    std::ofstream(dir / config.output_material) << material.dump(2) << '\n';
+    std::cout << "wrote " << (dir / "fit_report.json").string() << ", "
+              << (dir / config.output_material).string() << '\n';
+    if (config.figures) {
+      try {
+        fit::write_figures(
+            config.output_directory, "fit", result.experiments, result.curves[0], result.curves[1],
+            "fitted",
+            "material's set (" + fs::path(config.material_file).filename().string() + ")");
+      } catch (const std::runtime_error& e) {
+        std::cerr << "pointdriver fit: " << e.what() << '\n';
+      }
+    }
+    return result.lsq.status == 0 ? 0 : 3;
+  } catch (const InputError& e) {
+    std::cerr << e.what() << '\n';
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "pointdriver fit: " << e.what() << '\n';
+    return 2;
+  }
+}
+
+}  // namespace impact::pointdriver

@@ -1,0 +1,226 @@
+#include "pointdriver/fit/damage_fit.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "models/damage/johnson_cook_damage.hpp"
+#include "models/material/material.hpp"
+
+namespace impact::pointdriver::fit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::array<const char*, 5> kNames{"D1", "D2", "D3", "D4", "D5"};
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+}  // namespace
+
+FractureData read_fracture_data(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError({file + ": cannot open the fracture-strain file"});
+  FractureData d;
+  d.file = file;
+  std::vector<std::string> problems;
+  auto add = [&](int line, const std::string& m) {
+    std::ostringstream s;
+    s << file;
+    if (line) s << ':' << line;
+    s << ": " << m;
+    problems.push_back(s.str());
+  };
+  std::string line;
+  int number = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::string t = trim(line);
+    if (t.empty()) continue;
+    if (t[0] == '#') {
+      const auto colon = t.find(':');
+      if (colon != std::string::npos && trim(t.substr(1, colon - 1)) == "source")
+        d.source = trim(t.substr(colon + 1));
+      continue;
+    }
+    if (!header) {
+      header = true;
+      if (t != "triaxiality [-],strain_rate [1/s],temperature [K],fracture_strain [-]")
+        add(number,
+            "expected the header 'triaxiality [-],strain_rate [1/s],temperature [K],"
+            "fracture_strain [-]'");
+      continue;
+    }
+    std::stringstream s(t);
+    std::string cell;
+    std::vector<double> v;
+    bool ok = true;
+    while (std::getline(s, cell, ',')) {
+      char* end = nullptr;
+      const std::string c = trim(cell);
+      const double x = std::strtod(c.c_str(), &end);
+      if (c.empty() || end != c.c_str() + c.size() || !std::isfinite(x)) ok = false;
+      v.push_back(x);
+    }
+    if (!ok || v.size() != 4) {
+      add(number, "expected 4 finite numbers: '" + t + "'");
+      continue;
+    }
+    if (v[1] <= 0) add(number, "strain rate must be positive [1/s]");
+    if (v[2] < 50) add(number, "temperature below 50 K: degrees Celsius? the format takes K");
+    if (v[3] <= 0 || v[3] > 5) add(number, "fracture strain must be in (0, 5] (a fraction)");
+    d.points.push_back({v[0], v[1], v[2], v[3], number});
+  }
+  if (d.source.empty()) add(0, "missing '# source: ...' line (the citation of the data)");
+  if (!header || d.points.empty()) add(0, "no data rows");
+  if (!problems.empty()) throw InputError(problems);
+  return d;
+}
+
+std::vector<double> fracture_strains(const JohnsonCookDamageParams& base,
+                                     const std::vector<double>& d,
+                                     const std::vector<FracturePoint>& points) {
+  JohnsonCookDamageParams q = base;
+  q.D1 = d[0];
+  q.D2 = d[1];
+  q.D3 = d[2];
+  q.D4 = d[3];
+  q.D5 = d[4];
+  std::vector<double> e;
+  for (const auto& p : points)
+    e.push_back(jc_fracture_strain(q, p.triaxiality, p.strain_rate, p.temperature));
+  return e;
+}
+
+LeastSquaresResult fit_damage(const std::vector<FracturePoint>& points,
+                              const JohnsonCookDamageParams& base,
+                              const std::vector<Parameter>& parameters,
+                              const LeastSquaresOptions& options,
+                              const std::vector<double>& weights) {
+  const BatchResidual residual = [&](const std::vector<std::vector<double>>& sets) {
+    std::vector<Eigen::VectorXd> r;
+    for (const auto& s : sets) {
+      const auto e = fracture_strains(base, s, points);
+      Eigen::VectorXd v(static_cast<long>(points.size()));
+      for (std::size_t k = 0; k < points.size(); ++k)
+        v(static_cast<long>(k)) =
+            (weights.empty() ? 1.0 : weights[k]) * (e[k] - points[k].fracture_strain);
+      r.push_back(v);
+    }
+    return r;
+  };
+  return least_squares(parameters, residual, options);
+}
+
+int run_damage_fit(const FitConfig& config, std::ostream& out) {
+  const Material material = load_material(config.material_file, config.overrides);
+  const auto& mp = material.model.params();
+  JohnsonCookDamageParams base;
+  if (mp.damage) base = *mp.damage;
+  base.room_temperature = mp.room_temperature;
+  base.melt_temperature = mp.melt_temperature;
+  std::vector<FracturePoint> points;
+  std::vector<std::string> sources;
+  std::vector<double> weights;
+  for (const auto& d : config.data) {
+    const FractureData f = read_fracture_data(d.file);
+    sources.push_back(f.source);
+    for (const auto& p : f.points) {
+      points.push_back(p);
+      weights.push_back(std::sqrt(d.weight));
+    }
+  }
+  const std::array<double, 5> material_values{base.D1, base.D2, base.D3, base.D4, base.D5};
+  std::vector<Parameter> parameters;
+  for (std::size_t i = 0; i < 5; ++i) {
+    const ParameterSpec& s = config.parameters[i];
+    Parameter p{kNames[i], s.start ? *s.start : material_values[i], s.free, s.lower, s.upper};
+    if (p.free) {
+      const double margin = 1e-3 * (p.upper - p.lower);
+      p.value = std::clamp(p.value, p.lower + margin, p.upper - margin);
+    }
+    parameters.push_back(p);
+  }
+  auto predict = [&](const std::vector<double>& v) { return fracture_strains(base, v, points); };
+  std::vector<double> start;
+  for (const auto& p : parameters) start.push_back(p.value);
+  const LeastSquaresResult lsq = fit_damage(points, base, parameters, config.solver, weights);
+  auto rms_of = [&](const std::vector<double>& v, double& max) {
+    const auto e = predict(v);
+    double ss = 0;
+    max = 0;
+    for (std::size_t k = 0; k < e.size(); ++k) {
+      const double r = e[k] - points[k].fracture_strain;
+      ss += r * r;
+      max = std::max(max, std::abs(r));
+    }
+    return std::sqrt(ss / static_cast<double>(e.size()));
+  };
+  double max_fit = 0, max_mat = 0;
+  const double rms_fit = rms_of(lsq.values, max_fit);
+  const double rms_mat = rms_of({material_values.begin(), material_values.end()}, max_mat);
+
+  out << "Johnson-Cook damage fit (eq. 7, constant triaxiality): " << points.size()
+      << " fracture strains\nsources:";
+  for (const auto& s : sources) out << "\n  " << s;
+  out << "\n"
+      << lsq.iterations << " iterations, " << lsq.stop_reason << ", " << std::setprecision(3)
+      << lsq.wall_time << " s\n";
+  out << "par      material       start      fitted     std err  status\n";
+  for (std::size_t i = 0; i < 5; ++i)
+    out << std::left << std::setw(5) << kNames[i] << std::right << std::setprecision(5)
+        << std::setw(11) << material_values[i] << std::setw(12) << start[i] << std::setw(12)
+        << lsq.values[i] << std::setw(12) << std::setprecision(3) << lsq.std_errors[i] << "  "
+        << (parameters[i].free ? "free" : "fixed") << '\n';
+  out << "correlation:\n" << std::setprecision(3) << lsq.correlation << '\n';
+  out << "fracture strain RMS: fitted " << rms_fit << " (max " << max_fit << "), material's set "
+      << rms_mat << " (max " << max_mat << ")\n";
+
+  const fs::path dir = config.output_directory;
+  Json report;
+  report["configuration"] = config.file;
+  report["sources"] = sources;
+  for (std::size_t i = 0; i < 5; ++i)
+    report["parameters"][kNames[i]] = {{"material", material_values[i]},
+                                       {"start", start[i]},
+                                       {"fitted", lsq.values[i]},
+                                       {"std_error", lsq.std_errors[i]},
+                                       {"free", parameters[i].free}};
+  Json corr = Json::array();
+  for (long i = 0; i < 5; ++i) {
+    Json row = Json::array();
+    for (long k = 0; k < 5; ++k) row.push_back(lsq.correlation(i, k));
+    corr.push_back(row);
+  }
+  report["correlation"] = corr;
+  report["rms"] = {{"fitted", rms_fit}, {"material", rms_mat}};
+  report["max"] = {{"fitted", max_fit}, {"material", max_mat}};
+  report["solver"] = {{"iterations", lsq.iterations}, {"stop_reason", lsq.stop_reason}};
+  std::ofstream(dir / "damage_fit_report.json") << report.dump(2) << '\n';
+  Json doc = load_json_file(config.material_file);
+  Json& dmg = doc["constitutive_model"]["damage"];
+  dmg["type"] = "johnson_cook";
+  for (std::size_t i = 0; i < 5; ++i) dmg[kNames[i]] = lsq.values[i];
+  if (!doc.contains("sources") || !doc["sources"].is_object()) doc["sources"] = Json::object();
+  doc["sources"]["damage"] = "Johnson-Cook D1..D5 fitted by `pointdriver fit " + config.file +
+                             "` (fracture strain RMS " + std::to_string(rms_fit) + ")";
+  doc["description"] =
+      "Johnson-Cook damage fitted by pointdriver fit (sources.damage); "
+      "everything else from " +
+      config.material_file + ": " + doc.value("description", std::string());
+  read_material(doc, "fitted material");
+  std::ofstream(dir / config.output_material) << doc.dump(2) << '\n';
+  out << "wrote " << (dir / "damage_fit_report.json").string() << ", "
+      << (dir / config.output_material).string() << '\n';
+  return lsq.status == 0 ? 0 : 3;
+}
+
+}  // namespace impact::pointdriver::fit

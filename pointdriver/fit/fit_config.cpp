@@ -1,0 +1,275 @@
+#include "pointdriver/fit/fit_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace impact::pointdriver::fit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool wildcard(const std::string& p, const std::string& s, std::size_t i = 0, std::size_t j = 0) {
+  while (i < p.size()) {
+    if (p[i] == '*') {
+      for (std::size_t k = j; k <= s.size(); ++k)
+        if (wildcard(p, s, i + 1, k)) return true;
+      return false;
+    }
+    if (j >= s.size() || (p[i] != '?' && p[i] != s[j])) return false;
+    ++i;
+    ++j;
+  }
+  return j == s.size();
+}
+
+/// Default bounds of the strength parameters (A, B [Pa], n, C, m) and of the damage ones.
+constexpr std::array<std::array<double, 2>, 5> kStrengthBounds{
+    {{1e6, 5e9}, {0.0, 5e9}, {0.01, 2.0}, {0.0, 0.5}, {0.05, 10.0}}};
+constexpr std::array<std::array<double, 2>, 5> kDamageBounds{
+    {{-3.0, 3.0}, {-10.0, 10.0}, {-10.0, 10.0}, {-1.0, 1.0}, {-10.0, 10.0}}};
+constexpr std::array<const char*, 5> kDamageNames{"D1", "D2", "D3", "D4", "D5"};
+
+std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::string& file) {
+  std::vector<DataEntry> out;
+  const Json* data = doc.contains("data") ? &doc["data"] : nullptr;
+  r.ignore("data");
+  if (!data || !data->is_array() || data->empty()) {
+    r.problems().add("/data", "required: a non-empty list of {\"file\": ...} or {\"glob\": ...}");
+    return out;
+  }
+  for (std::size_t i = 0; i < data->size(); ++i) {
+    const std::string at = "/data/" + std::to_string(i);
+    const Json& d = (*data)[i];
+    if (d.is_string()) {
+      out.push_back({resolve_file(d.get<std::string>(), file), 1.0});
+      continue;
+    }
+    if (!d.is_object()) {
+      r.problems().add(at, "expected a file name or an object {\"file\"|\"glob\", \"weight\"}");
+      continue;
+    }
+    JsonReader e(d, at, r.problems());
+    const double w = e.number_or("weight", 1.0, Range::positive(), "weight of these curves");
+    if (e.has("file") == e.has("glob")) {
+      r.problems().add(at, "give exactly one of \"file\" and \"glob\"");
+    } else if (e.has("file")) {
+      out.push_back({resolve_file(e.string("file", "experiment file"), file), w});
+    } else {
+      const std::string pattern = e.string("glob", "experiment files ('*' and '?')");
+      std::string dir = fs::path(pattern).parent_path().string();
+      const std::string resolved_dir = resolve_file(dir.empty() ? "." : dir, file);
+      const auto files =
+          glob_files((fs::path(resolved_dir) / fs::path(pattern).filename()).string());
+      if (files.empty()) r.problems().add(at + "/glob", "no file matches '" + pattern + "'");
+      for (const auto& f : files) out.push_back({f, w});
+    }
+    e.reject_unknown_keys();
+  }
+  return out;
+}
+
+CurveSettings read_driver(JsonReader& r) {
+  CurveSettings c;
+  c.adiabatic_above_rate =
+      r.number_or("adiabatic_above_rate", c.adiabatic_above_rate, Range::non_negative(),
+                  "tests at or above this strain rate are adiabatic unless their file says [1/s]");
+  if (auto d = r.optional_child("driver", "driver settings")) {
+    c.steps = static_cast<int>(
+        d->number_or("steps", c.steps, Range::closed(5, 100000), "driver steps per test"));
+    c.first_step_fraction = d->number_or("first_step_fraction", c.first_step_fraction,
+                                         Range::open(0.0, 1.0), "first step / path duration");
+    c.threads = static_cast<int>(
+        d->number_or("threads", 0, Range::closed(0, 1024), "worker threads (0: all cores)"));
+    d->reject_unknown_keys();
+  }
+  return c;
+}
+
+/// Material-level keys of the configuration, as a merge patch over the material file.
+Json material_patch(JsonReader& r, const Json& doc) {
+  Json patch = Json::object();
+  if (doc.contains("material_overrides")) {
+    r.ignore("material_overrides");
+    if (!doc["material_overrides"].is_object())
+      r.problems().add("/material_overrides", "expected an object (a JSON merge patch)");
+    else
+      patch = doc["material_overrides"];
+  }
+  if (r.has("reference_strain_rate"))
+    patch["constitutive_model"]["flow_stress"]["reference_strain_rate"] = r.number(
+        "reference_strain_rate", Range::positive(), "reference strain rate of the fit [1/s]");
+  if (r.has("room_temperature"))
+    patch["room_temperature"] =
+        r.number("room_temperature", Range::positive(), "room temperature [K]");
+  if (r.has("melt_temperature"))
+    patch["melt_temperature"] =
+        r.number("melt_temperature", Range::positive(), "melt temperature [K]");
+  if (r.has("taylor_quinney"))
+    patch["constitutive_model"]["adiabatic_heating"]["taylor_quinney"] =
+        r.number("taylor_quinney", Range::closed(0, 1), "Taylor-Quinney coefficient chi");
+  return patch;
+}
+
+}  // namespace
+
+std::string resolve_file(const std::string& name, const std::string& relative_to) {
+  const fs::path p(name);
+  if (p.is_absolute() || fs::exists(p)) return name;
+  fs::path dir = fs::absolute(fs::path(relative_to)).parent_path();
+  while (!dir.empty()) {
+    if (fs::exists(dir / p)) return (dir / p).lexically_normal().string();
+    if (dir == dir.parent_path()) break;
+    dir = dir.parent_path();
+  }
+  return name;
+}
+
+std::vector<std::string> glob_files(const std::string& pattern) {
+  const fs::path p(pattern);
+  fs::path dir = p.parent_path();
+  if (dir.empty()) dir = ".";
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    if (!entry.is_regular_file()) continue;
+    if (wildcard(p.filename().string(), entry.path().filename().string()))
+      out.push_back((p.parent_path() / entry.path().filename()).string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+FitConfig read_fit_config(const std::string& file) {
+  return read_fit_config(load_json_file(file), file);
+}
+
+FitConfig read_fit_config(const Json& doc, const std::string& file) {
+  InputProblems problems(file);
+  FitConfig c;
+  c.file = file;
+  if (!doc.is_object()) {
+    problems.add("", "expected a JSON object");
+    problems.throw_if_any();
+  }
+  JsonReader r(doc, "", problems);
+  r.ignore("description");
+  c.mode = r.choice("mode", {"strength", "damage"}, "what is fitted", "strength");
+  c.material_file = resolve_file(r.string("material", "material file to start from"), file);
+  c.overrides = material_patch(r, doc);
+  c.data = read_data(r, doc, file);
+  c.curves = read_driver(r);
+  c.initial_guess =
+      r.choice("initial_guess", {"staged", "start"}, "where the global fit starts", "staged");
+  c.room_tolerance = r.number_or("room_temperature_tolerance", 10.0, Range::positive(),
+                                 "tests within this of room temperature are 'room' [K]");
+  const bool damage = c.mode == "damage";
+  const auto& names = damage ? kDamageNames : jc_names;
+  const auto& bounds = damage ? kDamageBounds : kStrengthBounds;
+  for (std::size_t i = 0; i < 5; ++i) {
+    c.parameters[i].lower = bounds[i][0];
+    c.parameters[i].upper = bounds[i][1];
+  }
+  if (auto ps = r.optional_child("parameters", "free/fixed parameters, start values, bounds")) {
+    for (std::size_t i = 0; i < 5; ++i) {
+      auto q = ps->optional_child(names[i], std::string("parameter ") + names[i]);
+      if (!q) continue;
+      ParameterSpec& s = c.parameters[i];
+      s.free = q->boolean_or("free", true, "fitted (true) or held at its start value (false)");
+      if (q->has("start")) s.start = q->number("start", Range::any(), "start value (SI)");
+      const double inf = std::numeric_limits<double>::infinity();
+      const Range finite{-inf, inf, true, true};  // bounds enter the logistic transform
+      s.lower = q->number_or("lower", s.lower, finite, "lower bound (SI)");
+      s.upper = q->number_or("upper", s.upper, finite, "upper bound (SI)");
+      const bool bounds_ok = std::isfinite(s.lower) && std::isfinite(s.upper);
+      if (bounds_ok && !(s.lower < s.upper))
+        problems.add(q->key_path("upper"), "upper bound must exceed the lower bound");
+      else if (bounds_ok && s.start && std::isfinite(*s.start) && s.free &&
+               !(s.lower < *s.start && *s.start < s.upper))
+        problems.add(q->key_path("start"), "start value must lie strictly inside the bounds");
+      q->reject_unknown_keys();
+    }
+    ps->reject_unknown_keys();
+  }
+  if (auto s = r.optional_child("solver", "least-squares settings")) {
+    c.solver.max_iterations = static_cast<int>(s->number_or(
+        "max_iterations", c.solver.max_iterations, Range::closed(1, 100000), "iterations"));
+    c.solver.xtol = s->number_or("xtol", c.solver.xtol, Range::positive(), "step tolerance");
+    c.solver.gtol = s->number_or("gtol", c.solver.gtol, Range::positive(), "gradient tolerance");
+    c.solver.ftol = s->number_or("ftol", c.solver.ftol, Range::positive(), "residual tolerance");
+    c.solver.fd_step = s->number_or("fd_step", c.solver.fd_step, Range::open(0, 1),
+                                    "finite-difference step in the scaled variables");
+    s->reject_unknown_keys();
+  }
+  if (auto o = r.optional_child("output", "where the report goes")) {
+    c.output_directory = o->string_or("directory", c.output_directory, "output directory");
+    c.output_material = o->string_or("material", "", "fitted material file name");
+    c.figures = o->boolean_or("figures", true, "write figures (python3-matplotlib)");
+    o->reject_unknown_keys();
+  }
+  r.reject_unknown_keys();
+  problems.throw_if_any();
+  if (c.output_material.empty())
+    c.output_material = fs::path(c.material_file).stem().string() + "_fitted.json";
+  return c;
+}
+
+CheckConfig read_check_config(const std::string& file) {
+  return read_check_config(load_json_file(file), file);
+}
+
+CheckConfig read_check_config(const Json& doc, const std::string& file) {
+  InputProblems problems(file);
+  CheckConfig c;
+  c.file = file;
+  if (!doc.is_object()) {
+    problems.add("", "expected a JSON object");
+    problems.throw_if_any();
+  }
+  JsonReader r(doc, "", problems);
+  r.ignore("description");
+  c.material_file = resolve_file(r.string("material", "material file (the set checked)"), file);
+  c.overrides = material_patch(r, doc);
+  c.data = read_data(r, doc, file);
+  c.curves = read_driver(r);
+  if (auto t = r.optional_child("tolerance", "per-curve limits; exit 3 when one is exceeded")) {
+    auto opt = [&](const char* key, const char* meaning) -> std::optional<double> {
+      if (!t->has(key)) return std::nullopt;
+      return t->number(key, Range::positive(), meaning);
+    };
+    c.tolerance.rms = opt("rms", "RMS stress error per curve [Pa]");
+    c.tolerance.max = opt("max", "largest absolute stress error per curve [Pa]");
+    c.tolerance.mean_signed = opt("mean_signed", "|mean signed stress error| per curve [Pa]");
+    c.tolerance.rms_percent = opt("rms_percent", "RMS error per curve, % of its mean stress");
+    c.overall_rms = opt("overall_rms", "RMS stress error over every point [Pa]");
+    t->reject_unknown_keys();
+  }
+  if (auto o = r.optional_child("output", "where the report goes")) {
+    c.output_directory = o->string_or("directory", c.output_directory, "output directory");
+    c.figures = o->boolean_or("figures", true, "write figures (python3-matplotlib)");
+    o->reject_unknown_keys();
+  }
+  r.reject_unknown_keys();
+  problems.throw_if_any();
+  return c;
+}
+
+std::vector<Experiment> read_experiments(const std::vector<DataEntry>& data,
+                                         double youngs_modulus) {
+  std::vector<Experiment> out;
+  std::vector<std::string> problems;
+  for (const auto& d : data) {
+    try {
+      out.push_back(read_experiment(d.file, youngs_modulus));
+      out.back().weight *= d.weight;
+    } catch (const InputError& e) {
+      problems.insert(problems.end(), e.problems().begin(), e.problems().end());
+    }
+  }
+  if (!problems.empty()) throw InputError(problems);
+  return out;
+}
+
+}  // namespace impact::pointdriver::fit

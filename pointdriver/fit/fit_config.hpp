@@ -1,0 +1,80 @@
+// FIT.json and CHECK.json (docs/fitting.md): validated with every problem reported at once, each
+// naming the file and the JSON key path. Relative file names are looked up in the working
+// directory, then beside the configuration file and in its parent directories.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "models/core/input.hpp"
+#include "pointdriver/fit/curve_model.hpp"
+#include "pointdriver/fit/experiment_data.hpp"
+#include "pointdriver/fit/least_squares.hpp"
+
+namespace impact::pointdriver::fit {
+
+struct DataEntry {
+  std::string file;  ///< resolved
+  double weight = 1.0;
+};
+
+struct ParameterSpec {
+  bool free = true;
+  std::optional<double> start;  ///< given start value (else staged guess or the material's)
+  double lower = 0.0;
+  double upper = 1.0;
+};
+
+struct FitConfig {
+  std::string file;
+  std::string mode = "strength";    ///< strength | damage
+  std::string material_file;        ///< resolved
+  Json overrides = Json::object();  ///< merge patch over the material (includes the keys below)
+  std::vector<DataEntry> data;
+  std::array<ParameterSpec, 5> parameters;  ///< A, B, n, C, m (strength); D1..D5 (damage)
+  std::string initial_guess = "staged";     ///< staged | start
+  double room_tolerance = 10.0;             ///< [K] for the staged guess
+  CurveSettings curves;
+  LeastSquaresOptions solver;
+  std::string output_directory = "fit";
+  std::string output_material;  ///< file name in the output directory
+  bool figures = true;
+};
+
+struct CheckTolerance {
+  std::optional<double> rms;          ///< [Pa]
+  std::optional<double> max;          ///< [Pa]
+  std::optional<double> mean_signed;  ///< |mean signed error| [Pa]
+  std::optional<double> rms_percent;  ///< [%] of the curve's mean stress
+};
+
+struct CheckConfig {
+  std::string file;
+  std::string material_file;
+  Json overrides = Json::object();
+  std::vector<DataEntry> data;
+  CurveSettings curves;
+  CheckTolerance tolerance;           ///< per curve
+  std::optional<double> overall_rms;  ///< [Pa]
+  std::string output_directory = "check";
+  bool figures = true;
+};
+
+FitConfig read_fit_config(const std::string& file);
+FitConfig read_fit_config(const Json& document, const std::string& file);
+CheckConfig read_check_config(const std::string& file);
+CheckConfig read_check_config(const Json& document, const std::string& file);
+
+/// Reads every data entry (experiment files), with E from the material for total-strain curves.
+std::vector<Experiment> read_experiments(const std::vector<DataEntry>& data, double youngs_modulus);
+
+/// `name` relative to the working directory, else to the directory of `relative_to` or one of
+/// its parents; `name` itself if found nowhere (the reader then reports it).
+std::string resolve_file(const std::string& name, const std::string& relative_to);
+
+/// Files matching a pattern with '*' and '?' in its last component, sorted.
+std::vector<std::string> glob_files(const std::string& pattern);
+
+}  // namespace impact::pointdriver::fit

@@ -1,0 +1,135 @@
+#include "pointdriver/fit/strength_fit.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace impact::pointdriver::fit {
+
+CurveErrors curve_errors(const Experiment& e, const std::vector<double>& model, bool adiabatic) {
+  CurveErrors c;
+  c.name = e.name;
+  c.temperature = e.temperature;
+  c.strain_rate = e.strain_rate;
+  c.adiabatic = adiabatic;
+  c.points = static_cast<int>(e.stress.size());
+  double ss = 0, sum = 0, data = 0;
+  for (std::size_t k = 0; k < e.stress.size(); ++k) {
+    const double r = model[k] - e.stress[k];
+    ss += r * r;
+    sum += r;
+    data += e.stress[k];
+    c.max = std::max(c.max, std::abs(r));
+  }
+  const double n = static_cast<double>(std::max(c.points, 1));
+  c.rms = std::sqrt(ss / n);
+  c.mean_signed = sum / n;
+  c.mean_stress = data / n;
+  return c;
+}
+
+OverallErrors overall(const std::vector<CurveErrors>& errors) {
+  OverallErrors o;
+  double ss = 0;
+  for (const auto& c : errors) {
+    ss += c.rms * c.rms * c.points;
+    o.points += c.points;
+    o.max = std::max(o.max, c.max);
+  }
+  o.rms = o.points ? std::sqrt(ss / o.points) : 0.0;
+  return o;
+}
+
+CurveModel make_curve_model(const std::string& material_file, const Json& overrides,
+                            const std::vector<DataEntry>& data, const CurveSettings& settings) {
+  // E of the material (for total-strain curves) before the experiments are read.
+  Json patch = overrides;
+  const Material m = load_material(material_file, patch);
+  const double K = m.model.params().bulk_modulus, G = m.model.params().shear_modulus;
+  return CurveModel(material_file, overrides, read_experiments(data, 9 * K * G / (3 * K + G)),
+                    settings);
+}
+
+StrengthFit fit_strength(const FitConfig& config) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const CurveModel model =
+      make_curve_model(config.material_file, config.overrides, config.data, config.curves);
+  StrengthFit out = fit_strength(model, config);
+  out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+StrengthFit fit_strength(const CurveModel& model, const FitConfig& config) {
+  const auto t0 = std::chrono::steady_clock::now();
+  StrengthFit out;
+  out.experiments = model.experiments();
+  for (std::size_t i = 0; i < out.experiments.size(); ++i)
+    out.adiabatic.push_back(model.adiabatic(i));
+  out.material_values = jc_values(model.base().flow_stress);
+
+  // Start: given values, else the material's; the staged guess replaces the free ones.
+  JcValues start = out.material_values;
+  std::array<bool, 5> free{};
+  for (std::size_t i = 0; i < 5; ++i) {
+    free[i] = config.parameters[i].free;
+    if (config.parameters[i].start) start[i] = *config.parameters[i].start;
+  }
+  out.staged = staged_guess(out.experiments, out.adiabatic, model.base(), start, free,
+                            config.room_tolerance);
+  if (config.initial_guess == "staged") {
+    for (std::size_t i = 0; i < 5; ++i)
+      if (free[i] && !config.parameters[i].start) start[i] = out.staged.values[i];
+  }
+  std::vector<Parameter> parameters;
+  for (std::size_t i = 0; i < 5; ++i) {
+    Parameter p{jc_names[i], start[i], free[i], config.parameters[i].lower,
+                config.parameters[i].upper};
+    // A staged value on or outside a bound is moved just inside it.
+    const double margin = 1e-3 * (p.upper - p.lower);
+    if (p.free) p.value = std::clamp(p.value, p.lower + margin, p.upper - margin);
+    start[i] = p.value;
+    parameters.push_back(p);
+    out.parameters[i] = p;
+  }
+  out.start = start;
+
+  std::vector<double> weights;
+  for (const auto& e : out.experiments) weights.push_back(std::sqrt(e.weight));
+  const BatchResidual residual = [&](const std::vector<std::vector<double>>& sets) {
+    std::vector<JcValues> jc;
+    for (const auto& s : sets) jc.push_back({s[0], s[1], s[2], s[3], s[4]});
+    const auto pred = model.predict(jc);
+    std::vector<Eigen::VectorXd> r;
+    for (const auto& per_set : pred) {
+      std::vector<double> v;
+      for (std::size_t e = 0; e < per_set.size(); ++e)
+        for (std::size_t k = 0; k < per_set[e].size(); ++k)
+          v.push_back(weights[e] * (per_set[e][k] - out.experiments[e].stress[k]) / 1e6);
+      r.push_back(Eigen::Map<Eigen::VectorXd>(v.data(), static_cast<long>(v.size())));
+    }
+    return r;
+  };
+  out.lsq = least_squares(parameters, residual, config.solver);
+  for (std::size_t i = 0; i < 5; ++i) out.fitted[i] = out.lsq.values[i];
+
+  out.curves = model.curves({out.fitted, out.material_values});
+  for (std::size_t s = 0; s < 2; ++s) {
+    auto& errors = s == 0 ? out.errors_fitted : out.errors_material;
+    for (std::size_t e = 0; e < out.experiments.size(); ++e) {
+      std::vector<double> v;
+      for (double x : out.experiments[e].plastic_strain)
+        v.push_back(interpolate_stress(out.curves[s][e], x));
+      errors.push_back(curve_errors(out.experiments[e], v, out.adiabatic[e]));
+      if (!out.curves[s][e].completed)
+        out.warnings.push_back(out.experiments[e].name + " (" +
+                               (s == 0 ? "fitted set" : "material's set") +
+                               "): the driver run did not complete: " + out.curves[s][e].error);
+    }
+  }
+  out.overall_fitted = overall(out.errors_fitted);
+  out.overall_material = overall(out.errors_material);
+  out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace impact::pointdriver::fit

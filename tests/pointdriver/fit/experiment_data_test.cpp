@@ -1,0 +1,177 @@
+// The experiment reader: bad data gives an InputError naming the file and the line; conversions
+// (engineering -> true, total -> plastic, tension stopped at the maximum) are exact; every shipped
+// 6061-T6 curve reads.
+#include "pointdriver/fit/experiment_data.hpp"
+
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "pointdriver/fit/fit_config.hpp"
+
+using namespace impact;
+using namespace impact::pointdriver::fit;
+
+namespace {
+
+const std::string header =
+    "# test_type: uniaxial_compression\n"
+    "# strain_rate [1/s]: 1000\n"
+    "# temperature [K]: 294\n"
+    "# strain_measure: true_plastic\n"
+    "# stress_measure: true\n"
+    "# source: test\n";
+
+Experiment parse(const std::string& text, std::optional<double> E = std::nullopt) {
+  std::istringstream in(text);
+  return parse_experiment(in, "curve.csv", E);
+}
+
+/// The error message of parsing `text` ("" if it parses).
+std::string error_of(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(experiment_data)
+
+BOOST_AUTO_TEST_CASE(a_good_curve_reads) {
+  const Experiment e =
+      parse(header + "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n0.05,3.5e8\n");
+  BOOST_TEST(e.strain_rate == 1000.0);
+  BOOST_TEST(e.temperature == 294.0);
+  BOOST_TEST(e.plastic_strain.size() == 2u);
+  BOOST_TEST(e.stress[1] == 3.5e8);
+  BOOST_TEST(e.conversions.empty());
+}
+
+BOOST_AUTO_TEST_CASE(empty_file) {
+  const std::string m = error_of("");
+  BOOST_TEST(contains(m, "curve.csv"));
+  BOOST_TEST(contains(m, "missing header line '# test_type"));
+  BOOST_TEST(contains(m, "no column header line"));
+  const std::string m2 = error_of(header + "true_plastic_strain [-],true_stress [Pa]\n");
+  BOOST_TEST(contains(m2, "no data rows"));
+}
+
+BOOST_AUTO_TEST_CASE(non_monotone_strain_names_the_line) {
+  const std::string m = error_of(header +
+                                 "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n"
+                                 "0.05,3.5e8\n0.04,3.6e8\n");
+  BOOST_TEST(contains(m, "curve.csv:10:"));
+  BOOST_TEST(contains(m, "does not increase"));
+}
+
+BOOST_AUTO_TEST_CASE(nan_names_the_line) {
+  const std::string m = error_of(header +
+                                 "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n"
+                                 "0.02,nan\n");
+  BOOST_TEST(contains(m, "curve.csv:9:"));
+  BOOST_TEST(contains(m, "NaN"));
+  const std::string m2 =
+      error_of(header + "true_plastic_strain [-],true_stress [Pa]\n0.01,abc\n0.02,3e8\n");
+  BOOST_TEST(contains(m2, "curve.csv:8:"));
+  BOOST_TEST(contains(m2, "not a number"));
+}
+
+BOOST_AUTO_TEST_CASE(stress_in_mpa_is_recognised_from_its_magnitude) {
+  const std::string m = error_of(header +
+                                 "true_plastic_strain [-],true_stress [Pa]\n0.01,330\n"
+                                 "0.02,345\n");
+  BOOST_TEST(contains(m, "curve.csv:9:"));  // the line of the largest stress
+  BOOST_TEST(contains(m, "look like MPa"));
+  // A column labelled MPa is rejected at the header line.
+  const std::string m2 =
+      error_of(header + "true_plastic_strain [-],true_stress [MPa]\n0.01,330\n0.02,345\n");
+  BOOST_TEST(contains(m2, "curve.csv:7:"));
+  BOOST_TEST(contains(m2, "stress must be in Pa"));
+}
+
+BOOST_AUTO_TEST_CASE(strain_in_percent_and_temperature_in_celsius) {
+  const std::string m = error_of(header +
+                                 "true_plastic_strain [-],true_stress [Pa]\n1,3.3e8\n"
+                                 "20,3.5e8\n");
+  BOOST_TEST(contains(m, "curve.csv:9:"));
+  BOOST_TEST(contains(m, "percent"));
+  std::string celsius = header;
+  celsius.replace(celsius.find("294"), 3, "25");
+  const std::string m2 =
+      error_of(celsius + "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n0.02,3.5e8\n");
+  BOOST_TEST(contains(m2, "curve.csv:3:"));
+  BOOST_TEST(contains(m2, "Celsius"));
+}
+
+BOOST_AUTO_TEST_CASE(unknown_header_key_and_wrong_rate_unit) {
+  std::string h = header;
+  h.replace(h.find("# strain_rate [1/s]"), 19, "# strain_rate [1/ms]");
+  const std::string m =
+      error_of(h + "# temprature [K]: 3\ntrue_plastic_strain [-],true_stress [Pa]\n0.01,3e8\n");
+  BOOST_TEST(contains(m, "curve.csv:2:"));
+  BOOST_TEST(contains(m, "[1/s]"));
+  BOOST_TEST(contains(m, "did you mean temperature"));
+}
+
+BOOST_AUTO_TEST_CASE(engineering_total_tension_is_converted_and_stopped_at_the_maximum) {
+  const double E = 70e9;
+  const std::string text =
+      "# test_type: uniaxial_tension\n# strain_rate [1/s]: 0.001\n# temperature [K]: 294\n"
+      "# strain_measure: engineering_total\n# stress_measure: engineering\n# source: test\n"
+      "engineering_strain [-],engineering_stress [Pa]\n"
+      "0.002,1.4e8\n0.02,3.0e8\n0.06,3.2e8\n0.10,3.3e8\n0.14,3.1e8\n";
+  const Experiment e = parse(text, E);
+  // The first point is elastic (eps_p < 0); the last is after the maximum.
+  BOOST_REQUIRE(e.plastic_strain.size() == 3u);
+  const double eps = std::log1p(0.10), sig = 3.3e8 * 1.10;
+  BOOST_TEST(e.stress[2] == sig, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(e.plastic_strain[2] == eps - sig / E, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(e.conversions.size() == 5u);
+  // Without a modulus, a total-strain curve is an error.
+  BOOST_TEST(contains(error_of(text), "Young's modulus"));
+}
+
+BOOST_AUTO_TEST_CASE(engineering_compression_uses_the_compressive_formulas) {
+  const std::string text =
+      "# test_type: uniaxial_compression\n# strain_rate [1/s]: 0.001\n# temperature [K]: 294\n"
+      "# strain_measure: engineering_total\n# stress_measure: engineering\n# source: test\n"
+      "# youngs_modulus [Pa]: 7e10\n"
+      "engineering_strain [-],engineering_stress [Pa]\n0.05,3.0e8\n0.10,3.2e8\n";
+  const Experiment e = parse(text);
+  const double eps = -std::log1p(-0.10), sig = 3.2e8 * 0.90;
+  BOOST_TEST(e.stress[1] == sig, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(e.plastic_strain[1] == eps - sig / 7e10, boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(every_shipped_6061_curve_reads_with_its_citation) {
+  const auto files =
+      glob_files(std::string(IMPACT_SOURCE_DIR) + "/data/experiments/al6061_t6/*.csv");
+  BOOST_TEST(files.size() >= 30u);
+  for (const auto& f : files) {
+    const Experiment e = read_experiment(f);
+    BOOST_TEST(!e.source.empty());
+    BOOST_TEST(contains(e.converted_from, "SigEpsEp"));
+    BOOST_TEST(e.plastic_strain.size() >= 5u);
+    BOOST_TEST(e.stress.front() > 1e7);  // Pa, not MPa
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_missing_file_is_named) {
+  try {
+    read_experiment("no_such_curve.csv");
+    BOOST_FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    BOOST_TEST(contains(e.what(), "no_such_curve.csv"));
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
