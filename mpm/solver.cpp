@@ -152,8 +152,7 @@ const StepTotals& Simulation::step() {
   ledger_.record_step(time_, last_.particles.kinetic_energy, last_.particles.momentum,
                       last_.stress.strain_energy_increment, last_.grid.boundary.impulse,
                       last_.grid.boundary.work, last_.particles.boundary_dissipation,
-                      last_.grid.external_impulse,
-                      last_.grid.external_work);
+                      last_.grid.external_impulse, last_.grid.external_work);
   return last_;
 }
 

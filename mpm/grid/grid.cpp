@@ -101,10 +101,9 @@ bool Grid::touches_boundary(const std::array<int, 3>& base, int n) const {
 std::size_t Grid::bytes() const {
   std::size_t b = buffers_.size() * node_count() * sizeof(NodeData);
   for (const auto& r : remap_buffers_) b += r.size() * sizeof(Vec3);
-  b += mass.size() * sizeof(double) +
-       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size() +
-        bc_increment.size()) *
-           sizeof(Vec3);
+  b += mass.size() * sizeof(double) + (velocity.size() + velocity_new.size() + increment.size() +
+                                       velocity_L.size() + bc_increment.size()) *
+                                          sizeof(Vec3);
   return b;
 }
 

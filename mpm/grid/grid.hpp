@@ -57,13 +57,13 @@ class Grid {
   void reduce_momentum();
   const std::vector<Vec3>& remapped_momentum() const { return remap_buffers_[0]; }
 
-  std::vector<double> mass;          ///< m_I (copy of nodes()[I].mass, compact for gathers)
-  std::vector<Vec3> velocity;        ///< v_I = p_I / m_I (ghost layer mirrored) [m/s]
-  std::vector<Vec3> velocity_new;    ///< v*_I after the momentum update and face conditions
-  std::vector<Vec3> increment;       ///< v*_I - v_I (FLIP increment)
-  std::vector<Vec3> velocity_L;      ///< the nodal velocity L_p is built from (USL/MUSL)
-  std::vector<Vec3> bc_increment;    ///< (v*_I - v_I) - (v*_I - v_I)_free: the faces' share
-  double light_mass = 0.0;           ///< [kg] see kLightNodeMassFraction in step/step.hpp
+  std::vector<double> mass;        ///< m_I (copy of nodes()[I].mass, compact for gathers)
+  std::vector<Vec3> velocity;      ///< v_I = p_I / m_I (ghost layer mirrored) [m/s]
+  std::vector<Vec3> velocity_new;  ///< v*_I after the momentum update and face conditions
+  std::vector<Vec3> increment;     ///< v*_I - v_I (FLIP increment)
+  std::vector<Vec3> velocity_L;    ///< the nodal velocity L_p is built from (USL/MUSL)
+  std::vector<Vec3> bc_increment;  ///< (v*_I - v_I) - (v*_I - v_I)_free: the faces' share
+  double light_mass = 0.0;         ///< [kg] see kLightNodeMassFraction in step/step.hpp
 
   /// Nodes touched by a constrained (symmetric or fixed) face: face layers, ghost layers, once
   /// each (for the impulse / boundary bookkeeping).

@@ -47,10 +47,9 @@ LedgerRow Ledger::row() const {
   double sunk = 0.0;
   for (double s : sinks_) sunk += s;
   const double scale = initial_energy_ > 0.0 ? initial_energy_ : 1.0;
-  r.energy_error =
-      (r.total_energy + boundary_dissipation_ + sunk - initial_energy_ - boundary_work_ -
-       external_work_) /
-      scale;
+  r.energy_error = (r.total_energy + boundary_dissipation_ + sunk - initial_energy_ -
+                    boundary_work_ - external_work_) /
+                   scale;
   return r;
 }
 

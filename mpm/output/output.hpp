@@ -1,5 +1,5 @@
-// Writers: history.csv (the ledger, one row per output interval), binary (raw appended) VTU snapshots of the
-// particles with a .pvd collection (ParaView), and summary.json.
+// Writers: history.csv (the ledger, one row per output interval), binary (raw appended) VTU
+// snapshots of the particles with a .pvd collection (ParaView), and summary.json.
 #pragma once
 
 #include <fstream>

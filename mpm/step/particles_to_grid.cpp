@@ -55,8 +55,8 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S) {
 
 template void compute_stencils<LinearShape>(const Particles&, const LinearShape&,
                                             Stencils<LinearShape>&, int);
-template void compute_stencils<GimpShape>(const Particles&, const GimpShape&,
-                                          Stencils<GimpShape>&, int);
+template void compute_stencils<GimpShape>(const Particles&, const GimpShape&, Stencils<GimpShape>&,
+                                          int);
 template void particles_to_grid<LinearShape>(const Particles&, Grid&, const Stencils<LinearShape>&);
 template void particles_to_grid<GimpShape>(const Particles&, Grid&, const Stencils<GimpShape>&);
 
