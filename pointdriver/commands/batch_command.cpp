@@ -16,6 +16,7 @@
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/output/csv_writer.hpp"
+#include "pointdriver/output/text_format.hpp"
 #include "pointdriver/study/batch.hpp"
 
 namespace impact::pointdriver {
@@ -91,16 +92,7 @@ Json with_material_patch(Json document, const Json& patch) {
 }
 
 std::string csv_number(double v) {
-  std::ostringstream s;
-  s << std::setprecision(10) << v;
-  return s.str();
-}
-
-std::string csv_text(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return q + "\"";
+  return format_number(v, 10);
 }
 
 }  // namespace
@@ -237,11 +229,11 @@ int command_batch(const std::vector<std::string>& args) {
     const auto [p, m] = job_index[i];
     all_completed = all_completed && r.result.completed;
     steps += r.result.steps;
-    s << csv_text(path_names[p]) << ',' << csv_text(material_names[m]) << ',' << r.result.steps
+    s << csv_cell(path_names[p]) << ',' << csv_cell(material_names[m]) << ',' << r.result.steps
       << ',' << (r.result.completed ? 1 : 0) << ',' << to_string(r.result.failure) << ','
       << csv_number(r.result.failure_time) << ',' << csv_number(r.last.stress_path(0, 0)) << ','
       << csv_number(r.last.state.plastic_strain) << ',' << csv_number(r.last.state.temperature)
-      << ',' << csv_number(r.wall_time) << ',' << csv_text(r.result.error) << '\n';
+      << ',' << csv_number(r.wall_time) << ',' << csv_cell(r.result.error) << '\n';
     std::cout << std::left << std::setw(28) << path_names[p] << ' ' << std::setw(20)
               << material_names[m] << ' ' << std::right << std::setw(7) << r.result.steps
               << " steps  stress_xx " << std::setw(12) << std::setprecision(5)

@@ -10,6 +10,7 @@
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/commands/plot_script.hpp"
+#include "pointdriver/output/text_format.hpp"
 #include "pointdriver/verify/verification_suite.hpp"
 
 namespace impact::pointdriver {
@@ -33,14 +34,6 @@ std::string fmt(double v, const char* f = "%.6g") {
   char buf[40];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
-}
-
-/// A CSV cell: quoted when it holds a comma or a quote.
-std::string cell(const std::string& s) {
-  if (s.find_first_of(",\"") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 /// The header cells of a CSV (names without units), or none when it cannot be read.
@@ -205,9 +198,9 @@ int command_verify(const std::vector<std::string>& args) {
   std::ofstream csv(table);
   csv << "case,quantity,expected,got,error,tolerance,pass\n";
   for (const Check& k : all) {
-    csv << cell(k.case_name) << ',' << cell(k.quantity) << ',' << fmt(k.expected, "%.15g") << ','
-        << fmt(k.got, "%.15g") << ',' << fmt(k.error, "%.6g") << ',' << fmt(k.tolerance, "%.6g")
-        << ',' << (k.pass ? "yes" : "no") << '\n';
+    csv << csv_cell(k.case_name) << ',' << csv_cell(k.quantity) << ',' << fmt(k.expected, "%.15g")
+        << ',' << fmt(k.got, "%.15g") << ',' << fmt(k.error, "%.6g") << ','
+        << fmt(k.tolerance, "%.6g") << ',' << (k.pass ? "yes" : "no") << '\n';
   }
   if (!csv) {
     std::cerr << "pointdriver verify: cannot write " << table.string() << '\n';

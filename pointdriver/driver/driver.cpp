@@ -1,4 +1,5 @@
 #include "pointdriver/driver/driver.hpp"
+#include "pointdriver/output/text_format.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -10,12 +11,6 @@
 namespace impact::pointdriver {
 
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 Mat3 cross_matrix(const Vec3& w) {
   Mat3 m;
@@ -104,7 +99,7 @@ class LegRunner {
     }
     if (depth >= path_.solver.max_cutbacks) {
       a.error = sol.message + " (after " + std::to_string(depth) +
-                " cut-backs, dt = " + number(dt) + " s)";
+                " cut-backs, dt = " + format_number(dt) + " s)";
       return false;
     }
     if (!advance(s0, F_path0, Q0, t0, dt / 2, guess, depth + 1, a)) return false;
@@ -193,7 +188,7 @@ RunResult run_path(const Path& path, const ElasticPlastic& model, const RowSink&
         a.substeps = 0;
       } else if (!runner.advance(s, F_path, Q, t_leg, dt, guess, 0, a)) {
         result.error = "leg " + std::to_string(li) + " (" + leg.label + "), step " +
-                       std::to_string(step) + ", t = " + number(t) + " s: " + a.error;
+                       std::to_string(step) + ", t = " + format_number(t) + " s: " + a.error;
         result.replay = replay_path(path, leg, plan, s, Q, t_leg, dt,
                                     runner.temperature_at(t_leg + dt), runner.rotation_rate());
         result.steps = step - 1;

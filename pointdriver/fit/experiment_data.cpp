@@ -1,4 +1,5 @@
 #include "pointdriver/fit/experiment_data.hpp"
+#include "pointdriver/output/text_format.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -51,9 +52,7 @@ std::string trim(const std::string& s) {
 }
 
 std::string fmt(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
+  return format_number(v);
 }
 
 /// Collects problems as "file:line: message" and throws them together.

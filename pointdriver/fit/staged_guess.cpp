@@ -1,4 +1,5 @@
 #include "pointdriver/fit/staged_guess.hpp"
+#include "pointdriver/output/text_format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -63,10 +64,7 @@ bool loglog(const std::vector<Pt>& pts, double A, double& B, double& n) {
 }
 
 std::string fmt(double v) {
-  std::ostringstream o;
-  o.precision(4);
-  o << v;
-  return o.str();
+  return format_number(v, 4);
 }
 
 }  // namespace

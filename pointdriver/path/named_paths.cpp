@@ -1,4 +1,5 @@
 #include "pointdriver/path/named_paths.hpp"
+#include "pointdriver/output/text_format.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,12 +10,6 @@
 namespace impact::pointdriver {
 
 namespace {
-
-std::string short_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 /// Keys every named type shares; copied onto each generated leg.
 struct Common {
@@ -271,10 +266,10 @@ void expand_jumps(JsonReader& r, Builder& b, const Json& raw, bool temperature) 
         return;
       }
       b.uniaxial_stress_leg(strains[i], std::copysign(rate, strains[i]),
-                            "T = " + short_number(values[i]) + " K");
+                            "T = " + format_number(values[i]) + " K");
     } else {
       b.uniaxial_stress_leg(strains[i], std::copysign(values[i], strains[i]),
-                            "rate " + short_number(values[i]) + " /s");
+                            "rate " + format_number(values[i]) + " /s");
     }
   }
 }

@@ -1,4 +1,5 @@
 #include "pointdriver/study/convergence_study.hpp"
+#include "pointdriver/output/text_format.hpp"
 
 #include <algorithm>
 #include <array>
@@ -171,17 +172,7 @@ Fit least_squares(const std::vector<double>& x, const std::vector<double>& y) {
 }
 
 std::string fmt(double v, int precision = 3) {
-  if (!std::isfinite(v)) return "-";
-  std::ostringstream s;
-  s << std::setprecision(precision) << v;
-  return s.str();
-}
-
-std::string csv_text(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return q + "\"";
+  return std::isfinite(v) ? format_number(v, precision) : "-";
 }
 
 }  // namespace
@@ -338,7 +329,7 @@ void write_convergence_csv(const ConvergenceResult& result, const std::string& f
         << num(r.wall_time) << ',' << num(r.error) << ',' << r.status << ',' << num(r.final_error)
         << ',' << num(r.baseline_error) << ',' << num(r.local_order) << ','
         << num(r.iterations_per_step) << ',' << num(r.substeps_per_step) << ','
-        << csv_text(r.message) << '\n';
+        << csv_cell(r.message) << '\n';
   }
   if (!out) throw std::runtime_error("cannot write " + file);
 }
