@@ -99,22 +99,15 @@ std::string csv_number(double v) {
 
 int command_batch(const std::vector<std::string>& args) {
   Options o;
-  try {
-    o = parse_options(args,
-                      {{"--paths", -1},
-                       {"--materials", -1},
-                       {"--set", 1},
-                       {"--out", 1},
-                       {"--threads", 1},
-                       {"--no-csv", 0}},
-                      0);
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver batch: " << e.what() << '\n' << batch_help;
-    return 1;
-  }
-  if (o.help) {
-    std::cout << batch_help;
-    return 0;
+  if (const auto exit_code = parse_command("batch", batch_help, o, args,
+                                           {{"--paths", -1},
+                                            {"--materials", -1},
+                                            {"--set", 1},
+                                            {"--out", 1},
+                                            {"--threads", 1},
+                                            {"--no-csv", 0}},
+                                           0)) {
+    return *exit_code;
   }
   if (!o.has("--paths")) {
     std::cerr << "pointdriver batch: missing --paths\n" << batch_help;

@@ -31,15 +31,9 @@ const char* check_help =
 
 int command_check(const std::vector<std::string>& args) {
   Options o;
-  try {
-    o = parse_options(args, {{"--out", 1}, {"--no-figures", 0}}, 1);
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver check: " << e.what() << '\n' << check_help;
-    return 1;
-  }
-  if (o.help) {
-    std::cout << check_help;
-    return 0;
+  if (const auto exit_code =
+          parse_command("check", check_help, o, args, {{"--out", 1}, {"--no-figures", 0}}, 1)) {
+    return *exit_code;
   }
   if (o.positional.size() != 1) {
     std::cerr << "pointdriver check: expected one CHECK.json\n" << check_help;

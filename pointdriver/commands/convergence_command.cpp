@@ -36,16 +36,10 @@ const char* convergence_help =
 
 int command_convergence(const std::vector<std::string>& args) {
   Options o;
-  try {
-    o = parse_options(args, {{"--out", 1}, {"--quick", 0}, {"--material", 1}, {"--no-plots", 0}},
-                      0);
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver convergence: " << e.what() << '\n' << convergence_help;
-    return 1;
-  }
-  if (o.help) {
-    std::cout << convergence_help;
-    return 0;
+  if (const auto exit_code =
+          parse_command("convergence", convergence_help, o, args,
+                        {{"--out", 1}, {"--quick", 0}, {"--material", 1}, {"--no-plots", 0}}, 0)) {
+    return *exit_code;
   }
   const fs::path out = o.get("--out", "docs/figures");
   std::error_code ec;

@@ -33,15 +33,9 @@ const char* fit_help =
 
 int command_fit(const std::vector<std::string>& args) {
   Options o;
-  try {
-    o = parse_options(args, {{"--out", 1}, {"--no-figures", 0}}, 1);
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver fit: " << e.what() << '\n' << fit_help;
-    return 1;
-  }
-  if (o.help) {
-    std::cout << fit_help;
-    return 0;
+  if (const auto exit_code =
+          parse_command("fit", fit_help, o, args, {{"--out", 1}, {"--no-figures", 0}}, 1)) {
+    return *exit_code;
   }
   if (o.positional.size() != 1) {
     std::cerr << "pointdriver fit: expected one FIT.json\n" << fit_help;

@@ -1,5 +1,6 @@
 #include "pointdriver/commands/options.hpp"
 
+#include <iostream>
 #include <sstream>
 
 namespace impact::pointdriver {
@@ -70,6 +71,22 @@ Options parse_options(const std::vector<std::string>& args, const std::vector<Op
     o.positional.push_back(a);
   }
   return o;
+}
+
+std::optional<int> parse_command(std::string_view command, const char* help, Options& out,
+                                 const std::vector<std::string>& args,
+                                 const std::vector<OptionSpec>& specs, std::size_t max_positional) {
+  try {
+    out = parse_options(args, specs, max_positional);
+  } catch (const UsageError& e) {
+    std::cerr << "pointdriver " << command << ": " << e.what() << '\n' << help;
+    return 1;
+  }
+  if (out.help) {
+    std::cout << help;
+    return 0;
+  }
+  return std::nullopt;
 }
 
 }  // namespace impact::pointdriver

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace impact::pointdriver {
@@ -32,5 +34,11 @@ struct Options {
 /// Parses `args`; throws UsageError naming an unknown option or a missing value.
 Options parse_options(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs,
                       std::size_t max_positional);
+
+/// The start of every command: parses into `out`; on a usage error prints it with `help` to
+/// stderr and returns 1, on --help prints `help` and returns 0, otherwise returns nothing.
+std::optional<int> parse_command(std::string_view command, const char* help, Options& out,
+                                 const std::vector<std::string>& args,
+                                 const std::vector<OptionSpec>& specs, std::size_t max_positional);
 
 }  // namespace impact::pointdriver

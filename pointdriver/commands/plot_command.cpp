@@ -113,23 +113,16 @@ PlotRun run_plot_script(const std::vector<std::string>& args) {
 
 int command_plot(const std::vector<std::string>& args, const char*) {
   Options o;
-  try {
-    o = parse_options(args,
-                      {{"--x", 1},
-                       {"--y", 1},
-                       {"-o|--output", 1},
-                       {"--title", 1},
-                       {"--logx", 0},
-                       {"--logy", 0},
-                       {"--label", 1}},
-                      std::numeric_limits<std::size_t>::max());
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver plot: " << e.what() << '\n' << plot_help;
-    return 1;
-  }
-  if (o.help) {
-    std::cout << plot_help;
-    return 0;
+  if (const auto exit_code = parse_command("plot", plot_help, o, args,
+                                           {{"--x", 1},
+                                            {"--y", 1},
+                                            {"-o|--output", 1},
+                                            {"--title", 1},
+                                            {"--logx", 0},
+                                            {"--logy", 0},
+                                            {"--label", 1}},
+                                           std::numeric_limits<std::size_t>::max())) {
+    return *exit_code;
   }
   std::string missing;
   if (o.positional.empty()) missing = "a CSV file";

@@ -31,15 +31,9 @@ const char* cause_name(FailureCause c) {
 
 int command_run(const std::vector<std::string>& args) {
   Options o;
-  try {
-    o = parse_options(args, {{"-o|--output", 1}, {"--set", 1}}, 1);
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver run: " << e.what() << '\n' << run_help;
-    return 1;
-  }
-  if (o.help) {
-    std::cout << run_help;
-    return 0;
+  if (const auto exit_code =
+          parse_command("run", run_help, o, args, {{"-o|--output", 1}, {"--set", 1}}, 1)) {
+    return *exit_code;
   }
   if (o.positional.empty()) {
     std::cerr << "pointdriver run: missing PATH.json\n" << run_help;

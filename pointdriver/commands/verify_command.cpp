@@ -137,15 +137,9 @@ void draw_figures(const fs::path& out) {
 
 int command_verify(const std::vector<std::string>& args) {
   Options o;
-  try {
-    o = parse_options(args, {{"--out", 1}, {"--case", 1}, {"--list", 0}}, 0);
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver verify: " << e.what() << '\n' << verify_help;
-    return 1;
-  }
-  if (o.help) {
-    std::cout << verify_help;
-    return 0;
+  if (const auto exit_code = parse_command("verify", verify_help, o, args,
+                                           {{"--out", 1}, {"--case", 1}, {"--list", 0}}, 0)) {
+    return *exit_code;
   }
   const auto& cases = verification_cases();
   if (o.has("--list")) {
