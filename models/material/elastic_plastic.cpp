@@ -191,7 +191,19 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
       }
       if (report.failure != FailureCause::none) s1.failed = true;
     }
-    if (s1.failed) stress_new = erode_stress(p_.erosion, stress_new);
+    if (s1.failed) {
+      const Mat3 eroded = erode_stress(p_.erosion, stress_new);
+      const auto w = [&](const Mat3& t) {  // complementary elastic energy density
+        const Mat3 dev = deviator(t);
+        const double pr = mean(t);
+        return ddot(dev, dev) / (4.0 * mu) + pr * pr / (2.0 * p_.bulk_modulus);
+      };
+      // Booked on the step of failure only: later steps keep the stress constrained, which the
+      // strain energy (with the eroded stress) already accounts for; a total-form EOS (Mie-
+      // Gruneisen) would otherwise re-book the same tension p(rho)^2/2K every step.
+      if (report.failure != FailureCause::none) report.eroded_energy = w(stress_new) - w(eroded);
+      stress_new = eroded;
+    }
   }
 
   // 7. Back to the lab frame.

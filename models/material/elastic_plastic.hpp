@@ -81,6 +81,10 @@ struct StepReport {
   FailureCause failure = FailureCause::none;  ///< set on the step a point fails
   double drucker_indicator = 0.0;  ///< sigma_dot : D^p when the Drucker check ran [Pa/s^2]
   double becker_indicator = 1.0;   ///< min det A_ep / det A_e when the Becker check ran [-]
+  /// Elastic energy density the erosion took out of the stress on the step the point failed,
+  /// w(sigma) - w(eroded sigma) with w = s:s/(4 mu) + p^2/(2 K) [J/m^3] (0 for KeepStress, and on
+  /// every later step).
+  double eroded_energy = 0.0;
 };
 
 std::string_view to_string(UpdateStatus);
