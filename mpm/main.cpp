@@ -1,31 +1,65 @@
 // mpm: the explicit MPM solver's command line.
 //   mpm run SCENE.json [--out DIR] [--threads N]
 //   mpm check SCENE.json [--threads N]
+//   mpm study SCENE_DIR --out DIR [--threads N] [--cases LIST] [--no-plot]
 // Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path), 3 run failure.
 #include <unistd.h>
 
 #include <cstring>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "mpm/solver.hpp"
+#include "mpm/study/study.hpp"
 
 namespace {
 
 const char* kUsage =
     "usage: mpm run SCENE.json [--out DIR] [--threads N]\n"
     "       mpm check SCENE.json [--threads N]\n"
+    "       mpm study SCENE_DIR --out DIR [--threads N] [--cases case01,case04] [--no-plot]\n"
     "       mpm --help\n"
     "run:   runs the scene; writes DIR/history.csv (energy and momentum ledger), DIR/particles/\n"
     "       step_NNNNNN.vtu + DIR/particles.pvd (ParaView), DIR/summary.json, DIR/scene.json\n"
     "       (the resolved scene). DIR defaults to the scene's output.directory.\n"
     "check: validates the scene and prints it resolved, with particle counts, mass and particle\n"
     "       volume against the exact geometric volume per object, estimated steps and memory.\n"
+    "study: the report's Table 2 study: runs SCENE_DIR/case*.json (by name, then\n"
+    "       recommended.json; --cases picks some) one after another, N threads each (default 2),\n"
+    "       without snapshots, into DIR/<case>/; then mpm/study/study_plot.py writes\n"
+    "       DIR/summary.csv + DIR/summary.md (one row per case) and DIR/<case>/energy.png (energy\n"
+    "       and momentum vs time beside case01; not with --no-plot). Python: $MPM_PYTHON,\n"
+    "       /usr/bin/python3 or python3 with matplotlib. Exit 3 if any case failed.\n"
     "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error, 3 run failure.\n";
 
 int usage_error(const std::string& message) {
   std::cerr << "mpm: " << message << '\n' << kUsage;
   return 1;
+}
+
+/// A positive integer, the whole argument.
+bool parse_positive(const char* text, int& value) {
+  try {
+    std::size_t used = 0;
+    value = std::stoi(text, &used);
+    return used == std::strlen(text) && value >= 1;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+/// Comma-separated, no empty items.
+bool parse_list(const std::string& text, std::vector<std::string>& items) {
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma - start);
+    if (item.empty()) return false;
+    items.push_back(item);
+    if (comma == std::string::npos) return true;
+    start = comma + 1;
+  }
 }
 
 }  // namespace
@@ -37,28 +71,32 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return 0;
   }
-  if (command != "run" && command != "check")
+  if (command != "run" && command != "check" && command != "study")
     return usage_error("unknown command '" + command + "'");
+  const bool study = command == "study";
   std::string scene_file;
   impact::mpm::RunOptions options;
+  impact::mpm::StudyOptions study_options;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
       return 0;
-    } else if (a == "--out" && command == "run") {
+    } else if (a == "--out" && command != "check") {
       if (i + 1 >= argc) return usage_error("--out needs a directory");
       options.out_dir = argv[++i];
     } else if (a == "--threads") {
       if (i + 1 >= argc) return usage_error("--threads needs a number");
-      try {
-        std::size_t used = 0;
-        options.threads = std::stoi(argv[++i], &used);
-        if (used != std::strlen(argv[i]) || options.threads < 1) throw std::invalid_argument("");
-      } catch (const std::exception&) {
+      if (!parse_positive(argv[++i], options.threads))
         return usage_error("--threads: expected a positive integer, got '" + std::string(argv[i]) +
                            "'");
-      }
+      study_options.threads = options.threads;
+    } else if (a == "--cases" && study) {
+      if (i + 1 >= argc || !parse_list(argv[++i], study_options.cases))
+        return usage_error(
+            "--cases needs a comma-separated list of case names, e.g. case01,case04");
+    } else if (a == "--no-plot" && study) {
+      study_options.plot = false;
     } else if (!a.empty() && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_file.empty()) {
@@ -67,8 +105,15 @@ int main(int argc, char** argv) {
       return usage_error("unexpected argument '" + a + "'");
     }
   }
-  if (scene_file.empty()) return usage_error("missing SCENE.json");
+  if (scene_file.empty()) return usage_error(study ? "missing SCENE_DIR" : "missing SCENE.json");
+  if (study && options.out_dir.empty()) return usage_error("study needs --out DIR");
   try {
+    if (study) {
+      study_options.scene_dir = scene_file;
+      study_options.out_dir = options.out_dir;
+      study_options.progress = isatty(STDERR_FILENO) != 0;
+      return impact::mpm::run_study(study_options);
+    }
     const impact::mpm::Scene scene = impact::mpm::load_scene(scene_file);
     if (command == "check") {
       std::cout << scene.resolved.dump(2) << '\n';

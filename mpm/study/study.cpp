@@ -1,0 +1,244 @@
+// `mpm study` (docs/mpm.md#table-2-study-mpm-study): the cases run one after another, each with
+// all the threads it is given (the machine has few cores; running cases side by side would only
+// share them), then study_plot.py draws the figures and writes the table.
+#include "mpm/study/study.hpp"
+
+#include <fcntl.h>
+#include <omp.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+#include "mpm/solver.hpp"
+
+extern char** environ;
+
+namespace impact::mpm {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// study_plot.py: $MPM_STUDY_PLOT_SCRIPT when set, else beside this file in the source tree.
+std::string plot_script_path() {
+  if (const char* env = std::getenv("MPM_STUDY_PLOT_SCRIPT"); env && *env) return env;
+#ifdef IMPACT_SOURCE_DIR
+  return std::string(IMPACT_SOURCE_DIR) + "/mpm/study/study_plot.py";
+#else
+  return "mpm/study/study_plot.py";
+#endif
+}
+
+/// Runs `argv` (argv[0] looked up on PATH) without a shell; returns its exit status, 127 when it
+/// cannot start. `quiet` sends its output to /dev/null (interpreter probes).
+int spawn(const std::vector<std::string>& argv, bool quiet) {
+  std::cout.flush();
+  std::cerr.flush();
+  std::vector<char*> cargs;
+  for (const auto& a : argv) cargs.push_back(const_cast<char*>(a.c_str()));
+  cargs.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  }
+  pid_t pid = 0;
+  const int err = posix_spawnp(&pid, cargs[0], &actions, nullptr, cargs.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) return 127;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+/// The interpreter for study_plot.py: the first of $MPM_PYTHON, /usr/bin/python3 (where Debian's
+/// python3-matplotlib installs; a pyenv or venv python3 earlier on PATH may lack it) and python3
+/// on PATH that imports matplotlib (when `figures`); failing that, the first that runs at all (the
+/// table needs only the standard library). Empty when there is none.
+struct Python {
+  std::string command;
+  bool matplotlib = false;
+};
+
+Python find_python(bool figures) {
+  std::vector<std::string> candidates;
+  if (const char* env = std::getenv("MPM_PYTHON"); env && *env) candidates.push_back(env);
+  candidates.insert(candidates.end(), {"/usr/bin/python3", "python3"});
+  if (figures) {
+    for (const auto& c : candidates)
+      if (spawn({c, "-c", "import matplotlib"}, true) == 0) return {c, true};
+  }
+  for (const auto& c : candidates)
+    if (spawn({c, "-c", "import csv, json"}, true) == 0) return {c, false};
+  return {};
+}
+
+/// Runs study_plot.py on OUT. Never changes the study's result: a missing interpreter or a failing
+/// script is a warning with the command to run by hand.
+void run_plot(const fs::path& out, bool figures) {
+  const std::string script = plot_script_path();
+  const std::string by_hand =
+      "python3 " + script + " " + out.string() + (figures ? "" : " --no-figures");
+  if (!fs::is_regular_file(script)) {
+    std::cerr << "mpm study: warning: plotting script not found: " << script
+              << " (set MPM_STUDY_PLOT_SCRIPT to mpm/study/study_plot.py); no table or figures\n";
+    return;
+  }
+  const Python python = find_python(figures);
+  if (python.command.empty()) {
+    std::cerr << "mpm study: warning: no python3 found ($MPM_PYTHON, /usr/bin/python3, python3); "
+                 "no table or figures. Install python3 and python3-matplotlib, then run:\n  "
+              << by_hand << '\n';
+    return;
+  }
+  if (const char* env = std::getenv("MPM_PYTHON"); env && *env && python.command != env)
+    std::cerr << "mpm study: note: MPM_PYTHON=" << env
+              << (figures ? " cannot import matplotlib" : " does not run") << "; using "
+              << python.command << '\n';
+  if (figures && !python.matplotlib) {
+    std::cerr << "mpm study: warning: no python3 with matplotlib ($MPM_PYTHON, /usr/bin/python3, "
+                 "python3): writing the table only. For the figures install python3-matplotlib "
+                 "(apt-get install -y python3-matplotlib) and run:\n  python3 "
+              << script << ' ' << out.string() << '\n';
+    figures = false;
+  }
+  std::vector<std::string> argv{python.command, script, out.string()};
+  if (!figures) argv.push_back("--no-figures");
+  if (const int code = spawn(argv, false); code != 0) {
+    std::cerr << "mpm study: warning: " << script << " exited with code " << code
+              << "; run it by hand: " << by_hand << '\n';
+  }
+}
+
+std::string stem_of(const std::string& file) {
+  return fs::path(file).stem().string();
+}
+
+}  // namespace
+
+std::vector<std::string> study_scene_files(const std::string& scene_dir,
+                                           const std::vector<std::string>& selected) {
+  std::error_code ec;
+  if (!fs::is_directory(scene_dir, ec))
+    throw InputError({scene_dir + ": not a directory (expected the study's scene directory)"});
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(scene_dir)) {
+    const fs::path& p = entry.path();
+    const std::string stem = p.stem().string();
+    if (!entry.is_regular_file() || p.extension() != ".json") continue;
+    if (stem.rfind("case", 0) == 0 || stem == "recommended") files.push_back(p.string());
+  }
+  // By name, recommended.json last: case01 ... case16 is the report's order.
+  std::sort(files.begin(), files.end(), [](const std::string& a, const std::string& b) {
+    const bool ra = stem_of(a) == "recommended", rb = stem_of(b) == "recommended";
+    return ra != rb ? rb : stem_of(a) < stem_of(b);
+  });
+  if (files.empty()) throw InputError({scene_dir + ": no case*.json or recommended.json scenes"});
+  if (selected.empty()) return files;
+  std::set<std::string> wanted;
+  for (std::string s : selected) {
+    if (s.size() > 5 && s.compare(s.size() - 5, 5, ".json") == 0) s.resize(s.size() - 5);
+    wanted.insert(s);
+  }
+  std::vector<std::string> chosen;
+  for (const auto& f : files)
+    if (wanted.erase(stem_of(f))) chosen.push_back(f);
+  if (!wanted.empty()) {
+    std::string available;
+    for (const auto& f : files) available += (available.empty() ? "" : ", ") + stem_of(f);
+    std::vector<std::string> problems;
+    for (const auto& w : wanted)
+      problems.push_back(scene_dir + ": no case '" + w + "' (available: " + available + ")");
+    throw InputError(problems);
+  }
+  return chosen;
+}
+
+int run_study(const StudyOptions& options) {
+  const std::vector<std::string> files = study_scene_files(options.scene_dir, options.cases);
+  // Every scene is read before anything runs, so a typo in the last case does not surface hours
+  // into the study.
+  std::vector<Scene> scenes;
+  std::vector<std::string> problems;
+  for (const auto& f : files) {
+    try {
+      scenes.push_back(load_scene(f));
+      scenes.back().output.snapshots = false;  // the study needs the ledger only; VTUs are GBs
+    } catch (const InputError& e) {
+      problems.insert(problems.end(), e.problems().begin(), e.problems().end());
+    }
+  }
+  if (!problems.empty()) throw InputError(problems);
+
+  const int procs = std::max(1, omp_get_num_procs());
+  const int threads = options.threads < 1 ? procs : std::min(options.threads, procs);
+  if (threads < options.threads)
+    std::cerr << "mpm study: " << options.threads << " threads requested, " << procs
+              << " processors available: using " << threads << '\n';
+
+  const fs::path out(options.out_dir);
+  fs::create_directories(out);
+  Json record = Json::array();
+  std::vector<std::string> failed;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const std::string name = stem_of(files[i]);
+    const fs::path dir = out / name;
+    fs::create_directories(dir);
+    // A stale summary or history from an earlier study must not pass for this run's.
+    fs::remove(dir / "summary.json");
+    fs::remove(dir / "history.csv");
+    std::cerr << "mpm study: case " << name << " (" << i + 1 << " of " << scenes.size() << ", "
+              << threads << " threads) -> " << dir.string() << '\n';
+    const auto t0 = std::chrono::steady_clock::now();
+    int code = 0;
+    std::string message;
+    try {
+      code = run(scenes[i], RunOptions{dir.string(), threads, options.progress});
+    } catch (const std::exception& e) {  // e.g. a model that cannot be built: not a SolverFailure
+      code = 3;
+      message = e.what();
+      std::cerr << "mpm study: case " << name << " failed: " << message << '\n';
+    }
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!fs::exists(dir / "summary.json")) {  // run() did not get as far as its summary
+      std::ofstream(dir / "summary.json")
+          << Json{{"status", "failed"}, {"message", message}, {"wall_time [s]", wall}}.dump(2)
+          << '\n';
+    } else if (code != 0) {
+      std::ifstream in(dir / "summary.json");
+      const Json summary = Json::parse(in, nullptr, false);
+      if (summary.is_object()) message = summary.value("message", "");
+    }
+    const std::string status = code == 0 ? "completed" : "failed";
+    if (code != 0) failed.push_back(name);
+    std::cerr << "mpm study: case " << name << " " << status << " in " << wall << " s\n";
+    record.push_back({{"case", name},
+                      {"scene", files[i]},
+                      {"status", status},
+                      {"exit_code", code},
+                      {"message", message},
+                      {"wall_time [s]", wall}});
+  }
+  const Json study = {
+      {"scene_directory", options.scene_dir}, {"threads", threads}, {"cases", record}};
+  std::ofstream(out / "study.json") << study.dump(2) << '\n';
+  std::cerr << "mpm study: " << scenes.size() - failed.size() << " of " << scenes.size()
+            << " cases completed";
+  for (std::size_t i = 0; i < failed.size(); ++i)
+    std::cerr << (i ? ", " : "; failed: ") << failed[i];
+  std::cerr << '\n';
+  run_plot(out, options.plot);
+  return failed.empty() ? 0 : 3;
+}
+
+}  // namespace impact::mpm

@@ -1,0 +1,340 @@
+#!/usr/bin/env python3
+"""Figures and table of an `mpm study` (the report's Table 2 study; docs/mpm.md).
+
+  study_plot.py OUT [--no-figures]
+
+OUT holds one directory per case (history.csv, summary.json, scene.json, as `mpm run` writes them).
+Writes
+  OUT/<case>/energy.png  left: kinetic, strain and total energy [J] vs time [us] of the case (solid)
+                         and of case01 (dashed), plus any further ledger energy terms (thin lines);
+                         right: the momentum components [kg m/s], the case and case01.
+  OUT/summary.csv        one row per case, header cells `name [unit]`, full precision.
+  OUT/summary.md         the same as a markdown table, 4 significant digits.
+--no-figures writes the table only (needs no matplotlib).
+history.csv columns are read by name, so ledger columns added later are picked up: every `[J]`
+column between boundary_dissipation and energy_error is drawn and tabulated at the end time.
+
+Exit codes: 0 done, 1 usage error, 2 input error, 4 matplotlib missing.
+`mpm study` runs this script; it can also be run directly.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import re
+import sys
+import textwrap
+
+MISSING_MATPLOTLIB = 4
+REFERENCE = "case01"
+
+
+class InputError(Exception):
+    pass
+
+
+def strip_unit(name):
+    return re.sub(r"\s*\[[^\]]*\]\s*$", "", name).strip()
+
+
+def unit_of(name):
+    m = re.search(r"\[([^\]]*)\]\s*$", name)
+    return m.group(1) if m else ""
+
+
+class History:
+    """history.csv by column name (the header cell without its unit)."""
+
+    def __init__(self, path):
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+        if not rows:
+            raise InputError(f"{path}: empty file")
+        self.header = [h.strip() for h in rows[0]]
+        self.names = [strip_unit(h) for h in self.header]
+        data = []
+        for row in rows[1:]:
+            # A run killed mid-write leaves a short or broken last line: skip it.
+            if len(row) != len(self.header):
+                continue
+            try:
+                data.append([float(c) for c in row])
+            except ValueError:
+                continue
+        self.columns = {n: [r[i] for r in data] for i, n in enumerate(self.names)}
+        self.rows = len(data)
+
+    def has(self, name):
+        return name in self.columns
+
+    def col(self, name):
+        return self.columns[name]
+
+    def last(self, name, default=0.0):
+        c = self.columns.get(name)
+        return c[-1] if c else default
+
+    def energy_terms(self):
+        """The further ledger terms: `[J]` columns between boundary_dissipation and energy_error
+        (sinks such as viscous_work, contact_dissipation; external_work with gravity)."""
+        if "boundary_dissipation" not in self.names or "energy_error" not in self.names:
+            return []
+        lo = self.names.index("boundary_dissipation")
+        hi = self.names.index("energy_error")
+        return [self.names[i] for i in range(lo + 1, hi) if unit_of(self.header[i]) == "J"]
+
+
+def read_json(path):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def case_order(name):
+    return (name == "recommended", name)
+
+
+class Case:
+    def __init__(self, out, name):
+        self.name = name
+        self.dir = os.path.join(out, name)
+        self.summary = read_json(os.path.join(self.dir, "summary.json")) or {}
+        scene = read_json(os.path.join(self.dir, "scene.json")) or {}
+        self.description = scene.get("description", "") if isinstance(scene, dict) else ""
+        self.history = None
+        path = os.path.join(self.dir, "history.csv")
+        if os.path.isfile(path):
+            try:
+                self.history = History(path)
+            except (OSError, InputError) as e:
+                sys.stderr.write(f"study_plot.py: {e}\n")
+        if self.history is not None and self.history.rows == 0:
+            self.history = None
+        # No summary.json next to a history: the run was interrupted.
+        self.status = self.summary.get("status", "incomplete")
+        self.message = self.summary.get("message", "")
+
+
+def find_cases(out):
+    if not os.path.isdir(out):
+        raise InputError(f"{out}: not a directory")
+    names = [
+        n
+        for n in os.listdir(out)
+        if os.path.isfile(os.path.join(out, n, "summary.json"))
+        or os.path.isfile(os.path.join(out, n, "history.csv"))
+    ]
+    if not names:
+        raise InputError(f"{out}: no case directories (with summary.json or history.csv)")
+    return [Case(out, n) for n in sorted(names, key=case_order)]
+
+
+# ---- table -------------------------------------------------------------------------------------
+
+COLUMNS = [
+    ("case", "case"),
+    ("status", "status"),
+    ("particles", "particles [-]"),
+    ("e0", "initial_kinetic_energy [J]"),
+    ("final_total", "final_total_energy [J]"),
+    ("max_total", "max_total_energy [J]"),
+    ("drift", "relative_drift [-]"),
+    ("ledger_end", "ledger_error_end [-]"),
+    ("ledger_max", "max_abs_ledger_error [-]"),
+    ("momentum_error", "momentum_balance_error [-]"),
+    ("steps", "steps [-]"),
+    ("wall", "wall_time [s]"),
+    ("rate", "particle_steps_per_second [1/s]"),
+]
+
+
+def number(x):
+    return x if isinstance(x, (int, float)) and not isinstance(x, bool) else None
+
+
+def table_row(case, terms):
+    s, h = case.summary, case.history
+    r = {
+        "case": case.name,
+        "status": case.status,
+        "particles": number(s.get("particles")),
+        "e0": number(s.get("initial_energy [J]")),
+        "steps": number(s.get("steps")),
+        "wall": number(s.get("wall_time [s]")),
+        "rate": number(s.get("particle_steps_per_second")),
+        "message": case.message,
+    }
+    if h is None:
+        return r
+    total = h.col("total_energy")
+    r["final_total"] = total[-1]
+    r["max_total"] = max(total)
+    if r["e0"]:
+        r["drift"] = (total[-1] - r["e0"]) / r["e0"]
+    err = h.col("energy_error")
+    r["ledger_end"] = err[-1]
+    r["ledger_max"] = max(abs(e) for e in err)
+    # p_end - p0 - boundary impulse (- body-force impulse): zero to round-off for the solver.
+    p0 = s.get("initial_momentum [kg m/s]")
+    if not (isinstance(p0, list) and len(p0) == 3):
+        p0 = [h.col(f"momentum_{a}")[0] for a in "xyz"]
+    residual = [
+        h.last(f"momentum_{a}")
+        - p0[i]
+        - h.last(f"boundary_impulse_{a}")
+        - h.last(f"external_impulse_{a}")
+        for i, a in enumerate("xyz")
+    ]
+    scale = math.sqrt(sum(p * p for p in p0))
+    # Bodies whose momenta cancel (head-on) leave round-off in p0: then relative to
+    # sqrt(2 M E0), the largest |p| the kinetic energy allows; absolute (kg m/s) if that is 0 too.
+    mass, e0 = number(s.get("mass [kg]")), r["e0"]
+    reference = math.sqrt(2.0 * mass * e0) if mass and e0 and e0 > 0 else 0.0
+    if scale <= 1e-9 * reference:
+        scale = reference
+    r["momentum_error"] = math.sqrt(sum(d * d for d in residual)) / (scale if scale > 0 else 1.0)
+    for t in terms:
+        if h.has(t):
+            r["term:" + t] = h.last(t)
+    return r
+
+
+def write_tables(out, cases):
+    terms = []
+    for c in cases:
+        for t in c.history.energy_terms() if c.history else []:
+            if t not in terms:
+                terms.append(t)
+    rows = [table_row(c, terms) for c in cases]
+    keys = [k for k, _ in COLUMNS] + ["term:" + t for t in terms] + ["message"]
+    heads = [h for _, h in COLUMNS] + [f"{t}_end [J]" for t in terms] + ["message"]
+
+    with open(os.path.join(out, "summary.csv"), "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(heads)
+        for r in rows:
+            w.writerow(["" if r.get(k) is None else r[k] for k in keys])
+
+    def md(v):
+        if v is None:
+            return ""
+        if isinstance(v, float):
+            return f"{v:.4g}"
+        return str(v).replace("|", "\\|").replace("\n", " ")
+
+    lines = [
+        f"# Study {os.path.basename(os.path.abspath(out))}: energy and momentum balance per case",
+        "",
+        "| " + " | ".join(heads) + " |",
+        "|" + "---|" * len(heads),
+    ]
+    lines += ["| " + " | ".join(md(r.get(k)) for k in keys) + " |" for r in rows]
+    lines += [
+        "",
+        "initial_kinetic_energy: the discretized sum 1/2 m_p v_p^2 at t = 0 (summary.json "
+        "initial_energy); relative_drift = (final total - initial) / initial; ledger_error: the "
+        "ledger's energy_error (docs/mpm.md#ledger); momentum_balance_error = "
+        "abs(p_end - p0 - boundary_impulse - external_impulse) / abs(p0) (/ sqrt(2 M E0) when "
+        "the bodies' momenta cancel, abs(p0) < 1e-9 sqrt(2 M E0); absolute in kg m/s if both "
+        "are 0). Columns `*_end [J]`: further ledger energy terms at the end time (docs/mpm.md).",
+        "",
+    ]
+    with open(os.path.join(out, "summary.md"), "w") as f:
+        f.write("\n".join(lines))
+
+
+# ---- figures -----------------------------------------------------------------------------------
+
+
+def import_pyplot():
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        sys.stderr.write(
+            "study_plot.py: matplotlib is not installed; install it with:\n"
+            "  apt-get install -y python3-matplotlib\n"
+            "or write the table only with --no-figures\n"
+        )
+        sys.exit(MISSING_MATPLOTLIB)
+    return plt
+
+
+def short(text, limit=150):
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[: limit - 3].rstrip() + "..."
+
+
+def draw_case(plt, case, reference):
+    fig, (ax_e, ax_p) = plt.subplots(1, 2, figsize=(13, 5))
+    runs = [(case, "-")]
+    if reference is not None and reference is not case and reference.history is not None:
+        runs.append((reference, "--"))
+    energy = [("kinetic_energy", "C0"), ("strain_energy", "C1"), ("total_energy", "k")]
+    for c, style in runs:
+        h = c.history
+        t = [x * 1e6 for x in h.col("time")]
+        for name, color in energy:
+            ax_e.plot(t, h.col(name), style, color=color, lw=1.5, label=f"{name} ({c.name})")
+        for i, name in enumerate(h.energy_terms()):
+            ax_e.plot(t, h.col(name), style, color=f"C{i + 2}", lw=0.8, label=f"{name} ({c.name})")
+        for name, color in [("momentum_x", "C0"), ("momentum_y", "C1"), ("momentum_z", "C2")]:
+            ax_p.plot(t, h.col(name), style, color=color, lw=1.5, label=f"{name} ({c.name})")
+    ax_e.set_xlabel("time [µs]")
+    ax_e.set_ylabel("energy [J]")
+    ax_e.set_title("energy (this case solid" + (f", {REFERENCE} dashed)" if len(runs) > 1 else ")"))
+    ax_p.set_xlabel("time [µs]")
+    ax_p.set_ylabel("momentum [kg m/s]")
+    ax_p.set_title("momentum")
+    for ax in (ax_e, ax_p):
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    title = case.name + ("" if case.status == "completed" else f" ({case.status})")
+    if case.description:
+        title += ": " + short(case.description)
+    fig.suptitle("\n".join(textwrap.wrap(title, 120)), fontsize=10)
+    fig.tight_layout()
+    path = os.path.join(case.dir, "energy.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # a usage error exits 1 (argparse's 2 is our input error)
+        self.print_usage(sys.stderr)
+        sys.stderr.write(f"study_plot.py: {message}\n")
+        sys.exit(1)
+
+
+def main():
+    p = Parser(description="Figures and table of an `mpm study`.")
+    p.add_argument("out", help="the study output directory (mpm study --out)")
+    p.add_argument("--no-figures", action="store_true", help="write the table only")
+    args = p.parse_args()
+    try:
+        cases = find_cases(args.out)
+        write_tables(args.out, cases)
+        print(f"study_plot.py: wrote {os.path.join(args.out, 'summary.csv')} and summary.md")
+        if args.no_figures:
+            return 0
+        plt = import_pyplot()
+        reference = next((c for c in cases if c.name == REFERENCE), None)
+        for c in cases:
+            if c.history is not None:
+                draw_case(plt, c, reference)
+        print(f"study_plot.py: wrote {sum(c.history is not None for c in cases)} figures")
+    except InputError as e:
+        sys.stderr.write(f"study_plot.py: {e}\n")
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
