@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine (root, or a user with sudo):
-#   ./run.sh main    install missing packages, build into build/, run the main job
+#   ./run.sh main    install missing packages, build into build/, run the main job: the report's
+#                    recommended sphere-cylinder impact (history, figure, VTK in build/recommended/)
 #   ./run.sh test    install missing packages, build, run the whole test suite (release, then the
 #                    unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
+#   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -35,7 +37,12 @@ case "${1:-}" in
     install_missing_packages
     build release
     build/bin/material_check data/materials/al6061_t6.json >/dev/null
-    build/bin/pointdriver verify --out build/pointdriver_verify
+    # The report's conclusion (KeepStress, single_velocity, multiplier 0.1): writes
+    # build/recommended/recommended/{history.csv, summary.json, particles.pvd, particles/*.vtu},
+    # then the energy/momentum figure and the summary table beside it.
+    build/bin/mpm run data/scenes/sphere_cylinder/recommended.json \
+      --out build/recommended/recommended --threads "$(nproc)"
+    /usr/bin/python3 mpm/study/study_plot.py build/recommended
     ;;
   test)
     install_missing_packages
@@ -56,8 +63,13 @@ case "${1:-}" in
     build release
     build/bin/pointdriver convergence --out docs/figures
     ;;
+  table2)
+    install_missing_packages
+    build release
+    build/bin/mpm study data/scenes/sphere_cylinder --out docs/figures/sphere_cylinder --threads 2
+    ;;
   *)
-    sed -n '2,8p' "$0"
+    sed -n '2,10p' "$0"
     exit 1
     ;;
 esac

@@ -33,28 +33,30 @@ class PhaseClock {
 };
 
 // One explicit step (USL or MUSL). Equations: Sulsky, Chen & Schreyer (1994) 20-26; MUSL:
-// Sulsky, Zhou & Schreyer (1995) and Nairn (2003); strain energy: report eq. 14.
+// Sulsky, Zhou & Schreyer (1995) and Nairn (2003); contact: Bardenhagen et al. (2001); strain
+// energy: report eq. 14; artificial viscosity: report eq. 12.
 template <class Shape>
 StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S,
-                   const std::vector<const ElasticPlastic*>& models, const SolverSpec& s, double dt,
+                   const StressUpdateSettings& settings, const SolverSpec& s,
+                   const ContactSpec* contact, const std::vector<double>& specific_heat, double dt,
                    std::optional<Failure>& failure) {
   StepTotals t;
   PhaseClock clock(t.seconds);
   const bool usl = s.scheme == Scheme::usl;
   compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n, once per step
-  particles_to_grid<Shape>(P, G, S);                  // m_I, p_I, f_int_I           (eqs. 20-22)
+  particles_to_grid<Shape>(P, G, S);                  // m_I, p_I, f_I per field  (eqs. 20-22)
   clock.lap(&PhaseTimes::particles_to_grid);
-  t.grid = grid_update(G, dt, s.gravity, usl);  // v*_I, mirror faces            (eq. 24)
+  t.grid = grid_update(G, dt, s.gravity, usl, contact);  // v*_I, contact, faces (eq. 24)
   clock.lap(&PhaseTimes::grid_update);
   // FLIP velocity, x from v*_I; USL: L from v^L_I (= v*_I but at light nodes)   (eqs. 23, 25-26)
-  t.particles = grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, failure);
+  t.particles = grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, specific_heat, failure);
   clock.lap(&PhaseTimes::grid_to_particles);
   if (failure) return t;
   if (!usl) {
-    remap_and_gradient<Shape>(P, G, S);  // MUSL: L from v^{n+1}_I re-mapped from the particles
+    remap_and_gradient<Shape>(P, G, S, contact);  // MUSL: L from the re-mapped v^{n+1}_I
     clock.lap(&PhaseTimes::remap);
   }
-  t.stress = update_stress(P, models, dt, s.f_integration, failure);  // sigma, F, V; eq. 14
+  t.stress = update_stress(P, settings, dt, failure);  // sigma, F, V, q; eq. 14
   clock.lap(&PhaseTimes::stress);
   return t;
 }
@@ -98,11 +100,37 @@ std::string describe(const Failure& f, const Particles& P, const Scene& scene, l
 Simulation::Simulation(const Scene& scene, int threads)
     : scene_(scene),
       particles_(seed_particles(scene)),
-      grid_(scene.grid, thread_count(threads)),
+      grid_(scene.grid, thread_count(threads), scene.field_count(),
+            scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
       ledger_(!scene.solver.gravity.isZero(0.0)) {
-  for (const SceneMaterial& m : scene_.materials) models_.push_back(&m.material.model);
+  const PhysicsSpec& ph = scene_.physics;
+  StressUpdateSettings& st = stress_settings_;
+  bool erosion = false;
+  for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
+    const ElasticPlastic& model = scene_.materials[m].material.model;
+    st.models.push_back(&model);
+    specific_heat_.push_back(model.params().specific_heat);
+    erosion = erosion || model.params().erosion != Erosion::none;
+    if (ph.create_new_particles && scene_.companion_field(int(m)) != scene_.parent_field(int(m))) {
+      st.companion_field.push_back(static_cast<std::uint16_t>(scene_.companion_field(int(m))));
+    }
+  }
+  st.f_integration = scene_.solver.f_integration;
+  st.mean_spacing = scene_.grid.spacing().sum() / 3.0;
+  if (ph.artificial_viscosity.enabled) {
+    st.viscosity = &scene_.physics.artificial_viscosity;
+    particles_.q.assign(particles_.size(), 0.0);
+  }
+  // The ledger's columns follow the physics the scene switched on.
+  if (st.viscosity) sinks_.viscous = ledger_.add_sink_column("viscous_work");
+  if (grid_.fields() > 1) {
+    sinks_.contact = ledger_.add_sink_column("contact_dissipation");
+    if (ph.contact.type == ContactType::friction)
+      sinks_.friction = ledger_.add_sink_column("friction_heat", /*in_balance=*/false);
+  }
+  if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
   if (!particles_.mass.empty()) {
     grid_.light_mass =
         kLightNodeMassFraction * *std::min_element(particles_.mass.begin(), particles_.mass.end());
@@ -142,7 +170,9 @@ const StepTotals& Simulation::step() {
       [&](const auto& shape) {
         using Shape = std::decay_t<decltype(shape)>;
         auto& S = std::get<Stencils<Shape>>(stencils_);
-        return advance(particles_, grid_, shape, S, models_, scene_.solver, dt, failure);
+        const ContactSpec* contact = grid_.fields() > 1 ? &scene_.physics.contact : nullptr;
+        return advance(particles_, grid_, shape, S, stress_settings_, scene_.solver, contact,
+                       specific_heat_, dt, failure);
       },
       shape_);
   if (failure) throw SolverFailure(describe(*failure, particles_, scene_, steps_ + 1, time_ + dt));
@@ -151,8 +181,14 @@ const StepTotals& Simulation::step() {
   max_signal_speed_ = last_.stress.max_signal_speed;
   ledger_.record_step(time_, last_.particles.kinetic_energy, last_.particles.momentum,
                       last_.stress.strain_energy_increment, last_.grid.boundary.impulse,
-                      last_.grid.boundary.work, last_.particles.boundary_dissipation,
+                      last_.grid.boundary.work, last_.grid.boundary.dissipation,
                       last_.grid.external_impulse, last_.grid.external_work);
+  if (sinks_.viscous >= 0) ledger_.add_sink(sinks_.viscous, last_.stress.viscous_work);
+  if (sinks_.contact >= 0) ledger_.add_sink(sinks_.contact, last_.grid.contact.dissipation);
+  if (sinks_.friction >= 0) ledger_.add_sink(sinks_.friction, last_.grid.contact.friction_heat);
+  if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
+  failed_ += last_.stress.failed;
+  converted_ += last_.stress.converted;
   return last_;
 }
 
@@ -201,7 +237,8 @@ Json check_report(const Scene& scene, int threads) {
   const double dt =
       std::min(stable_time_step(scene.grid.spacing(), max_signal_speed(P), scene.time.multiplier),
                scene.time.max_dt);
-  const Grid g(scene.grid, std::max(threads, 1));
+  const Grid g(scene.grid, std::max(threads, 1), scene.field_count(),
+               scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction);
   const double particle_bytes = double(P.size()) * Particles::bytes_per_particle();
   return {{"objects", objects},
           {"particles", P.size()},
@@ -210,6 +247,7 @@ Json check_report(const Scene& scene, int threads) {
           {"estimated_steps", std::ceil(scene.time.max_time / dt)},
           {"memory [MB]", (particle_bytes + double(g.bytes())) / 1e6},
           {"memory_per_particle [B]", Particles::bytes_per_particle()},
+          {"velocity_fields", g.fields()},
           {"threads", threads}};
 }
 
@@ -272,6 +310,9 @@ int run(const Scene& scene, const RunOptions& options) {
   summary["particle_steps_per_second"] =
       wall > 0 ? double(sim.particles().size()) * double(sim.steps()) / wall : 0.0;
   summary["initial_energy [J]"] = sim.ledger().initial_energy();
+  summary["velocity_fields"] = sim.grid().fields();
+  summary["failed_particles"] = sim.failed_particles();
+  summary["converted_particles"] = sim.converted_particles();
   summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
   summary["final"] = row_json(sim.ledger());
   summary["units"] = {{"time", "s"},

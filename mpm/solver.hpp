@@ -61,6 +61,8 @@ class Simulation {
   long steps() const { return steps_; }
   bool finished() const { return time_ >= scene_.time.max_time * (1.0 - 1e-12); }
   int threads() const { return grid_.threads(); }
+  long failed_particles() const { return failed_; }        ///< failures so far
+  long converted_particles() const { return converted_; }  ///< moved to a companion field
 
  private:
   Scene scene_;
@@ -68,8 +70,14 @@ class Simulation {
   Grid grid_;
   std::variant<LinearShape, GimpShape> shape_;
   std::variant<Stencils<LinearShape>, Stencils<GimpShape>> stencils_;  ///< reused every step
-  std::vector<const ElasticPlastic*> models_;
+  StressUpdateSettings stress_settings_;
+  std::vector<double> specific_heat_;  ///< per material, for friction heating
   Ledger ledger_;
+  /// Ledger sink columns registered for this scene's physics (-1: not registered).
+  struct SinkColumns {
+    int viscous = -1, contact = -1, friction = -1, eroded = -1;
+  } sinks_;
+  long failed_ = 0, converted_ = 0;
   StepTotals last_;
   double time_ = 0.0;
   long steps_ = 0;

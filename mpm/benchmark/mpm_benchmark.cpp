@@ -1,5 +1,5 @@
 // mpm_benchmark [--quick] [--large]: particle-steps per second of the explicit step on the
-// report's sphere-cylinder geometry (data/scenes/sphere_cylinder_case1.json), for linear and GIMP,
+// report's sphere-cylinder geometry (data/scenes/sphere_cylinder/case01.json), for linear and GIMP,
 // elastic (A = 1e15) and Johnson-Cook plastic, at ~30 k particles (the deck's grid) and ~240 k
 // (grid refined 2x per axis; --large adds ~1.9 M at 4x), with 1 and 2 threads. Prints the time
 // per phase and memory per particle. Not a test: numbers go to docs/performance_mpm.md.
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     }
   }
   const std::string file =
-      std::string(IMPACT_SOURCE_DIR) + "/data/scenes/sphere_cylinder_case1.json";
+      std::string(IMPACT_SOURCE_DIR) + "/data/scenes/sphere_cylinder/case01.json";
   try {
     const Json base = load_scene_document(file);
     std::printf("shape  model   particles th | throughput   | share of step wall time (MUSL)\n");

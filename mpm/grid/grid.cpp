@@ -6,21 +6,24 @@
 
 namespace impact::mpm {
 
-Grid::Grid(const GridSpec& spec, int threads)
+Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
     : spec_(spec),
       dx_(spec.spacing()),
       inv_dx_(dx_.cwiseInverse()),
       nx_(spec.cells[0] + 3),
       ny_(spec.cells[1] + 3),
       nz_(spec.cells[2] + 3),
-      buffers_(std::max(threads, 1), std::vector<NodeData>(node_count())) {
+      fields_(std::max(fields, 1)),
+      buffers_(std::max(threads, 1), std::vector<NodeData>(entry_count())) {
+  const int e = entry_count();
+  if (nodal_stress) stress_buffers_.assign(buffers_.size(), std::vector<NodeStress>(e));
+  mass.assign(e, 0.0);
+  velocity.assign(e, Vec3::Zero());
+  velocity_new.assign(e, Vec3::Zero());
+  increment.assign(e, Vec3::Zero());
+  velocity_L.assign(e, Vec3::Zero());
+  if (nodal_stress) heat.assign(e, 0.0);
   const int n = node_count();
-  mass.assign(n, 0.0);
-  velocity.assign(n, Vec3::Zero());
-  velocity_new.assign(n, Vec3::Zero());
-  increment.assign(n, Vec3::Zero());
-  velocity_L.assign(n, Vec3::Zero());
-  bc_increment.assign(n, Vec3::Zero());
   std::vector<char> mark(n, 0);
   for (int face = 0; face < 6; ++face) {
     constrained_[face] = spec_.faces[face] != FaceCondition::free;
@@ -41,20 +44,25 @@ Grid::Grid(const GridSpec& spec, int threads)
   }
   for (int i = 0; i < n; ++i)
     if (mark[i]) boundary_nodes_.push_back(i);
+  free_increment.assign(boundary_nodes_.size() * fields_, Vec3::Zero());
 }
 
 void Grid::clear() {
-  const int n = node_count();
+  const int n = entry_count();
   const int nt = threads();
+  const bool stress = has_nodal_stress();
 #pragma omp parallel for schedule(static) num_threads(nt)
   for (int i = 0; i < n; ++i) {
     for (int t = 0; t < nt; ++t) buffers_[t][i] = NodeData{};
+    if (stress)
+      for (int t = 0; t < nt; ++t) stress_buffers_[t][i] = NodeStress{};
   }
 }
 
 void Grid::reduce() {
-  const int n = node_count();
+  const int n = entry_count();
   const int nt = threads();
+  const bool stress = has_nodal_stress();
 #pragma omp parallel for schedule(static) num_threads(nt)
   for (int i = 0; i < n; ++i) {
     NodeData& a = buffers_[0][i];
@@ -65,13 +73,15 @@ void Grid::reduce() {
         a.momentum[d] += b.momentum[d];
         a.force[d] += b.force[d];
       }
+      if (stress)
+        for (int c = 0; c < 6; ++c) stress_buffers_[0][i].s[c] += stress_buffers_[t][i].s[c];
     }
     mass[i] = a.mass;
   }
 }
 
 void Grid::clear_momentum() {
-  const int n = node_count();
+  const int n = entry_count();
   const int nt = threads();
   if (remap_buffers_.empty()) remap_buffers_.assign(nt, std::vector<Vec3>(n));
 #pragma omp parallel for schedule(static) num_threads(nt)
@@ -81,7 +91,7 @@ void Grid::clear_momentum() {
 }
 
 void Grid::reduce_momentum() {
-  const int n = node_count();
+  const int n = entry_count();
   const int nt = threads();
   if (nt == 1) return;
 #pragma omp parallel for schedule(static) num_threads(nt)
@@ -90,20 +100,13 @@ void Grid::reduce_momentum() {
   }
 }
 
-bool Grid::touches_boundary(const std::array<int, 3>& base, int n) const {
-  for (int d = 0; d < 3; ++d) {
-    if (constrained_[2 * d] && base[d] <= 0) return true;
-    if (constrained_[2 * d + 1] && base[d] + n - 1 >= spec_.cells[d]) return true;
-  }
-  return false;
-}
-
 std::size_t Grid::bytes() const {
-  std::size_t b = buffers_.size() * node_count() * sizeof(NodeData);
+  std::size_t b = buffers_.size() * entry_count() * sizeof(NodeData);
   for (const auto& r : remap_buffers_) b += r.size() * sizeof(Vec3);
-  b += mass.size() * sizeof(double) + (velocity.size() + velocity_new.size() + increment.size() +
-                                       velocity_L.size() + bc_increment.size()) *
-                                          sizeof(Vec3);
+  for (const auto& r : stress_buffers_) b += r.size() * sizeof(NodeStress);
+  b +=
+      (mass.size() + heat.size()) * sizeof(double) +
+      (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size()) * sizeof(Vec3);
   return b;
 }
 

@@ -2,9 +2,10 @@
 
 namespace impact::mpm {
 
-int Ledger::add_sink_column(std::string name) {
+int Ledger::add_sink_column(std::string name, bool in_balance) {
   sink_names_.push_back(std::move(name));
   sinks_.push_back(0.0);
+  in_balance_.push_back(in_balance);
   return static_cast<int>(sinks_.size()) - 1;
 }
 
@@ -45,7 +46,8 @@ LedgerRow Ledger::row() const {
   r.external_impulse = external_impulse_;
   r.external_work = external_work_;
   double sunk = 0.0;
-  for (double s : sinks_) sunk += s;
+  for (std::size_t i = 0; i < sinks_.size(); ++i)
+    if (in_balance_[i]) sunk += sinks_[i];
   const double scale = initial_energy_ > 0.0 ? initial_energy_ : 1.0;
   r.energy_error = (r.total_energy + boundary_dissipation_ + sunk - initial_energy_ -
                     boundary_work_ - external_work_) /

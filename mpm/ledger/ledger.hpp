@@ -3,14 +3,15 @@
 //   strain_energy   = sum_steps sum_p 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt   (eq. 14)
 //   total_energy    = kinetic + strain                                  (the report's quantity)
 //   boundary_impulse, boundary_work: what the grid-face conditions exerted (grid/boundary.cpp)
-//   boundary_dissipation = sum_steps sum_p 1/2 m_p (|v_p^free|^2 - |v_p^{n+1}|^2): the kinetic
-//                     energy the faces' velocity projection took from the particles
-//   energy_error    = (kinetic + strain + boundary_dissipation + sum of sinks - E0 - boundary_work
-//                      - external_work) / E0
+//   boundary_dissipation = the kinetic energy the faces' velocity projection took, booked exactly
+//                     at the nodes (step/grid_update.cpp)
+//   sinks           = one column each, registered by the solver for the physics a scene uses:
+//                     viscous_work, contact_dissipation (in the balance),
+//                     friction_heat, eroded_energy (parts of other terms: shown, not added)
+//   energy_error    = (kinetic + strain + boundary_dissipation + sum of balance sinks - E0
+//                      - boundary_work - external_work) / E0
+// with E0 the initial kinetic energy (1 J if E0 = 0, i.e. then an absolute error in J).
 // Column names carry their unit, `name [unit]` (the point driver's convention).
-// with E0 the initial kinetic + strain energy (1 J if E0 = 0, i.e. then an absolute error in J).
-// A later dissipation (artificial-viscosity work, contact dissipation) is one more Sink: a new
-// column, and a term of energy_error, without touching the rest.
 #pragma once
 
 #include <string>
@@ -41,8 +42,10 @@ class Ledger {
   explicit Ledger(bool with_external = false) : with_external_(with_external) {}
 
   /// Registers an energy sink column (J, accumulated; `name` without unit: the header gets
-  /// "name [J]"); returns its index for add_sink().
-  int add_sink_column(std::string name);
+  /// "name [J]"); returns its index for add_sink(). `in_balance`: a term of energy_error (false
+  /// for a column that itemises part of another term, e.g. friction heat within contact
+  /// dissipation).
+  int add_sink_column(std::string name, bool in_balance = true);
   const std::vector<std::string>& sink_names() const { return sink_names_; }
 
   /// The state at t = 0 (E0 and p0).
@@ -73,6 +76,7 @@ class Ledger {
   Vec3 external_impulse_ = Vec3::Zero();
   std::vector<std::string> sink_names_;
   std::vector<double> sinks_;
+  std::vector<bool> in_balance_;
 };
 
 }  // namespace impact::mpm

@@ -130,6 +130,12 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
     } else if (f == "object") {
       data.add(o, "Float64", "object", 1,
                scalar(n, [&](std::size_t p) { return double(P.object[p]); }));
+    } else if (f == "field") {
+      data.add(o, "Float64", "field", 1,
+               scalar(n, [&](std::size_t p) { return double(P.field[p]); }));
+    } else if (f == "failed") {
+      data.add(o, "Float64", "failed", 1,
+               scalar(n, [&](std::size_t p) { return P.state[p].failed ? 1.0 : 0.0; }));
     }
   }
   o << "</PointData>\n</Piece>\n</UnstructuredGrid>\n";

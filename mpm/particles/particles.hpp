@@ -22,10 +22,14 @@ struct Particles {
   std::vector<double> wave_speed;       ///< longitudinal sound speed of the last update [m/s]
   std::vector<std::uint16_t> material;  ///< index into Scene::materials
   std::vector<std::uint16_t> object;    ///< index into Scene::objects (GIMP half-width, output)
+  std::vector<std::uint16_t> field;     ///< velocity field (Scene::field_count; 0 if one field)
+  /// Artificial bulk viscosity q of the last update [Pa] (report eq. 12); empty when it is off.
+  std::vector<double> q;
 
   std::size_t size() const { return x.size(); }
   void reserve(std::size_t n);
-  /// Approximate storage per particle [bytes] (for `mpm check` and the benchmark).
+  /// Approximate storage per particle [bytes] without the optional q (for `mpm check` and the
+  /// benchmark).
   static std::size_t bytes_per_particle();
 };
 

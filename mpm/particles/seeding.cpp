@@ -16,11 +16,12 @@ void Particles::reserve(std::size_t n) {
   wave_speed.reserve(n);
   material.reserve(n);
   object.reserve(n);
+  field.reserve(n);
 }
 
 std::size_t Particles::bytes_per_particle() {
   return 2 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(Mat3) + sizeof(PointState) +
-         sizeof(double) + 2 * sizeof(std::uint16_t);
+         sizeof(double) + 3 * sizeof(std::uint16_t);
 }
 
 std::vector<Vec3> half_widths(const Scene& scene) {
@@ -73,6 +74,7 @@ Particles seed_particles(const Scene& scene) {
                 p.wave_speed.push_back(c);
                 p.material.push_back(static_cast<std::uint16_t>(o.material));
                 p.object.push_back(static_cast<std::uint16_t>(oi));
+                p.field.push_back(static_cast<std::uint16_t>(scene.parent_field(o.material)));
               }
   }
   return p;

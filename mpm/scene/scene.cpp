@@ -126,6 +126,57 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
   r.reject_unknown_keys();
 }
 
+void read_physics(JsonReader& root, PhysicsSpec& ph) {
+  JsonReader r = root.optional_child("physics", "optional physics (the report's <MPM> flags)")
+                     .value_or(JsonReader(empty_json_object(), "/physics", root.problems()));
+  if (auto c = r.optional_child("contact", "interaction of the materials' velocity fields")) {
+    const std::string type = c->choice("type", {"single_velocity", "friction", "approach"},
+                                       "contact model", "single_velocity");
+    ph.contact.type = type == "friction"   ? ContactType::friction
+                      : type == "approach" ? ContactType::approach
+                                           : ContactType::single_velocity;
+    ph.contact.mu =
+        c->number_or("mu", 0.0, Range::non_negative(), "Coulomb friction coefficient [-]");
+    c->reject_unknown_keys();
+  }
+  if (auto a = r.optional_child("artificial_viscosity", "bulk viscosity, report eq. 12")) {
+    ph.artificial_viscosity.enabled = a->boolean_or("enabled", true, "switch");
+    ph.artificial_viscosity.linear =
+        a->number_or("linear", 0.2, Range::non_negative(), "C_L, linear coefficient [-]");
+    ph.artificial_viscosity.quadratic =
+        a->number_or("quadratic", 2.0, Range::non_negative(), "C_0, quadratic coefficient [-]");
+    a->reject_unknown_keys();
+  }
+  ph.create_new_particles = r.boolean_or("create_new_particles", false,
+                                         "move failed particles to a companion velocity field");
+  if (r.has("erosion")) {
+    const std::string e =
+        r.choice("erosion", {"none", "AllowNoTension", "KeepStress", "ZeroStress"},
+                 "erosion algorithm for every material", "none");
+    ph.erosion = erosion_from_name(e);
+  }
+  if (r.has("do_melting")) {
+    ph.do_melting = r.boolean_or("do_melting", true, "remove the deviator of melted particles");
+  }
+  if (r.has("turn_on_adiabatic_heating")) {
+    ph.adiabatic_heating =
+        r.boolean_or("turn_on_adiabatic_heating", true, "heat particles by plastic work");
+  }
+  r.reject_unknown_keys();
+}
+
+// The scene's physics flags override every material's own choice (the report set them once, in
+// its <MPM> block, for all materials).
+void apply_physics_overrides(const PhysicsSpec& ph, std::vector<SceneMaterial>& materials) {
+  for (SceneMaterial& m : materials) {
+    ElasticPlasticParams p = m.material.model.params();
+    if (ph.erosion) p.erosion = *ph.erosion;
+    if (ph.do_melting) p.melting.do_melting = *ph.do_melting;
+    if (ph.adiabatic_heating) p.heating.enabled = *ph.adiabatic_heating;
+    m.material.model = ElasticPlastic(p);
+  }
+}
+
 void read_output(JsonReader& root, const Json& doc, const std::string& file, double max_time,
                  OutputSpec& o) {
   JsonReader r = root.optional_child("output", "what is written and where")
@@ -242,12 +293,30 @@ Scene read_scene(const Json& document, const std::string& file) {
   read_grid(root, document, s.grid);
   read_time(root, s.time);
   read_solver(root, document, s.solver);
+  read_physics(root, s.physics);
   read_output(root, document, file, s.time.max_time, s.output);
   read_materials(root, document, s.materials);
   read_objects(root, document, s.materials, s.objects);
+  apply_physics_overrides(s.physics, s.materials);
   root.reject_unknown_keys();
   problems.throw_if_any();
   return s;
+}
+
+int Scene::field_count() const {
+  if (physics.contact.type == ContactType::single_velocity) return 1;
+  const int n = static_cast<int>(materials.size());
+  return physics.create_new_particles ? 2 * n : n;
+}
+
+int Scene::parent_field(int material) const {
+  return field_count() == 1 ? 0 : material;
+}
+
+int Scene::companion_field(int material) const {
+  return field_count() > static_cast<int>(materials.size())
+             ? material + static_cast<int>(materials.size())
+             : parent_field(material);
 }
 
 Scene load_scene(const std::string& file) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,35 @@ struct SolverSpec {
   Vec3 gravity = Vec3::Zero();  ///< body force per unit mass [m/s^2]
 };
 
+/// How the velocity fields of different materials interact at shared nodes (Bardenhagen et al.
+/// 2001; reference_code_notes.md sec. 14). `single_velocity` is ordinary single-field MPM.
+enum class ContactType { single_velocity, friction, approach };
+
+struct ContactSpec {
+  ContactType type = ContactType::single_velocity;
+  double mu = 0.0;  ///< Coulomb friction coefficient (friction only) [-]
+};
+
+/// Artificial bulk viscosity, report eq. 12 (von Neumann & Richtmyer 1950, Wilkins 1980):
+/// q = rho (C_L a |tr D| l + C_0 (tr D l)^2) when tr D < 0, else 0.
+struct ArtificialViscositySpec {
+  bool enabled = false;
+  double linear = 0.2;     ///< C_L (the report's coeff1; its Case 1 used 0.07) [-]
+  double quadratic = 2.0;  ///< C_0 (coeff2; Case 1: 1.6) [-]
+};
+
+/// The report's <MPM> flags: optional physics, each off (or the material file's choice) unless a
+/// scene asks for it.
+struct PhysicsSpec {
+  ContactSpec contact;
+  ArtificialViscositySpec artificial_viscosity;
+  bool create_new_particles = false;  ///< failed particles move to a companion velocity field
+  // Overrides of every material's own setting (absent: the material file decides).
+  std::optional<Erosion> erosion;
+  std::optional<bool> do_melting;
+  std::optional<bool> adiabatic_heating;  ///< the report's turn_on_adiabatic_heating
+};
+
 struct OutputSpec {
   std::string directory;            ///< where history.csv etc. go
   double interval = 0.0;            ///< history row and snapshot interval [s]
@@ -70,9 +100,17 @@ struct Scene {
   GridSpec grid;
   TimeSpec time;
   SolverSpec solver;
+  PhysicsSpec physics;
   OutputSpec output;
   std::vector<SceneMaterial> materials;
   std::vector<SceneObject> objects;
+
+  /// Velocity fields: one per material when contact is not single_velocity (and a companion per
+  /// material with create_new_particles), else one shared field (ordinary MPM).
+  int field_count() const;
+  /// The field a particle of material m starts in, and the companion it moves to on failure.
+  int parent_field(int material) const;
+  int companion_field(int material) const;
 };
 
 /// Reads `file`, resolves `extends` chains (relative paths are relative to the file naming them),
@@ -86,8 +124,8 @@ Scene read_scene(const Json& document, const std::string& file);
 /// The VTU point-data fields known to the writer.
 inline const std::vector<std::string>& known_output_fields() {
   static const std::vector<std::string> f = {
-      "velocity", "stress",   "plastic_strain", "temperature", "damage", "mass",
-      "volume",   "pressure", "von_mises",      "material",    "object"};
+      "velocity", "stress",    "plastic_strain", "temperature", "damage", "mass",  "volume",
+      "pressure", "von_mises", "material",       "object",      "field",  "failed"};
   return f;
 }
 

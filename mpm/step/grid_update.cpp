@@ -1,70 +1,49 @@
-// Grid momentum update (Sulsky et al. 1994 eq. 24): v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g),
-// then the face conditions as a mirror (grid/boundary.cpp), the FLIP increment v*_I - v_I, the
-// faces' impulse and, for USL, the gradient velocity v^L_I (kLightNodeMassFraction).
+// Grid momentum update (Sulsky et al. 1994 eq. 24): v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g)
+// per velocity field; contact between fields (contact/contact.hpp) on v_I and on v*_I (the two
+// passes of Bardenhagen et al. 2001); then the face conditions as a mirror (grid/boundary.cpp),
+// the FLIP increment v*_I - v_I, and, for USL, the gradient velocity v^L_I
+// (kLightNodeMassFraction).
+// The particles move by the increment v*_I - v_I between the CORRECTED fields, so contact and
+// the faces act on them only through the stress and the reaction that holds the bodies together,
+// as a single field would: a correction of the start velocity alone never kills a particle's
+// velocity (a rigid wall holding a pressure does no work; docs/mpm.md#ledger). The contact
+// reaction does work only on the relative motion that remains at the start of the step (slip):
+// that is the contact dissipation, its tangential part the friction heat.
 #include <omp.h>
 
 #include <algorithm>
 
+#include "mpm/contact/contact.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
 
-GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradient) {
+GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradient,
+                       const ContactSpec* contact) {
   const std::vector<NodeData>& nodes = G.nodes();
-  const int n = G.node_count();
+  const int n = G.entry_count();
+  const bool contact_on = contact != nullptr && G.fields() > 1;
 #pragma omp parallel for schedule(static) num_threads(G.threads())
   for (int i = 0; i < n; ++i) {
     const NodeData& a = nodes[i];
     if (a.mass > 0.0) {
-      const Vec3 p(a.momentum[0], a.momentum[1], a.momentum[2]);
-      const Vec3 f(a.force[0], a.force[1], a.force[2]);
-      G.velocity[i] = p / a.mass;
-      G.velocity_new[i] = G.velocity[i] + dt * (f / a.mass + gravity);
+      G.velocity[i] = Vec3(a.momentum[0], a.momentum[1], a.momentum[2]) / a.mass;
     } else {
       G.velocity[i].setZero();
+    }
+  }
+  if (contact_on) apply_contact(G, *contact, G.velocity, nullptr);  // pass 1: start velocity
+#pragma omp parallel for schedule(static) num_threads(G.threads())
+  for (int i = 0; i < n; ++i) {
+    const NodeData& a = nodes[i];
+    if (a.mass > 0.0) {
+      const Vec3 f(a.force[0], a.force[1], a.force[2]);
+      G.velocity_new[i] = G.velocity[i] + dt * (f / a.mass + gravity);
+    } else {
       G.velocity_new[i].setZero();
     }
   }
-  // The mirror holds for the start-of-step field too: the image cancels the face layer's normal
-  // momentum, so the wall acts on the particles only through the stress (an affine field odd
-  // about the face passes unchanged; tests/mpm/verification/uniaxial_compression_test.cpp).
-  G.apply_mirror(G.velocity, /*project_face=*/true);
-  G.apply_mirror(G.velocity_new, /*project_face=*/true);
-#pragma omp parallel for schedule(static) num_threads(G.threads())
-  for (int i = 0; i < n; ++i) G.increment[i] = G.velocity_new[i] - G.velocity[i];
-
-  // The faces' share of each constrained node's increment, and its momentum (serial, in node
-  // order: deterministic). The particles' momentum changes by sum_I m_I (v*_I - v_I), so this
-  // is exactly what the faces exerted.
   GridUpdate out;
-  for (int i : G.boundary_nodes()) {
-    const double m = nodes[i].mass;
-    if (m <= 0.0) continue;
-    const Vec3 f(nodes[i].force[0], nodes[i].force[1], nodes[i].force[2]);
-    const Vec3 free = dt * (f / m + gravity);
-    out.boundary.impulse += m * (G.increment[i] - free);
-    G.bc_increment[i] = G.velocity[i];  // scratch: the mirrored start velocity
-  }
-  // The faces' velocity correction: the start velocity v_I projected on the face layer minus v_I
-  // (the ghost layer's v_I is already the reflection). A wall that holds a pressure without
-  // motion has none; its reaction -dt f_n does no work.
-  G.apply_mirror(G.bc_increment, /*project_face=*/true, /*mirror_ghost=*/false);
-  for (int i : G.boundary_nodes()) {
-    const bool has_mass = nodes[i].mass > 0.0;
-    G.bc_increment[i] = has_mass ? Vec3(G.bc_increment[i] - G.velocity[i]) : Vec3::Zero();
-  }
-  // Work of the faces: v_face . impulse, zero for the stationary faces here (docs/mpm.md#ledger).
-  out.boundary.work = 0.0;
-
-  if (usl_gradient) {
-    const double m_light = G.light_mass;
-#pragma omp parallel for schedule(static) num_threads(G.threads())
-    for (int i = 0; i < n; ++i) {
-      const double alpha = G.mass[i] >= m_light ? 1.0 : G.mass[i] / m_light;
-      G.velocity_L[i] = G.velocity[i] + alpha * G.increment[i];
-    }
-    G.apply_mirror(G.velocity_L, /*project_face=*/true);
-  }
   if (!gravity.isZero(0.0)) {
     // Impulse dt m_I g and its work at the mid-step nodal velocity (serial: deterministic).
     for (int i = 0; i < n; ++i) {
@@ -73,6 +52,44 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
       out.external_impulse += J;
       out.external_work += 0.5 * (G.velocity[i] + G.velocity_new[i]).dot(J);
     }
+  }
+  // Pass 2 on v*: books its work on the relative start velocities (G.velocity).
+  if (contact_on) out.contact = apply_contact(G, *contact, G.velocity_new, &G.velocity);
+
+  // The mirror holds for the start-of-step field too: the image cancels the face layer's normal
+  // momentum, so the wall acts on the particles only through the stress (an affine field odd
+  // about the face passes unchanged; tests/mpm/verification/uniaxial_compression_test.cpp).
+  const std::vector<int>& bn = G.boundary_nodes();
+  const std::size_t nb = bn.size();
+  const int nn = G.node_count();
+  for (int f = 0; f < G.fields(); ++f)
+    for (std::size_t k = 0; k < nb; ++k) {
+      const int e = f * nn + bn[k];
+      G.free_increment[f * nb + k] = G.velocity_new[e] - G.velocity[e];
+    }
+  G.apply_mirror(G.velocity);
+  G.apply_mirror(G.velocity_new);
+#pragma omp parallel for schedule(static) num_threads(G.threads())
+  for (int i = 0; i < n; ++i) G.increment[i] = G.velocity_new[i] - G.velocity[i];
+  // The faces' impulse: what they changed in the increments that move the particles (serial, in
+  // node order: deterministic). A stationary wall does no work (docs/mpm.md#ledger).
+  for (int f = 0; f < G.fields(); ++f)
+    for (std::size_t k = 0; k < nb; ++k) {
+      const int e = f * nn + bn[k];
+      if (nodes[e].mass <= 0.0) continue;
+      out.boundary.impulse += nodes[e].mass * (G.increment[e] - G.free_increment[f * nb + k]);
+    }
+  out.boundary.work = 0.0;
+  out.boundary.dissipation = 0.0;
+
+  if (usl_gradient) {
+    const double m_light = G.light_mass;
+#pragma omp parallel for schedule(static) num_threads(G.threads())
+    for (int i = 0; i < n; ++i) {
+      const double alpha = G.mass[i] >= m_light ? 1.0 : G.mass[i] / m_light;
+      G.velocity_L[i] = G.velocity[i] + alpha * G.increment[i];
+    }
+    G.apply_mirror(G.velocity_L);
   }
   return out;
 }

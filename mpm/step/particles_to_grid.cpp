@@ -18,18 +18,27 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   constexpr int N = Shape::N;
   G.clear();
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
+  const std::size_t nn = static_cast<std::size_t>(G.node_count());
+  const bool viscosity = !P.q.empty();
+  const bool nodal_stress = G.has_nodal_stress();
 #pragma omp parallel num_threads(G.threads())
   {
-    NodeData* buf = G.buffer(omp_get_thread_num());
+    NodeData* const buf = G.buffer(omp_get_thread_num());
+    NodeStress* const sbuf = nodal_stress ? G.stress_buffer(omp_get_thread_num()) : nullptr;
 #pragma omp for schedule(static)
     for (std::ptrdiff_t p = 0; p < n; ++p) {
       const Stencil<N>& s = S[p];
-      const Mat3 vs = -P.volume[p] * P.state[p].stress;  // -V_p sigma_p
+      const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
+      NodeData* const field = buf + offset;
+      Mat3 sigma = P.state[p].stress;
+      if (viscosity) sigma.diagonal().array() -= P.q[p];  // sigma - q I (report eq. 12)
+      const Mat3 vs = -P.volume[p] * sigma;               // -V_p (sigma_p - q_p I)
       const double m = P.mass[p];
       const Vec3 mv = m * P.v[p];
       for (int i = 0; i < N; ++i) {
         for (int j = 0; j < N; ++j) {
-          NodeData* row = buf + G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+          const int row_index = G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+          NodeData* row = field + row_index;
           const double wij = s.w[0][i] * s.w[1][j];
           const double dxw = s.dw[0][i] * s.w[1][j];
           const double wdy = s.w[0][i] * s.dw[1][j];
@@ -45,6 +54,13 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S) {
               node.momentum[d] += w * mv(d);
               node.force[d] += f(d);
             }
+          }
+          if (nodal_stress) {  // friction contact's compression test only
+            const Mat3& t = P.state[p].stress;
+            const double c[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
+            NodeStress* srow = sbuf + offset + row_index;
+            for (int k = 0; k < N; ++k)
+              for (int c6 = 0; c6 < 6; ++c6) srow[k].s[c6] += wij * s.w[2][k] * c[c6];
           }
         }
       }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/contact/contact.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/shape/shape.hpp"
@@ -42,53 +43,77 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S);
 /// position use the true v*_I (S_Ip dt f_I/m_I stays bounded), so momentum is untouched.
 inline constexpr double kLightNodeMassFraction = 0.5;
 
-/// Grid update (eq. 24): v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g); the face conditions as a
-/// mirror (grid/boundary.cpp) on v_I (ghost layer) and v*_I (face and ghost layers); the FLIP
-/// increment v*_I - v_I; the faces' impulse sum_I m_I (dv_I - dv_I^free) over constrained nodes;
-/// for USL the gradient velocity v^L_I (kLightNodeMassFraction). Also the external (gravity)
-/// impulse and work.
+/// Grid update (eq. 24), per velocity field: v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g); with
+/// `contact` and more than one field the contact model corrects v*_I (contact/contact.hpp); the
+/// face conditions as a mirror (grid/boundary.cpp) on v_I and v*_I; the FLIP increment
+/// v*_I - v_I; for USL the gradient velocity v^L_I (kLightNodeMassFraction). Books, exactly at
+/// the nodes, the faces' impulse and the kinetic energy the faces and the contact corrections
+/// removed, and the external (gravity) impulse and work (grid_update.cpp).
 struct GridUpdate {
   BoundaryLoad boundary;
+  ContactTotals contact;
   Vec3 external_impulse = Vec3::Zero();
   double external_work = 0.0;
 };
-GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradient);
+GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradient,
+                       const ContactSpec* contact);
 
 /// What grid-to-particles measured on the end-of-step particle velocities (report eq. 13).
 struct ParticleTotals {
   double kinetic_energy = 0.0;
   Vec3 momentum = Vec3::Zero();
-  double max_speed = 0.0;  ///< max_p |v_p| [m/s]
-  /// Kinetic energy the faces' velocity projection took from the particles this step:
-  /// -sum_p m_p delta_p . (v_p^n + v_p^{n+1})/2, delta_p = sum_I S_Ip (P v_I - v_I), P the
-  /// projection on the face layer (docs/mpm.md#ledger) [J].
-  double boundary_dissipation = 0.0;
+  double max_speed = 0.0;      ///< max_p |v_p| [m/s]
+  double friction_heat = 0.0;  ///< friction heat delivered to particle temperatures [J]
 };
 
 /// Grid to particles: FLIP velocity v_p += sum_I S_Ip (v*_I - v_I) (eq. 23), position
 /// x_p += dt sum_I S_Ip v*_I (eq. 25), and with `usl_gradient` L_p = sum_I v^L_I (x) grad S_Ip
 /// (eq. 26, evaluated as sum_I (v^L_I - v_p) (x) grad S_Ip over nodes with mass: equal, as
 /// sum_I grad S_Ip = 0, and a massless node no longer fakes a velocity jump).
+/// With friction heat on the grid (G.heat), each particle's temperature rises by
+/// sum_I S_Ip h_I / (m_I c_p), `specific_heat` per material [J/(kg K)]: the heat of a node is
+/// shared among its particles in proportion to S_Ip m_p, so the total is delivered exactly.
 template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
-                                 bool usl_gradient, std::optional<Failure>& failure);
+                                 bool usl_gradient, const std::vector<double>& specific_heat,
+                                 std::optional<Failure>& failure);
 
 /// MUSL (Sulsky et al. 1995; Nairn 2003): re-map the updated particle momentum with the same
-/// weights, v^{n+1}_I = sum_p S_Ip m_p v_p^{n+1} / m_I, mirror it at the faces (a projection:
-/// particles do not see it), and L_p = sum_I v^{n+1}_I (x) grad S_Ip.
+/// weights, v^{n+1}_I = sum_p S_Ip m_p v_p^{n+1} / m_I, correct it by the contact model (if any)
+/// and mirror it at the faces (projections: the particles do not see them), and
+/// L_p = sum_I v^{n+1}_I (x) grad S_Ip.
 template <class Shape>
-void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S);
+void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S,
+                        const ContactSpec* contact);
+
+/// What the stress update needs besides the particles: the models per material and the
+/// optional physics of the scene.
+struct StressUpdateSettings {
+  std::vector<const ElasticPlastic*> models;  ///< per material
+  FIntegration f_integration = FIntegration::forward_euler;
+  const ArtificialViscositySpec* viscosity = nullptr;  ///< null: off
+  double mean_spacing = 0.0;                           ///< l = (dx + dy + dz)/3 [m] (eq. 12)
+  /// Per material: the field a failed particle moves to (create_new_particles); empty: off.
+  std::vector<std::uint16_t> companion_field;
+};
 
 /// Constitutive update by the library for every particle: F_{n+1} from L (models/kinematics),
 /// sigma_{n+1} by ElasticPlastic::update (objective, with the library's rotation), V = V0 det F.
 /// Returns the strain-energy increment of report eq. 14, sum_p 1/2 (sigma_n + sigma_{n+1}) : D
-/// V_{n+1} dt, and the largest c_p + |v_p| for the next time step.
+/// V_{n+1} dt, and the largest signal speed for the next time step. With artificial viscosity:
+/// q_{n+1} (eq. 12) for the next internal force, its work 1/2 (q_n + q_{n+1}) (-tr D) V_{n+1} dt,
+/// and the signal speed Q + sqrt(Q^2 + c^2), Q = C_L a + C_0 l |tr D| (Wilkins 1980). A particle
+/// that fails moves to its companion field (create_new_particles) in the same step.
 struct StressTotals {
   double strain_energy_increment = 0.0;
+  double viscous_work = 0.0;      ///< [J]
+  double eroded_energy = 0.0;     ///< elastic energy removed by erosion this step [J]
   double max_signal_speed = 0.0;  ///< max_p (c_p + |v_p|) [m/s]
+  long failed = 0;                ///< particles that failed this step
+  long converted = 0;             ///< particles moved to a companion field this step
 };
-StressTotals update_stress(Particles& P, const std::vector<const ElasticPlastic*>& models,
-                           double dt, FIntegration f_integration, std::optional<Failure>& failure);
+StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, double dt,
+                           std::optional<Failure>& failure);
 
 /// Stable step: multiplier * min_d dx_d / max_p (c_p + |v_p|) (reference_code_notes.md sec. 16,
 /// with the speed magnitude instead of per-axis components: slightly more conservative).
