@@ -286,6 +286,11 @@ def draw_case(plt, case, reference):
             ax_e.plot(t, h.col(name), style, color=f"C{i + 2}", lw=0.8, label=f"{name} ({c.name})")
         for name, color in [("momentum_x", "C0"), ("momentum_y", "C1"), ("momentum_z", "C2")]:
             ax_p.plot(t, h.col(name), style, color=color, lw=1.5, label=f"{name} ({c.name})")
+        # The conserved quantity: momentum minus what the faces exerted (the far end of the
+        # cylinder lies on the x+ face, whose reaction turns p_x around after ~18 us).
+        if c is case and "boundary_impulse_x" in h.columns:
+            px = [p - j for p, j in zip(h.col("momentum_x"), h.col("boundary_impulse_x"))]
+            ax_p.plot(t, px, ":", color="k", lw=1.5, label=f"momentum_x - boundary_impulse_x ({c.name})")
     ax_e.set_xlabel("time [µs]")
     ax_e.set_ylabel("energy [J]")
     ax_e.set_title("energy (this case solid" + (f", {REFERENCE} dashed)" if len(runs) > 1 else ")"))
