@@ -7,6 +7,7 @@
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
 #   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
+#   ./run.sh stability  build and run the sphere-cylinder stability map (docs/figures/stability/)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -68,8 +69,16 @@ case "${1:-}" in
     build release
     build/bin/mpm study data/scenes/sphere_cylinder --out docs/figures/sphere_cylinder --threads 2
     ;;
+  stability)
+    install_missing_packages
+    build release
+    # 112 variants (multiplier x interpolation x contact x AV x velocity) + the report's case 2
+    # row, 10 us each, classified stable / energy-drifting / unstable (docs/accuracy.md).
+    /usr/bin/python3 mpm/study/stability_map.py --out docs/figures/stability --mpm build/bin/mpm \
+      --threads 2 "${@:2}"
+    ;;
   *)
-    sed -n '2,10p' "$0"
+    sed -n '2,11p' "$0"
     exit 1
     ;;
 esac

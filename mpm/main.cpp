@@ -115,6 +115,7 @@ int main(int argc, char** argv) {
       return impact::mpm::run_study(study_options);
     }
     const impact::mpm::Scene scene = impact::mpm::load_scene(scene_file);
+    for (const std::string& w : scene.warnings) std::cerr << "mpm: warning: " << w << '\n';
     if (command == "check") {
       std::cout << scene.resolved.dump(2) << '\n';
       std::cout << impact::mpm::check_report(scene, std::max(options.threads, 1)).dump(2) << '\n';

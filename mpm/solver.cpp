@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "mpm/output/observables.hpp"
 #include "mpm/output/output.hpp"
 #include "mpm/step/parallel.hpp"
 
@@ -93,6 +94,39 @@ std::string describe(const Failure& f, const Particles& P, const Scene& scene, l
   }
   m << ": " << f.field << ": " << f.message;
   return m.str();
+}
+
+// The energy-growth check (docs/mpm.md#failure-handling). An unstable explicit step shows itself
+// first as kinetic + strain energy growing far beyond what entered, many steps before a NaN or a
+// particle leaving the grid. Reference: the energy that entered, E_in = E0 + boundary_work +
+// external_work (at least E0); growth = (kinetic + strain + booked sinks - E_in) / E_ref, equal
+// to energy_error whenever no work enters through faces or gravity. Nothing is checked while no
+// energy has entered (E_ref = 0: a body at rest). Names the fastest particle: where the
+// instability runs away.
+std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t) {
+  const double reference = std::max(ledger.initial_energy(), ledger.energy_input());
+  const double excess = ledger.energy_excess();
+  if (!(reference > 0.0) || !(excess > t.max_energy_growth * reference)) return std::nullopt;
+  std::size_t fastest = 0;
+  double speed2 = -1.0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.v[p].squaredNorm() > speed2) {
+      speed2 = P.v[p].squaredNorm();
+      fastest = p;
+    }
+  }
+  const LedgerRow r = ledger.row();
+  std::ostringstream m;
+  m.precision(6);
+  m << "kinetic + strain energy " << r.total_energy << " J (kinetic " << r.kinetic_energy
+    << " J, strain " << r.strain_energy << " J) against " << ledger.energy_input()
+    << " J that entered (E0 " << ledger.initial_energy() << " J, boundary work " << r.boundary_work
+    << " J, external work " << r.external_work << " J): growth " << std::showpos
+    << excess / reference << std::noshowpos << " (energy_error " << std::showpos << r.energy_error
+    << std::noshowpos << ") above time.max_energy_growth = " << t.max_energy_growth
+    << "; this particle is the fastest, |v| = " << std::sqrt(speed2)
+    << " m/s: the explicit step is unstable (time.multiplier " << t.multiplier << "; lower it)";
+  return Failure{fastest, "energy", m.str()};
 }
 
 }  // namespace
@@ -189,6 +223,9 @@ const StepTotals& Simulation::step() {
   if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
   failed_ += last_.stress.failed;
   converted_ += last_.stress.converted;
+  // The step is complete (time, ledger and particles at t^{n+1}): the failure names this step.
+  if (auto grown = energy_growth(ledger_, particles_, scene_.time))
+    throw SolverFailure(describe(*grown, particles_, scene_, steps_, time_));
   return last_;
 }
 
@@ -240,15 +277,21 @@ Json check_report(const Scene& scene, int threads) {
   const Grid g(scene.grid, std::max(threads, 1), scene.field_count(),
                scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction);
   const double particle_bytes = double(P.size()) * Particles::bytes_per_particle();
-  return {{"objects", objects},
-          {"particles", P.size()},
-          {"mass [kg]", total_mass},
-          {"stable_dt [s]", dt},
-          {"estimated_steps", std::ceil(scene.time.max_time / dt)},
-          {"memory [MB]", (particle_bytes + double(g.bytes())) / 1e6},
-          {"memory_per_particle [B]", Particles::bytes_per_particle()},
-          {"velocity_fields", g.fields()},
-          {"threads", threads}};
+  Json report = {{"objects", objects},
+                 {"particles", P.size()},
+                 {"mass [kg]", total_mass},
+                 {"stable_dt [s]", dt},
+                 {"estimated_steps", std::ceil(scene.time.max_time / dt)},
+                 {"memory [MB]", (particle_bytes + double(g.bytes())) / 1e6},
+                 {"memory_per_particle [B]", Particles::bytes_per_particle()},
+                 {"velocity_fields", g.fields()},
+                 {"threads", threads}};
+  if (!scene.output.gauges.empty()) {
+    Json gauges = Json::object();
+    for (const GaugeSpec& gs : scene.output.gauges) gauges[gs.name] = {{"particles", gs.particles}};
+    report["gauges"] = gauges;
+  }
+  return report;
 }
 
 int run(const Scene& scene, const RunOptions& options) {
@@ -260,11 +303,18 @@ int run(const Scene& scene, const RunOptions& options) {
     copy << scene.resolved.dump(2) << '\n';
   }
   Simulation sim(scene, options.threads);
-  HistoryCsv history((fs::path(dir) / "history.csv").string(), sim.ledger());
+  // Gauge and crater particle sets from the particles as seeded (nothing when the scene has none).
+  const Gauges gauges(scene, sim.particles());
+  Observables observables(scene, sim.particles());
+  HistoryCsv history((fs::path(dir) / "history.csv").string(), sim.ledger(), gauges.columns());
+  const auto write_history = [&] {
+    observables.sample(sim.particles(), sim.time());  // max pressure: sampled at history rows
+    history.write(sim.ledger().row(), gauges.read(sim.particles()));
+  };
   std::optional<SnapshotWriter> snapshots;
   if (scene.output.snapshots) snapshots.emplace(dir, scene.output.fields);
   const auto write_outputs = [&] {
-    history.write(sim.ledger().row());
+    write_history();
     if (snapshots) snapshots->write(sim.particles(), sim.steps(), sim.time());
   };
   write_outputs();
@@ -295,7 +345,7 @@ int run(const Scene& scene, const RunOptions& options) {
     code = 3;
     std::cerr << (options.progress ? "\n" : "") << "mpm: run failed: " << message << '\n';
     if (snapshots) snapshots->write(sim.particles(), sim.steps() + 1, sim.time());
-    history.write(sim.ledger().row());
+    write_history();
   }
   if (options.progress) std::fprintf(stderr, "\n");
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -315,6 +365,7 @@ int run(const Scene& scene, const RunOptions& options) {
   summary["converted_particles"] = sim.converted_particles();
   summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
   summary["final"] = row_json(sim.ledger());
+  summary["observables"] = observables.summary(sim.particles());
   summary["units"] = {{"time", "s"},
                       {"energy", "J"},
                       {"momentum", "kg m/s"},

@@ -47,7 +47,9 @@ class Simulation {
   void restart_ledger();
 
   /// Advances one step with the stable dt (bounded by the scene's time block); throws
-  /// SolverFailure on NaN/Inf, a particle leaving the grid, a failed update or dt < min_dt.
+  /// SolverFailure on NaN/Inf, a particle leaving the grid, a failed update, dt < min_dt, or
+  /// energy growth beyond time.max_energy_growth (thrown after the step is booked: time(),
+  /// steps() and the ledger then show the step that grew).
   const StepTotals& step();
   /// The dt the next step() will use.
   double next_dt() const;

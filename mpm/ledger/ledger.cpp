@@ -45,14 +45,17 @@ LedgerRow Ledger::row() const {
   r.sinks = sinks_;
   r.external_impulse = external_impulse_;
   r.external_work = external_work_;
+  const double scale = initial_energy_ > 0.0 ? initial_energy_ : 1.0;
+  r.energy_error = energy_excess() / scale;
+  return r;
+}
+
+double Ledger::energy_excess() const {
   double sunk = 0.0;
   for (std::size_t i = 0; i < sinks_.size(); ++i)
     if (in_balance_[i]) sunk += sinks_[i];
-  const double scale = initial_energy_ > 0.0 ? initial_energy_ : 1.0;
-  r.energy_error = (r.total_energy + boundary_dissipation_ + sunk - initial_energy_ -
-                    boundary_work_ - external_work_) /
-                   scale;
-  return r;
+  return (kinetic_ + strain_) + boundary_dissipation_ + sunk - initial_energy_ - boundary_work_ -
+         external_work_;
 }
 
 std::vector<std::string> Ledger::columns() const {

@@ -58,6 +58,11 @@ class Ledger {
   void add_sink(int index, double energy) { sinks_[index] += energy; }
 
   LedgerRow row() const;
+  /// The energy that entered so far: E0 + boundary_work + external_work [J].
+  double energy_input() const { return initial_energy_ + boundary_work_ + external_work_; }
+  /// kinetic + strain + boundary_dissipation + balance sinks - energy_input() [J]: the numerator
+  /// of energy_error (no allocation: the solver's energy-growth check calls it every step).
+  double energy_excess() const;
   double initial_energy() const { return initial_energy_; }
   const Vec3& initial_momentum() const { return p0_; }
 

@@ -1,5 +1,5 @@
-// Writers: history.csv (the ledger, one row per output interval), binary (raw appended) VTU
-// snapshots of the particles with a .pvd collection (ParaView), and summary.json.
+// Writers: history.csv (the ledger, then the gauges, one row per output interval), binary (raw
+// appended) VTU snapshots of the particles with a .pvd collection (ParaView), and summary.json.
 #pragma once
 
 #include <fstream>
@@ -13,12 +13,16 @@ namespace impact::mpm {
 
 class HistoryCsv {
  public:
-  HistoryCsv(const std::string& path, const Ledger& ledger);
-  void write(const LedgerRow& row);
+  /// The ledger's columns, then `extra_columns` (the gauges, `name [unit]`) after energy_error.
+  HistoryCsv(const std::string& path, const Ledger& ledger,
+             const std::vector<std::string>& extra_columns = {});
+  /// `extra`: one value per extra column.
+  void write(const LedgerRow& row, const std::vector<double>& extra = {});
 
  private:
   std::ofstream out_;
   bool with_external_;
+  std::size_t extra_columns_ = 0;
 };
 
 class SnapshotWriter {

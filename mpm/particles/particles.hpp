@@ -37,6 +37,17 @@ struct Particles {
 /// geometry; a point already claimed by an earlier object is skipped. mass = rho0 * cell/ppc^3.
 Particles seed_particles(const Scene& scene);
 
+/// The number of seed points of object `object` (what seed_particles() would create) inside the
+/// closed box [lower, upper]: seeds only the cells the box overlaps (scene validation of the
+/// output gauges).
+std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3& lower,
+                              const Vec3& upper);
+
+/// x inside the closed box [lower, upper] (the gauges' and the seed count's membership test).
+inline bool in_box(const Vec3& x, const Vec3& lower, const Vec3& upper) {
+  return (x.array() >= lower.array()).all() && (x.array() <= upper.array()).all();
+}
+
 /// Per object: GIMP half-width l_d = 1/(2 ppc_d) in cells (fixed at creation, as in the report).
 std::vector<Vec3> half_widths(const Scene& scene);
 

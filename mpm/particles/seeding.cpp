@@ -33,51 +33,78 @@ std::vector<Vec3> half_widths(const Scene& scene) {
   return l;
 }
 
-Particles seed_particles(const Scene& scene) {
-  Particles p;
+namespace {
+
+// Calls add(x) for every seed point of object `oi` in the grid cells that the box [lo, hi]
+// overlaps: the ppc^3 sub-cell centres inside the object's geometry and not inside an earlier
+// object. The points of a cell do not depend on the box, so a smaller box gives a subset of the
+// same doubles.
+template <class Add>
+void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3& hi,
+                         Add&& add) {
   const GridSpec& g = scene.grid;
   const Vec3 h = g.spacing();
+  const SceneObject& o = scene.objects[oi];
+  std::array<int, 3> c0{}, c1{};
+  for (int d = 0; d < 3; ++d) {
+    c0[d] = std::clamp(static_cast<int>(std::floor((lo(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
+    c1[d] = std::clamp(static_cast<int>(std::ceil((hi(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
+  }
+  const auto& ppc = o.particles_per_cell;
+  for (int i = c0[0]; i < c1[0]; ++i)
+    for (int j = c0[1]; j < c1[1]; ++j)
+      for (int k = c0[2]; k < c1[2]; ++k)
+        for (int a = 0; a < ppc[0]; ++a)
+          for (int b = 0; b < ppc[1]; ++b)
+            for (int e = 0; e < ppc[2]; ++e) {
+              const Vec3 x =
+                  g.lower + h.cwiseProduct(Vec3(i + (a + 0.5) / ppc[0], j + (b + 0.5) / ppc[1],
+                                                k + (e + 0.5) / ppc[2]));
+              if (!inside(o.geometry, x)) continue;
+              const bool claimed = std::any_of(
+                  scene.objects.begin(), scene.objects.begin() + oi,
+                  [&](const SceneObject& earlier) { return inside(earlier.geometry, x); });
+              if (claimed) continue;
+              add(x);
+            }
+}
+
+}  // namespace
+
+Particles seed_particles(const Scene& scene) {
+  Particles p;
+  const Vec3 h = scene.grid.spacing();
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const SceneObject& o = scene.objects[oi];
     const ElasticPlastic& model = scene.materials[o.material].material.model;
     const auto [lo, hi] = bounds(o.geometry);
-    std::array<int, 3> c0{}, c1{};
-    for (int d = 0; d < 3; ++d) {
-      c0[d] = std::clamp(static_cast<int>(std::floor((lo(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
-      c1[d] = std::clamp(static_cast<int>(std::ceil((hi(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
-    }
     const auto& ppc = o.particles_per_cell;
     const double v0 = h.prod() / (ppc[0] * ppc[1] * ppc[2]);
     const PointState s0 = model.initial_state(o.temperature);
     const double c = model.wave_speed(s0);
-    for (int i = c0[0]; i < c1[0]; ++i)
-      for (int j = c0[1]; j < c1[1]; ++j)
-        for (int k = c0[2]; k < c1[2]; ++k)
-          for (int a = 0; a < ppc[0]; ++a)
-            for (int b = 0; b < ppc[1]; ++b)
-              for (int e = 0; e < ppc[2]; ++e) {
-                const Vec3 x =
-                    g.lower + h.cwiseProduct(Vec3(i + (a + 0.5) / ppc[0], j + (b + 0.5) / ppc[1],
-                                                  k + (e + 0.5) / ppc[2]));
-                if (!inside(o.geometry, x)) continue;
-                const bool claimed = std::any_of(
-                    scene.objects.begin(), scene.objects.begin() + oi,
-                    [&](const SceneObject& earlier) { return inside(earlier.geometry, x); });
-                if (claimed) continue;
-                p.x.push_back(x);
-                p.v.push_back(o.velocity);
-                p.mass.push_back(model.params().density * v0);
-                p.volume0.push_back(v0);
-                p.volume.push_back(v0);
-                p.L.push_back(Mat3::Zero());
-                p.state.push_back(s0);
-                p.wave_speed.push_back(c);
-                p.material.push_back(static_cast<std::uint16_t>(o.material));
-                p.object.push_back(static_cast<std::uint16_t>(oi));
-                p.field.push_back(static_cast<std::uint16_t>(scene.parent_field(o.material)));
-              }
+    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x) {
+      p.x.push_back(x);
+      p.v.push_back(o.velocity);
+      p.mass.push_back(model.params().density * v0);
+      p.volume0.push_back(v0);
+      p.volume.push_back(v0);
+      p.L.push_back(Mat3::Zero());
+      p.state.push_back(s0);
+      p.wave_speed.push_back(c);
+      p.material.push_back(static_cast<std::uint16_t>(o.material));
+      p.object.push_back(static_cast<std::uint16_t>(oi));
+      p.field.push_back(static_cast<std::uint16_t>(scene.parent_field(o.material)));
+    });
   }
   return p;
+}
+
+std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3& lower,
+                              const Vec3& upper) {
+  std::size_t n = 0;
+  for_each_seed_point(scene, object, lower, upper,
+                      [&](const Vec3& x) { n += in_box(x, lower, upper) ? 1 : 0; });
+  return n;
 }
 
 }  // namespace impact::mpm

@@ -1,7 +1,12 @@
 #include "mpm/scene/scene.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <limits>
+#include <sstream>
+
+#include "mpm/particles/particles.hpp"
 
 namespace impact::mpm {
 
@@ -91,7 +96,11 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   r.reject_unknown_keys();
 }
 
-void read_time(JsonReader& root, TimeSpec& t) {
+// The explicit step is stable up to about multiplier 1 (CFL); larger values are allowed so that a
+// user can test where it fails (docs/accuracy.md#stability-map), but never silently.
+constexpr double kMaxMultiplier = 1.5;
+
+void read_time(JsonReader& root, TimeSpec& t, std::vector<std::string>& warnings) {
   JsonReader r = root.child("time", "time stepping (the report's <Time> block)");
   t.max_time = r.number("max_time", Range::positive(), "end time [s]");
   t.initial_dt = r.number_or("initial_dt", kInf, Range::positive(),
@@ -99,8 +108,19 @@ void read_time(JsonReader& root, TimeSpec& t) {
   t.min_dt = r.number_or("min_dt", 0.0, Range::non_negative(),
                          "the run stops when the step falls below this [s]");
   t.max_dt = r.number_or("max_dt", kInf, Range::positive(), "cap on the step [s]");
-  t.multiplier = r.number_or("multiplier", 0.5, Range::open_closed(0.0, 1.0),
+  t.multiplier = r.number_or("multiplier", 0.5, Range::open_closed(0.0, kMaxMultiplier),
                              "factor on the stable step (CFL number) [-]");
+  if (t.multiplier > 1.0 && t.multiplier <= kMaxMultiplier) {
+    std::ostringstream w;
+    w << r.problems().file() << ": " << r.key_path("multiplier") << ": " << t.multiplier
+      << " is above 1, the 1-D CFL limit of the stable step: the run may go unstable (the "
+         "energy-growth check, time.max_energy_growth, stops it; docs/accuracy.md)";
+    warnings.push_back(w.str());
+  }
+  t.max_energy_growth =
+      r.number_or("max_energy_growth", 1.0, Range::positive(),
+                  "the run stops when energy_error exceeds this (+1 = +100 % of the energy that "
+                  "entered) [-]");
   if (t.min_dt > t.max_dt) r.problems().add(r.key_path("min_dt"), "expected min_dt <= max_dt");
   r.reject_unknown_keys();
 }
@@ -188,6 +208,8 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
                            "history row and snapshot interval [s]; default max_time/100");
   o.snapshots = r.boolean_or("snapshots", true, "write particles/step_NNNNNN.vtu and a .pvd");
   r.ignore("fields");
+  r.ignore("gauges");  // read_observables(), once the objects are known
+  r.ignore("crater");
   o.fields = {"velocity", "stress", "plastic_strain", "temperature", "damage", "mass"};
   if (n.is_object() && n.contains("fields")) {
     const Json& f = n["fields"];
@@ -277,6 +299,117 @@ void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMate
   }
 }
 
+std::string object_names(const std::vector<SceneObject>& objects) {
+  std::string list;
+  for (const auto& o : objects) list += (list.empty() ? "" : ", ") + o.name;
+  return list;
+}
+
+// The index of the object named at `key` of `r`, or -1 (a problem listing the known objects).
+int read_object_name(JsonReader& r, const std::vector<SceneObject>& objects,
+                     std::string_view meaning) {
+  const std::string name = r.string("object", meaning);
+  if (name.empty()) return -1;
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    if (objects[i].name == name) return static_cast<int>(i);
+  r.problems().add(r.key_path("object"),
+                   "unknown object \"" + name + "\"; known: " + object_names(objects));
+  return -1;
+}
+
+// output.gauges and output.crater (docs/scenes.md): need the objects, and (for "no particle
+// inside") the grid and the objects' geometry, so they are read after everything else.
+void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
+  const Json& out = at(doc, "output");
+  const bool check_seeds = problems.empty();  // grid and objects valid: the seeds can be counted
+  if (out.is_object() && out.contains("gauges")) {
+    const Json& gauges = out["gauges"];
+    JsonReader r(gauges, "/output/gauges", problems);
+    if (!gauges.is_object()) {
+      problems.add("/output/gauges", "expected an object of named gauges");
+    } else {
+      for (const auto& item : gauges.items()) {
+        JsonReader g = r.child(item.key(), "a gauge: type, object, region, component");
+        const std::string& name = item.key();
+        if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) {
+              return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+            })) {
+          problems.add(r.key_path(name),
+                       "expected a gauge name of letters, digits and _ (it becomes the history "
+                       "column gauge_<name>)");
+        }
+        GaugeSpec spec;
+        spec.name = name;
+        const std::string type = g.choice("type", {"velocity", "strain", "pressure"},
+                                          "what the gauge averages over its particles");
+        spec.type = type == "strain"     ? GaugeType::strain
+                    : type == "pressure" ? GaugeType::pressure
+                                         : GaugeType::velocity;
+        const int object = read_object_name(g, s.objects, "name of an entry of /objects");
+        JsonReader region = g.child("region", "box of initial particle positions [m]");
+        const Json& rn = at(item.value(), "region");
+        spec.lower = read_vec3(region, rn, "lower", "lower corner of the region [m]");
+        spec.upper = read_vec3(region, rn, "upper", "upper corner of the region [m]");
+        const bool box_ok = (spec.upper.array() >= spec.lower.array()).all();
+        if (!box_ok && spec.lower.allFinite() && spec.upper.allFinite()) {
+          problems.add(region.key_path("upper"), "expected upper >= lower on every axis");
+        }
+        region.reject_unknown_keys();
+        if (type == "pressure") {
+          if (g.has("component")) {
+            g.ignore("component");
+            problems.add(g.key_path("component"),
+                         "a pressure gauge has no component (remove the key)");
+          }
+        } else if (!type.empty()) {
+          const std::string c =
+              g.choice("component", {"x", "y", "z"},
+                       type == "strain" ? "axis of the log strain" : "velocity component");
+          spec.component = c == "y" ? 1 : c == "z" ? 2 : 0;
+        }
+        g.reject_unknown_keys();
+        if (object < 0) continue;
+        spec.object = object;
+        if (check_seeds && box_ok) {
+          spec.particles =
+              count_seed_points(s, static_cast<std::size_t>(object), spec.lower, spec.upper);
+          if (spec.particles == 0) {
+            problems.add(g.key_path("region"), "no particle of object \"" + s.objects[object].name +
+                                                   "\" inside (initial positions): expected a "
+                                                   "region that contains at least one particle");
+          }
+        }
+        s.output.gauges.push_back(std::move(spec));
+      }
+    }
+  }
+  if (out.is_object() && out.contains("crater")) {
+    const Json& cn = out["crater"];
+    JsonReader c(cn.is_object() ? cn : empty_json_object(), "/output/crater", problems);
+    if (!cn.is_object()) {
+      problems.add("/output/crater", "expected an object {\"object\": ..., \"face\": ...}");
+    } else {
+      CraterSpec spec;
+      const int object = read_object_name(c, s.objects, "the impacted object");
+      spec.face = c.number("face", Range::any(), "x of the impacted face [m] (impact along +x)");
+      c.reject_unknown_keys();
+      if (object >= 0 && std::isfinite(spec.face)) {
+        spec.object = object;
+        const double dx = s.grid.spacing()(0);
+        if (check_seeds &&
+            count_seed_points(s, static_cast<std::size_t>(object),
+                              Vec3(spec.face - dx, s.grid.lower(1), s.grid.lower(2)),
+                              Vec3(spec.face + dx, s.grid.upper(1), s.grid.upper(2))) == 0) {
+          problems.add(c.key_path("face"),
+                       "no particle of object \"" + s.objects[object].name +
+                           "\" within one cell of the face: expected the x of a face of it [m]");
+        }
+        s.output.crater = spec;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 Json load_scene_document(const std::string& file) {
@@ -291,13 +424,14 @@ Scene read_scene(const Json& document, const std::string& file) {
   s.resolved = document;
   root.ignore("description");
   read_grid(root, document, s.grid);
-  read_time(root, s.time);
+  read_time(root, s.time, s.warnings);
   read_solver(root, document, s.solver);
   read_physics(root, s.physics);
   read_output(root, document, file, s.time.max_time, s.output);
   read_materials(root, document, s.materials);
   read_objects(root, document, s.materials, s.objects);
   apply_physics_overrides(s.physics, s.materials);
+  read_observables(problems, document, s);
   root.reject_unknown_keys();
   problems.throw_if_any();
   return s;

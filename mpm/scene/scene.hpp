@@ -34,7 +34,10 @@ struct TimeSpec {
   double initial_dt = 0.0;  ///< first step is min(initial_dt, stable dt) [s]
   double min_dt = 0.0;      ///< the run stops if the stable dt falls below this [s]
   double max_dt = 0.0;      ///< cap on dt [s]
-  double multiplier = 0.5;  ///< CFL factor on the stable dt [-]
+  double multiplier = 0.5;  ///< CFL factor on the stable dt [-], up to 1.5 (> 1: warned)
+  /// The run stops when kinetic + strain energy (+ booked sinks) exceeds the energy that entered
+  /// by this fraction of it: energy_error > max_energy_growth (docs/mpm.md#failure-handling) [-]
+  double max_energy_growth = 1.0;
 };
 
 struct SolverSpec {
@@ -73,11 +76,34 @@ struct PhysicsSpec {
   std::optional<bool> adiabatic_heating;  ///< the report's turn_on_adiabatic_heating
 };
 
+/// A history gauge (output.gauges.<name>, docs/scenes.md): the mass-weighted mean over the
+/// particles of one object whose initial position lies in a box (closed), sampled at every
+/// history row into the column `gauge_<name> [unit]` (mpm/output/observables.hpp).
+enum class GaugeType { velocity, strain, pressure };
+
+struct GaugeSpec {
+  std::string name;
+  GaugeType type = GaugeType::velocity;
+  int object = 0;             ///< index into Scene::objects
+  Vec3 lower = Vec3::Zero();  ///< region of initial positions [m]
+  Vec3 upper = Vec3::Zero();  ///< [m]
+  int component = 0;          ///< 0, 1, 2 = x, y, z (velocity and strain)
+  std::size_t particles = 0;  ///< particles inside (counted when the scene is read)
+};
+
+/// output.crater: the crater an impact along +x leaves in the face x = `face` of an object.
+struct CraterSpec {
+  int object = 0;     ///< index into Scene::objects
+  double face = 0.0;  ///< x of the impacted face [m]
+};
+
 struct OutputSpec {
-  std::string directory;            ///< where history.csv etc. go
-  double interval = 0.0;            ///< history row and snapshot interval [s]
-  bool snapshots = true;            ///< write particles/step_NNNNNN.vtu
-  std::vector<std::string> fields;  ///< VTU point-data fields
+  std::string directory;             ///< where history.csv etc. go
+  double interval = 0.0;             ///< history row and snapshot interval [s]
+  bool snapshots = true;             ///< write particles/step_NNNNNN.vtu
+  std::vector<std::string> fields;   ///< VTU point-data fields
+  std::vector<GaugeSpec> gauges;     ///< history gauges (none: no columns, no work)
+  std::optional<CraterSpec> crater;  ///< crater observables in summary.json
 };
 
 struct SceneMaterial {
@@ -104,6 +130,9 @@ struct Scene {
   OutputSpec output;
   std::vector<SceneMaterial> materials;
   std::vector<SceneObject> objects;
+  /// Admissible but suspicious settings (e.g. a multiplier above 1), "file: /key/path: why";
+  /// the command line prints them on stderr.
+  std::vector<std::string> warnings;
 
   /// Velocity fields: one per material when contact is not single_velocity (and a companion per
   /// material with create_new_particles), else one shared field (ordinary MPM).

@@ -172,6 +172,8 @@ int run_study(const StudyOptions& options) {
   for (const auto& f : files) {
     try {
       scenes.push_back(load_scene(f));
+      for (const std::string& w : scenes.back().warnings)
+        std::cerr << "mpm study: warning: " << w << '\n';
       scenes.back().output.snapshots = false;  // the study needs the ledger only; VTUs are GBs
     } catch (const InputError& e) {
       problems.insert(problems.end(), e.problems().begin(), e.problems().end());

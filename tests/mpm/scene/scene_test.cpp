@@ -111,17 +111,36 @@ BOOST_AUTO_TEST_CASE(seeded_sphere_volume_converges_to_the_exact_volume) {
 BOOST_AUTO_TEST_CASE(errors_name_the_key_path_and_what_was_expected) {
   Json doc = base();
   doc["grid"]["cell"] = {1, 2, 3};               // misspelt key
-  doc["time"]["multiplier"] = 1.5;               // out of range
+  doc["time"]["multiplier"] = 2.0;               // out of range
   doc["objects"]["block"]["velocity"] = "fast";  // wrong type
   doc["solver"]["scheme"] = "usf";               // unknown name
   const std::string e = error_of(doc);
   BOOST_TEST_MESSAGE(e);
   BOOST_TEST(e.find("test.json: /grid/cell: unknown key (did you mean cells?)") !=
              std::string::npos);
-  BOOST_TEST(e.find("/time/multiplier: expected a number in (0, 1]") != std::string::npos);
+  BOOST_TEST(e.find("/time/multiplier: expected a number in (0, 1.5], got 2") != std::string::npos);
   BOOST_TEST(e.find("/objects/block/velocity: expected an array of 3 numbers") !=
              std::string::npos);
   BOOST_TEST(e.find("/solver/scheme: unknown name \"usf\"; known: usl, musl") != std::string::npos);
+}
+
+// Multipliers in (1, 1.5] are admissible (to test where the CFL limit fails) but warned about;
+// time.max_energy_growth defaults to 1 (+100 %) and must be positive.
+BOOST_AUTO_TEST_CASE(a_multiplier_above_one_is_read_with_a_warning) {
+  Json doc = base();
+  BOOST_TEST(read_scene(doc, "test.json").warnings.empty());
+  BOOST_TEST(read_scene(doc, "test.json").time.max_energy_growth == 1.0);
+  doc["time"]["multiplier"] = 1.2;
+  doc["time"]["max_energy_growth"] = 0.5;
+  const Scene s = read_scene(doc, "test.json");
+  BOOST_TEST(s.time.multiplier == 1.2);
+  BOOST_TEST(s.time.max_energy_growth == 0.5);
+  BOOST_TEST_REQUIRE(s.warnings.size() == 1u);
+  BOOST_TEST_MESSAGE(s.warnings[0]);
+  BOOST_TEST(s.warnings[0].find("test.json: /time/multiplier: 1.2 is above 1") == 0u);
+  doc["time"]["max_energy_growth"] = 0.0;
+  BOOST_TEST(error_of(doc).find("/time/max_energy_growth: expected a number in (0, inf)") !=
+             std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(an_unknown_material_reference_lists_the_known_ones) {

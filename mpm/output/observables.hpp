@@ -1,0 +1,89 @@
+// Observables for accuracy-versus-cost studies (issue 7), definitions in docs/mpm.md#output:
+// - Gauges (output.gauges): history.csv columns `gauge_<name> [unit]`, each the mass-weighted
+//   mean over a fixed set of particles (one object's, initial position in a box) of a velocity
+//   component, a log-strain component or the pressure, read at every history row.
+// - Observables: summary.json "observables": per object mass, mean velocity, kinetic energy and
+//   the largest particle pressure seen at the history rows; the crater of output.crater.
+// Both take their particle sets from the particles as seeded (t = 0) and keep only index lists
+// (and, for the crater, the initial positions of its face layer): a scene without gauges or
+// crater stores nothing per particle and does no per-step work.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mpm/particles/particles.hpp"
+
+namespace impact::mpm {
+
+/// Log (Hencky) strain along axis c: ln of the stretch of F along c, 0.5 ln (F^T F)_cc [-].
+inline double log_strain(const Mat3& F, int c) {
+  return 0.5 * std::log(F.col(c).squaredNorm());
+}
+
+/// Pressure -tr(sigma)/3 [Pa] (the VTU field `pressure`; artificial viscosity not included).
+inline double pressure(const Mat3& stress) {
+  return -stress.trace() / 3.0;
+}
+
+class Gauges {
+ public:
+  /// `initial`: the particles as seeded (t = 0); membership (initial position in the region,
+  /// closed box) is fixed here. Throws std::logic_error for an empty gauge (read_scene rejects
+  /// one).
+  Gauges(const Scene& scene, const Particles& initial);
+
+  bool empty() const { return gauges_.empty(); }
+  std::size_t size() const { return gauges_.size(); }
+  /// "gauge_<name> [m/s]" (velocity), "[-]" (strain), "[Pa]" (pressure), in scene order (names
+  /// sorted).
+  std::vector<std::string> columns() const;
+  /// The current readings, columns() order.
+  std::vector<double> read(const Particles& P) const;
+  /// The particle indices of gauge g.
+  const std::vector<std::size_t>& members(std::size_t g) const { return gauges_[g].members; }
+
+ private:
+  struct Gauge {
+    std::string column;
+    GaugeType type;
+    int component;
+    std::vector<std::size_t> members;
+    double mass;  ///< sum of the members' masses [kg]
+  };
+  std::vector<Gauge> gauges_;
+};
+
+/// Crater in the face x = face of an object, impact along +x (output.crater).
+struct Crater {
+  double depth = 0.0;                 ///< max over the face layer of (x - X0)_x [m]
+  double diameter = 0.0;              ///< 2 max distance of a displaced particle from the axis [m]
+  double axis_y = 0.0, axis_z = 0.0;  ///< the axis: mean current (y, z) of the displaced [m]
+  std::size_t face_particles = 0;     ///< the face layer: abs(X0_x - face) <= dx
+  std::size_t displaced_particles = 0;  ///< of those, (x - X0)_x > dx/2
+};
+
+class Observables {
+ public:
+  /// `initial`: the particles as seeded (t = 0).
+  Observables(const Scene& scene, const Particles& initial);
+
+  /// At every history row: the running maximum pressure per object (sampled there only).
+  void sample(const Particles& P, double time);
+  bool has_crater() const { return crater_.has_value(); }
+  /// The crater now (output.crater must be set).
+  Crater crater(const Particles& P) const;
+  /// summary.json "observables": {"objects": {name: {...}}, "crater": {...}}.
+  Json summary(const Particles& P) const;
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<double> max_pressure_, max_pressure_time_;
+  std::optional<CraterSpec> crater_;
+  std::string crater_object_;
+  double dx_ = 0.0;
+  std::vector<std::size_t> face_;  ///< crater: the face layer's particles
+  std::vector<Vec3> face_x0_;      ///< and their initial positions
+};
+
+}  // namespace impact::mpm
