@@ -8,6 +8,7 @@
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
 #   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
 #   ./run.sh stability  build and run the sphere-cylinder stability map (docs/figures/stability/)
+#   ./run.sh accuracy   build and run the speed-versus-accuracy study (docs/figures/accuracy/)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -69,6 +70,15 @@ case "${1:-}" in
     build release
     build/bin/mpm study data/scenes/sphere_cylinder --out docs/figures/sphere_cylinder --threads 2
     ;;
+  accuracy)
+    install_missing_packages
+    build release
+    # Variants of recommended.json (grid x1, x1.5, x2 per interpolation/scheme, multipliers,
+    # particles per cell), their observables against the finest run, Pareto charts
+    # (docs/accuracy.md). Options after `accuracy` go to the script, e.g. --max-time 10e-6.
+    /usr/bin/python3 mpm/study/accuracy_study.py docs/figures/accuracy --mpm build/bin/mpm \
+      --threads 2 "${@:2}"
+    ;;
   stability)
     install_missing_packages
     build release
@@ -78,7 +88,7 @@ case "${1:-}" in
       --threads 2 "${@:2}"
     ;;
   *)
-    sed -n '2,11p' "$0"
+    sed -n '2,12p' "$0"
     exit 1
     ;;
 esac

@@ -1,0 +1,290 @@
+#!/usr/bin/env python3
+"""Speed versus accuracy on the recommended sphere-cylinder scene (issue 7; docs/accuracy.md).
+
+  accuracy_study.py OUT [--mpm build/bin/mpm] [--max-time 40e-6] [--levels 1,1.5,2]
+                        [--threads 2] [--analyse-only]
+
+1. Writes variants of data/scenes/sphere_cylinder/recommended.json into OUT/scenes/ (each a
+   two-line scene that `extends` it): per method (interpolation gimp/linear x scheme musl/usl)
+   a resolution ladder (the report's 50 x 20 x 20 grid times each level), plus, on the report's
+   grid with gimp/musl, time-step multipliers 0.2, 0.4, 0.8 and 1 and 3 particles per cell.
+2. Runs them with `mpm study OUT/scenes --out OUT/runs --no-plot` (one after another).
+3. Reads every run's summary.json: wall time, particle-steps, the ledger's energy_error, and every
+   number under "observables" (per-object mean velocity and kinetic energy, crater depth and
+   diameter, peak pressure, gauges: docs/mpm.md). The reference of each observable is the finest
+   gimp/musl run; where the gimp/musl ladder converges monotonically, Richardson extrapolation of
+   its three finest levels gives the reference instead and the observed order is reported.
+4. Writes OUT/accuracy.csv (one row per run and observable), OUT/accuracy.md (the table of the
+   cheapest setting that reaches 1 %, 5 % and 10 % error per observable, and the observed orders)
+   and OUT/pareto_<observable>.png (error versus wall time, one curve per method, the Pareto front
+   marked).
+Exit codes: 0 done, 1 usage error, 2 input error, 3 a run failed (analysed without it).
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+BASE = os.path.join(ROOT, "data", "scenes", "sphere_cylinder", "recommended.json")
+BASE_CELLS = (50, 20, 20)
+METHODS = [("gimp", "musl"), ("gimp", "usl"), ("linear", "musl"), ("linear", "usl")]
+# The observables compared (summary.json "observables" flattened, plus the gauges' last history
+# row); bookkeeping numbers (masses, particle counts, times of the peaks) are not accuracy.
+OBSERVABLES = ["abs_energy_error", "crater.depth [m]", "crater.diameter [m]",
+               "objects.sphere.mean_velocity [m/s][0]", "objects.sphere.kinetic_energy [J]",
+               "objects.target.kinetic_energy [J]", "objects.sphere.max_pressure [Pa]",
+               "objects.target.max_pressure [Pa]"]
+
+
+def variant_name(interp, scheme, level, multiplier, ppc):
+    return f"case_{interp}_{scheme}_r{level:g}_m{multiplier:g}_p{ppc}"
+
+
+def variants(levels):
+    out = []
+    for interp, scheme in METHODS:
+        for level in levels:
+            out.append((interp, scheme, level, 0.1, 2))
+    for m in (0.2, 0.4, 0.8):
+        out.append(("gimp", "musl", levels[0], m, 2))
+    for ppc in (1, 3):
+        out.append(("gimp", "musl", levels[0], 0.1, ppc))
+    return out
+
+
+def write_scene(path, interp, scheme, level, multiplier, ppc, max_time):
+    cells = [int(round(c * level)) for c in BASE_CELLS]
+    patch = {
+        "extends": BASE,
+        "description": f"{interp}/{scheme}, grid x{level:g} ({cells[0]}x{cells[1]}x{cells[2]}), "
+        f"multiplier {multiplier:g}, {ppc} particles per cell per axis",
+        "grid": {"cells": cells},
+        "solver": {"interpolation": interp, "scheme": scheme},
+        "time": {"multiplier": multiplier, "max_time": max_time},
+        "objects": {o: {"particles_per_cell": [ppc] * 3} for o in ("sphere", "target")},
+        "output": {"snapshots": False},
+    }
+    with open(path, "w") as f:
+        json.dump(patch, f, indent=1)
+
+
+def flatten(prefix, node, into):
+    if isinstance(node, dict):
+        for k, v in node.items():
+            flatten(f"{prefix}.{k}" if prefix else k, v, into)
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            flatten(f"{prefix}[{i}]", v, into)
+    elif isinstance(node, (int, float)) and not isinstance(node, bool):
+        into[prefix] = float(node)
+
+
+def read_runs(runs_dir, table):
+    runs = []
+    for interp, scheme, level, multiplier, ppc in table:
+        name = variant_name(interp, scheme, level, multiplier, ppc)
+        path = os.path.join(runs_dir, name, "summary.json")
+        if not os.path.exists(path):
+            continue
+        with open(path) as f:
+            s = json.load(f)
+        flat = {}
+        flatten("", s.get("observables", {}), flat)
+        flat["abs_energy_error"] = abs(s.get("final", {}).get("energy_error [-]", float("nan")))
+        obs = {k: v for k, v in flat.items() if k in OBSERVABLES}
+        hist = os.path.join(runs_dir, name, "history.csv")
+        if os.path.exists(hist):
+            with open(hist, newline="") as f:
+                rows = list(csv.reader(f))
+            if len(rows) > 1:
+                for i, h in enumerate(rows[0]):
+                    if h.startswith("gauge_") and len(rows[-1]) == len(rows[0]):
+                        obs[h] = float(rows[-1][i])
+        runs.append({
+            "name": name, "interp": interp, "scheme": scheme, "level": level,
+            "multiplier": multiplier, "ppc": ppc, "status": s.get("status", "?"),
+            "wall": float(s.get("wall_time [s]", float("nan"))),
+            "particle_steps": float(s.get("particles", 0)) * float(s.get("steps", 0)),
+            "obs": obs,
+        })
+    return runs
+
+
+def richardson(values, levels):
+    """Three levels h1 > h2 > h3 (h = 1/level), values f1, f2, f3: the observed order p and the
+    extrapolated value when the differences keep their sign and shrink (monotone convergence)."""
+    (f1, f2, f3), (r1, r2, r3) = values, levels
+    d1, d2 = f2 - f1, f3 - f2
+    if d1 == 0 or d2 == 0 or (d1 > 0) != (d2 > 0) or abs(d2) >= abs(d1):
+        return None
+    # Equal refinement ratios only (r2/r1 == r3/r2) give the closed form; otherwise skip.
+    q1, q2 = r2 / r1, r3 / r2
+    if abs(q1 - q2) > 1e-9:
+        return None
+    p = math.log(abs(d1 / d2)) / math.log(q1)
+    f = f3 + d2 / (q1 ** p - 1.0)
+    return p, f
+
+
+def analyse(out, runs, levels):
+    ref_runs = [r for r in runs if (r["interp"], r["scheme"]) == ("gimp", "musl")
+                and r["multiplier"] == 0.1 and r["ppc"] == 2 and r["status"] == "completed"]
+    ref_runs.sort(key=lambda r: r["level"])
+    if not ref_runs:
+        raise SystemExit("accuracy_study: no completed gimp/musl reference run")
+    finest = ref_runs[-1]
+    names = sorted(set().union(*(r["obs"].keys() for r in runs)))
+    # A gauge the wave has not reached by max_time reads round-off: no accuracy to measure.
+    floor = {"[-]": 1e-6, "[m/s]": 1e-3, "[Pa]": 1e3}
+    names = [n for n in names if not any(
+        n.endswith(u) and abs(finest["obs"].get(n, 0.0)) < f for u, f in floor.items())]
+    reference, orders = {}, {}
+    for n in names:
+        if n == "abs_energy_error":
+            reference[n] = 0.0  # exact: the books close
+            continue
+        vals = [r["obs"].get(n) for r in ref_runs]
+        reference[n] = finest["obs"].get(n)
+        if len(ref_runs) >= 3 and all(v is not None for v in vals[-3:]):
+            rich = richardson(vals[-3:], [r["level"] for r in ref_runs[-3:]])
+            if rich:
+                orders[n] = rich[0]
+                reference[n] = rich[1]
+    rows = []
+    for r in runs:
+        for n in names:
+            v, ref = r["obs"].get(n), reference.get(n)
+            if v is None or ref is None:
+                continue
+            if n == "abs_energy_error":
+                err = v
+            else:
+                scale = abs(ref) if abs(ref) > 0 else 1.0
+                err = abs(v - ref) / scale
+            rows.append({**{k: r[k] for k in ("name", "interp", "scheme", "level", "multiplier",
+                                                "ppc", "status", "wall", "particle_steps")},
+                         "observable": n, "value": v, "reference": ref, "error": err})
+    with open(os.path.join(out, "accuracy.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["run", "interpolation", "scheme", "grid_level [-]", "multiplier [-]",
+                    "particles_per_cell [-]", "status", "wall_time [s]", "particle_steps [-]",
+                    "observable", "value [SI]", "reference [SI]", "relative_error [-]"])
+        for x in rows:
+            w.writerow([x["name"], x["interp"], x["scheme"], x["level"], x["multiplier"],
+                        x["ppc"], x["status"], x["wall"], x["particle_steps"], x["observable"],
+                        x["value"], x["reference"], x["error"]])
+    lines = ["# Speed versus accuracy: recommended sphere-cylinder scene", "",
+             f"Reference: {'Richardson extrapolation where marked, else ' if orders else ''}"
+             f"the finest gimp/musl run ({finest['name']}). Errors relative to the reference "
+             "(abs_energy_error: the ledger's |energy_error| itself).", "",
+             "| observable | reference | observed order | cheapest run <= 1 % | <= 5 % | <= 10 % |",
+             "|---|---|---|---|---|---|"]
+    for n in names:
+        cells = []
+        for tol in (0.01, 0.05, 0.10):
+            ok = [x for x in rows if x["observable"] == n and x["error"] <= tol
+                  and x["status"] == "completed" and x["name"] != finest["name"]]
+            best = min(ok, key=lambda x: x["wall"]) if ok else None
+            cells.append(f"{best['name']} ({best['wall']:.1f} s)" if best else "none")
+        ref = reference.get(n)
+        lines.append(f"| {n} | {ref:.4g} | {orders[n]:.2f} |" if n in orders else
+                     f"| {n} | {ref:.4g} | - |")
+        lines[-1] += " " + " | ".join(cells) + " |"
+    lines += ["", "| run | status | wall [s] | particle-steps | |energy_error| |", "|---|---|---|---|---|"]
+    for r in runs:
+        lines.append(f"| {r['name']} | {r['status']} | {r['wall']:.1f} | {r['particle_steps']:.3g} "
+                     f"| {r['obs'].get('abs_energy_error', float('nan')):.3g} |")
+    with open(os.path.join(out, "accuracy.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return rows, names
+
+
+def pareto_front(points):
+    """Non-dominated (cost, error) points: no other point is both cheaper and more accurate."""
+    front = []
+    for c, e, tag in sorted(points):
+        if not front or e < front[-1][1]:
+            front.append((c, e, tag))
+    return front
+
+
+def draw(out, rows, names):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("accuracy_study: matplotlib missing: no figures (table written)", file=sys.stderr)
+        return
+    for n in names:
+        pts = [x for x in rows if x["observable"] == n and x["status"] == "completed"
+               and x["error"] > 0]
+        if not pts:
+            continue
+        fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+        for ax, cost, label in ((axes[0], "wall", "wall time [s] (2 threads)"),
+                                (axes[1], "particle_steps", "particle-steps [-]")):
+            for interp, scheme in METHODS:
+                ladder = sorted((x for x in pts if (x["interp"], x["scheme"]) == (interp, scheme)
+                                 and x["multiplier"] == 0.1 and x["ppc"] == 2),
+                                key=lambda x: x["level"])
+                if ladder:
+                    grids = ", x".join("%g" % x["level"] for x in ladder)
+                    ax.loglog([x[cost] for x in ladder], [x["error"] for x in ladder], "o-",
+                              label=f"{interp}/{scheme} (grid x{grids})")
+            for x in pts:
+                if x["multiplier"] != 0.1 or x["ppc"] != 2:
+                    ax.loglog(x[cost], x["error"], "s", color="gray")
+                    ax.annotate(f"m {x['multiplier']:g}, ppc {x['ppc']}", (x[cost], x["error"]),
+                                fontsize=7)
+            front = pareto_front([(x[cost], x["error"], x["name"]) for x in pts])
+            ax.loglog([c for c, _, _ in front], [e for _, e, _ in front], "k--", lw=1,
+                      label="Pareto front")
+            ax.set_xlabel(label)
+            ax.set_ylabel(f"relative error of {n} [-]")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=7)
+        safe = "".join(ch if ch.isalnum() or ch in "._-" else "_" for ch in n)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, f"pareto_{safe}.png"), dpi=110)
+        plt.close(fig)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("out")
+    p.add_argument("--mpm", default=os.path.join(ROOT, "build", "bin", "mpm"))
+    p.add_argument("--max-time", type=float, default=40e-6)
+    p.add_argument("--levels", default="1,1.5,2")
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--analyse-only", action="store_true")
+    a = p.parse_args()
+    try:
+        levels = [float(x) for x in a.levels.split(",")]
+    except ValueError:
+        p.error("--levels: expected comma-separated numbers, e.g. 1,1.5,2")
+    table = variants(levels)
+    scenes, runs_dir = os.path.join(a.out, "scenes"), os.path.join(a.out, "runs")
+    os.makedirs(scenes, exist_ok=True)
+    code = 0
+    if not a.analyse_only:
+        for v in table:
+            write_scene(os.path.join(scenes, variant_name(*v) + ".json"), *v, a.max_time)
+        code = subprocess.call([a.mpm, "study", scenes, "--out", runs_dir, "--threads",
+                                str(a.threads), "--no-plot"])
+        if code not in (0, 3):
+            return code
+    rows, names = analyse(a.out, read_runs(runs_dir, table), levels)
+    draw(a.out, rows, names)
+    print(f"accuracy_study: wrote {a.out}/accuracy.md, accuracy.csv and pareto_*.png")
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())
