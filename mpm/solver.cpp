@@ -6,10 +6,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "mpm/output/atomic_file.hpp"
 #include "mpm/output/observables.hpp"
 #include "mpm/output/output.hpp"
 #include "mpm/step/parallel.hpp"
@@ -298,11 +298,25 @@ int run(const Scene& scene, const RunOptions& options) {
   namespace fs = std::filesystem;
   const std::string dir = options.out_dir.empty() ? scene.output.directory : options.out_dir;
   fs::create_directories(dir);
-  {
-    std::ofstream copy(fs::path(dir) / "scene.json");
-    copy << scene.resolved.dump(2) << '\n';
-  }
+  write_file_atomically(fs::path(dir) / "scene.json",
+                        [&](std::ostream& o) { o << scene.resolved.dump(2) << '\n'; });
+  // Wall time from the start of the step loop (as summary.json; restarted after the first outputs).
+  auto t0 = std::chrono::steady_clock::now();
+  const auto wall_time = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
   Simulation sim(scene, options.threads);
+  // status.json: where the run is (rewritten at every history row) and how it ended.
+  const auto write_status = [&](const std::string& status, const std::string& message) {
+    Json j = {{"status", status},
+              {"step", sim.steps()},
+              {"time [s]", sim.time()},
+              {"energy_error [-]", sim.ledger().row().energy_error},
+              {"wall_time [s]", wall_time()}};
+    if (status != "running") j["message"] = message;
+    write_file_atomically(fs::path(dir) / "status.json",
+                          [&](std::ostream& o) { o << j.dump(2) << '\n'; });
+  };
   // Gauge and crater particle sets from the particles as seeded (nothing when the scene has none).
   const Gauges gauges(scene, sim.particles());
   Observables observables(scene, sim.particles());
@@ -310,6 +324,7 @@ int run(const Scene& scene, const RunOptions& options) {
   const auto write_history = [&] {
     observables.sample(sim.particles(), sim.time());  // max pressure: sampled at history rows
     history.write(sim.ledger().row(), gauges.read(sim.particles()));
+    write_status("running", "");
   };
   std::optional<SnapshotWriter> snapshots;
   if (scene.output.snapshots) snapshots.emplace(dir, scene.output.fields);
@@ -318,7 +333,7 @@ int run(const Scene& scene, const RunOptions& options) {
     if (snapshots) snapshots->write(sim.particles(), sim.steps(), sim.time());
   };
   write_outputs();
-  const auto t0 = std::chrono::steady_clock::now();
+  t0 = std::chrono::steady_clock::now();
   auto last_progress = t0;
   double next_output = scene.output.interval;
   std::string status = "completed", message;
@@ -346,9 +361,15 @@ int run(const Scene& scene, const RunOptions& options) {
     std::cerr << (options.progress ? "\n" : "") << "mpm: run failed: " << message << '\n';
     if (snapshots) snapshots->write(sim.particles(), sim.steps() + 1, sim.time());
     write_history();
+  } catch (const std::exception& e) {  // e.g. an output that cannot be written: say so, re-throw
+    try {
+      write_status("failed", e.what());
+    } catch (const std::exception&) {  // keep the original error
+    }
+    throw;
   }
   if (options.progress) std::fprintf(stderr, "\n");
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = wall_time();
   Json summary = check_report(scene, sim.threads());
   summary.erase("estimated_steps");
   summary.erase("stable_dt [s]");
@@ -371,7 +392,9 @@ int run(const Scene& scene, const RunOptions& options) {
                       {"momentum", "kg m/s"},
                       {"boundary_impulse", "N s"},
                       {"energy_error", "-"}};
-  std::ofstream(fs::path(dir) / "summary.json") << summary.dump(2) << '\n';
+  write_file_atomically(fs::path(dir) / "summary.json",
+                        [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
+  write_status(status, message);  // last: a completed status.json means every file is in place
   return code;
 }
 

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 
+#include "mpm/output/atomic_file.hpp"
 #include "mpm/output/output.hpp"
 
 namespace impact::mpm {
@@ -64,93 +64,94 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
   char name[64];
   std::snprintf(name, sizeof name, "step_%06ld.vtu", step);
   const fs::path rel = fs::path("particles") / name;
-  std::ofstream o(fs::path(directory_) / rel, std::ios::binary);
-  if (!o) throw std::runtime_error("cannot write " + (fs::path(directory_) / rel).string());
   const std::size_t n = P.size();
-  Appended data;
-  o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-       "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n"
-       "<Piece NumberOfPoints=\""
-    << n << "\" NumberOfCells=\"" << n << "\">\n<Points>\n";
-  {
-    std::vector<double> x(3 * n);
-    for (std::size_t p = 0; p < n; ++p)
-      for (int d = 0; d < 3; ++d) x[3 * p + d] = P.x[p](d);
-    data.add(o, "Float64", nullptr, 3, std::move(x));
-  }
-  o << "</Points>\n<Cells>\n";
-  {
-    std::vector<std::int64_t> conn(n), off(n);
-    std::vector<std::uint8_t> types(n, 1);  // VTK_VERTEX
-    for (std::size_t p = 0; p < n; ++p) {
-      conn[p] = static_cast<std::int64_t>(p);
-      off[p] = static_cast<std::int64_t>(p + 1);
-    }
-    data.add(o, "Int64", "connectivity", 1, std::move(conn));
-    data.add(o, "Int64", "offsets", 1, std::move(off));
-    data.add(o, "UInt8", "types", 1, std::move(types));
-  }
-  o << "</Cells>\n<PointData>\n";
-  for (const std::string& f : fields_) {
-    if (f == "velocity") {
-      std::vector<double> v(3 * n);
+  write_file_atomically(fs::path(directory_) / rel, [&](std::ostream& o) {
+    Appended data;
+    o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n"
+         "<Piece NumberOfPoints=\""
+      << n << "\" NumberOfCells=\"" << n << "\">\n<Points>\n";
+    {
+      std::vector<double> x(3 * n);
       for (std::size_t p = 0; p < n; ++p)
-        for (int d = 0; d < 3; ++d) v[3 * p + d] = P.v[p](d);
-      data.add(o, "Float64", "velocity", 3, std::move(v));
-    } else if (f == "stress") {
-      std::vector<double> v(6 * n);
-      for (std::size_t p = 0; p < n; ++p) {
-        const Mat3& s = P.state[p].stress;
-        const double c[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
-        for (int d = 0; d < 6; ++d) v[6 * p + d] = c[d];
-      }
-      data.add(o, "Float64", "stress", 6, std::move(v));
-    } else if (f == "plastic_strain") {
-      data.add(o, "Float64", "plastic_strain", 1,
-               scalar(n, [&](std::size_t p) { return P.state[p].plastic_strain; }));
-    } else if (f == "temperature") {
-      data.add(o, "Float64", "temperature", 1,
-               scalar(n, [&](std::size_t p) { return P.state[p].temperature; }));
-    } else if (f == "damage") {
-      data.add(o, "Float64", "damage", 1,
-               scalar(n, [&](std::size_t p) { return P.state[p].damage; }));
-    } else if (f == "mass") {
-      data.add(o, "Float64", "mass", 1, scalar(n, [&](std::size_t p) { return P.mass[p]; }));
-    } else if (f == "volume") {
-      data.add(o, "Float64", "volume", 1, scalar(n, [&](std::size_t p) { return P.volume[p]; }));
-    } else if (f == "pressure") {
-      data.add(o, "Float64", "pressure", 1,
-               scalar(n, [&](std::size_t p) { return -mean(P.state[p].stress); }));
-    } else if (f == "von_mises") {
-      data.add(o, "Float64", "von_mises", 1,
-               scalar(n, [&](std::size_t p) { return von_mises(P.state[p].stress); }));
-    } else if (f == "material") {
-      data.add(o, "Float64", "material", 1,
-               scalar(n, [&](std::size_t p) { return double(P.material[p]); }));
-    } else if (f == "object") {
-      data.add(o, "Float64", "object", 1,
-               scalar(n, [&](std::size_t p) { return double(P.object[p]); }));
-    } else if (f == "field") {
-      data.add(o, "Float64", "field", 1,
-               scalar(n, [&](std::size_t p) { return double(P.field[p]); }));
-    } else if (f == "failed") {
-      data.add(o, "Float64", "failed", 1,
-               scalar(n, [&](std::size_t p) { return P.state[p].failed ? 1.0 : 0.0; }));
+        for (int d = 0; d < 3; ++d) x[3 * p + d] = P.x[p](d);
+      data.add(o, "Float64", nullptr, 3, std::move(x));
     }
-  }
-  o << "</PointData>\n</Piece>\n</UnstructuredGrid>\n";
-  data.write(o);
-  o << "</VTKFile>\n";
-  o.close();
+    o << "</Points>\n<Cells>\n";
+    {
+      std::vector<std::int64_t> conn(n), off(n);
+      std::vector<std::uint8_t> types(n, 1);  // VTK_VERTEX
+      for (std::size_t p = 0; p < n; ++p) {
+        conn[p] = static_cast<std::int64_t>(p);
+        off[p] = static_cast<std::int64_t>(p + 1);
+      }
+      data.add(o, "Int64", "connectivity", 1, std::move(conn));
+      data.add(o, "Int64", "offsets", 1, std::move(off));
+      data.add(o, "UInt8", "types", 1, std::move(types));
+    }
+    o << "</Cells>\n<PointData>\n";
+    for (const std::string& f : fields_) {
+      if (f == "velocity") {
+        std::vector<double> v(3 * n);
+        for (std::size_t p = 0; p < n; ++p)
+          for (int d = 0; d < 3; ++d) v[3 * p + d] = P.v[p](d);
+        data.add(o, "Float64", "velocity", 3, std::move(v));
+      } else if (f == "stress") {
+        std::vector<double> v(6 * n);
+        for (std::size_t p = 0; p < n; ++p) {
+          const Mat3& s = P.state[p].stress;
+          const double c[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
+          for (int d = 0; d < 6; ++d) v[6 * p + d] = c[d];
+        }
+        data.add(o, "Float64", "stress", 6, std::move(v));
+      } else if (f == "plastic_strain") {
+        data.add(o, "Float64", "plastic_strain", 1,
+                 scalar(n, [&](std::size_t p) { return P.state[p].plastic_strain; }));
+      } else if (f == "temperature") {
+        data.add(o, "Float64", "temperature", 1,
+                 scalar(n, [&](std::size_t p) { return P.state[p].temperature; }));
+      } else if (f == "damage") {
+        data.add(o, "Float64", "damage", 1,
+                 scalar(n, [&](std::size_t p) { return P.state[p].damage; }));
+      } else if (f == "mass") {
+        data.add(o, "Float64", "mass", 1, scalar(n, [&](std::size_t p) { return P.mass[p]; }));
+      } else if (f == "volume") {
+        data.add(o, "Float64", "volume", 1, scalar(n, [&](std::size_t p) { return P.volume[p]; }));
+      } else if (f == "pressure") {
+        data.add(o, "Float64", "pressure", 1,
+                 scalar(n, [&](std::size_t p) { return -mean(P.state[p].stress); }));
+      } else if (f == "von_mises") {
+        data.add(o, "Float64", "von_mises", 1,
+                 scalar(n, [&](std::size_t p) { return von_mises(P.state[p].stress); }));
+      } else if (f == "material") {
+        data.add(o, "Float64", "material", 1,
+                 scalar(n, [&](std::size_t p) { return double(P.material[p]); }));
+      } else if (f == "object") {
+        data.add(o, "Float64", "object", 1,
+                 scalar(n, [&](std::size_t p) { return double(P.object[p]); }));
+      } else if (f == "field") {
+        data.add(o, "Float64", "field", 1,
+                 scalar(n, [&](std::size_t p) { return double(P.field[p]); }));
+      } else if (f == "failed") {
+        data.add(o, "Float64", "failed", 1,
+                 scalar(n, [&](std::size_t p) { return P.state[p].failed ? 1.0 : 0.0; }));
+      }
+    }
+    o << "</PointData>\n</Piece>\n</UnstructuredGrid>\n";
+    data.write(o);
+    o << "</VTKFile>\n";
+  });
 
+  // The collection lists only snapshots already renamed into place.
   entries_.emplace_back(time, rel.string());
-  std::ofstream pvd(fs::path(directory_) / "particles.pvd");
-  pvd.precision(17);
-  pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (const auto& [t, file] : entries_) {
-    pvd << "<DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
-  }
-  pvd << "</Collection>\n</VTKFile>\n";
+  write_file_atomically(fs::path(directory_) / "particles.pvd", [&](std::ostream& pvd) {
+    pvd.precision(17);
+    pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+    for (const auto& [t, file] : entries_) {
+      pvd << "<DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
+    }
+    pvd << "</Collection>\n</VTKFile>\n";
+  });
 }
 
 }  // namespace impact::mpm
