@@ -5,12 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/step/parallel.hpp"
+
 namespace impact::mpm {
 
 namespace {
 
 constexpr int kMaxFields = 64;  // fields sharing one node (materials x 2)
-constexpr int kMaxThreadsContact = 256;
 
 // Gradient of one field's nodal mass at node (i, j, k) by central differences (one-sided at the
 // outermost layers). The report's normals came from the same differences (sec. 14).
@@ -36,7 +37,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   const int nf = std::min(G.fields(), kMaxFields);
   const int nt = G.threads();
   const bool friction = contact.type == ContactType::friction && G.has_nodal_stress();
-  ContactTotals partial[kMaxThreadsContact];
+  ContactTotals partial[kMaxThreads];
   if (book_heat && !G.heat.empty()) std::fill(G.heat.begin(), G.heat.end(), 0.0);
 #pragma omp parallel num_threads(nt)
   {
