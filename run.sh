@@ -3,7 +3,11 @@
 #   ./run.sh main    install missing packages, build into build/, run the main job: the report's
 #                    recommended sphere-cylinder impact (history, figure, VTK in build/recommended/)
 #   ./run.sh test    install missing packages, build, run the whole test suite (release, then the
-#                    unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer)
+#                    unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer, then a
+#                    one-minute libFuzzer run of the input loaders, clang, build-fuzz/)
+#   ./run.sh fuzz [SECONDS]  build the libFuzzer targets of the input loaders (build-fuzz/) and run
+#                    each for SECONDS (default 600) from a scratch copy of its seed corpus;
+#                    findings in build-fuzz/findings/ (tests/fuzz/run_fuzz.sh, docs/reliability.md)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
 #   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
@@ -15,10 +19,12 @@ cd "$(dirname "$0")"
 # Debian packages the build needs; each is installed only when missing.
 # python3-matplotlib draws the point driver's figures (pointdriver plot, verify, convergence).
 PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev python3-matplotlib)
+# clang-14 + libclang-rt-14-dev (libFuzzer, sanitizer runtimes) build the fuzz targets (test, fuzz).
+FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
 
-install_missing_packages() {
+install_missing_packages() {  # install_missing_packages [EXTRA_PACKAGE ...]
   local missing=() p
-  for p in "${PACKAGES[@]}"; do
+  for p in "${PACKAGES[@]}" "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   ((${#missing[@]})) || return 0
@@ -47,11 +53,19 @@ case "${1:-}" in
     /usr/bin/python3 mpm/study/study_plot.py build/recommended
     ;;
   test)
-    install_missing_packages
+    install_missing_packages "${FUZZ_PACKAGES[@]}"
     build release
     ctest --preset release
     build asan
     ctest --preset asan
+    # Each loader's fuzz target for a few seconds (about a minute in all); fails on any finding.
+    build fuzz
+    ctest --preset fuzz
+    ;;
+  fuzz)
+    install_missing_packages "${FUZZ_PACKAGES[@]}"
+    build fuzz
+    tests/fuzz/run_fuzz.sh build-fuzz "${2:-600}"
     ;;
   bench)
     install_missing_packages
@@ -88,7 +102,7 @@ case "${1:-}" in
       --threads 2 "${@:2}"
     ;;
   *)
-    sed -n '2,12p' "$0"
+    sed -n '2,15p' "$0"
     exit 1
     ;;
 esac

@@ -1,8 +1,11 @@
 // mpm: the explicit MPM solver's command line.
-//   mpm run SCENE.json [--out DIR] [--threads N]
+//   mpm run SCENE.json [--out DIR] [--threads N] [--inject-fault KIND:STEP[:PARTICLE]]...
+//   mpm run --restart DIR [--threads N]
 //   mpm check SCENE.json [--threads N]
 //   mpm study SCENE_DIR --out DIR [--threads N] [--cases LIST] [--no-plot]
-// Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path), 3 run failure.
+// Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path; a refused restart),
+// 3 run failure (numerical fault), 4 memory estimate above the available memory, 128 + signal
+// after a checkpoint on SIGINT (130) or SIGTERM (143).
 #include <unistd.h>
 
 #include <cstring>
@@ -16,23 +19,35 @@
 namespace {
 
 const char* kUsage =
-    "usage: mpm run SCENE.json [--out DIR] [--threads N]\n"
+    "usage: mpm run SCENE.json [--out DIR] [--threads N] [--inject-fault KIND:STEP[:PARTICLE]]\n"
+    "       mpm run --restart DIR [--threads N]\n"
     "       mpm check SCENE.json [--threads N]\n"
     "       mpm study SCENE_DIR --out DIR [--threads N] [--cases case01,case04] [--no-plot]\n"
     "       mpm --help\n"
     "run:   runs the scene; writes DIR/history.csv (energy and momentum ledger), DIR/particles/\n"
     "       step_NNNNNN.vtu + DIR/particles.pvd (ParaView), DIR/summary.json, DIR/scene.json\n"
-    "       (the resolved scene), DIR/status.json (step reached; completed or failed).\n"
-    "       DIR defaults to the scene's output.directory.\n"
+    "       (the resolved scene), DIR/status.json (step reached; completed, failed or\n"
+    "       interrupted), DIR/checkpoint.bin (every output.checkpoint_interval_steps steps, and\n"
+    "       on SIGINT/SIGTERM, after which the run stops with 128 + the signal number).\n"
+    "       DIR defaults to the scene's output.directory. Refuses to start (exit 4) when the\n"
+    "       memory estimate exceeds the available memory.\n"
+    "       --restart DIR continues DIR's run from DIR/checkpoint.bin with DIR/scene.json and\n"
+    "       the checkpoint's thread count: bit-identical to an uninterrupted run (--threads N\n"
+    "       overrides, with a warning that it no longer is).\n"
+    "       --inject-fault (developer, repeatable): nan:STEP:P (P's updated stress is NaN),\n"
+    "       nan_velocity:STEP:P, outside:STEP:P (P moved beyond the x+ face), jacobian:STEP:P\n"
+    "       (det F < 0), sigterm:STEP, sigint:STEP (the signal after step STEP).\n"
     "check: validates the scene and prints it resolved, with particle counts, mass and particle\n"
-    "       volume against the exact geometric volume per object, estimated steps and memory.\n"
+    "       volume against the exact geometric volume per object, estimated steps and memory\n"
+    "       (exit 4 when the memory estimate exceeds the available memory).\n"
     "study: the report's Table 2 study: runs SCENE_DIR/case*.json (by name, then\n"
     "       recommended.json; --cases picks some) one after another, N threads each (default 2),\n"
     "       without snapshots, into DIR/<case>/; then mpm/study/study_plot.py writes\n"
     "       DIR/summary.csv + DIR/summary.md (one row per case) and DIR/<case>/energy.png (energy\n"
     "       and momentum vs time beside case01; not with --no-plot). Python: $MPM_PYTHON,\n"
     "       /usr/bin/python3 or python3 with matplotlib. Exit 3 if any case failed.\n"
-    "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error, 3 run failure.\n";
+    "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused\n"
+    "restart), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
 
 int usage_error(const std::string& message) {
   std::cerr << "mpm: " << message << '\n' << kUsage;
@@ -75,7 +90,7 @@ int main(int argc, char** argv) {
   if (command != "run" && command != "check" && command != "study")
     return usage_error("unknown command '" + command + "'");
   const bool study = command == "study";
-  std::string scene_file;
+  std::string scene_file, restart_dir;
   impact::mpm::RunOptions options;
   impact::mpm::StudyOptions study_options;
   for (int i = 2; i < argc; ++i) {
@@ -96,6 +111,19 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc || !parse_list(argv[++i], study_options.cases))
         return usage_error(
             "--cases needs a comma-separated list of case names, e.g. case01,case04");
+    } else if (a == "--restart" && command == "run") {
+      if (i + 1 >= argc) return usage_error("--restart needs a directory");
+      restart_dir = argv[++i];
+    } else if (a == "--inject-fault" && command == "run") {
+      if (i + 1 >= argc) return usage_error("--inject-fault needs KIND:STEP[:PARTICLE]");
+      const auto fault = impact::mpm::parse_fault_injection(argv[++i]);
+      if (!fault) {
+        return usage_error(
+            "--inject-fault: expected nan|nan_velocity|outside|jacobian:STEP:PARTICLE "
+            "or sigterm|sigint:STEP (STEP >= 1), got '" +
+            std::string(argv[i]) + "'");
+      }
+      options.faults.push_back(*fault);
     } else if (a == "--no-plot" && study) {
       study_options.plot = false;
     } else if (!a.empty() && a[0] == '-') {
@@ -106,7 +134,13 @@ int main(int argc, char** argv) {
       return usage_error("unexpected argument '" + a + "'");
     }
   }
-  if (scene_file.empty()) return usage_error(study ? "missing SCENE_DIR" : "missing SCENE.json");
+  if (!restart_dir.empty()) {
+    if (!scene_file.empty())
+      return usage_error("--restart takes the scene from DIR/scene.json: no SCENE.json");
+    if (!options.out_dir.empty()) return usage_error("--restart writes into DIR: no --out");
+  } else if (scene_file.empty()) {
+    return usage_error(study ? "missing SCENE_DIR" : "missing SCENE.json");
+  }
   if (study && options.out_dir.empty()) return usage_error("study needs --out DIR");
   try {
     if (study) {
@@ -115,14 +149,23 @@ int main(int argc, char** argv) {
       study_options.progress = isatty(STDERR_FILENO) != 0;
       return impact::mpm::run_study(study_options);
     }
+    options.progress = isatty(STDERR_FILENO) != 0;
+    options.handle_signals = true;
+    if (!restart_dir.empty()) return impact::mpm::restart(restart_dir, options);
     const impact::mpm::Scene scene = impact::mpm::load_scene(scene_file);
     for (const std::string& w : scene.warnings) std::cerr << "mpm: warning: " << w << '\n';
     if (command == "check") {
       std::cout << scene.resolved.dump(2) << '\n';
-      std::cout << impact::mpm::check_report(scene, std::max(options.threads, 1)).dump(2) << '\n';
+      const int threads = impact::mpm::run_threads(options.threads);
+      // An oversized scene is reported without seeding it.
+      if (const std::string refusal = impact::mpm::memory_refusal(scene, threads);
+          !refusal.empty()) {
+        std::cerr << "mpm: check: mpm run would refuse this scene: " << refusal << '\n';
+        return impact::mpm::kExitMemory;
+      }
+      std::cout << impact::mpm::check_report(scene, threads).dump(2) << '\n';
       return 0;
     }
-    options.progress = isatty(STDERR_FILENO) != 0;
     return impact::mpm::run(scene, options);
   } catch (const impact::InputError& e) {
     std::cerr << e.what() << '\n';

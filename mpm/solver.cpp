@@ -3,15 +3,23 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <stdexcept>
 
+#include "models/core/input.hpp"
 #include "mpm/output/atomic_file.hpp"
 #include "mpm/output/observables.hpp"
 #include "mpm/output/output.hpp"
+#include "mpm/run/checkpoint.hpp"
+#include "mpm/run/interrupt.hpp"
+#include "mpm/run/memory.hpp"
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -82,20 +90,6 @@ int thread_count(int requested) {
   return std::min(omp_get_max_threads(), kMaxThreads);
 }
 
-std::string describe(const Failure& f, const Particles& P, const Scene& scene, long step,
-                     double time) {
-  std::ostringstream m;
-  m.precision(9);
-  m << "step " << step << ", time " << time << " s: particle " << f.particle;
-  if (f.particle < P.size()) {
-    m << " (material " << scene.materials[P.material[f.particle]].name << ", object "
-      << scene.objects[P.object[f.particle]].name << ", x = [" << P.x[f.particle].transpose()
-      << "] m)";
-  }
-  m << ": " << f.field << ": " << f.message;
-  return m.str();
-}
-
 // The energy-growth check (docs/mpm.md#failure-handling). An unstable explicit step shows itself
 // first as kinetic + strain energy growing far beyond what entered, many steps before a NaN or a
 // particle leaving the grid. Reference: the energy that entered, E_in = E0 + boundary_work +
@@ -152,6 +146,8 @@ Simulation::Simulation(const Scene& scene, int threads)
     }
   }
   st.f_integration = scene_.solver.f_integration;
+  st.fail_particle = ph.on_numerical_fault == NumericalFaultAction::fail_particle;
+  if (st.fail_particle) particles_.fault.assign(particles_.size(), 0);
   st.mean_spacing = scene_.grid.spacing().sum() / 3.0;
   if (ph.artificial_viscosity.enabled) {
     st.viscosity = &scene_.physics.artificial_viscosity;
@@ -190,13 +186,27 @@ double Simulation::next_dt() const {
 }
 
 const StepTotals& Simulation::step() {
+  apply_injections();
+  check_particles();
   double dt = next_dt();
   if (!(dt >= scene_.time.min_dt) || !std::isfinite(dt) || !(dt > 0.0)) {
+    // The step collapses when one particle's signal speed c + |v| runs away: name it.
+    std::size_t fastest = 0;
+    double signal = -1.0;
+    for (std::size_t p = 0; p < particles_.size(); ++p) {
+      const double c = particles_.wave_speed[p] + particles_.v[p].norm();
+      if (c > signal || std::isnan(c)) {
+        signal = c;
+        fastest = p;
+        if (std::isnan(c)) break;
+      }
+    }
     std::ostringstream m;
-    m << "step " << steps_ << ", time " << time_ << " s: time step " << dt
-      << " s below min_dt = " << scene_.time.min_dt << " s (fastest signal " << max_signal_speed_
-      << " m/s)";
-    throw SolverFailure(m.str());
+    m.precision(6);
+    m << "stable time step " << dt << " s below time.min_dt = " << scene_.time.min_dt
+      << " s; this particle has the fastest signal, c + |v| = " << signal << " m/s";
+    throw SolverFailure(
+        describe(Failure{fastest, "time step", m.str(), std::nullopt}, steps_ + 1, time_));
   }
   dt = std::min(dt, scene_.time.max_time - time_);  // land on max_time
   std::optional<Failure> failure;
@@ -209,7 +219,8 @@ const StepTotals& Simulation::step() {
                        specific_heat_, dt, failure);
       },
       shape_);
-  if (failure) throw SolverFailure(describe(*failure, particles_, scene_, steps_ + 1, time_ + dt));
+  stress_settings_.inject_nan_stress = -1;
+  if (failure) throw SolverFailure(describe(*failure, steps_ + 1, time_ + dt));
   time_ += dt;
   ++steps_;
   max_signal_speed_ = last_.stress.max_signal_speed;
@@ -223,13 +234,137 @@ const StepTotals& Simulation::step() {
   if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
   failed_ += last_.stress.failed;
   converted_ += last_.stress.converted;
+  faulted_ += static_cast<long>(last_.stress.faulted.size());
   // The step is complete (time, ledger and particles at t^{n+1}): the failure names this step.
   if (auto grown = energy_growth(ledger_, particles_, scene_.time))
-    throw SolverFailure(describe(*grown, particles_, scene_, steps_, time_));
+    throw SolverFailure(describe(*grown, steps_, time_));
   return last_;
 }
 
+std::string Simulation::describe(const Failure& f, long step, double time) const {
+  static const Eigen::IOFormat kRow(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+  const Particles& P = particles_;
+  std::ostringstream m;
+  m.precision(9);
+  m << "step " << step << ", time " << time << " s: particle " << f.particle;
+  if (f.particle < P.size()) {
+    const std::size_t p = f.particle;
+    const PointState& s = f.state ? *f.state : P.state[p];
+    const Mat3& t = s.stress;
+    m.precision(6);
+    m << " (material " << scene_.materials[P.material[p]].name << ", object "
+      << scene_.objects[P.object[p]].name << ", x = [" << P.x[p].transpose().format(kRow)
+      << "] m, v = [" << P.v[p].transpose().format(kRow) << "] m/s, stress xx yy zz xy yz zx = ["
+      << t(0, 0) << ' ' << t(1, 1) << ' ' << t(2, 2) << ' ' << t(0, 1) << ' ' << t(1, 2) << ' '
+      << t(0, 2) << "] Pa, eps_p = " << s.plastic_strain << ", T = " << s.temperature
+      << " K, J = " << s.F.determinant() << ", damage = " << s.damage << ")";
+  }
+  m << ": " << f.field << ": " << f.message;
+  return m.str();
+}
+
+void Simulation::inject(const FaultInjection& fault) {
+  if (fault.kind == FaultInjection::Kind::sigterm || fault.kind == FaultInjection::Kind::sigint)
+    throw std::invalid_argument("a signal is raised by run(), not the Simulation");
+  if (fault.particle >= particles_.size()) {
+    throw std::out_of_range("particle " + std::to_string(fault.particle) + " out of range (" +
+                            std::to_string(particles_.size()) + " particles)");
+  }
+  injections_.push_back(fault);
+}
+
+void Simulation::apply_injections() {
+  for (const FaultInjection& f : injections_) {
+    if (f.step != steps_ + 1) continue;
+    const std::size_t p = f.particle;
+    switch (f.kind) {
+      case FaultInjection::Kind::nan:
+        stress_settings_.inject_nan_stress = static_cast<std::ptrdiff_t>(p);
+        break;
+      case FaultInjection::Kind::nan_velocity:
+        particles_.v[p].setConstant(std::numeric_limits<double>::quiet_NaN());
+        break;
+      case FaultInjection::Kind::outside:
+        particles_.x[p](0) = scene_.grid.upper(0) + grid_.spacing()(0);
+        break;
+      case FaultInjection::Kind::jacobian:
+        particles_.state[p].F.col(0) *= -1.0;
+        break;
+      case FaultInjection::Kind::sigterm:
+      case FaultInjection::Kind::sigint:
+        break;
+    }
+  }
+}
+
+void Simulation::check_particles() const {
+  // Every particle inside the grid with a finite velocity: what the stencils and the scatter
+  // need. grid_to_particles checks the same at the end of every step, so in a run this finds
+  // only what came in from outside the step (an injected fault).
+  const Particles& P = particles_;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
+  const Vec3 lower = scene_.grid.lower, upper = scene_.grid.upper;
+  const auto bad = [&](std::ptrdiff_t p) {
+    return !((P.x[p].array() >= lower.array()).all() && (P.x[p].array() <= upper.array()).all() &&
+             P.v[p].allFinite());
+  };
+  bool any = false;
+#pragma omp parallel for schedule(static) reduction(|| : any) num_threads(grid_.threads())
+  for (std::ptrdiff_t p = 0; p < n; ++p) any = any || bad(p);
+  if (!any) return;
+  for (std::ptrdiff_t p = 0; p < n; ++p) {
+    if (!bad(p)) continue;
+    const bool inside =
+        (P.x[p].array() >= lower.array()).all() && (P.x[p].array() <= upper.array()).all();
+    const Failure f = inside ? Failure{std::size_t(p), "velocity",
+                                       "not finite at the start of the step", std::nullopt}
+                             : Failure{std::size_t(p), "position",
+                                       "outside the grid at the start of the step", std::nullopt};
+    throw SolverFailure(describe(f, steps_ + 1, time_));
+  }
+}
+
+std::optional<FaultInjection> parse_fault_injection(const std::string& text) {
+  using Kind = FaultInjection::Kind;
+  static const std::pair<const char*, Kind> kinds[] = {
+      {"nan", Kind::nan},         {"nan_velocity", Kind::nan_velocity},
+      {"outside", Kind::outside}, {"jacobian", Kind::jacobian},
+      {"sigterm", Kind::sigterm}, {"sigint", Kind::sigint}};
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t colon = text.find(':', start);
+    parts.push_back(text.substr(start, colon - start));
+    if (colon == std::string::npos) break;
+    start = colon + 1;
+  }
+  FaultInjection f;
+  bool known = false;
+  for (const auto& [name, kind] : kinds) {
+    if (parts[0] == name) {
+      f.kind = kind;
+      known = true;
+    }
+  }
+  const bool signal = f.kind == Kind::sigterm || f.kind == Kind::sigint;
+  if (!known || parts.size() != (signal ? 2u : 3u)) return std::nullopt;
+  const auto whole = [](const std::string& s, long long& v) {
+    if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 15)
+      return false;
+    v = std::stoll(s);
+    return true;
+  };
+  long long step = 0, particle = 0;
+  if (!whole(parts[1], step) || step < 1) return std::nullopt;
+  if (!signal && !whole(parts[2], particle)) return std::nullopt;
+  f.step = static_cast<long>(step);
+  f.particle = static_cast<std::size_t>(particle);
+  return f;
+}
+
 namespace {
+
+namespace fs = std::filesystem;
 
 Json vec_json(const Vec3& v) {
   return Json::array({v(0), v(1), v(2)});
@@ -244,10 +379,9 @@ Json row_json(const Ledger& ledger) {
   return j;
 }
 
-}  // namespace
-
-Json check_report(const Scene& scene, int threads) {
-  const Particles P = seed_particles(scene);
+// Per object counts, mass and volumes, and the memory estimate with the seeded count: what
+// `mpm check` and summary.json share.
+Json particle_report(const Scene& scene, const Particles& P, int threads) {
   Json objects = Json::object();
   double total_mass = 0.0;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
@@ -271,21 +405,16 @@ Json check_report(const Scene& scene, int threads) {
         {"kinetic_energy [J]", 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
     total_mass += mass;
   }
-  const double dt =
-      std::min(stable_time_step(scene.grid.spacing(), max_signal_speed(P), scene.time.multiplier),
-               scene.time.max_dt);
-  const Grid g(scene.grid, std::max(threads, 1), scene.field_count(),
-               scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction);
-  const double particle_bytes = double(P.size()) * Particles::bytes_per_particle();
+  const MemoryEstimate memory = estimate_memory(scene, threads, P.size());
   Json report = {{"objects", objects},
                  {"particles", P.size()},
                  {"mass [kg]", total_mass},
-                 {"stable_dt [s]", dt},
-                 {"estimated_steps", std::ceil(scene.time.max_time / dt)},
-                 {"memory [MB]", (particle_bytes + double(g.bytes())) / 1e6},
+                 {"memory [MB]", memory.total() / 1e6},
+                 {"memory_estimate", memory.json()},
                  {"memory_per_particle [B]", Particles::bytes_per_particle()},
-                 {"velocity_fields", g.fields()},
+                 {"velocity_fields", scene.field_count()},
                  {"threads", threads}};
+  if (const auto available = available_memory()) report["available_memory [MB]"] = *available / 1e6;
   if (!scene.output.gauges.empty()) {
     Json gauges = Json::object();
     for (const GaugeSpec& gs : scene.output.gauges) gauges[gs.name] = {{"particles", gs.particles}};
@@ -294,18 +423,71 @@ Json check_report(const Scene& scene, int threads) {
   return report;
 }
 
-int run(const Scene& scene, const RunOptions& options) {
-  namespace fs = std::filesystem;
-  const std::string dir = options.out_dir.empty() ? scene.output.directory : options.out_dir;
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError({file.string() + ": cannot open"});
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool is_signal(const FaultInjection& f) {
+  return f.kind == FaultInjection::Kind::sigterm || f.kind == FaultInjection::Kind::sigint;
+}
+
+// The step loop of run() and restart(): `resume` continues from dir/checkpoint.bin.
+int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume) {
+  const int threads = run_threads(options.threads);
+  // Refuse before anything is allocated or written.
+  if (const std::string refusal = memory_refusal(scene, threads); !refusal.empty()) {
+    std::cerr << "mpm: " << refusal << '\n';
+    return kExitMemory;
+  }
   fs::create_directories(dir);
-  write_file_atomically(fs::path(dir) / "scene.json",
-                        [&](std::ostream& o) { o << scene.resolved.dump(2) << '\n'; });
-  // Wall time from the start of the step loop (as summary.json; restarted after the first outputs).
+  const std::string scene_text = scene.resolved.dump(2) + '\n';
+  const std::uint64_t scene_hash = fnv1a(scene_text.data(), scene_text.size());
+  if (!resume) {
+    write_file_atomically(dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
+  }
+  // Wall time of the step loop, over every run of a restarted one (restarted after the first
+  // outputs, as summary.json's).
+  double wall_before = 0.0;
   auto t0 = std::chrono::steady_clock::now();
   const auto wall_time = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return wall_before +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
-  Simulation sim(scene, options.threads);
+  Simulation sim(scene, threads);
+  if (resume && sim.threads() != threads) {
+    throw InputError({(dir / kCheckpointFile).string() + ": needs " + std::to_string(threads) +
+                      " threads, this process gets " + std::to_string(sim.threads())});
+  }
+  for (const FaultInjection& f : options.faults) {
+    if (is_signal(f)) continue;
+    if (f.particle >= sim.particles().size()) {
+      std::cerr << "mpm: --inject-fault: particle " << f.particle << " out of range ("
+                << sim.particles().size() << " particles)\n";
+      return 1;
+    }
+    sim.inject(f);
+  }
+  // Gauge and crater particle sets from the particles as seeded (nothing when the scene has none).
+  const Gauges gauges(scene, sim.particles());
+  Observables observables(scene, sim.particles());
+  RunState resumed;
+  if (resume) {
+    resumed = read_checkpoint(dir / kCheckpointFile, sim);
+    std::cerr << "mpm: restarting " << dir.string() << " from step " << sim.steps() << ", time "
+              << sim.time() << " s (" << sim.threads() << " threads)\n";
+    observables.restore(resumed.observables);
+    wall_before = resumed.wall_time;
+  }
+  const bool fail_particle =
+      scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle;
+  std::vector<std::string> columns = gauges.columns();
+  if (fail_particle) columns.push_back("faulted_particles [-]");
+  std::optional<std::pair<long, double>> checkpointed;  // step and time of the last checkpoint
+  if (resume) checkpointed = std::pair{sim.steps(), sim.time()};
   // status.json: where the run is (rewritten at every history row) and how it ended.
   const auto write_status = [&](const std::string& status, const std::string& message) {
     Json j = {{"status", status},
@@ -313,37 +495,95 @@ int run(const Scene& scene, const RunOptions& options) {
               {"time [s]", sim.time()},
               {"energy_error [-]", sim.ledger().row().energy_error},
               {"wall_time [s]", wall_time()}};
+    if (fail_particle) j["faulted_particles"] = sim.faulted_particles();
+    if (checkpointed) {
+      j["checkpoint"] = {{"file", kCheckpointFile},
+                         {"step", checkpointed->first},
+                         {"time [s]", checkpointed->second}};
+    }
     if (status != "running") j["message"] = message;
-    write_file_atomically(fs::path(dir) / "status.json",
-                          [&](std::ostream& o) { o << j.dump(2) << '\n'; });
+    write_file_atomically(dir / "status.json", [&](std::ostream& o) { o << j.dump(2) << '\n'; });
   };
-  // Gauge and crater particle sets from the particles as seeded (nothing when the scene has none).
-  const Gauges gauges(scene, sim.particles());
-  Observables observables(scene, sim.particles());
-  HistoryCsv history((fs::path(dir) / "history.csv").string(), sim.ledger(), gauges.columns());
+  const std::string history_file = (dir / "history.csv").string();
+  std::optional<HistoryCsv> history;
+  if (resume) {
+    history.emplace(history_file, sim.ledger(), columns, resumed.history_bytes,
+                    resumed.history_rows);
+  } else {
+    history.emplace(history_file, sim.ledger(), columns);
+  }
   const auto write_history = [&] {
     observables.sample(sim.particles(), sim.time());  // max pressure: sampled at history rows
-    history.write(sim.ledger().row(), gauges.read(sim.particles()));
+    std::vector<double> extra = gauges.read(sim.particles());
+    if (fail_particle) extra.push_back(double(sim.faulted_particles()));
+    history->write(sim.ledger().row(), extra);
     write_status("running", "");
   };
   std::optional<SnapshotWriter> snapshots;
-  if (scene.output.snapshots) snapshots.emplace(dir, scene.output.fields);
+  if (scene.output.snapshots) snapshots.emplace(dir.string(), scene.output.fields);
+  if (snapshots && resume) snapshots->restore(resumed.snapshots);
   const auto write_outputs = [&] {
     write_history();
     if (snapshots) snapshots->write(sim.particles(), sim.steps(), sim.time());
   };
-  write_outputs();
+  if (!resume) write_outputs();
+  double next_output = resume ? resumed.next_output : scene.output.interval;
+  const auto checkpoint = [&] {
+    RunState state{next_output,
+                   history->bytes(),
+                   history->rows(),
+                   observables.state(),
+                   snapshots ? snapshots->entries() : decltype(RunState::snapshots){},
+                   wall_time()};
+    write_checkpoint(dir / kCheckpointFile, sim, state, scene_hash);
+    checkpointed = std::pair{sim.steps(), sim.time()};
+  };
+  const long every = scene.output.checkpoint_interval_steps;
+  const InterruptHandlers handlers(
+      options.handle_signals ||
+      std::any_of(options.faults.begin(), options.faults.end(), is_signal));
   t0 = std::chrono::steady_clock::now();
   auto last_progress = t0;
-  double next_output = scene.output.interval;
   std::string status = "completed", message;
   int code = 0;
+  long reported_faults = 0;
+  constexpr long kFaultLines = 20;  // faulted particles printed on stderr, then only counted
   try {
     while (!sim.finished()) {
       sim.step();
+      for (const Failure& f : sim.last_faults()) {
+        if (reported_faults < kFaultLines) {
+          std::cerr << (options.progress ? "\n" : "")
+                    << "mpm: warning: " << sim.describe(f, sim.steps(), sim.time())
+                    << ": particle flagged failed (physics.on_numerical_fault = fail_particle: "
+                       "zero stress, no further update); the run goes on\n";
+        } else if (reported_faults == kFaultLines) {
+          std::cerr << "mpm: warning: further faulted particles are counted, not printed\n";
+        }
+        ++reported_faults;
+      }
       if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
         write_outputs();
         while (next_output <= sim.time() * (1.0 + 1e-12)) next_output += scene.output.interval;
+      }
+      if (every > 0 && sim.steps() % every == 0 && !sim.finished()) checkpoint();
+      for (const FaultInjection& f : options.faults) {
+        if (is_signal(f) && f.step == sim.steps()) {
+          raise_signal(f.kind == FaultInjection::Kind::sigint ? sigint_number() : sigterm_number());
+        }
+      }
+      if (const int signal = pending_interrupt(); signal != 0 && !sim.finished()) {
+        if (!checkpointed || checkpointed->first != sim.steps()) checkpoint();
+        std::ostringstream m;
+        m.precision(9);
+        m << "interrupted by " << signal_name(signal) << " after step " << sim.steps() << ", time "
+          << sim.time() << " s: checkpoint " << (dir / kCheckpointFile).string()
+          << "; continue with: mpm run --restart " << dir.string();
+        status = "interrupted";
+        message = m.str();
+        code = kExitSignalBase + signal;
+        std::cerr << (options.progress ? "\n" : "") << "mpm: " << message << '\n';
+        break;
       }
       const auto now = std::chrono::steady_clock::now();
       if (options.progress && now - last_progress > std::chrono::milliseconds(500)) {
@@ -357,7 +597,7 @@ int run(const Scene& scene, const RunOptions& options) {
   } catch (const SolverFailure& e) {
     status = "failed";
     message = e.what();
-    code = 3;
+    code = kExitRunFailed;
     std::cerr << (options.progress ? "\n" : "") << "mpm: run failed: " << message << '\n';
     if (snapshots) snapshots->write(sim.particles(), sim.steps() + 1, sim.time());
     write_history();
@@ -368,11 +608,14 @@ int run(const Scene& scene, const RunOptions& options) {
     }
     throw;
   }
-  if (options.progress) std::fprintf(stderr, "\n");
+  if (options.progress && status != "interrupted") std::fprintf(stderr, "\n");
+  if (sim.faulted_particles() > 0) {
+    std::cerr << "mpm: " << sim.faulted_particles()
+              << " particle(s) flagged failed by numerical faults (physics.on_numerical_fault = "
+                 "fail_particle)\n";
+  }
   const double wall = wall_time();
-  Json summary = check_report(scene, sim.threads());
-  summary.erase("estimated_steps");
-  summary.erase("stable_dt [s]");
+  Json summary = particle_report(scene, sim.particles(), sim.threads());
   summary["status"] = status;
   if (!message.empty()) summary["message"] = message;
   summary["steps"] = sim.steps();
@@ -380,10 +623,12 @@ int run(const Scene& scene, const RunOptions& options) {
   summary["wall_time [s]"] = wall;
   summary["particle_steps_per_second"] =
       wall > 0 ? double(sim.particles().size()) * double(sim.steps()) / wall : 0.0;
+  if (const auto peak = peak_resident_memory()) summary["peak_resident_memory [MB]"] = *peak / 1e6;
   summary["initial_energy [J]"] = sim.ledger().initial_energy();
   summary["velocity_fields"] = sim.grid().fields();
   summary["failed_particles"] = sim.failed_particles();
   summary["converted_particles"] = sim.converted_particles();
+  summary["faulted_particles"] = sim.faulted_particles();
   summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
   summary["final"] = row_json(sim.ledger());
   summary["observables"] = observables.summary(sim.particles());
@@ -392,10 +637,115 @@ int run(const Scene& scene, const RunOptions& options) {
                       {"momentum", "kg m/s"},
                       {"boundary_impulse", "N s"},
                       {"energy_error", "-"}};
-  write_file_atomically(fs::path(dir) / "summary.json",
+  write_file_atomically(dir / "summary.json",
                         [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
   write_status(status, message);  // last: a completed status.json means every file is in place
   return code;
+}
+
+}  // namespace
+
+int run_threads(int requested) {
+  return std::min(requested > 0 ? requested : omp_get_max_threads(), kMaxThreads);
+}
+
+std::string memory_refusal(const Scene& scene, int threads) {
+  const MemoryEstimate e = estimate_memory(scene, threads);
+  const std::optional<double> available = available_memory();
+  if (!available || e.total() <= *available) return {};
+  std::ostringstream m;
+  m.precision(4);
+  m << "refusing to start: estimated memory " << e.total() / 1e6 << " MB (particles "
+    << e.particle_bytes / 1e6 << " MB for " << e.particles
+    << " particles estimated from the geometry, grid " << e.grid_bytes / 1e6 << " MB for "
+    << scene.grid.cells[0] << " x " << scene.grid.cells[1] << " x " << scene.grid.cells[2]
+    << " cells, " << scene.field_count() << " velocity field(s) and " << threads
+    << " thread(s), output " << e.output_bytes / 1e6 << " MB, program " << e.program_bytes / 1e6
+    << " MB) exceeds the available memory " << *available / 1e6
+    << " MB (MemAvailable in /proc/meminfo, or the cgroup's memory.max); coarsen grid.cells or "
+       "objects.*.particles_per_cell, or use fewer --threads";
+  return m.str();
+}
+
+Json check_report(const Scene& scene, int threads) {
+  const Particles P = seed_particles(scene);
+  Json report = particle_report(scene, P, threads);
+  const double dt =
+      std::min(stable_time_step(scene.grid.spacing(), max_signal_speed(P), scene.time.multiplier),
+               scene.time.max_dt);
+  report["stable_dt [s]"] = dt;
+  report["estimated_steps"] = std::ceil(scene.time.max_time / dt);
+  return report;
+}
+
+int run(const Scene& scene, const RunOptions& options) {
+  return run_in(
+      scene, options,
+      options.out_dir.empty() ? fs::path(scene.output.directory) : fs::path(options.out_dir),
+      false);
+}
+
+int restart(const std::string& directory, const RunOptions& options) {
+  const fs::path dir(directory);
+  const fs::path file = dir / kCheckpointFile;
+  if (!fs::exists(file)) {
+    throw InputError({file.string() +
+                      ": no checkpoint (mpm run writes one every "
+                      "output.checkpoint_interval_steps steps and on SIGINT/SIGTERM)"});
+  }
+  CheckpointHeader header;
+  try {
+    header = read_checkpoint_header(file);
+  } catch (const CheckpointError& e) {
+    throw InputError({e.what()});
+  }
+  // The scene is the directory's scene.json, as the checkpointed run wrote it.
+  const fs::path scene_file = dir / "scene.json";
+  const std::string text = read_text(scene_file);
+  if (fnv1a(text.data(), text.size()) != header.scene_hash) {
+    throw InputError({scene_file.string() +
+                      ": changed since the checkpoint was written (it is not "
+                      "the scene of " +
+                      file.string() + ")"});
+  }
+  Json doc;
+  try {
+    doc = Json::parse(text);
+  } catch (const std::exception& e) {
+    throw InputError({scene_file.string() + ": " + e.what()});
+  }
+  // Material paths in scene.json are relative to the working directory of the run.
+  if (doc.contains("materials") && doc["materials"].is_object()) {
+    for (auto& item : doc["materials"].items()) {
+      Json& m = item.value();
+      if (!m.is_object() || !m.contains("file") || !m["file"].is_string()) continue;
+      const fs::path p(m["file"].get<std::string>());
+      if (p.is_relative())
+        m["file"] = (fs::path(header.working_directory) / p).lexically_normal().string();
+    }
+  }
+  const Scene scene = read_scene(doc, scene_file.string());
+  for (const std::string& w : scene.warnings) std::cerr << "mpm: warning: " << w << '\n';
+  RunOptions o = options;
+  if (options.threads <= 0) {
+    o.threads = header.threads;
+  } else if (options.threads != header.threads) {
+    std::cerr << "mpm: warning: --threads " << options.threads << " differs from the checkpoint's "
+              << header.threads
+              << " threads: the continued run is not bit-identical to an "
+                 "uninterrupted one (round-off differences, docs/mpm.md#threads-and-determinism)\n";
+  }
+  if (run_threads(o.threads) != o.threads) {
+    throw InputError(
+        {file.string() + ": written with " + std::to_string(header.threads) +
+         " threads, this process gets " + std::to_string(run_threads(o.threads)) +
+         " (results would not be bit-identical; --threads N overrides with a warning)"});
+  }
+  try {
+    return run_in(scene, o, dir, true);
+  } catch (const CheckpointError& e) {
+    throw InputError({e.what()});
+  }
 }
 
 }  // namespace impact::mpm

@@ -22,6 +22,28 @@ class SolverFailure : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+class CheckpointWriter;
+class CheckpointReader;
+
+/// A fault planted on purpose (mpm run --inject-fault KIND:STEP[:PARTICLE], a developer option;
+/// docs/mpm.md#fault-injection): shows that the detection and the clean stop work.
+struct FaultInjection {
+  enum class Kind {
+    nan,           ///< the stress PARTICLE's update returns in step STEP is replaced by NaN
+    nan_velocity,  ///< PARTICLE's velocity is set to NaN at the start of step STEP
+    outside,       ///< PARTICLE is moved one cell beyond the grid's x+ face at the start of STEP
+    jacobian,      ///< PARTICLE's F gets det F < 0 (first column negated) at the start of STEP
+    sigterm,       ///< SIGTERM is raised after step STEP (mpm run's handler: checkpoint, stop)
+    sigint,        ///< SIGINT likewise
+  };
+  Kind kind = Kind::nan;
+  long step = 1;
+  std::size_t particle = 0;
+};
+/// Parses "nan:STEP:PARTICLE", "nan_velocity:..", "outside:..", "jacobian:..", "sigterm:STEP",
+/// "sigint:STEP" (STEP >= 1); nullopt when malformed.
+std::optional<FaultInjection> parse_fault_injection(const std::string& text);
+
 /// Wall time of each phase of the last step [s] (omp_get_wtime; for the benchmark's profile).
 struct PhaseTimes {
   double particles_to_grid = 0, grid_update = 0, grid_to_particles = 0, remap = 0, stress = 0;
@@ -65,6 +87,22 @@ class Simulation {
   int threads() const { return grid_.threads(); }
   long failed_particles() const { return failed_; }        ///< failures so far
   long converted_particles() const { return converted_; }  ///< moved to a companion field
+  /// Particles flagged by physics.on_numerical_fault = fail_particle so far.
+  long faulted_particles() const { return faulted_; }
+  /// The particles flagged in the last step, and why (ascending index; fail_particle only).
+  const std::vector<Failure>& last_faults() const { return last_.stress.faulted; }
+  /// "step N, time T s: particle P (material, object, position, velocity, stress, eps_p, T, J,
+  /// damage): field: message" for a failure in step N ending at time T.
+  std::string describe(const Failure& f, long step, double time) const;
+
+  /// Plants a fault (nan, nan_velocity, outside, jacobian) for a later step; throws
+  /// std::invalid_argument for a particle index out of range or a signal kind.
+  void inject(const FaultInjection& fault);
+
+  /// Everything the next steps depend on (mpm/run/checkpoint.cpp): load() on a Simulation built
+  /// from the same scene with the same thread count continues bit for bit.
+  void save(CheckpointWriter& out) const;
+  void load(CheckpointReader& in);
 
  private:
   Scene scene_;
@@ -79,7 +117,12 @@ class Simulation {
   struct SinkColumns {
     int viscous = -1, contact = -1, friction = -1, eroded = -1;
   } sinks_;
-  long failed_ = 0, converted_ = 0;
+  long failed_ = 0, converted_ = 0, faulted_ = 0;
+  std::vector<FaultInjection> injections_;
+  /// The particle loops' start-of-step check (positions inside the grid, velocities finite).
+  void check_particles() const;
+  /// Applies the injections of the coming step.
+  void apply_injections();
   StepTotals last_;
   double time_ = 0.0;
   long steps_ = 0;
@@ -88,13 +131,39 @@ class Simulation {
 
 struct RunOptions {
   std::string out_dir;    ///< empty: the scene's output.directory
-  int threads = 0;        ///< <= 0: OpenMP default
+  int threads = 0;        ///< <= 0: OpenMP default (a restart: the checkpoint's)
   bool progress = false;  ///< a progress line on stderr
+  /// SIGINT/SIGTERM write a checkpoint and stop the run cleanly (mpm run; not mpm study).
+  bool handle_signals = false;
+  std::vector<FaultInjection> faults;  ///< --inject-fault
 };
 
-/// Runs a scene to its end time writing history.csv, snapshots, summary.json and the resolved
-/// scene. Returns 0, or 3 after a SolverFailure (reported on stderr, final snapshot written).
+/// Exit codes of `mpm run` (docs/mpm.md#exit-codes); 1 is a usage error, 2 bad input (also a
+/// restart that is refused), 128 + N a stop by signal N (SIGINT 130, SIGTERM 143).
+inline constexpr int kExitRunFailed = 3;  ///< a numerical fault or another failure
+inline constexpr int kExitMemory = 4;     ///< the memory estimate exceeds what is available
+inline constexpr int kExitSignalBase = 128;
+
+/// Runs a scene to its end time writing history.csv, snapshots, summary.json, the resolved scene
+/// and (output.checkpoint_interval_steps, or on SIGINT/SIGTERM with handle_signals) checkpoints.
+/// Returns 0; kExitRunFailed after a SolverFailure (reported on stderr, final snapshot written,
+/// status.json "failed"); kExitMemory when the memory estimate exceeds the available memory
+/// (nothing is allocated or written); 128 + signal after a checkpoint on SIGINT/SIGTERM
+/// (status.json "interrupted").
 int run(const Scene& scene, const RunOptions& options);
+
+/// Continues the run in `dir` from dir/checkpoint.bin with dir/scene.json (mpm run --restart
+/// DIR), writing into `dir`; options.out_dir is ignored. Throws InputError when the checkpoint is
+/// missing, of another format version, corrupt, or does not belong to dir/scene.json, or when the
+/// thread count it gets differs from the checkpoint's without options.threads asking for it
+/// (then a warning: not bit-identical). Returns as run().
+int restart(const std::string& dir, const RunOptions& options);
+
+/// The thread count a run gets: `requested` if > 0, else OpenMP's default (at most kMaxThreads).
+int run_threads(int requested);
+/// Why `mpm run` must not start this scene with `threads` threads (the memory estimate exceeds
+/// the available memory: both in the message), or empty. Allocates nothing.
+std::string memory_refusal(const Scene& scene, int threads);
 
 /// What `mpm check` prints after the resolved scene: per-object counts, mass, particle volume
 /// against the exact geometric volume, estimated steps and memory.

@@ -65,8 +65,38 @@ void InputProblems::add(std::string_view key_path, std::string_view message) {
   problems_.push_back(file_ + ": " + where + ": " + std::string(message));
 }
 
+void InputProblems::warn(std::string_view key_path, std::string_view message) {
+  std::string where = key_path.empty() ? "/" : std::string(key_path);
+  warnings_.push_back(file_ + ": " + where + ": " + std::string(message));
+}
+
+void InputProblems::check_units(std::string_view key_path, Quantity q, double value) {
+  if (auto hint = unit_hint(q, value)) warn(key_path, *hint + "; the value is used as given");
+}
+
+void InputProblems::add_nested(std::string_view key_path, std::string_view prefix,
+                               const InputError& error) {
+  static constexpr std::string_view kWarning = "warning: ";
+  for (const auto& p : error.problems()) {
+    if (p.rfind(kWarning, 0) == 0) {
+      warn(key_path, std::string(prefix) + p.substr(kWarning.size()));
+    } else {
+      add(key_path, std::string(prefix) + p);
+    }
+  }
+}
+
+void InputProblems::warn_nested(std::string_view key_path, std::string_view prefix,
+                                const std::vector<std::string>& warnings) {
+  for (const auto& w : warnings) warn(key_path, std::string(prefix) + w);
+}
+
 void InputProblems::throw_if_any() const {
-  if (!problems_.empty()) throw InputError(problems_);
+  if (problems_.empty()) return;
+  // The warnings go with the problems: a unit slip often explains an error elsewhere.
+  std::vector<std::string> all = problems_;
+  for (const auto& w : warnings_) all.push_back("warning: " + w);
+  throw InputError(all);
 }
 
 bool Range::contains(double v) const {
@@ -105,6 +135,25 @@ bool JsonReader::has(std::string_view key) const {
 }
 
 double JsonReader::number(std::string_view key, Range range, std::string_view meaning) {
+  return read_number(key, range, meaning, std::nullopt);
+}
+
+double JsonReader::quantity(std::string_view key, Quantity q, Range range,
+                            std::string_view meaning) {
+  return read_number(key, range, meaning, q);
+}
+
+double JsonReader::quantity_or(std::string_view key, double fallback, Quantity q, Range range,
+                               std::string_view meaning) {
+  if (!has(key)) {
+    used_.insert(std::string(key));
+    return fallback;
+  }
+  return quantity(key, q, range, meaning);
+}
+
+double JsonReader::read_number(std::string_view key, Range range, std::string_view meaning,
+                               std::optional<Quantity> q) {
   const Json* v = find(key);
   if (v == nullptr) {
     problems_->add(key_path(key),
@@ -119,9 +168,14 @@ double JsonReader::number(std::string_view key, Range range, std::string_view me
   }
   const double x = v->get<double>();
   if (!range.contains(x)) {
-    problems_->add(key_path(key), with_meaning("expected a number in " + range.describe() +
-                                                   ", got " + format_number(x),
-                                               meaning));
+    std::string message = with_meaning(
+        "expected a number in " + range.describe() + ", got " + format_number(x), meaning);
+    if (q) {
+      if (auto hint = unit_hint(*q, x)) message += ": " + *hint;
+    }
+    problems_->add(key_path(key), message);
+  } else if (q) {
+    problems_->check_units(key_path(key), *q, x);
   }
   return x;
 }
@@ -244,6 +298,10 @@ Json load_json_file(const std::string& file) {
   } catch (const Json::parse_error& e) {
     throw InputError({file + ": JSON syntax error at byte " + std::to_string(e.byte) + ": " +
                       std::string(e.what())});
+  } catch (const Json::out_of_range& e) {  // e.g. a number beyond the double range (1e999)
+    throw InputError({file + ": JSON number out of range: " + std::string(e.what())});
+  } catch (const std::ios_base::failure& e) {  // e.g. a directory: opens, then cannot be read
+    throw InputError({file + ": cannot read the file (" + std::string(e.what()) + ")"});
   }
 }
 

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "models/core/units_check.hpp"
+
 namespace impact {
 
 using Json = nlohmann::json;
@@ -27,19 +29,33 @@ class InputError : public std::runtime_error {
 };
 
 /// Problems found while reading one document; collected so the user sees all of them in one run.
+/// Warnings (admissible but suspicious values, e.g. a unit slip) are kept apart: they do not stop
+/// the reader, and the loader hands them to its caller, which prints them.
 class InputProblems {
  public:
   explicit InputProblems(std::string file) : file_(std::move(file)) {}
   void add(std::string_view key_path, std::string_view message);
+  /// Records "file: /key/path: message" as a warning.
+  void warn(std::string_view key_path, std::string_view message);
+  /// Warns when `value` of quantity `q` looks typed in another unit (units_check.hpp).
+  void check_units(std::string_view key_path, Quantity q, double value);
+  /// The problems and warnings of a document this one refers to (a material file), each
+  /// recorded at `key_path` (the referring key) as "prefix" + its own "file: /path: message".
+  void add_nested(std::string_view key_path, std::string_view prefix, const InputError& error);
+  void warn_nested(std::string_view key_path, std::string_view prefix,
+                   const std::vector<std::string>& warnings);
   bool empty() const { return problems_.empty(); }
   std::size_t count() const { return problems_.size(); }
-  /// Throws InputError with every problem collected so far; does nothing when there are none.
+  /// Throws InputError with every problem collected so far, followed by the warnings (each
+  /// "warning: file: ..."); does nothing when there are no problems.
   void throw_if_any() const;
   const std::string& file() const { return file_; }
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
   std::string file_;
   std::vector<std::string> problems_;
+  std::vector<std::string> warnings_;
 };
 
 /// An interval of admissible values, open or closed at each end.
@@ -75,6 +91,12 @@ class JsonReader {
 
   double number(std::string_view key, Range range, std::string_view meaning);
   double number_or(std::string_view key, double fallback, Range range, std::string_view meaning);
+  /// A number of quantity `q` in SI units: as number(), and units plausibility on top
+  /// (units_check.hpp): outside `range` (physically impossible) the problem also names the likely
+  /// unit; inside `range` but implausible for `q`, a warning names it and the value is used.
+  double quantity(std::string_view key, Quantity q, Range range, std::string_view meaning);
+  double quantity_or(std::string_view key, double fallback, Quantity q, Range range,
+                     std::string_view meaning);
   bool boolean_or(std::string_view key, bool fallback, std::string_view meaning);
   std::string string(std::string_view key, std::string_view meaning);
   std::string string_or(std::string_view key, std::string_view fallback, std::string_view meaning);
@@ -92,6 +114,8 @@ class JsonReader {
 
  private:
   const Json* find(std::string_view key);
+  double read_number(std::string_view key, Range range, std::string_view meaning,
+                     std::optional<Quantity> q);
   const Json* node_;
   std::string path_;
   InputProblems* problems_;
@@ -108,5 +132,12 @@ std::optional<std::string> nearest_name(std::string_view word,
 
 /// The empty object used as a stand-in where a child is missing.
 const Json& empty_json_object();
+
+/// A count read as a double (already range-checked, the problem recorded) as an int without
+/// undefined behaviour: NaN (a failed read) gives `lo`, values outside [lo, hi] are clamped.
+inline int clamped_int(double v, int lo, int hi) {
+  if (!(v >= lo)) return lo;
+  return v > hi ? hi : static_cast<int>(v);
+}
 
 }  // namespace impact

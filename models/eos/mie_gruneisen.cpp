@@ -75,7 +75,8 @@ MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, 
 MieGruneisenParams read_mie_gruneisen(JsonReader& r) {
   MieGruneisenParams p;
   r.ignore("type");
-  p.C0 = r.number("C0", Range::positive(), "Mie-Gruneisen bulk sound speed C0 [m/s]");
+  p.C0 = r.quantity("C0", Quantity::sound_speed, Range::positive(),
+                    "Mie-Gruneisen bulk sound speed C0 [m/s]");
   p.Gamma0 =
       r.number("Gamma0", Range::non_negative(), "Mie-Gruneisen Gruneisen coefficient Gamma0 [-]");
   // Physically S ~ 1-2 for metals; [0, 10] only rejects typos and sign errors.

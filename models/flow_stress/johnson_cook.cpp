@@ -66,8 +66,9 @@ JohnsonCookParams read_johnson_cook(JsonReader& r, double room_temperature,
                                     double melt_temperature) {
   JohnsonCookParams p;
   r.ignore("type");
-  p.A = r.number("A", Range::positive(), "Johnson-Cook yield stress A [Pa]");
-  p.B = r.number("B", Range::non_negative(), "Johnson-Cook hardening modulus B [Pa]");
+  p.A = r.quantity("A", Quantity::stress, Range::positive(), "Johnson-Cook yield stress A [Pa]");
+  p.B = r.quantity("B", Quantity::stress, Range::non_negative(),
+                   "Johnson-Cook hardening modulus B [Pa]");
   p.n = r.number("n", Range::open_closed(0.0, 1.5), "Johnson-Cook hardening exponent n [-]");
   p.C = r.number("C", Range::closed(0.0, 1.0), "Johnson-Cook strain-rate coefficient C [-]");
   p.m = r.number("m", Range::open(0.0, 10.0), "Johnson-Cook thermal-softening exponent m [-]");

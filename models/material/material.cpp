@@ -51,18 +51,25 @@ Material read_material(const Json& document, const std::string& file) {
   const std::string name = root.string("name", "material name");
   root.ignore("description");
   root.ignore("sources");
-  // Ranges are physical plausibility in SI units: they catch g/cm^3 or GPa typed by mistake.
-  p.density = root.number("density", Range::closed(100.0, 30000.0), "reference density [kg/m^3]");
-  p.shear_modulus = root.number("shear_modulus", Range::closed(1e6, 2e12), "shear modulus mu [Pa]");
-  p.bulk_modulus = root.number("bulk_modulus", Range::closed(1e6, 2e12), "bulk modulus K [Pa]");
-  p.specific_heat =
-      root.number("specific_heat", Range::closed(10.0, 1e5), "specific heat cp [J/(kg K)]");
+  // Ranges refuse what is physically impossible (no solid is denser than 30000 kg/m^3 or stiffer
+  // than 2e12 Pa); a possible but implausible SI value that looks typed in g/cm^3, GPa, MPa,
+  // J/(g K) or degC is read with a warning naming the likely unit (units_check.hpp): a foam's
+  // density of a few kg/m^3 must not be refused.
+  p.density = root.quantity("density", Quantity::density, Range::open_closed(0.0, 30000.0),
+                            "reference density [kg/m^3]");
+  p.shear_modulus = root.quantity("shear_modulus", Quantity::elastic_modulus,
+                                  Range::open_closed(0.0, 2e12), "shear modulus mu [Pa]");
+  p.bulk_modulus = root.quantity("bulk_modulus", Quantity::elastic_modulus,
+                                 Range::open_closed(0.0, 2e12), "bulk modulus K [Pa]");
+  p.specific_heat = root.quantity("specific_heat", Quantity::specific_heat,
+                                  Range::open_closed(0.0, 1e5), "specific heat cp [J/(kg K)]");
   const double conductivity = root.number_or("thermal_conductivity", 0.0, Range::non_negative(),
                                              "thermal conductivity [W/(m K)]");
-  p.room_temperature = root.number_or("room_temperature", 294.0, Range::open(0.0, 1e4),
-                                      "room (reference) temperature T_r [K]");
-  p.melt_temperature =
-      root.number("melt_temperature", Range::open(0.0, 1e4), "melting temperature T_m [K]");
+  p.room_temperature =
+      root.quantity_or("room_temperature", 294.0, Quantity::temperature, Range::open(0.0, 1e4),
+                       "room (reference) temperature T_r [K]");
+  p.melt_temperature = root.quantity("melt_temperature", Quantity::temperature,
+                                     Range::open(0.0, 1e4), "melting temperature T_m [K]");
   if (p.melt_temperature <= p.room_temperature) {
     problems.add("/melt_temperature", "expected a melting temperature above room_temperature");
   }
@@ -115,7 +122,7 @@ Material read_material(const Json& document, const std::string& file) {
   cm.reject_unknown_keys();
   root.reject_unknown_keys();
   problems.throw_if_any();
-  return Material{name, file, conductivity, ElasticPlastic(std::move(p))};
+  return Material{name, file, conductivity, ElasticPlastic(std::move(p)), problems.warnings()};
 }
 
 Material load_material(const std::string& file, const Json& overrides) {

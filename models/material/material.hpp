@@ -16,6 +16,9 @@ struct Material {
   std::string file;                   ///< where it was read from (for messages)
   double thermal_conductivity = 0.0;  ///< [W/(m K)]; carried for completeness, unused (adiabatic)
   ElasticPlastic model;
+  /// Admissible but suspicious values ("file: /key/path: why"), e.g. a likely unit slip; the
+  /// reader does not print them, the command line does.
+  std::vector<std::string> warnings;
 };
 
 /// Validates a material document; every problem is collected and thrown as one InputError whose

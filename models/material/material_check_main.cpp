@@ -1,5 +1,6 @@
 // material_check FILE [--set JSON]: validates a material file and prints the resolved parameters,
-// or every input problem (file, JSON key path, expectation) with exit code 2.
+// or every input problem (file, JSON key path, expectation) with exit code 2. Warnings (a likely
+// unit slip) go to stderr and do not change the exit code.
 #include <cstring>
 #include <iostream>
 #include <vector>
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   }
   try {
     const impact::Material m = impact::load_material(argv[1], patches);
+    for (const auto& w : m.warnings) std::cerr << "material_check: warning: " << w << '\n';
     std::cout << impact::to_json(m).dump(2) << '\n';
     return 0;
   } catch (const impact::InputError& e) {

@@ -1,13 +1,26 @@
-// mpm_benchmark [--quick] [--large]: particle-steps per second of the explicit step on the
-// report's sphere-cylinder geometry (data/scenes/sphere_cylinder/case01.json), for linear and GIMP,
-// elastic (A = 1e15) and Johnson-Cook plastic, at ~30 k particles (the deck's grid) and ~240 k
-// (grid refined 2x per axis; --large adds ~1.9 M at 4x), with 1 and 2 threads. Prints the time
-// per phase and memory per particle. Not a test: numbers go to docs/performance_mpm.md.
+// mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box]: what the explicit step costs on
+// the recommended sphere-cylinder scene (data/scenes/sphere_cylinder/recommended.json), measured
+// in process over a fixed number of steps after one warm-up step (no output writing):
+//   scaling   particle-steps per second for linear and GIMP at grid levels 1, 1.5, 2, 3 (the
+//             deck's 50 x 20 x 20 cells times the level per axis), 1 and 2 threads, with the share
+//             of each phase and the bytes per particle (particle arrays + grid / particles);
+//   features  each optional feature switched on alone on a minimal variant (everything optional
+//             off), then the recommended and the report's Case 1 set: time per particle-step,
+//             median of 3 repeats with the spread, and bytes per particle and per node;
+//   box       the report's box, the tight box around the bodies and a box twice as large per
+//             axis, each with the dense grid and with active blocks (grid/grid.hpp).
+// Not a test: the figures go to docs/performance.md (`./run.sh bench` draws them from the CSV
+// files written to DIR).
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "mpm/solver.hpp"
 
@@ -16,79 +29,286 @@ using namespace impact::mpm;
 
 namespace {
 
-struct Case {
-  const char* interpolation;
-  bool plastic;
-  int refine;
-  int threads;
+struct Measured {
+  double particles = 0, nodes = 0, active_nodes = 0, steps = 0;
+  double wall = 0;  ///< [s] over the timed steps
+  PhaseTimes phases;
+  double particle_bytes = 0, grid_bytes = 0;
+  int fields = 1;
 };
 
-void run_case(const Json& base, const std::string& file, const Case& c, int steps) {
-  Json doc = base;
-  doc["solver"]["interpolation"] = c.interpolation;
-  doc["solver"]["scheme"] = "musl";
-  doc["grid"]["cells"] = {50 * c.refine, 20 * c.refine, 20 * c.refine};
-  doc["output"]["snapshots"] = false;
-  Json cm = {{"damage", {{"type", "none"}}}, {"erosion", {{"algorithm", "none"}}}};
-  if (!c.plastic) cm["flow_stress"] = {{"A", 1e15}};
-  doc["materials"]["al6061_t6"]["overrides"] = {{"constitutive_model", cm}};
+template <class T>
+double bytes_of(const std::vector<T>& v) {
+  return double(v.capacity() * sizeof(T));
+}
+
+double particle_bytes(const Particles& P) {
+  return bytes_of(P.x) + bytes_of(P.v) + bytes_of(P.mass) + bytes_of(P.volume0) +
+         bytes_of(P.volume) + bytes_of(P.L) + bytes_of(P.state) + bytes_of(P.wave_speed) +
+         bytes_of(P.material) + bytes_of(P.object) + bytes_of(P.field) + bytes_of(P.q) +
+         bytes_of(P.fault);
+}
+
+Measured measure(const Json& doc, const std::string& file, int threads, int steps) {
   const Scene scene = read_scene(doc, file);
-  Simulation sim(scene, c.threads);
-  sim.step();  // warm-up (first touch of the grid buffers)
-  PhaseTimes total;
+  Simulation sim(scene, threads);
+  sim.step();  // warm-up: first touch of the grid buffers and the stencils
+  Measured m;
   const double t0 = omp_get_wtime();
-  for (int s = 0; s < steps; ++s) {
+  for (int s = 0; s < steps && !sim.finished(); ++s) {
     const PhaseTimes& p = sim.step().seconds;
-    total.particles_to_grid += p.particles_to_grid;
-    total.grid_update += p.grid_update;
-    total.grid_to_particles += p.grid_to_particles;
-    total.remap += p.remap;
-    total.stress += p.stress;
+    m.phases.particles_to_grid += p.particles_to_grid;
+    m.phases.grid_update += p.grid_update;
+    m.phases.grid_to_particles += p.grid_to_particles;
+    m.phases.remap += p.remap;
+    m.phases.stress += p.stress;
+    m.steps += 1;
   }
-  const double wall = omp_get_wtime() - t0;
-  const double n = double(sim.particles().size());
-  const double rate = n * steps / wall;
-  const double bytes = Particles::bytes_per_particle() + double(sim.grid().bytes()) / n;
-  std::printf(
-      "%-6s %-7s %9.0f %2d | %8.3f M/s | P2G %4.1f%%  grid %4.1f%%  G2P %4.1f%%  remap+move "
-      "%4.1f%%  stress %4.1f%% | %5.0f B/particle\n",
-      c.interpolation, c.plastic ? "JC" : "elastic", n, c.threads, rate / 1e6,
-      100 * total.particles_to_grid / wall, 100 * total.grid_update / wall,
-      100 * total.grid_to_particles / wall, 100 * total.remap / wall, 100 * total.stress / wall,
-      bytes);
-  std::fflush(stdout);
+  m.wall = omp_get_wtime() - t0;
+  m.particles = double(sim.particles().size());
+  m.nodes = double(sim.grid().node_count());
+  m.active_nodes = double(sim.grid().active_nodes().size());
+  m.particle_bytes = particle_bytes(sim.particles());
+  m.grid_bytes = double(sim.grid().bytes());
+  m.fields = sim.grid().fields();
+  return m;
+}
+
+double per_particle_step(const Measured& m) { return m.wall / (m.particles * m.steps); }
+
+// The best of `repeats` runs (least disturbed by other load) and the spread max/min - 1.
+struct Repeated {
+  Measured best;
+  double spread = 0;
+};
+Repeated repeat(const Json& doc, const std::string& file, int threads, int steps, int repeats) {
+  Repeated r;
+  double lo = 1e300, hi = 0;
+  for (int i = 0; i < repeats; ++i) {
+    const Measured m = measure(doc, file, threads, steps);
+    const double t = per_particle_step(m);
+    if (t < lo) r.best = m;
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  r.spread = hi / lo - 1.0;
+  return r;
+}
+
+std::string phase_csv(const Measured& m) {
+  char b[160];
+  std::snprintf(b, sizeof b, "%.4f,%.4f,%.4f,%.4f,%.4f", m.phases.particles_to_grid / m.wall,
+                m.phases.grid_update / m.wall, m.phases.grid_to_particles / m.wall,
+                m.phases.remap / m.wall, m.phases.stress / m.wall);
+  return b;
+}
+constexpr const char* kPhaseHeader =
+    "share_p2g [-],share_grid_update [-],share_g2p [-],share_remap [-],share_stress [-]";
+
+std::ofstream open_csv(const std::string& dir, const char* name, const std::string& header) {
+  std::ofstream f;
+  if (dir.empty()) return f;
+  f.open(dir + "/" + name);
+  if (!f) throw std::runtime_error("cannot write " + dir + "/" + name);
+  f << header << '\n';
+  return f;
+}
+
+Json with_level(Json doc, double level) {
+  doc["grid"]["cells"] = {std::lround(50 * level), std::lround(20 * level),
+                          std::lround(20 * level)};
+  return doc;
+}
+
+void scaling(const Json& base, const std::string& file, bool quick, const std::string& dir) {
+  std::printf("\n== scaling: recommended.json, MUSL, particle-steps per second ==\n");
+  std::printf("shape  level particles th | M p-steps/s | P2G  grid  G2P  remap stress | B/particle\n");
+  std::ofstream csv = open_csv(
+      dir, "scaling.csv",
+      "interpolation,level [-],cells_x [-],particles [-],threads [-],steps [-],wall [s],"
+      "particle_steps_per_second [1/s],seconds_per_particle_step [s]," +
+          std::string(kPhaseHeader) + ",particle_bytes_per_particle [B],grid_bytes_per_particle [B]");
+  const std::vector<double> levels =
+      quick ? std::vector<double>{1.0} : std::vector<double>{1.0, 1.5, 2.0, 3.0};
+  for (double level : levels)
+    for (const char* interp : {"linear", "gimp"})
+      for (int threads : {1, 2}) {
+        Json doc = with_level(base, level);
+        doc["solver"]["interpolation"] = interp;
+        const double n_est = 30000.0 * level * level * level;
+        const int steps = quick ? 3 : std::max(4, int(std::lround(4e6 / n_est)));
+        const Measured m = measure(doc, file, threads, steps);
+        const double rate = 1.0 / per_particle_step(m);
+        std::printf("%-6s %5.2g %9.0f %2d | %8.3f    | %4.1f %4.1f %4.1f %4.1f %5.1f  | %5.0f + %4.0f\n",
+                    interp, level, m.particles, threads, rate / 1e6,
+                    100 * m.phases.particles_to_grid / m.wall, 100 * m.phases.grid_update / m.wall,
+                    100 * m.phases.grid_to_particles / m.wall, 100 * m.phases.remap / m.wall,
+                    100 * m.phases.stress / m.wall, m.particle_bytes / m.particles,
+                    m.grid_bytes / m.particles);
+        std::fflush(stdout);
+        if (csv)
+          csv << interp << ',' << level << ',' << std::lround(50 * level) << ',' << m.particles
+              << ',' << threads << ',' << m.steps << ',' << m.wall << ',' << rate << ','
+              << per_particle_step(m) << ',' << phase_csv(m) << ','
+              << m.particle_bytes / m.particles << ',' << m.grid_bytes / m.particles << '\n';
+      }
+}
+
+// Everything optional off: one velocity field, no viscosity, no conversion, and per material no
+// damage, TEPLA, melting, heating, stability check or erosion.
+Json minimal(Json doc) {
+  const Json off_model = {{"damage", {{"type", "none"}}},
+                          {"tepla", {{"enabled", false}}},
+                          {"melting", {{"do_melting", false}}},
+                          {"adiabatic_heating", {{"enabled", false}}},
+                          {"stability_check", {{"type", "none"}}},
+                          {"erosion", {{"algorithm", "none"}}}};
+  for (auto& [name, m] : doc["materials"].items())
+    m["overrides"]["constitutive_model"] = off_model;
+  doc["physics"] = {{"contact", {{"type", "single_velocity"}}},
+                    {"artificial_viscosity", {{"enabled", false}}},
+                    {"create_new_particles", false}};
+  return doc;
+}
+
+void features(const Json& base, const Json& case01, const std::string& file, bool quick,
+              const std::string& dir) {
+  std::printf("\n== features: one at a time on the minimal variant, GIMP/MUSL, 2 threads ==\n");
+  std::printf("%-34s | ns/p-step  spread | vs minimal | fields | B/particle  B/node\n", "variant");
+  std::ofstream csv = open_csv(
+      dir, "features.csv",
+      "variant,particles [-],fields [-],steps [-],seconds_per_particle_step [s],spread [-],"
+      "relative_to_minimal [-]," +
+          std::string(kPhaseHeader) + ",particle_bytes_per_particle [B],grid_bytes_per_node [B]");
+  const Json min = minimal(base);
+  auto model_patch = [&](const Json& cm) {
+    Json doc = min;
+    for (auto& [name, m] : doc["materials"].items())
+      m["overrides"]["constitutive_model"].merge_patch(cm);
+    return doc;
+  };
+  auto physics_patch = [&](const Json& ph) {
+    Json doc = min;
+    doc["physics"].merge_patch(ph);
+    return doc;
+  };
+  std::vector<std::pair<std::string, Json>> variants = {
+      {"minimal (gimp)", min},
+      {"minimal, linear interpolation", [&] {
+         Json d = min;
+         d["solver"]["interpolation"] = "linear";
+         return d;
+       }()},
+      {"+ artificial viscosity", physics_patch({{"artificial_viscosity", {{"enabled", true}}}})},
+      {"+ contact: approach (2 fields)", physics_patch({{"contact", {{"type", "approach"}}}})},
+      {"+ contact: friction (2 fields)",
+       physics_patch({{"contact", {{"type", "friction"}, {"mu", 1e-4}}}})},
+      {"+ friction + conversion (4 fields)",
+       physics_patch(
+           {{"contact", {{"type", "friction"}, {"mu", 1e-4}}}, {"create_new_particles", true}})},
+      {"+ JC damage, TEPLA, erosion KeepStress",
+       model_patch({{"damage", {{"type", "johnson_cook"}}},
+                    {"tepla", {{"enabled", true}}},
+                    {"erosion", {{"algorithm", "KeepStress"}}}})},
+      {"+ stability checks (drucker_becker)",
+       model_patch({{"stability_check", {{"type", "drucker_becker"}}}})},
+      {"+ melting and adiabatic heating", model_patch({{"melting", {{"do_melting", true}}},
+                                                       {"adiabatic_heating", {{"enabled", true}}}})},
+      {"recommended.json (as shipped)", base},
+      {"case01.json (the report's Case 1)", case01},
+  };
+  const int steps = quick ? 3 : 150, repeats = quick ? 1 : 3;
+  double t_min = 0;
+  for (const auto& [name, doc] : variants) {
+    const Repeated r = repeat(doc, file, 2, steps, repeats);
+    const Measured& m = r.best;
+    const double t = per_particle_step(m);
+    if (t_min == 0) t_min = t;
+    std::printf("%-34s | %8.1f  %5.1f%% | %9.3f | %6d | %9.0f  %6.0f\n", name.c_str(), t * 1e9,
+                100 * r.spread, t / t_min, m.fields, m.particle_bytes / m.particles,
+                m.grid_bytes / m.nodes);
+    std::fflush(stdout);
+    if (csv)
+      csv << '"' << name << "\"," << m.particles << ',' << m.fields << ',' << m.steps << ',' << t
+          << ',' << r.spread << ',' << t / t_min << ',' << phase_csv(m) << ','
+          << m.particle_bytes / m.particles << ',' << m.grid_bytes / m.nodes << '\n';
+  }
+}
+
+void box(const Json& base, const std::string& file, bool quick, const std::string& dir) {
+  std::printf("\n== box: report's, tight and 2x box, dense grid vs active blocks, 2 threads ==\n");
+  std::printf("%-22s %-13s | nodes    active | ns/p-step  spread | grid update share\n", "box",
+              "grid");
+  std::ofstream csv = open_csv(
+      dir, "box.csv",
+      "box,grid,nodes [-],active_nodes [-],particles [-],seconds_per_particle_step [s],spread [-]," +
+          std::string(kPhaseHeader));
+  // Same cell size (2.38 x 3.3 x 3.3 mm) in every box, so the particles are the same.
+  struct Box {
+    const char* name;
+    double lower[3], upper[3];
+    int cells[3];
+  };
+  const Box boxes[] = {
+      {"report (119x66x66 mm)", {0, -33e-3, -33e-3}, {119e-3, 33e-3, 33e-3}, {50, 20, 20}},
+      {"tight (114x66x66 mm)", {4.76e-3, -33e-3, -33e-3}, {119e-3, 33e-3, 33e-3}, {48, 20, 20}},
+      {"2x (238x132x132 mm)", {0, -66e-3, -66e-3}, {238e-3, 66e-3, 66e-3}, {100, 40, 40}},
+  };
+  const int steps = quick ? 3 : 150, repeats = quick ? 1 : 3;
+  for (const Box& b : boxes)
+    for (bool active : {false, true}) {
+      Json doc = base;
+      doc["grid"]["lower"] = {b.lower[0], b.lower[1], b.lower[2]};
+      doc["grid"]["upper"] = {b.upper[0], b.upper[1], b.upper[2]};
+      doc["grid"]["cells"] = {b.cells[0], b.cells[1], b.cells[2]};
+      doc["grid"]["active_blocks"] = active;
+      const Repeated r = repeat(doc, file, 2, steps, repeats);
+      const Measured& m = r.best;
+      std::printf("%-22s %-13s | %7.0f %7.0f | %8.1f  %5.1f%% | %5.1f%%\n", b.name,
+                  active ? "active blocks" : "dense", m.nodes, m.active_nodes,
+                  per_particle_step(m) * 1e9, 100 * r.spread,
+                  100 * m.phases.grid_update / m.wall);
+      std::fflush(stdout);
+      if (csv)
+        csv << '"' << b.name << "\"," << (active ? "active_blocks" : "dense") << ',' << m.nodes
+            << ',' << m.active_nodes << ',' << m.particles << ',' << per_particle_step(m) << ','
+            << r.spread << ',' << phase_csv(m) << '\n';
+    }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false, large = false;
+  bool quick = false;
+  std::string dir;
+  std::vector<std::string> sections;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--quick") == 0) {
+    const std::string a = argv[i];
+    if (a == "--quick") {
       quick = true;
-    } else if (std::strcmp(argv[i], "--large") == 0) {
-      large = true;
+    } else if (a == "--out" && i + 1 < argc) {
+      dir = argv[++i];
+    } else if (a == "scaling" || a == "features" || a == "box") {
+      sections.push_back(a);
     } else {
-      std::cerr << "usage: mpm_benchmark [--quick] [--large]\n";
+      std::cerr << "usage: mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box]\n";
       return 1;
     }
   }
-  const std::string file =
-      std::string(IMPACT_SOURCE_DIR) + "/data/scenes/sphere_cylinder/case01.json";
+  if (sections.empty()) sections = {"scaling", "features", "box"};
+  const std::string dir_scenes = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/sphere_cylinder/";
+  const std::string file = dir_scenes + "recommended.json";
   try {
     const Json base = load_scene_document(file);
-    std::printf("shape  model   particles th | throughput   | share of step wall time (MUSL)\n");
-    std::vector<int> refines = {1, 2};
-    if (large) refines.push_back(4);
-    for (int refine : refines) {
-      const int steps = quick ? 3 : (refine == 1 ? 40 : refine == 2 ? 10 : 3);
-      for (const char* interp : {"linear", "gimp"})
-        for (bool plastic : {false, true})
-          for (int threads : {1, 2})
-            run_case(base, file, {interp, plastic, refine, threads}, steps);
+    const Json case01 = load_scene_document(dir_scenes + "case01.json");
+    std::printf("mpm_benchmark: %d OpenMP threads available\n", omp_get_max_threads());
+    for (const std::string& s : sections) {
+      if (s == "scaling") scaling(base, file, quick, dir);
+      if (s == "features") features(base, case01, file, quick, dir);
+      if (s == "box") box(base, file, quick, dir);
     }
   } catch (const std::exception& e) {
-    std::cerr << e.what() << '\n';
+    std::cerr << "mpm_benchmark: " << e.what() << '\n';
     return 2;
   }
   return 0;

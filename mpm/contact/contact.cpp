@@ -38,12 +38,15 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   const int nt = G.threads();
   const bool friction = contact.type == ContactType::friction && G.has_nodal_stress();
   ContactTotals partial[kMaxThreads];
-  if (book_heat && !G.heat.empty()) std::fill(G.heat.begin(), G.heat.end(), 0.0);
+  if (book_heat && !G.heat.empty()) G.for_active_entries([&](int e) { G.heat[e] = 0.0; });
+  const std::vector<int>& nodes = G.active_nodes();  // heat is read at active nodes only
+  const int na_nodes = static_cast<int>(nodes.size());
 #pragma omp parallel num_threads(nt)
   {
     ContactTotals sum;
 #pragma omp for schedule(static)
-    for (int I = 0; I < nn; ++I) {
+    for (int a_node = 0; a_node < na_nodes; ++a_node) {
+      const int I = nodes[a_node];
       int active[kMaxFields];
       int na = 0;
       for (int f = 0; f < nf; ++f)

@@ -45,26 +45,61 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
   for (int i = 0; i < n; ++i)
     if (mark[i]) boundary_nodes_.push_back(i);
   free_increment.assign(boundary_nodes_.size() * fields_, Vec3::Zero());
-}
-
-void Grid::clear() {
-  const int n = entry_count();
-  const int nt = threads();
-  const bool stress = has_nodal_stress();
-#pragma omp parallel for schedule(static) num_threads(nt)
-  for (int i = 0; i < n; ++i) {
-    for (int t = 0; t < nt; ++t) buffers_[t][i] = NodeData{};
-    if (stress)
-      for (int t = 0; t < nt; ++t) stress_buffers_[t][i] = NodeStress{};
+  bx_ = (nx_ + kBlock - 1) / kBlock;
+  by_ = (ny_ + kBlock - 1) / kBlock;
+  bz_ = (nz_ + kBlock - 1) / kBlock;
+  if (dense()) {
+    active_.resize(n);
+    for (int i = 0; i < n; ++i) active_[i] = i;
+  } else {
+    marks_.assign(buffers_.size(), std::vector<char>(std::size_t(bx_) * by_ * bz_, 0));
+    active_.reserve(n);  // no allocation in a step
   }
 }
 
-void Grid::reduce() {
-  const int n = entry_count();
+void Grid::activate() {
+  if (dense()) return;
+  const int nb = bx_ * by_ * bz_;
+  std::vector<char>& m = marks_[0];
+  for (std::size_t t = 1; t < marks_.size(); ++t)
+    for (int b = 0; b < nb; ++b) {
+      m[b] |= marks_[t][b];
+      marks_[t][b] = 0;
+    }
+  // Ascending storage order (i, then j, then k): the serial sums over nodes (gravity, faces) run
+  // in the same order as on the dense grid, so both give the same bits.
+  active_.clear();
+  for (int a = 0; a < bx_; ++a)
+    for (int i = a * kBlock; i < std::min(nx_, (a + 1) * kBlock); ++i)
+      for (int b = 0; b < by_; ++b) {
+        const char* row = m.data() + std::size_t(a * by_ + b) * bz_;
+        if (std::find(row, row + bz_, 1) == row + bz_) continue;
+        for (int j = b * kBlock; j < std::min(ny_, (b + 1) * kBlock); ++j)
+          for (int c = 0; c < bz_; ++c) {
+            if (!row[c]) continue;
+            const int first = (i * ny_ + j) * nz_;
+            for (int k = c * kBlock; k < std::min(nz_, (c + 1) * kBlock); ++k)
+              active_.push_back(first + k);
+          }
+      }
+  std::fill(m.begin(), m.end(), 0);
+}
+
+void Grid::clear() {
   const int nt = threads();
   const bool stress = has_nodal_stress();
-#pragma omp parallel for schedule(static) num_threads(nt)
-  for (int i = 0; i < n; ++i) {
+  for_active_entries([&](int i) {
+    for (int t = 0; t < nt; ++t) buffers_[t][i] = NodeData{};
+    if (stress)
+      for (int t = 0; t < nt; ++t) stress_buffers_[t][i] = NodeStress{};
+    mass[i] = 0.0;
+  });
+}
+
+void Grid::reduce() {
+  const int nt = threads();
+  const bool stress = has_nodal_stress();
+  for_active_entries([&](int i) {
     NodeData& a = buffers_[0][i];
     for (int t = 1; t < nt; ++t) {  // fixed order: deterministic sums
       const NodeData& b = buffers_[t][i];
@@ -77,27 +112,25 @@ void Grid::reduce() {
         for (int c = 0; c < 6; ++c) stress_buffers_[0][i].s[c] += stress_buffers_[t][i].s[c];
     }
     mass[i] = a.mass;
-  }
+  });
 }
 
+// The re-map buffers are written at this step's stencil nodes only and read at active nodes:
+// zeroing the active nodes suffices (stale values elsewhere are never read).
 void Grid::clear_momentum() {
-  const int n = entry_count();
   const int nt = threads();
-  if (remap_buffers_.empty()) remap_buffers_.assign(nt, std::vector<Vec3>(n));
-#pragma omp parallel for schedule(static) num_threads(nt)
-  for (int i = 0; i < n; ++i) {
+  if (remap_buffers_.empty()) remap_buffers_.assign(nt, std::vector<Vec3>(entry_count()));
+  for_active_entries([&](int i) {
     for (int t = 0; t < nt; ++t) remap_buffers_[t][i].setZero();
-  }
+  });
 }
 
 void Grid::reduce_momentum() {
-  const int n = entry_count();
   const int nt = threads();
   if (nt == 1) return;
-#pragma omp parallel for schedule(static) num_threads(nt)
-  for (int i = 0; i < n; ++i) {
+  for_active_entries([&](int i) {
     for (int t = 1; t < nt; ++t) remap_buffers_[0][i] += remap_buffers_[t][i];
-  }
+  });
 }
 
 std::size_t Grid::bytes() const {
@@ -107,6 +140,8 @@ std::size_t Grid::bytes() const {
   b +=
       (mass.size() + heat.size()) * sizeof(double) +
       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size()) * sizeof(Vec3);
+  b += active_.capacity() * sizeof(int);
+  for (const auto& m : marks_) b += m.size();
   return b;
 }
 

@@ -6,6 +6,13 @@
 // Velocity fields (multi-material contact): every per-node array holds `fields` consecutive
 // copies of the node set; field f of node I is entry f * node_count() + I. With one field (the
 // default, and single_velocity contact) this is the ordinary single-field grid.
+// Active blocks (GridSpec::active_blocks): the node set is tiled into blocks of kBlock^3 = 8 nodes;
+// each step the blocks touched by a particle's stencil are marked and every grid loop runs over
+// the nodes of the marked blocks only (active_nodes(), ascending), so the grid work follows the
+// particles, not the box (a hollow cylinder's interior, empty space around the bodies). Storage
+// stays dense (one index per node: no hashing in the particle loops). Invariant: the mass-carrying
+// arrays (thread buffers, nodal stress, mass) are zero outside the active nodes; the velocity
+// arrays are read only at active nodes or weighted by their mass. Dense mode: every node active.
 #pragma once
 
 #include <array>
@@ -59,11 +66,47 @@ class Grid {
   /// Entries of every per-node array: fields() * node_count().
   int entry_count() const { return fields_ * node_count(); }
 
-  /// Zeroes every thread buffer (start of particles-to-grid).
+  /// Nodes per block edge (active blocks).
+  static constexpr int kBlock = 2;
+  /// The nodes the grid loops visit this step, ascending storage indices within one field.
+  const std::vector<int>& active_nodes() const { return active_; }
+  bool dense() const { return !spec_.active_blocks; }
+  /// Thread t's block marks (active blocks only): mark_stencil() sets them, activate() reads and
+  /// resets them.
+  char* block_marks(int t) { return marks_[t].data(); }
+  /// Marks the blocks holding nodes base..base+n-1 per axis (a particle's stencil).
+  void mark_stencil(char* marks, const std::array<int, 3>& base, int n) const {
+    int lo[3], hi[3];
+    for (int d = 0; d < 3; ++d) {  // storage coordinate = node index + 1 (ghost layer)
+      lo[d] = (base[d] + 1) / kBlock;
+      hi[d] = (base[d] + n) / kBlock;
+    }
+    for (int a = lo[0]; a <= hi[0]; ++a)
+      for (int b = lo[1]; b <= hi[1]; ++b)
+        for (int c = lo[2]; c <= hi[2]; ++c) marks[(a * by_ + b) * bz_ + c] = 1;
+  }
+  /// Rebuilds active_nodes() from the marks of every thread (active blocks; no-op when dense).
+  void activate();
+  /// body(e) for every entry e = f * node_count() + I of every field f and active node I, in
+  /// parallel over the nodes of each field.
+  template <class Body>
+  void for_active_entries(Body&& body) const {
+    const int na = static_cast<int>(active_.size());
+    const int nn = node_count();
+    for (int f = 0; f < fields_; ++f) {
+      const int* const nodes = active_.data();
+      const int offset = f * nn;
+#pragma omp parallel for schedule(static) num_threads(threads())
+      for (int a = 0; a < na; ++a) body(offset + nodes[a]);
+    }
+  }
+
+  /// Zeroes the mass-carrying arrays at the nodes active so far (start of particles-to-grid,
+  /// before the new blocks are marked): then they are zero everywhere.
   void clear();
   /// The scatter target of thread t.
   NodeData* buffer(int t) { return buffers_[t].data(); }
-  /// Sums thread buffers into buffer 0 in thread order (deterministic).
+  /// Sums thread buffers into buffer 0 in thread order (deterministic), at the active nodes.
   void reduce();
   /// Nodal stress scatter target of thread t (empty unless constructed with nodal_stress).
   NodeStress* stress_buffer(int t) { return stress_buffers_[t].data(); }
@@ -111,6 +154,9 @@ class Grid {
   std::vector<std::vector<Vec3>> remap_buffers_;
   std::vector<int> boundary_nodes_;
   std::array<bool, 6> constrained_{};
+  int bx_ = 0, by_ = 0, bz_ = 0;         ///< blocks per axis
+  std::vector<int> active_;              ///< active nodes, ascending
+  std::vector<std::vector<char>> marks_;  ///< per thread, per block (active blocks only)
 };
 
 }  // namespace impact::mpm

@@ -1,5 +1,7 @@
 #include "mpm/ledger/ledger.hpp"
 
+#include <stdexcept>
+
 namespace impact::mpm {
 
 int Ledger::add_sink_column(std::string name, bool in_balance) {
@@ -100,6 +102,40 @@ std::vector<double> Ledger::values(const LedgerRow& r, bool with_external) {
   }
   v.push_back(r.energy_error);
   return v;
+}
+
+Ledger::State Ledger::state() const {
+  return {time_,
+          kinetic_,
+          strain_,
+          boundary_work_,
+          external_work_,
+          boundary_dissipation_,
+          initial_energy_,
+          momentum_,
+          p0_,
+          boundary_impulse_,
+          external_impulse_,
+          sinks_};
+}
+
+void Ledger::restore(const State& s) {
+  if (s.sinks.size() != sinks_.size()) {
+    throw std::invalid_argument("ledger: " + std::to_string(s.sinks.size()) + " sink columns for " +
+                                std::to_string(sinks_.size()));
+  }
+  time_ = s.time;
+  kinetic_ = s.kinetic;
+  strain_ = s.strain;
+  boundary_work_ = s.boundary_work;
+  external_work_ = s.external_work;
+  boundary_dissipation_ = s.boundary_dissipation;
+  initial_energy_ = s.initial_energy;
+  momentum_ = s.momentum;
+  p0_ = s.p0;
+  boundary_impulse_ = s.boundary_impulse;
+  external_impulse_ = s.external_impulse;
+  sinks_ = s.sinks;
 }
 
 }  // namespace impact::mpm

@@ -72,6 +72,19 @@ class Ledger {
   static std::vector<double> values(const LedgerRow& r, bool with_external);
   bool with_external() const { return with_external_; }
 
+  /// Every accumulator, for a checkpoint (mpm/run/checkpoint.cpp): restore() on a ledger with the
+  /// same columns continues bit for bit.
+  struct State {
+    double time = 0.0, kinetic = 0.0, strain = 0.0, boundary_work = 0.0, external_work = 0.0;
+    double boundary_dissipation = 0.0, initial_energy = 0.0;
+    Vec3 momentum = Vec3::Zero(), p0 = Vec3::Zero(), boundary_impulse = Vec3::Zero();
+    Vec3 external_impulse = Vec3::Zero();
+    std::vector<double> sinks;
+  };
+  State state() const;
+  /// Throws std::invalid_argument when the number of sink columns differs.
+  void restore(const State& s);
+
  private:
   bool with_external_;
   double time_ = 0.0, kinetic_ = 0.0, strain_ = 0.0, boundary_work_ = 0.0, external_work_ = 0.0;

@@ -1,5 +1,6 @@
 #include "mpm/output/observables.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -94,8 +95,8 @@ Crater Observables::crater(const Particles& P) const {
   }
   if (face_.empty()) c.depth = 0.0;
   if (c.displaced_particles == 0) return c;
-  c.axis_y = y / double(c.displaced_particles);
-  c.axis_z = z / double(c.displaced_particles);
+  c.axis_y = crater_->axis ? (*crater_->axis)[0] : y / double(c.displaced_particles);
+  c.axis_z = crater_->axis ? (*crater_->axis)[1] : z / double(c.displaced_particles);
   double r2 = 0.0;
   for (std::size_t i = 0; i < face_.size(); ++i) {
     const Vec3& x = P.x[face_[i]];
@@ -139,6 +140,22 @@ Json Observables::summary(const Particles& P) const {
                    {"displaced_particles", c.displaced_particles}};
   }
   return j;
+}
+
+std::vector<double> Observables::state() const {
+  std::vector<double> s = max_pressure_;
+  s.insert(s.end(), max_pressure_time_.begin(), max_pressure_time_.end());
+  return s;
+}
+
+void Observables::restore(const std::vector<double>& state) {
+  const std::size_t n = max_pressure_.size();
+  if (state.size() != 2 * n) {
+    throw std::invalid_argument("observables: " + std::to_string(state.size()) + " values for " +
+                                std::to_string(n) + " objects");
+  }
+  std::copy(state.begin(), state.begin() + n, max_pressure_.begin());
+  std::copy(state.begin() + n, state.end(), max_pressure_time_.begin());
 }
 
 }  // namespace impact::mpm

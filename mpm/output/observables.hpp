@@ -75,6 +75,10 @@ class Observables {
   Crater crater(const Particles& P) const;
   /// summary.json "observables": {"objects": {name: {...}}, "crater": {...}}.
   Json summary(const Particles& P) const;
+  /// The running maxima (max pressure and its time per object), for a checkpoint.
+  std::vector<double> state() const;
+  /// Throws std::invalid_argument when the size does not match this scene's objects.
+  void restore(const std::vector<double>& state);
 
  private:
   std::vector<std::string> names_;

@@ -2,6 +2,7 @@
 // appended) VTU snapshots of the particles with a .pvd collection (ParaView), and summary.json.
 #pragma once
 
+#include <cstdint>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -16,13 +17,24 @@ class HistoryCsv {
   /// The ledger's columns, then `extra_columns` (the gauges, `name [unit]`) after energy_error.
   HistoryCsv(const std::string& path, const Ledger& ledger,
              const std::vector<std::string>& extra_columns = {});
+  /// Continues an existing file (mpm run --restart): keeps its first `bytes` (the header and the
+  /// rows a checkpoint recorded, `rows` of them), drops the rest (rows a killed run wrote after
+  /// the checkpoint) and appends. Throws std::runtime_error when the file is shorter, has another
+  /// header or another number of rows in those bytes.
+  HistoryCsv(const std::string& path, const Ledger& ledger,
+             const std::vector<std::string>& extra_columns, std::uint64_t bytes,
+             std::uint64_t rows);
   /// `extra`: one value per extra column.
   void write(const LedgerRow& row, const std::vector<double>& extra = {});
+  /// Bytes and rows written so far (header included in the bytes), for a checkpoint.
+  std::uint64_t bytes() const { return bytes_; }
+  std::uint64_t rows() const { return rows_; }
 
  private:
   std::ofstream out_;
   bool with_external_;
   std::size_t extra_columns_ = 0;
+  std::uint64_t bytes_ = 0, rows_ = 0;
 };
 
 class SnapshotWriter {
@@ -31,6 +43,11 @@ class SnapshotWriter {
   SnapshotWriter(const std::string& directory, std::vector<std::string> fields);
   /// Writes particles/step_NNNNNN.vtu and rewrites the .pvd so it is valid after every call.
   void write(const Particles& P, long step, double time);
+  /// The .pvd entries (time, file) so far, and a restart's: the collection continues from them.
+  const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
+  void restore(std::vector<std::pair<double, std::string>> entries) {
+    entries_ = std::move(entries);
+  }
 
  private:
   std::string directory_;

@@ -25,6 +25,10 @@ struct Particles {
   std::vector<std::uint16_t> field;     ///< velocity field (Scene::field_count; 0 if one field)
   /// Artificial bulk viscosity q of the last update [Pa] (report eq. 12); empty when it is off.
   std::vector<double> q;
+  /// 1: the particle's update had a numerical fault and physics.on_numerical_fault =
+  /// fail_particle flagged it (it keeps mass and momentum, has zero stress and no further
+  /// update); 0: none. Empty when the scene stops on a fault.
+  std::vector<std::uint8_t> fault;
 
   std::size_t size() const { return x.size(); }
   void reserve(std::size_t n);

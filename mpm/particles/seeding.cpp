@@ -45,10 +45,15 @@ void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, con
   const GridSpec& g = scene.grid;
   const Vec3 h = g.spacing();
   const SceneObject& o = scene.objects[oi];
+  // Clamped in double before the conversion: a box far outside the grid (a scene's gauge region
+  // of 1e300) would overflow int (undefined behaviour); NaN (inf / inf) gives an empty range.
+  const auto cell = [&](double x, int d) {
+    return x > 0.0 ? static_cast<int>(std::min(x, static_cast<double>(g.cells[d]))) : 0;
+  };
   std::array<int, 3> c0{}, c1{};
   for (int d = 0; d < 3; ++d) {
-    c0[d] = std::clamp(static_cast<int>(std::floor((lo(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
-    c1[d] = std::clamp(static_cast<int>(std::ceil((hi(d) - g.lower(d)) / h(d))), 0, g.cells[d]);
+    c0[d] = cell(std::floor((lo(d) - g.lower(d)) / h(d)), d);
+    c1[d] = cell(std::ceil((hi(d) - g.lower(d)) / h(d)), d);
   }
   const auto& ppc = o.particles_per_cell;
   for (int i = c0[0]; i < c1[0]; ++i)
@@ -74,6 +79,14 @@ void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, con
 Particles seed_particles(const Scene& scene) {
   Particles p;
   const Vec3 h = scene.grid.spacing();
+  // Count first and reserve exactly: push_back growth would leave up to twice the storage in
+  // place for the whole run (and the memory estimate of mpm check assumes exact sizes).
+  std::size_t count = 0;
+  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+    const auto [lo, hi] = bounds(scene.objects[oi].geometry);
+    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3&) { ++count; });
+  }
+  p.reserve(count);
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const SceneObject& o = scene.objects[oi];
     const ElasticPlastic& model = scene.materials[o.material].material.model;

@@ -28,8 +28,16 @@ void resolve_material_paths(Json& doc, const fs::path& dir) {
   }
 }
 
-Json load_with_extends(const std::string& file, int depth) {
-  if (depth > 16) throw InputError({file + ": /extends: chain longer than 16 (a cycle?)"});
+// "a.json -> b.json -> a.json": the files of an extends chain, as they were reached.
+std::string chain_text(const std::vector<std::string>& chain, const std::string& last) {
+  std::string text;
+  for (const auto& f : chain) text += f + " -> ";
+  return text + last;
+}
+
+// `chain` holds the files that extend this one (outermost first), to detect cycles.
+Json load_with_extends(const std::string& file, std::vector<std::string>& chain) {
+  constexpr std::size_t kMaxDepth = 16;
   Json doc = load_json_file(file);
   if (!doc.is_object()) throw InputError({file + ": expected a JSON object (a scene)"});
   const fs::path dir = fs::path(file).parent_path();
@@ -39,9 +47,27 @@ Json load_with_extends(const std::string& file, int depth) {
     throw InputError({file + ": /extends: expected a string (path of the base scene), got " +
                       doc["extends"].dump()});
   }
-  const fs::path base = fs::path(doc["extends"].get<std::string>());
-  Json merged =
-      load_with_extends((base.is_relative() ? dir / base : base).lexically_normal(), depth + 1);
+  const std::string named = doc["extends"].get<std::string>();
+  const fs::path base_path = fs::path(named).is_relative() ? dir / named : fs::path(named);
+  const std::string base = base_path.lexically_normal().string();
+  std::error_code ec;
+  if (!fs::is_regular_file(base_path, ec)) {
+    throw InputError({file + ": /extends: cannot open the base scene '" + named + "' (looked for " +
+                      base + ", relative to the file that names it)"});
+  }
+  chain.push_back(file);
+  const fs::path canonical_base = fs::weakly_canonical(base_path, ec);
+  for (const auto& f : chain) {
+    if (fs::weakly_canonical(f, ec) == canonical_base) {
+      throw InputError({file + ": /extends: circular extends: " + chain_text(chain, base)});
+    }
+  }
+  if (chain.size() > kMaxDepth) {
+    throw InputError({file + ": /extends: expected at most " + std::to_string(kMaxDepth) +
+                      " levels of extends: " + chain_text(chain, base)});
+  }
+  Json merged = load_with_extends(base, chain);
+  chain.pop_back();
   doc.erase("extends");
   merged.merge_patch(doc);  // RFC 7396: objects merge key by key, null deletes, arrays replace
   return merged;
@@ -80,6 +106,10 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   g.cells = read_int3(r, n, "cells", 1, 100000, "cells per axis", std::nullopt);
   if (!((g.upper - g.lower).array() > 0.0).all()) {
     r.problems().add(r.key_path("upper"), "expected upper > lower on every axis");
+  } else if (auto hint = unit_hint(Quantity::length, (g.upper - g.lower).maxCoeff())) {
+    // A scene typed in millimetres shows in the grid, which spans every object.
+    r.problems().warn(r.key_path("upper"),
+                      "largest extent (upper - lower) " + *hint + "; the value is used as given");
   }
   g.faces.fill(FaceCondition::symmetric);
   if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed or free")) {
@@ -93,6 +123,9 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
     }
     b->reject_unknown_keys();
   }
+  g.active_blocks = r.boolean_or(
+      "active_blocks", true,
+      "grid work only where the particles are (false: every node of the box every step)");
   r.reject_unknown_keys();
 }
 
@@ -169,6 +202,13 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
   }
   ph.create_new_particles = r.boolean_or("create_new_particles", false,
                                          "move failed particles to a companion velocity field");
+  ph.on_numerical_fault =
+      r.choice("on_numerical_fault", {"stop", "fail_particle"},
+               "what a particle's numerical fault does: stop the run, or flag the particle failed "
+               "and go on",
+               "stop") == "fail_particle"
+          ? NumericalFaultAction::fail_particle
+          : NumericalFaultAction::stop;
   if (r.has("erosion")) {
     const std::string e =
         r.choice("erosion", {"none", "AllowNoTension", "KeepStress", "ZeroStress"},
@@ -207,6 +247,14 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
   o.interval = r.number_or("interval", max_time / 100.0, Range::positive(),
                            "history row and snapshot interval [s]; default max_time/100");
   o.snapshots = r.boolean_or("snapshots", true, "write particles/step_NNNNNN.vtu and a .pvd");
+  const double every =
+      r.number_or("checkpoint_interval_steps", 0.0, Range::closed(0.0, 1e15),
+                  "write DIR/checkpoint.bin every this many steps (0: off; mpm run --restart DIR)");
+  if (every != std::floor(every)) {
+    r.problems().add(r.key_path("checkpoint_interval_steps"),
+                     "expected a whole number of steps (0: off)");
+  }
+  o.checkpoint_interval_steps = static_cast<long>(every);
   r.ignore("fields");
   r.ignore("gauges");  // read_observables(), once the objects are known
   r.ignore("crater");
@@ -235,6 +283,7 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
 }
 
 void read_materials(JsonReader& root, const Json& doc, std::vector<SceneMaterial>& out) {
+  // Material files name themselves in their problems and warnings; the scene entry is prefixed.
   JsonReader r = root.child("materials", "named materials");
   const Json& n = at(doc, "materials");
   if (!n.is_object()) return;
@@ -250,11 +299,10 @@ void read_materials(JsonReader& root, const Json& doc, std::vector<SceneMaterial
     if (file.empty()) continue;
     try {
       out.push_back({item.key(), load_material(file, ov.is_object() ? ov : Json::object())});
+      m.problems().warn_nested(m.key_path("file"), "in material ", out.back().material.warnings);
     } catch (const InputError& e) {
       // The material reader names the material file; say which scene entry asked for it.
-      for (const auto& p : e.problems()) {
-        m.problems().add(m.key_path("file"), "in material " + p);
-      }
+      m.problems().add_nested(m.key_path("file"), "in material ", e);
     }
   }
   if (out.empty() && r.problems().empty()) {
@@ -275,19 +323,28 @@ void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMate
     const std::string mat = o.string("material", "name of an entry of /materials");
     auto it = std::find_if(materials.begin(), materials.end(),
                            [&](const SceneMaterial& m) { return m.name == mat; });
-    if (it == materials.end() && !mat.empty()) {
+    // A declared material that failed to load has its own problem already: no second one here.
+    const Json& declared = at(doc, "materials");
+    if (it == materials.end() && !mat.empty() &&
+        !(declared.is_object() && declared.contains(mat))) {
       std::string list;
-      for (const auto& m : materials) list += (list.empty() ? "" : ", ") + m.name;
+      if (declared.is_object()) {
+        for (const auto& m : declared.items()) list += (list.empty() ? "" : ", ") + m.key();
+      }
       o.problems().add(o.key_path("material"), "unknown material \"" + mat + "\"; known: " + list);
-    } else {
+    } else if (it != materials.end()) {
       obj.material = static_cast<int>(it - materials.begin());
     }
     JsonReader g = o.child("geometry", "shape of the object");
     obj.geometry = read_geometry(g, at(on, "geometry"));
     g.reject_unknown_keys();
     obj.velocity = read_vec3(o, on, "velocity", "initial velocity [m/s]", Vec3::Zero());
-    obj.temperature =
-        o.number_or("temperature", 294.0, Range::open(0.0, 1e4), "initial temperature [K]");
+    for (int d = 0; d < 3; ++d) {
+      o.problems().check_units(o.key_path("velocity") + "/" + std::to_string(d), Quantity::speed,
+                               obj.velocity(d));
+    }
+    obj.temperature = o.quantity_or("temperature", 294.0, Quantity::temperature,
+                                    Range::open(0.0, 1e4), "initial temperature [K]");
     obj.particles_per_cell =
         read_int3(o, on, "particles_per_cell", 1, 16,
                   "particles per cell per axis (the report's res)", std::array<int, 3>{2, 2, 2});
@@ -392,6 +449,11 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
       CraterSpec spec;
       const int object = read_object_name(c, s.objects, "the impacted object");
       spec.face = c.number("face", Range::any(), "x of the impacted face [m] (impact along +x)");
+      if (c.has("axis_y") || c.has("axis_z")) {  // both or neither
+        spec.axis = std::array<double, 2>{
+            c.number("axis_y", Range::any(), "y of the crater axis [m] (quarter model: 0)"),
+            c.number("axis_z", Range::any(), "z of the crater axis [m] (quarter model: 0)")};
+      }
       c.reject_unknown_keys();
       if (object >= 0 && std::isfinite(spec.face)) {
         spec.object = object;
@@ -413,7 +475,8 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
 }  // namespace
 
 Json load_scene_document(const std::string& file) {
-  return load_with_extends(file, 0);
+  std::vector<std::string> chain;
+  return load_with_extends(file, chain);
 }
 
 Scene read_scene(const Json& document, const std::string& file) {
@@ -434,6 +497,7 @@ Scene read_scene(const Json& document, const std::string& file) {
   read_observables(problems, document, s);
   root.reject_unknown_keys();
   problems.throw_if_any();
+  s.warnings.insert(s.warnings.end(), problems.warnings().begin(), problems.warnings().end());
   return s;
 }
 

@@ -26,6 +26,9 @@ struct GridSpec {
   Vec3 lower, upper;                     ///< [m]
   std::array<int, 3> cells{};            ///< cells per axis
   std::array<FaceCondition, 6> faces{};  ///< per face, kFaceNames order
+  /// Grid work only on the 2x2x2-node blocks the particles' stencils touch (grid/grid.hpp);
+  /// false: every node of the box every step (the 2004 code's dense loops).
+  bool active_blocks = true;
   Vec3 spacing() const { return (upper - lower).cwiseQuotient(Vec3(cells[0], cells[1], cells[2])); }
 };
 
@@ -64,12 +67,19 @@ struct ArtificialViscositySpec {
   double quadratic = 2.0;  ///< C_0 (coeff2; Case 1: 1.6) [-]
 };
 
+/// physics.on_numerical_fault.
+enum class NumericalFaultAction { stop, fail_particle };
+
 /// The report's <MPM> flags: optional physics, each off (or the material file's choice) unless a
 /// scene asks for it.
 struct PhysicsSpec {
   ContactSpec contact;
   ArtificialViscositySpec artificial_viscosity;
   bool create_new_particles = false;  ///< failed particles move to a companion velocity field
+  /// What a numerical fault of one particle's update (NaN stress or F, negative Jacobian, radial
+  /// return not converged, EOS out of range) does: stop the run (default), or flag the particle
+  /// failed (stress zeroed, no further update) and go on (docs/mpm.md#failure-handling).
+  NumericalFaultAction on_numerical_fault = NumericalFaultAction::stop;
   // Overrides of every material's own setting (absent: the material file decides).
   std::optional<Erosion> erosion;
   std::optional<bool> do_melting;
@@ -95,6 +105,9 @@ struct GaugeSpec {
 struct CraterSpec {
   int object = 0;     ///< index into Scene::objects
   double face = 0.0;  ///< x of the impacted face [m]
+  /// The crater axis (y, z) [m] when given (a quarter model's symmetry corner); otherwise the
+  /// mean position of the displaced particles.
+  std::optional<std::array<double, 2>> axis;
 };
 
 struct OutputSpec {
@@ -104,6 +117,8 @@ struct OutputSpec {
   std::vector<std::string> fields;   ///< VTU point-data fields
   std::vector<GaugeSpec> gauges;     ///< history gauges (none: no columns, no work)
   std::optional<CraterSpec> crater;  ///< crater observables in summary.json
+  /// Write DIR/checkpoint.bin every this many steps (0: off; mpm/run/checkpoint.hpp).
+  long checkpoint_interval_steps = 0;
 };
 
 struct SceneMaterial {
@@ -142,8 +157,9 @@ struct Scene {
   int companion_field(int material) const;
 };
 
-/// Reads `file`, resolves `extends` chains (relative paths are relative to the file naming them),
-/// then validates. Throws InputError with every problem.
+/// Reads `file`, resolves `extends` chains (relative paths are relative to the file naming them;
+/// a missing base or a cycle is an InputError naming the file that extends and the chain), then
+/// validates. Throws InputError with every problem; warnings go to Scene::warnings.
 Scene load_scene(const std::string& file);
 /// The merged document only (extends resolved, material file paths made relative to the cwd).
 Json load_scene_document(const std::string& file);

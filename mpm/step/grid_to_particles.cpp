@@ -130,12 +130,10 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S,
   }
   G.reduce_momentum();
   const std::vector<Vec3>& momentum = G.remapped_momentum();
-  const int ne = G.entry_count();
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
-#pragma omp parallel for schedule(static) num_threads(nt)
-  for (int i = 0; i < ne; ++i) {
+  G.for_active_entries([&](int i) {
     G.velocity_L[i] = G.mass[i] > 0.0 ? Vec3(momentum[i] / G.mass[i]) : Vec3::Zero();
-  }
+  });
   // Projections, not loads: the particles' momentum is already final.
   if (contact != nullptr && G.fields() > 1) apply_contact(G, *contact, G.velocity_L, nullptr);
   G.apply_mirror(G.velocity_L);

@@ -21,20 +21,17 @@ namespace impact::mpm {
 GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradient,
                        const ContactSpec* contact) {
   const std::vector<NodeData>& nodes = G.nodes();
-  const int n = G.entry_count();
   const bool contact_on = contact != nullptr && G.fields() > 1;
-#pragma omp parallel for schedule(static) num_threads(G.threads())
-  for (int i = 0; i < n; ++i) {
+  G.for_active_entries([&](int i) {
     const NodeData& a = nodes[i];
     if (a.mass > 0.0) {
       G.velocity[i] = Vec3(a.momentum[0], a.momentum[1], a.momentum[2]) / a.mass;
     } else {
       G.velocity[i].setZero();
     }
-  }
+  });
   if (contact_on) apply_contact(G, *contact, G.velocity, nullptr);  // pass 1: start velocity
-#pragma omp parallel for schedule(static) num_threads(G.threads())
-  for (int i = 0; i < n; ++i) {
+  G.for_active_entries([&](int i) {
     const NodeData& a = nodes[i];
     if (a.mass > 0.0) {
       const Vec3 f(a.force[0], a.force[1], a.force[2]);
@@ -42,16 +39,20 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     } else {
       G.velocity_new[i].setZero();
     }
-  }
+  });
   GridUpdate out;
   if (!gravity.isZero(0.0)) {
-    // Impulse dt m_I g and its work at the mid-step nodal velocity (serial: deterministic).
-    for (int i = 0; i < n; ++i) {
-      if (nodes[i].mass <= 0.0) continue;
-      const Vec3 J = dt * nodes[i].mass * gravity;
-      out.external_impulse += J;
-      out.external_work += 0.5 * (G.velocity[i] + G.velocity_new[i]).dot(J);
-    }
+    // Impulse dt m_I g and its work at the mid-step nodal velocity (serial, ascending entries:
+    // deterministic, and the same order on the dense grid).
+    const std::vector<int>& active = G.active_nodes();
+    for (int f = 0; f < G.fields(); ++f)
+      for (const int I : active) {
+        const int i = f * G.node_count() + I;
+        if (nodes[i].mass <= 0.0) continue;
+        const Vec3 J = dt * nodes[i].mass * gravity;
+        out.external_impulse += J;
+        out.external_work += 0.5 * (G.velocity[i] + G.velocity_new[i]).dot(J);
+      }
   }
   // Pass 2 on v*: books its work on the relative start velocities (G.velocity).
   if (contact_on) out.contact = apply_contact(G, *contact, G.velocity_new, &G.velocity);
@@ -69,8 +70,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     }
   G.apply_mirror(G.velocity);
   G.apply_mirror(G.velocity_new);
-#pragma omp parallel for schedule(static) num_threads(G.threads())
-  for (int i = 0; i < n; ++i) G.increment[i] = G.velocity_new[i] - G.velocity[i];
+  G.for_active_entries([&](int i) { G.increment[i] = G.velocity_new[i] - G.velocity[i]; });
   // The faces' impulse: what they changed in the increments that move the particles (serial, in
   // node order: deterministic). A stationary wall does no work (docs/mpm.md#ledger).
   for (int f = 0; f < G.fields(); ++f)
@@ -84,11 +84,10 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
 
   if (usl_gradient) {
     const double m_light = G.light_mass;
-#pragma omp parallel for schedule(static) num_threads(G.threads())
-    for (int i = 0; i < n; ++i) {
+    G.for_active_entries([&](int i) {
       const double alpha = G.mass[i] >= m_light ? 1.0 : G.mass[i] / m_light;
       G.velocity_L[i] = G.velocity[i] + alpha * G.increment[i];
-    }
+    });
     G.apply_mirror(G.velocity_L);
   }
   return out;

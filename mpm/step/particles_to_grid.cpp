@@ -1,6 +1,8 @@
 // Stencils once per step, and particles to grid, Sulsky, Chen & Schreyer (1994) eqs. 20-22 (mass,
 // momentum, internal force). Each thread scatters into its own grid buffer; Grid::reduce sums
-// them in thread order (deterministic for a given thread count).
+// them in thread order (deterministic for a given thread count). With active blocks each thread
+// also marks the blocks its particles' stencils touch; Grid::activate turns the marks into the
+// step's node list before the reduction.
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -16,18 +18,21 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   constexpr int N = Shape::N;
-  G.clear();
+  G.clear();  // where the last step put mass: now zero everywhere
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   const bool viscosity = !P.q.empty();
   const bool nodal_stress = G.has_nodal_stress();
+  const bool mark = !G.dense();
 #pragma omp parallel num_threads(G.threads())
   {
     NodeData* const buf = G.buffer(omp_get_thread_num());
     NodeStress* const sbuf = nodal_stress ? G.stress_buffer(omp_get_thread_num()) : nullptr;
+    char* const marks = mark ? G.block_marks(omp_get_thread_num()) : nullptr;
 #pragma omp for schedule(static)
     for (std::ptrdiff_t p = 0; p < n; ++p) {
       const Stencil<N>& s = S[p];
+      if (mark) G.mark_stencil(marks, s.base, N);
       const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
       NodeData* const field = buf + offset;
       Mat3 sigma = P.state[p].stress;
@@ -66,6 +71,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S) {
       }
     }
   }
+  G.activate();
   G.reduce();
 }
 

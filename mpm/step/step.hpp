@@ -16,9 +16,20 @@ namespace impact::mpm {
 
 /// The first particle (lowest index) whose update failed, and why.
 struct Failure {
+  Failure() = default;
+  Failure(std::size_t particle_, std::string field_, std::string message_,
+          std::optional<PointState> state_ = std::nullopt)
+      : particle(particle_),
+        field(std::move(field_)),
+        message(std::move(message_)),
+        state(std::move(state_)) {}
+
   std::size_t particle = 0;
   std::string field;  ///< e.g. "position", "velocity", "stress"
   std::string message;
+  /// The particle's state when the fault was found, if the particle's stored state no longer
+  /// shows it (fail_particle zeroes the stress).
+  std::optional<PointState> state;
 };
 
 /// The stencils (1-D weights and derivatives, base node) of every particle at its start-of-step
@@ -95,6 +106,15 @@ struct StressUpdateSettings {
   double mean_spacing = 0.0;                           ///< l = (dx + dy + dz)/3 [m] (eq. 12)
   /// Per material: the field a failed particle moves to (create_new_particles); empty: off.
   std::vector<std::uint16_t> companion_field;
+  /// physics.on_numerical_fault = fail_particle: a particle whose update fails (non-finite F or
+  /// stress, negative Jacobian, radial return not converged, EOS out of range) is flagged in
+  /// Particles::fault, its stress (and q) zeroed, its other state kept from the start of the
+  /// step, and it is not updated again; the step goes on. Otherwise the first such particle is
+  /// the step's Failure.
+  bool fail_particle = false;
+  /// Fault injection (mpm run --inject-fault nan:STEP:PARTICLE): this particle's updated stress
+  /// is replaced by NaN in this step, as if its model had returned NaN; -1: none.
+  std::ptrdiff_t inject_nan_stress = -1;
 };
 
 /// Constitutive update by the library for every particle: F_{n+1} from L (models/kinematics),
@@ -111,6 +131,8 @@ struct StressTotals {
   double max_signal_speed = 0.0;  ///< max_p (c_p + |v_p|) [m/s]
   long failed = 0;                ///< particles that failed this step
   long converted = 0;             ///< particles moved to a companion field this step
+  /// fail_particle: the particles flagged this step and why (ascending index).
+  std::vector<Failure> faulted;
 };
 StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, double dt,
                            std::optional<Failure>& failure);

@@ -6,6 +6,8 @@
 // and added to the next step's internal force as -q I (reference_code_notes.md sec. 13: the 2004
 // code neither booked its work nor let it shorten the time step).
 #include <cmath>
+#include <limits>
+#include <sstream>
 #include <string>
 
 #include "models/kinematics/deformation_gradient.hpp"
@@ -24,6 +26,38 @@ double bulk_viscosity(const ArtificialViscositySpec& av, double rho, double bulk
   return rho * (av.linear * a * std::abs(trD) * l + av.quadratic * trD * trD * l * l);
 }
 
+// Why an update cannot be used (the cold path: only on a fault).
+std::string describe_fault(const Mat3& L, const Mat3& F1, const StepReport& r, bool injected) {
+  std::ostringstream m;
+  m.precision(9);
+  if (!F1.allFinite()) {
+    m << "deformation gradient F_{n+1} not finite (L = [" << L.row(0) << "; " << L.row(1) << "; "
+      << L.row(2) << "] 1/s)";
+    return m.str();
+  }
+  m << to_string(r.status);
+  if (r.status == UpdateStatus::negative_jacobian || r.status == UpdateStatus::eos_out_of_range)
+    m << " (det F_{n+1} = " << F1.determinant() << ")";
+  if (r.status == UpdateStatus::return_mapping_not_converged)
+    m << " (" << r.return_iterations << " iterations)";
+  if (injected) m << " (injected: --inject-fault nan)";
+  return m.str();
+}
+
+// Runs the particle's constitutive update; false when it cannot be used: a non-finite F_{n+1}
+// (not passed to the model), the model's own status (negative Jacobian, radial return not
+// converged, non-finite stress, EOS out of range), or a non-finite stress it did not flag.
+// `inject_nan`: the stress it returned is replaced by NaN first (mpm run --inject-fault nan).
+bool checked_update(const ElasticPlastic& model, const PointState& s0, const Mat3& L,
+                    const Mat3& F1, double dt, PointState& s1, StepReport& r, bool inject_nan) {
+  if (!F1.allFinite()) return false;
+  r = model.update(s0, L, F1, dt, s1);
+  if (inject_nan) s1.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
+  if (r.status == UpdateStatus::ok && !s1.stress.allFinite())
+    r.status = UpdateStatus::non_finite_stress;
+  return r.status == UpdateStatus::ok;
+}
+
 }  // namespace
 
 StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, double dt,
@@ -33,6 +67,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   const ArtificialViscositySpec* av = settings.viscosity;
   const double l = settings.mean_spacing;
   const bool convert = !settings.companion_field.empty();
+  const bool fail_particle = settings.fail_particle && P.fault.size() == P.size();
   StressTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
@@ -41,15 +76,31 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
     std::optional<Failure> fail;
 #pragma omp for schedule(static)
     for (std::ptrdiff_t p = 0; p < n; ++p) {
+      if (fail_particle && P.fault[p] != 0) {  // flagged earlier: zero stress, no update
+        sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
+        continue;
+      }
       const PointState& s0 = P.state[p];
       const Mat3& L = P.L[p];
       const Mat3 F1 = advance_deformation_gradient(s0.F, L, dt, settings.f_integration);
       const ElasticPlastic& model = *settings.models[P.material[p]];
       PointState s1;
-      const StepReport r = model.update(s0, L, F1, dt, s1);
-      if (r.status != UpdateStatus::ok) {
-        // Keep the old state so the final snapshot shows the last good values.
-        if (!fail) fail = Failure{std::size_t(p), "stress", std::string(to_string(r.status))};
+      StepReport r;
+      const bool inject = p == settings.inject_nan_stress;
+      if (!checked_update(model, s0, L, F1, dt, s1, r, inject)) {
+        // The particle keeps its start-of-step state (the last good values).
+        Failure f{std::size_t(p), "stress", describe_fault(L, F1, r, inject), std::nullopt};
+        if (!fail_particle) {
+          if (!fail) fail = std::move(f);
+          continue;
+        }
+        f.state = P.state[p];
+        P.fault[p] = 1;
+        P.state[p].stress.setZero();
+        P.state[p].failed = true;
+        if (av != nullptr) P.q[p] = 0.0;
+        sum.faulted.push_back(std::move(f));
+        sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
         continue;
       }
       const double V1 = P.volume0[p] * F1.determinant();
@@ -101,6 +152,8 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
     total.max_signal_speed = std::max(total.max_signal_speed, partial[t].max_signal_speed);
     total.failed += partial[t].failed;
     total.converted += partial[t].converted;
+    // Thread t's particles follow thread t-1's (static schedule): ascending indices.
+    for (Failure& f : partial[t].faulted) total.faulted.push_back(std::move(f));
     merge_failure(failure, failures[t]);
   }
   return total;

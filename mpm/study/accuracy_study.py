@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Speed versus accuracy on the recommended sphere-cylinder scene (issue 7; docs/accuracy.md).
 
-  accuracy_study.py OUT [--mpm build/bin/mpm] [--max-time 40e-6] [--levels 1,1.5,2]
-                        [--threads 2] [--analyse-only]
+  accuracy_study.py OUT [--mpm build/bin/mpm] [--max-time 40e-6] [--levels 1,1.5,2.25,3]
+                        [--max-level-others 2.25] [--threads 2] [--analyse-only]
 
 1. Writes variants of data/scenes/sphere_cylinder/recommended.json into OUT/scenes/ (each a
    two-line scene that `extends` it): per method (interpolation gimp/linear x scheme musl/usl)
@@ -12,8 +12,9 @@
 3. Reads every run's summary.json: wall time, particle-steps, the ledger's energy_error, and every
    number under "observables" (per-object mean velocity and kinetic energy, crater depth and
    diameter, peak pressure, gauges: docs/mpm.md). The reference of each observable is the finest
-   gimp/musl run; where the gimp/musl ladder converges monotonically, Richardson extrapolation of
-   its three finest levels gives the reference instead and the observed order is reported.
+   gimp/musl run; where the gimp/musl ladder converges monotonically over three levels with one
+   refinement ratio (1, 1.5, 2.25), Richardson extrapolation gives the reference instead and the
+   observed order is reported. The 3x level runs for gimp/musl only (--max-level-others).
 4. Writes OUT/accuracy.csv (one row per run and observable), OUT/accuracy.md (the table of the
    cheapest setting that reaches 1 %, 5 % and 10 % error per observable, and the observed orders)
    and OUT/pareto_<observable>.png (error versus wall time, one curve per method, the Pareto front
@@ -46,10 +47,13 @@ def variant_name(interp, scheme, level, multiplier, ppc):
     return f"case_{interp}_{scheme}_r{level:g}_m{multiplier:g}_p{ppc}"
 
 
-def variants(levels):
+def variants(levels, max_level_others):
     out = []
     for interp, scheme in METHODS:
         for level in levels:
+            # The finest levels (3x: 27x the particles, 3x the steps) only for the reference method.
+            if (interp, scheme) != ("gimp", "musl") and level > max_level_others:
+                continue
             out.append((interp, scheme, level, 0.1, 2))
     for m in (0.2, 0.4, 0.8):
         out.append(("gimp", "musl", levels[0], m, 2))
@@ -132,6 +136,19 @@ def richardson(values, levels):
     return p, f
 
 
+def equal_ratio_triples(ref_runs):
+    """Triples of runs (coarse to fine) whose levels have one refinement ratio, finest first."""
+    out = []
+    n = len(ref_runs)
+    for k in range(n - 1, 1, -1):
+        for j in range(k - 1, 0, -1):
+            for i in range(j - 1, -1, -1):
+                a, b, c = (ref_runs[x]["level"] for x in (i, j, k))
+                if abs(b / a - c / b) < 1e-9:
+                    out.append((ref_runs[i], ref_runs[j], ref_runs[k]))
+    return out
+
+
 def analyse(out, runs, levels):
     ref_runs = [r for r in runs if (r["interp"], r["scheme"]) == ("gimp", "musl")
                 and r["multiplier"] == 0.1 and r["ppc"] == 2 and r["status"] == "completed"]
@@ -149,13 +166,18 @@ def analyse(out, runs, levels):
         if n == "abs_energy_error":
             reference[n] = 0.0  # exact: the books close
             continue
-        vals = [r["obs"].get(n) for r in ref_runs]
         reference[n] = finest["obs"].get(n)
-        if len(ref_runs) >= 3 and all(v is not None for v in vals[-3:]):
-            rich = richardson(vals[-3:], [r["level"] for r in ref_runs[-3:]])
+        # The finest three levels with one refinement ratio (e.g. 1, 1.5, 2.25 among 1, 1.5,
+        # 2.25, 3): Richardson's closed form needs equal ratios.
+        for t in equal_ratio_triples(ref_runs):
+            vals = [r["obs"].get(n) for r in t]
+            if any(v is None for v in vals):
+                continue
+            rich = richardson(vals, [r["level"] for r in t])
             if rich:
                 orders[n] = rich[0]
                 reference[n] = rich[1]
+            break
     rows = []
     for r in runs:
         for n in names:
@@ -261,7 +283,10 @@ def main():
     p.add_argument("out")
     p.add_argument("--mpm", default=os.path.join(ROOT, "build", "bin", "mpm"))
     p.add_argument("--max-time", type=float, default=40e-6)
-    p.add_argument("--levels", default="1,1.5,2")
+    p.add_argument("--levels", default="1,1.5,2.25,3",
+                   help="grid levels (x the deck's 50x20x20 cells per axis)")
+    p.add_argument("--max-level-others", type=float, default=2.25,
+                   help="finest level run for the methods other than gimp/musl")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--analyse-only", action="store_true")
     a = p.parse_args()
@@ -269,7 +294,7 @@ def main():
         levels = [float(x) for x in a.levels.split(",")]
     except ValueError:
         p.error("--levels: expected comma-separated numbers, e.g. 1,1.5,2")
-    table = variants(levels)
+    table = variants(levels, a.max_level_others)
     scenes, runs_dir = os.path.join(a.out, "scenes"), os.path.join(a.out, "runs")
     os.makedirs(scenes, exist_ok=True)
     code = 0

@@ -204,7 +204,11 @@ int run_study(const StudyOptions& options) {
     int code = 0;
     std::string message;
     try {
-      code = run(scenes[i], RunOptions{dir.string(), threads, options.progress});
+      RunOptions run_options;
+      run_options.out_dir = dir.string();
+      run_options.threads = threads;
+      run_options.progress = options.progress;
+      code = run(scenes[i], run_options);
     } catch (const std::exception& e) {  // e.g. a model that cannot be built: not a SolverFailure
       code = 3;
       message = e.what();

@@ -150,11 +150,17 @@ int command_batch(const std::vector<std::string>& args) {
     for (std::size_t i = 0; i < mats.size(); ++i) {
       materials.push_back(read_material_entry(mats[i], static_cast<int>(i)));
       material_names.push_back(unique(materials.back().name, seen_materials));
+      if (materials.back().material) {
+        for (const auto& w : materials.back().material->warnings)
+          std::cerr << "pointdriver batch: warning: " << w << '\n';
+      }
     }
     for (const auto& f : o.all("--paths")) {
       Json doc = load_json_file(f);
       for (const Json& p : sets) doc.merge_patch(p);
       paths.push_back(std::make_unique<Path>(read_path(doc, f)));
+      for (const auto& w : paths.back()->warnings)
+        std::cerr << "pointdriver batch: warning: " << w << '\n';
       path_names.push_back(unique(fs::path(f).stem().string(), seen_paths));
       std::vector<std::unique_ptr<Path>> row;
       for (const auto& m : materials) {

@@ -41,11 +41,15 @@ int command_check(const std::vector<std::string>& args) {
   }
   try {
     fit::CheckConfig config = fit::read_check_config(o.positional[0]);
+    for (const auto& w : config.warnings) std::cerr << "pointdriver check: warning: " << w << '\n';
     if (o.has("--out")) config.output_directory = o.get("--out", "check");
     if (o.has("--no-figures")) config.figures = false;
     fs::create_directories(config.output_directory);
     const fit::CurveModel model =
         fit::make_curve_model(config.material_file, config.overrides, config.data, config.curves);
+    for (const auto& e : model.experiments()) {
+      for (const auto& w : e.warnings) std::cerr << "pointdriver check: warning: " << w << '\n';
+    }
     const auto curves = model.curves({fit::jc_values(model.base().flow_stress)});
     std::vector<fit::CurveErrors> errors;
     for (std::size_t e = 0; e < model.experiments().size(); ++e) {

@@ -43,11 +43,15 @@ int command_fit(const std::vector<std::string>& args) {
   }
   try {
     fit::FitConfig config = fit::read_fit_config(o.positional[0]);
+    for (const auto& w : config.warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
     if (o.has("--out")) config.output_directory = o.get("--out", "fit");
     if (o.has("--no-figures")) config.figures = false;
     fs::create_directories(config.output_directory);
     if (config.mode == "damage") return fit::run_damage_fit(config, std::cout);
     const fit::StrengthFit result = fit::fit_strength(config);
+    for (const auto& e : result.experiments) {
+      for (const auto& w : e.warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
+    }
     fit::print_fit_report(std::cout, config, result);
     const fs::path dir = config.output_directory;
     std::ofstream(dir / "fit_report.json") << fit::fit_report_json(config, result).dump(2) << '\n';

@@ -56,6 +56,7 @@ int command_run(const std::vector<std::string>& args) {
     std::cerr << e.what() << '\n';
     return 2;
   }
+  for (const auto& w : path.warnings) std::cerr << "pointdriver run: warning: " << w << '\n';
   const std::filesystem::path out =
       o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
   std::filesystem::path stem = out;

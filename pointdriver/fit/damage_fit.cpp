@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 #include "models/damage/johnson_cook_damage.hpp"
@@ -16,6 +17,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::array<const char*, 5> kNames{"D1", "D2", "D3", "D4", "D5"};
+constexpr std::array<const char*, 4> kColumns{"triaxiality [-]", "strain_rate [1/s]",
+                                              "temperature [K]", "fracture_strain [-]"};
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
@@ -59,23 +62,49 @@ FractureData read_fracture_data(const std::string& file) {
             "fracture_strain [-]'");
       continue;
     }
-    std::stringstream s(t);
-    std::string cell;
-    std::vector<double> v;
-    bool ok = true;
-    while (std::getline(s, cell, ',')) {
-      char* end = nullptr;
-      const std::string c = trim(cell);
-      const double x = std::strtod(c.c_str(), &end);
-      if (c.empty() || end != c.c_str() + c.size() || !std::isfinite(x)) ok = false;
-      v.push_back(x);
+    // Cells split at every comma, so that "0.3,,294,0.5" has an empty second cell.
+    std::vector<std::string> cells(1);
+    for (char ch : t) {
+      if (ch == ',')
+        cells.emplace_back();
+      else
+        cells.back() += ch;
     }
-    if (!ok || v.size() != 4) {
-      add(number, "expected 4 finite numbers: '" + t + "'");
+    if (cells.size() != kColumns.size()) {
+      add(number, std::string(cells.size() < kColumns.size() ? "short" : "long") +
+                      " row: expected 4 values (triaxiality, strain_rate, temperature, "
+                      "fracture_strain), got " +
+                      std::to_string(cells.size()) + ": '" + t + "'");
       continue;
     }
+    std::vector<double> v;
+    bool ok = true;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const std::string cell = trim(cells[c]);
+      char* end = nullptr;
+      const double x = std::strtod(cell.c_str(), &end);
+      const std::string where = "column " + std::to_string(c + 1) + " (" + kColumns[c] + "): ";
+      if (cell.empty()) {
+        add(number, where + "empty cell");
+        ok = false;
+      } else if (end != cell.c_str() + cell.size()) {
+        add(number, where + "not a number: '" + cell + "'");
+        ok = false;
+      } else if (!std::isfinite(x)) {
+        add(number, where + "non-finite value (NaN or Inf): '" + cell + "'");
+        ok = false;
+      }
+      v.push_back(x);
+    }
+    if (!ok) continue;
     if (v[1] <= 0) add(number, "strain rate must be positive [1/s]");
-    if (v[2] < 50) add(number, "temperature below 50 K: degrees Celsius? the format takes K");
+    if (v[2] <= 0) {
+      add(number, "temperature must be positive [K]");
+    } else if (const auto hint = unit_hint(Quantity::temperature, v[2])) {
+      // A cryogenic test at 4 or 20 K is real: a warning, not an error.
+      d.warnings.push_back(file + ":" + std::to_string(number) + ": temperature " + *hint +
+                           "; the value is used as given");
+    }
     if (v[3] <= 0 || v[3] > 5) add(number, "fracture strain must be in (0, 5] (a fraction)");
     d.points.push_back({v[0], v[1], v[2], v[3], number});
   }
@@ -132,6 +161,7 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
   std::vector<double> weights;
   for (const auto& d : config.data) {
     const FractureData f = read_fracture_data(d.file);
+    for (const auto& w : f.warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
     sources.push_back(f.source);
     for (const auto& p : f.points) {
       points.push_back(p);

@@ -31,6 +31,7 @@ struct FractureData {
   std::string file;
   std::string source;
   std::vector<FracturePoint> points;
+  std::vector<std::string> warnings;  ///< "file:line: why" (a temperature that looks like degC)
 };
 
 /// Reads a fracture-strain file; errors name the file and line.

@@ -2,6 +2,7 @@
 #include "pointdriver/output/text_format.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -90,6 +91,18 @@ bool parse_number(const std::string& text, double& value) {
   return end == t.c_str() + t.size();
 }
 
+/// The cells of a CSV line; empty cells are kept ("0.1," has two cells, the second empty).
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  for (char c : line) {
+    if (c == ',')
+      cells.emplace_back();
+    else
+      cells.back() += c;
+  }
+  return cells;
+}
+
 /// "name [unit]" -> (name, unit); no brackets: unit "".
 std::pair<std::string, std::string> split_unit(const std::string& cell) {
   static const std::regex re(R"(^\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[([^\]]*)\])?\s*$)");
@@ -114,6 +127,16 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
   int number = 0;
   int column_line = 0;
   std::vector<std::string> column_cells;
+  int data_rows = 0;
+  std::array<std::vector<int>, 2> empty_cells;  // lines with an empty cell, per column
+  // The column's name in the column header; column_name: "2 (true_stress [Pa])".
+  const auto column_label = [&](int c) {
+    return c < static_cast<int>(column_cells.size()) ? trim(column_cells[c])
+                                                     : std::string(c == 0 ? "strain" : "stress");
+  };
+  const auto column_name = [&](int c) {
+    return std::to_string(c + 1) + " (" + column_label(c) + ")";
+  };
   struct Point {
     double strain, stress;
     int line;
@@ -143,11 +166,14 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
         continue;
       }
       if (unit != spec->unit) {
-        problems.add(number, "header key '" + key + "' must be written " +
-                                 (std::string(spec->unit).empty()
-                                      ? "without a unit"
-                                      : "'" + key + " [" + spec->unit + "]' (SI)") +
-                                 ", got [" + unit + "]");
+        const std::string want = std::string(spec->unit).empty()
+                                     ? "without a unit"
+                                     : "'" + key + " [" + spec->unit + "]' (SI)";
+        problems.add(number, unit.empty() ? "header key '" + key + "' has no unit: write it " + want
+                                          : "header key '" + key + "' must be written " + want +
+                                                ", got [" + unit + "]");
+        // Kept, so that the key is not also reported missing.
+        if (!header.count(key)) header[key] = {trim(m[3].str()), number};
         continue;
       }
       if (header.count(key)) {
@@ -160,30 +186,46 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
     }
     if (!column_line) {
       column_line = number;
-      std::stringstream s(t);
-      std::string cell;
-      while (std::getline(s, cell, ',')) column_cells.push_back(cell);
+      column_cells = split_cells(t);
       continue;
     }
-    std::vector<std::string> cells;
-    std::stringstream s(t);
-    std::string cell;
-    while (std::getline(s, cell, ',')) cells.push_back(cell);
+    // Data row: every cell is named by its line and its column (the header's name for it).
+    ++data_rows;
+    const std::vector<std::string> cells = split_cells(t);
     if (cells.size() != 2) {
-      problems.add(number,
-                   "expected 2 values (strain, stress), got " + std::to_string(cells.size()));
+      problems.add(number, std::string(cells.size() < 2 ? "short" : "long") +
+                               " row: expected 2 values (" + column_label(0) + ", " +
+                               column_label(1) + "), got " + std::to_string(cells.size()) + ": '" +
+                               t + "'");
       continue;
     }
     Point p{0, 0, number};
-    if (!parse_number(cells[0], p.strain) || !parse_number(cells[1], p.stress)) {
-      problems.add(number, "not a number: '" + trim(line) + "'");
+    double* values[2] = {&p.strain, &p.stress};
+    bool ok = true;
+    for (int c = 0; c < 2; ++c) {
+      const std::string cell = trim(cells[c]);
+      if (cell.empty()) {
+        empty_cells[c].push_back(number);
+        ok = false;
+      } else if (!parse_number(cell, *values[c])) {
+        problems.add(number, "column " + column_name(c) + ": not a number: '" + cell + "'");
+        ok = false;
+      } else if (!std::isfinite(*values[c])) {
+        problems.add(
+            number, "column " + column_name(c) + ": non-finite value (NaN or Inf): '" + cell + "'");
+        ok = false;
+      }
+    }
+    if (ok) points.push_back(p);
+  }
+  // Empty cells: one problem for a column that is empty on every row, else one per cell.
+  for (int c = 0; c < 2; ++c) {
+    if (data_rows > 1 && static_cast<int>(empty_cells[c].size()) == data_rows) {
+      problems.add(column_line, "column " + column_name(c) + " is empty (no value on any of the " +
+                                    std::to_string(data_rows) + " data rows)");
       continue;
     }
-    if (!std::isfinite(p.strain) || !std::isfinite(p.stress)) {
-      problems.add(number, "non-finite value (NaN or Inf): '" + trim(line) + "'");
-      continue;
-    }
-    points.push_back(p);
+    for (int l : empty_cells[c]) problems.add(l, "column " + column_name(c) + ": empty cell");
   }
 
   // Header values.
@@ -243,13 +285,14 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
     e.strain_rate = *rate;
   }
   if (const auto temp = number_of("temperature", true)) {
+    const auto hint = unit_hint(Quantity::temperature, *temp);
     if (*temp <= 0) {
-      problems.add(line_of("temperature"), "temperature must be positive [K]");
-    } else if (*temp < 50.0) {
       problems.add(line_of("temperature"),
-                   "temperature " + fmt(*temp) +
-                       " K is below 50 K: it looks like degrees Celsius; the format takes kelvin "
-                       "(add 273.15)");
+                   "temperature must be positive [K]" + (hint ? ": " + *hint : std::string()));
+    } else if (hint) {
+      // A test at 4 or 20 K is real (cryogenic tests), so a low value is a warning, not an error.
+      e.warnings.push_back(file + ":" + std::to_string(line_of("temperature")) + ": temperature " +
+                           *hint + "; the value is used as given");
     }
     e.temperature = *temp;
   }
@@ -259,8 +302,10 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
   }
   if (const auto E = number_of("youngs_modulus", false)) {
     if (*E < 1e8) {
+      const auto hint = unit_hint(Quantity::elastic_modulus, *E);
       problems.add(line_of("youngs_modulus"),
-                   "youngs_modulus " + fmt(*E) + " looks like MPa or GPa; the format takes Pa");
+                   "youngs_modulus " + fmt(*E) + " is below 1e8 Pa: " +
+                       (hint ? *hint : "it looks like MPa or GPa; the format takes Pa"));
     }
     e.youngs_modulus = *E;
   }
@@ -282,6 +327,9 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
       problems.add(column_line, "first column must be '" + want_strain + " [-]' (strain_measure " +
                                     to_string(e.strain_measure) + "), got '" +
                                     trim(column_cells[0]) + "'");
+    else if (sunit.empty())
+      problems.add(column_line, "column 1 '" + sname + "' has no unit: write '" + want_strain +
+                                    " [-]' (a fraction)");
     else if (sunit != "-")
       problems.add(column_line, "strain must be a fraction, written '" + want_strain +
                                     " [-]', got [" + sunit + "]" +
@@ -290,13 +338,16 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
       problems.add(column_line, "second column must be '" + want_stress +
                                     " [Pa]' (stress_measure " + to_string(e.stress_measure) +
                                     "), got '" + trim(column_cells[1]) + "'");
+    else if (tunit.empty())
+      problems.add(column_line,
+                   "column 2 '" + tname + "' has no unit: write '" + want_stress + " [Pa]' (SI)");
     else if (tunit != "Pa")
       problems.add(column_line, "stress must be in Pa, written '" + want_stress + " [Pa]', got [" +
                                     tunit + "]" + (tunit == "MPa" ? " (multiply by 1e6)" : ""));
   }
 
   // Data rows.
-  if (points.empty() && column_line) problems.add(0, "no data rows (empty curve)");
+  if (data_rows == 0 && column_line) problems.add(0, "no data rows (empty curve)");
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point& p = points[i];
     if (p.stress <= 0)

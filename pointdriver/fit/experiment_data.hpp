@@ -9,7 +9,8 @@
 //   total -> plastic:    eps_p = eps - sigma / E (E from the header or the fit's material);
 //   points with eps_p <= 0 (the elastic part) are dropped; tension tests stop at the maximum
 //   (engineering) stress, where necking starts.
-// Every problem is an InputError naming the file and the line.
+// Every problem is an InputError naming the file and the line (and, for a data cell, the column);
+// a suspicious but possible value (a temperature below 50 K: degC?) is a warning in `warnings`.
 #pragma once
 
 #include <istream>
@@ -44,6 +45,9 @@ struct Experiment {
   std::vector<double> plastic_strain;    ///< true plastic strain [-], increasing
   std::vector<double> stress;            ///< true stress [Pa], > 0
   std::vector<std::string> conversions;  ///< what the reader did, for the report
+  /// Admissible but suspicious values, "file:line: why" (a temperature that looks like degC);
+  /// the command line prints them.
+  std::vector<std::string> warnings;
 };
 
 std::string to_string(TestType);

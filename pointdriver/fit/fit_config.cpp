@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <limits>
 
+#include "models/material/material.hpp"
+
 namespace impact::pointdriver::fit {
 
 namespace fs = std::filesystem;
@@ -32,6 +34,16 @@ constexpr std::array<std::array<double, 2>, 5> kDamageBounds{
     {{-3.0, 3.0}, {-10.0, 10.0}, {-10.0, 10.0}, {-1.0, 1.0}, {-10.0, 10.0}}};
 constexpr std::array<const char*, 5> kDamageNames{"D1", "D2", "D3", "D4", "D5"};
 
+/// A referenced file that is not there: named with the key path that refers to it.
+void check_exists(InputProblems& problems, const std::string& key_path, const std::string& what,
+                  const std::string& name, const std::string& resolved) {
+  std::error_code ec;
+  if (name.empty() || fs::is_regular_file(resolved, ec)) return;
+  problems.add(key_path, "cannot find the " + what + " '" + name +
+                             "' (looked in the working directory, beside the configuration file "
+                             "and in its parent directories)");
+}
+
 std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::string& file) {
   std::vector<DataEntry> out;
   const Json* data = doc.contains("data") ? &doc["data"] : nullptr;
@@ -45,6 +57,7 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
     const Json& d = (*data)[i];
     if (d.is_string()) {
       out.push_back({resolve_file(d.get<std::string>(), file), 1.0});
+      check_exists(r.problems(), at, "experiment file", d.get<std::string>(), out.back().file);
       continue;
     }
     if (!d.is_object()) {
@@ -56,7 +69,9 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
     if (e.has("file") == e.has("glob")) {
       r.problems().add(at, "give exactly one of \"file\" and \"glob\"");
     } else if (e.has("file")) {
-      out.push_back({resolve_file(e.string("file", "experiment file"), file), w});
+      const std::string name = e.string("file", "experiment file");
+      out.push_back({resolve_file(name, file), w});
+      check_exists(r.problems(), e.key_path("file"), "experiment file", name, out.back().file);
     } else {
       const std::string pattern = e.string("glob", "experiment files ('*' and '?')");
       std::string dir = fs::path(pattern).parent_path().string();
@@ -77,12 +92,14 @@ CurveSettings read_driver(JsonReader& r) {
       r.number_or("adiabatic_above_rate", c.adiabatic_above_rate, Range::non_negative(),
                   "tests at or above this strain rate are adiabatic unless their file says [1/s]");
   if (auto d = r.optional_child("driver", "driver settings")) {
-    c.steps = static_cast<int>(
-        d->number_or("steps", c.steps, Range::closed(5, 100000), "driver steps per test"));
+    c.steps = clamped_int(
+        d->number_or("steps", c.steps, Range::closed(5, 100000), "driver steps per test"), 5,
+        100000);
     c.first_step_fraction = d->number_or("first_step_fraction", c.first_step_fraction,
                                          Range::open(0.0, 1.0), "first step / path duration");
-    c.threads = static_cast<int>(
-        d->number_or("threads", 0, Range::closed(0, 1024), "worker threads (0: all cores)"));
+    c.threads = clamped_int(
+        d->number_or("threads", 0, Range::closed(0, 1024), "worker threads (0: all cores)"), 0,
+        1024);
     d->reject_unknown_keys();
   }
   return c;
@@ -102,25 +119,44 @@ Json material_patch(JsonReader& r, const Json& doc) {
     patch["constitutive_model"]["flow_stress"]["reference_strain_rate"] = r.number(
         "reference_strain_rate", Range::positive(), "reference strain rate of the fit [1/s]");
   if (r.has("room_temperature"))
-    patch["room_temperature"] =
-        r.number("room_temperature", Range::positive(), "room temperature [K]");
+    patch["room_temperature"] = r.quantity("room_temperature", Quantity::temperature,
+                                           Range::positive(), "room temperature [K]");
   if (r.has("melt_temperature"))
-    patch["melt_temperature"] =
-        r.number("melt_temperature", Range::positive(), "melt temperature [K]");
+    patch["melt_temperature"] = r.quantity("melt_temperature", Quantity::temperature,
+                                           Range::positive(), "melt temperature [K]");
   if (r.has("taylor_quinney"))
     patch["constitutive_model"]["adiabatic_heating"]["taylor_quinney"] =
         r.number("taylor_quinney", Range::closed(0, 1), "Taylor-Quinney coefficient chi");
   return patch;
 }
 
+/// The material the configuration starts from, with its overrides: read now, so that a missing
+/// or bad material is reported against the configuration's key path before anything runs.
+std::vector<std::string> check_material(InputProblems& problems, const std::string& name,
+                                        const std::string& resolved, const Json& overrides) {
+  std::error_code ec;
+  if (name.empty()) return {};
+  if (!fs::is_regular_file(resolved, ec)) {
+    check_exists(problems, "/material", "material file", name, resolved);
+    return {};
+  }
+  try {
+    return load_material(resolved, overrides).warnings;
+  } catch (const InputError& e) {
+    problems.add_nested("/material", "in material ", e);
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string resolve_file(const std::string& name, const std::string& relative_to) {
   const fs::path p(name);
-  if (p.is_absolute() || fs::exists(p)) return name;
+  std::error_code ec;  // a name too long for the file system is simply not found
+  if (p.is_absolute() || fs::exists(p, ec)) return name;
   fs::path dir = fs::absolute(fs::path(relative_to)).parent_path();
   while (!dir.empty()) {
-    if (fs::exists(dir / p)) return (dir / p).lexically_normal().string();
+    if (fs::exists(dir / p, ec)) return (dir / p).lexically_normal().string();
     if (dir == dir.parent_path()) break;
     dir = dir.parent_path();
   }
@@ -157,7 +193,8 @@ FitConfig read_fit_config(const Json& doc, const std::string& file) {
   JsonReader r(doc, "", problems);
   r.ignore("description");
   c.mode = r.choice("mode", {"strength", "damage"}, "what is fitted", "strength");
-  c.material_file = resolve_file(r.string("material", "material file to start from"), file);
+  const std::string material_name = r.string("material", "material file to start from");
+  c.material_file = resolve_file(material_name, file);
   c.overrides = material_patch(r, doc);
   c.data = read_data(r, doc, file);
   c.curves = read_driver(r);
@@ -181,8 +218,14 @@ FitConfig read_fit_config(const Json& doc, const std::string& file) {
       if (q->has("start")) s.start = q->number("start", Range::any(), "start value (SI)");
       const double inf = std::numeric_limits<double>::infinity();
       const Range finite{-inf, inf, true, true};  // bounds enter the logistic transform
+      const bool has_lower = q->has("lower"), has_upper = q->has("upper");
       s.lower = q->number_or("lower", s.lower, finite, "lower bound (SI)");
       s.upper = q->number_or("upper", s.upper, finite, "upper bound (SI)");
+      if (!damage && i < 2) {  // A and B are stresses [Pa]: a value in MPa is warned about
+        if (s.start) problems.check_units(q->key_path("start"), Quantity::stress, *s.start);
+        if (has_lower) problems.check_units(q->key_path("lower"), Quantity::stress, s.lower);
+        if (has_upper) problems.check_units(q->key_path("upper"), Quantity::stress, s.upper);
+      }
       const bool bounds_ok = std::isfinite(s.lower) && std::isfinite(s.upper);
       if (bounds_ok && !(s.lower < s.upper))
         problems.add(q->key_path("upper"), "upper bound must exceed the lower bound");
@@ -194,8 +237,9 @@ FitConfig read_fit_config(const Json& doc, const std::string& file) {
     ps->reject_unknown_keys();
   }
   if (auto s = r.optional_child("solver", "least-squares settings")) {
-    c.solver.max_iterations = static_cast<int>(s->number_or(
-        "max_iterations", c.solver.max_iterations, Range::closed(1, 100000), "iterations"));
+    c.solver.max_iterations = clamped_int(s->number_or("max_iterations", c.solver.max_iterations,
+                                                       Range::closed(1, 100000), "iterations"),
+                                          1, 100000);
     c.solver.xtol = s->number_or("xtol", c.solver.xtol, Range::positive(), "step tolerance");
     c.solver.gtol = s->number_or("gtol", c.solver.gtol, Range::positive(), "gradient tolerance");
     c.solver.ftol = s->number_or("ftol", c.solver.ftol, Range::positive(), "residual tolerance");
@@ -210,7 +254,10 @@ FitConfig read_fit_config(const Json& doc, const std::string& file) {
     o->reject_unknown_keys();
   }
   r.reject_unknown_keys();
+  problems.warn_nested("/material", "in material ",
+                       check_material(problems, material_name, c.material_file, c.overrides));
   problems.throw_if_any();
+  c.warnings = problems.warnings();
   if (c.output_material.empty())
     c.output_material = fs::path(c.material_file).stem().string() + "_fitted.json";
   return c;
@@ -230,19 +277,24 @@ CheckConfig read_check_config(const Json& doc, const std::string& file) {
   }
   JsonReader r(doc, "", problems);
   r.ignore("description");
-  c.material_file = resolve_file(r.string("material", "material file (the set checked)"), file);
+  const std::string material_name = r.string("material", "material file (the set checked)");
+  c.material_file = resolve_file(material_name, file);
   c.overrides = material_patch(r, doc);
   c.data = read_data(r, doc, file);
   c.curves = read_driver(r);
   if (auto t = r.optional_child("tolerance", "per-curve limits; exit 3 when one is exceeded")) {
-    auto opt = [&](const char* key, const char* meaning) -> std::optional<double> {
+    // Stress tolerances [Pa] are checked for a value in MPa (a warning); rms_percent is in %.
+    auto opt = [&](const char* key, const char* meaning,
+                   bool stress = true) -> std::optional<double> {
       if (!t->has(key)) return std::nullopt;
-      return t->number(key, Range::positive(), meaning);
+      return stress ? t->quantity(key, Quantity::stress, Range::positive(), meaning)
+                    : t->number(key, Range::positive(), meaning);
     };
     c.tolerance.rms = opt("rms", "RMS stress error per curve [Pa]");
     c.tolerance.max = opt("max", "largest absolute stress error per curve [Pa]");
     c.tolerance.mean_signed = opt("mean_signed", "|mean signed stress error| per curve [Pa]");
-    c.tolerance.rms_percent = opt("rms_percent", "RMS error per curve, % of its mean stress");
+    c.tolerance.rms_percent =
+        opt("rms_percent", "RMS error per curve, % of its mean stress", false);
     c.overall_rms = opt("overall_rms", "RMS stress error over every point [Pa]");
     t->reject_unknown_keys();
   }
@@ -252,7 +304,10 @@ CheckConfig read_check_config(const Json& doc, const std::string& file) {
     o->reject_unknown_keys();
   }
   r.reject_unknown_keys();
+  problems.warn_nested("/material", "in material ",
+                       check_material(problems, material_name, c.material_file, c.overrides));
   problems.throw_if_any();
+  c.warnings = problems.warnings();
   return c;
 }
 

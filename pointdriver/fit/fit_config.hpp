@@ -1,6 +1,8 @@
 // FIT.json and CHECK.json (docs/fitting.md): validated with every problem reported at once, each
 // naming the file and the JSON key path. Relative file names are looked up in the working
-// directory, then beside the configuration file and in its parent directories.
+// directory, then beside the configuration file and in its parent directories; a file found
+// nowhere is a problem at the key path that names it, and the material (with its overrides) is
+// validated with the configuration.
 #pragma once
 
 #include <array>
@@ -41,6 +43,7 @@ struct FitConfig {
   std::string output_directory = "fit";
   std::string output_material;  ///< file name in the output directory
   bool figures = true;
+  std::vector<std::string> warnings;  ///< "file: /key/path: why", the material's included
 };
 
 struct CheckTolerance {
@@ -60,6 +63,7 @@ struct CheckConfig {
   std::optional<double> overall_rms;  ///< [Pa]
   std::string output_directory = "check";
   bool figures = true;
+  std::vector<std::string> warnings;  ///< "file: /key/path: why", the material's included
 };
 
 FitConfig read_fit_config(const std::string& file);

@@ -22,14 +22,18 @@ int index_of(const auto& names, std::string_view name) {
 }
 
 /// Reads {"xx": v, ...} into `out`; keys must be among `names`.
+/// With a quantity, each value is also checked for a likely unit slip (a warning).
 template <std::size_t N>
 void read_components(JsonReader& parent, std::string_view key,
                      const std::array<const char*, N>& names, Range range, std::string_view meaning,
-                     std::array<std::optional<double>, N>& out) {
+                     std::array<std::optional<double>, N>& out,
+                     std::optional<Quantity> quantity = std::nullopt) {
   auto block = parent.optional_child(key, meaning);
   if (!block) return;
   for (std::size_t i = 0; i < N; ++i) {
-    if (block->has(names[i])) out[i] = block->number(names[i], range, meaning);
+    if (!block->has(names[i])) continue;
+    out[i] = quantity ? block->quantity(names[i], *quantity, range, meaning)
+                      : block->number(names[i], range, meaning);
   }
   block->reject_unknown_keys();
 }
@@ -105,7 +109,7 @@ Leg read_leg(JsonReader& r, const Json& raw, Thermal default_thermal) {
   read_components(r, "deformation_gradient", tensor_names, Range::any(),
                   "deformation gradient F_ij at the leg's end [-]", leg.deformation_gradient);
   read_components(r, "stress", stress_names, Range::any(), "Cauchy stress at the leg's end [Pa]",
-                  leg.stress);
+                  leg.stress, Quantity::stress);
   if (auto ratio = r.optional_child("stress_ratio", "sigma_c = ratio * sigma_of")) {
     const std::string of = ratio->choice("of", {"xx", "yy", "zz", "xy", "yz", "zx"},
                                          "the stress component the ratios refer to");
@@ -157,7 +161,8 @@ Leg read_leg(JsonReader& r, const Json& raw, Thermal default_thermal) {
 
   // Steps: a count, or from the largest prescribed velocity-gradient component.
   if (r.has("steps")) {
-    leg.steps = static_cast<int>(r.number("steps", Range::closed(1, 1e9), "steps in the leg"));
+    leg.steps =
+        clamped_int(r.number("steps", Range::closed(1, 1e9), "steps in the leg"), 1, 1000000000);
     if (r.has("max_strain_increment")) {
       r.problems().add(r.key_path("max_strain_increment"), "give steps or max_strain_increment");
     }
@@ -170,7 +175,12 @@ Leg read_leg(JsonReader& r, const Json& raw, Thermal default_thermal) {
       r.problems().add(r.key_path("max_strain_increment"),
                        "needs a nonzero velocity_gradient component; give steps instead");
     }
-    leg.steps = std::max(1, static_cast<int>(std::ceil(rate * leg.duration / inc - 1e-9)));
+    const double steps = std::ceil(rate * leg.duration / inc - 1e-9);
+    if (steps > 1e9) {
+      r.problems().add(r.key_path("max_strain_increment"),
+                       "gives " + Json(steps).dump() + " steps; expected at most 1e9");
+    }
+    leg.steps = clamped_int(steps, 1, 1000000000);
   } else {
     r.problems().add(r.key_path("steps"), "required: steps (or max_strain_increment)");
   }
@@ -188,12 +198,13 @@ Leg read_leg(JsonReader& r, const Json& raw, Thermal default_thermal) {
 
   leg.thermal = read_thermal(r, default_thermal);
   if (leg.thermal == Thermal::prescribed) {
-    leg.end_temperature = r.number("temperature", Range::open(0, 1e4),
-                                   "temperature at the leg's end (prescribed thermal) [K]");
+    leg.end_temperature = r.quantity("temperature", Quantity::temperature, Range::open(0, 1e4),
+                                     "temperature at the leg's end (prescribed thermal) [K]");
   }
   if (r.has("start_temperature")) {
-    leg.start_temperature = r.number("start_temperature", Range::open(0, 1e4),
-                                     "temperature set at the leg's start [K]");
+    leg.start_temperature =
+        r.quantity("start_temperature", Quantity::temperature, Range::open(0, 1e4),
+                   "temperature set at the leg's start [K]");
   }
   if (auto rot = r.optional_child("rotation", "superposed rigid rotation over the leg")) {
     leg.rotation_axis = read_vector(*rot, "axis", "rotation axis", raw["rotation"]);
@@ -217,7 +228,8 @@ Mat3 read_tensor(JsonReader& parent, std::string_view key, std::string_view mean
 
 Mat3 read_stress(JsonReader& parent, std::string_view key) {
   std::array<std::optional<double>, 6> c;
-  read_components(parent, key, stress_names, Range::any(), "Cauchy stress [Pa]", c);
+  read_components(parent, key, stress_names, Range::any(), "Cauchy stress [Pa]", c,
+                  Quantity::stress);
   Mat3 s = Mat3::Zero();
   for (int k = 0; k < 6; ++k) {
     const auto [i, j] = stress_index[k];
@@ -228,11 +240,17 @@ Mat3 read_stress(JsonReader& parent, std::string_view key) {
 
 /// The material file: as given (from the working directory), else beside the path file or in
 /// one of its parent directories (so data/paths/x.json can name data/materials/y.json).
+/// fs::exists without throwing (a name too long for the file system is simply not found).
+bool file_exists(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec);
+}
+
 std::string locate_material(const std::string& name, const std::string& path_file) {
-  if (fs::exists(name) || fs::path(name).is_absolute()) return name;
+  if (file_exists(name) || fs::path(name).is_absolute()) return name;
   for (fs::path dir = fs::absolute(path_file).parent_path(); !dir.empty();
        dir = dir.parent_path()) {
-    if (fs::exists(dir / name)) return (dir / name).string();
+    if (file_exists(dir / name)) return (dir / name).string();
     if (dir == dir.parent_path()) break;
   }
   return name;
@@ -271,7 +289,8 @@ Path read_path(const Json& document, const std::string& file) {
   }
   path.material_source = document.value("material", Json());
 
-  path.temperature = root.number("temperature", Range::open(0, 1e4), "initial temperature [K]");
+  path.temperature = root.quantity("temperature", Quantity::temperature, Range::open(0, 1e4),
+                                   "initial temperature [K]");
   const Thermal default_thermal = read_thermal(root, Thermal::isothermal);
   const std::string policy = root.choice("failure_policy", {"stop", "freeze", "continue"},
                                          "what to do when a failure criterion fires", "stop");
@@ -288,10 +307,13 @@ Path read_path(const Json& document, const std::string& file) {
         "tolerance on each controlled stress component relative to the largest stress [-]");
     st.strain_tolerance = s->number_or("strain_tolerance", st.strain_tolerance, Range::positive(),
                                        "tolerance on each controlled F component [-]");
-    st.max_iterations = static_cast<int>(s->number_or(
-        "max_iterations", st.max_iterations, Range::closed(1, 1000), "Newton iterations per try"));
-    st.max_cutbacks = static_cast<int>(
-        s->number_or("max_cutbacks", st.max_cutbacks, Range::closed(0, 30), "step halvings"));
+    st.max_iterations =
+        clamped_int(s->number_or("max_iterations", st.max_iterations, Range::closed(1, 1000),
+                                 "Newton iterations per try"),
+                    1, 1000);
+    st.max_cutbacks = clamped_int(
+        s->number_or("max_cutbacks", st.max_cutbacks, Range::closed(0, 30), "step halvings"), 0,
+        30);
     const std::string j = s->choice("jacobian", {"central_difference", "elastic"}, "Newton matrix",
                                     "central_difference");
     st.jacobian = j == "elastic" ? SolverSettings::Jacobian::elastic
@@ -361,15 +383,26 @@ Path read_path(const Json& document, const std::string& file) {
   }
   root.reject_unknown_keys();
   const std::string material_path = locate_material(material_file, file);
-  if (!material_file.empty() && !fs::exists(material_path)) {
-    problems.add(document["material"].is_string() ? "/material" : "/material/file",
+  const std::string material_key = document.contains("material") && document["material"].is_string()
+                                       ? "/material"
+                                       : "/material/file";
+  if (!material_file.empty() && !file_exists(material_path)) {
+    problems.add(material_key,
                  "cannot find the material file '" + material_file +
                      "' (looked in the working directory, beside the path file and in its parent "
                      "directories)");
   }
   problems.throw_if_any();
 
-  path.material = load_material(material_path, overrides);
+  // The material file names itself in its problems and warnings; the path's entry is prefixed.
+  try {
+    path.material = load_material(material_path, overrides);
+  } catch (const InputError& e) {
+    problems.add_nested(material_key, "in material ", e);
+    problems.throw_if_any();
+  }
+  problems.warn_nested(material_key, "in material ", path.material.warnings);
+  path.warnings = problems.warnings();
   const ElasticPlastic& model = path.material.model;
   path.initial_state = has_state ? s0 : model.initial_state(path.temperature);
   if (has_state) path.initial_state.temperature = path.temperature;

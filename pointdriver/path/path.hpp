@@ -79,6 +79,9 @@ struct Path {
   SolverSettings solver;
   std::vector<Leg> legs;
   Json resolved;  ///< the path with named legs expanded (written beside the output)
+  /// Admissible but suspicious values, "file: /key/path: why" (e.g. a temperature that looks
+  /// like degC); its material's warnings are included. The command line prints them.
+  std::vector<std::string> warnings;
 };
 
 /// Reads and validates a path document; named legs are expanded first (named_paths.hpp). Every

@@ -152,7 +152,7 @@ BOOST_AUTO_TEST_CASE(an_unknown_material_reference_lists_the_known_ones) {
 
 BOOST_AUTO_TEST_CASE(a_bad_material_override_names_the_scene_entry_and_the_material_key) {
   Json doc = base();
-  doc["materials"]["elastic_al"]["overrides"]["density"] = 2.7;
+  doc["materials"]["elastic_al"]["overrides"]["density"] = -2700.0;
   const std::string e = error_of(doc);
   BOOST_TEST(e.find("/materials/elastic_al/file") != std::string::npos);
   BOOST_TEST(e.find("/density") != std::string::npos);

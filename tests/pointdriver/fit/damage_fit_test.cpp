@@ -75,9 +75,19 @@ BOOST_AUTO_TEST_CASE(bad_rows_name_the_file_and_line) {
     BOOST_FAIL("expected an InputError");
   } catch (const InputError& e) {
     const std::string m = e.what();
-    BOOST_TEST(m.find("bad_fracture.csv:4:") != std::string::npos);  // Celsius
-    BOOST_TEST(m.find("bad_fracture.csv:5:") != std::string::npos);  // NaN
+    BOOST_TEST(m.find("bad_fracture.csv:4:") == std::string::npos);  // 25 K: a warning only
+    BOOST_TEST(m.find("bad_fracture.csv:5: column 2 (strain_rate [1/s]): non-finite value") !=
+               std::string::npos);
   }
+  // A temperature that looks like degC (25) is possible (a cryogenic test): read, with a warning.
+  std::ofstream(file) << "# source: test\n"
+                         "triaxiality [-],strain_rate [1/s],temperature [K],fracture_strain [-]\n"
+                         "0.33,1e-3,294,0.4\n0.33,1e-3,25,0.4\n";
+  const FractureData d = read_fracture_data(file);
+  BOOST_TEST(d.points.size() == 2u);
+  BOOST_TEST_REQUIRE(d.warnings.size() == 1u);
+  BOOST_TEST(d.warnings[0].find("bad_fracture.csv:4: temperature 25 looks like degC") !=
+             std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

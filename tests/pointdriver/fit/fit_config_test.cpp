@@ -66,4 +66,35 @@ BOOST_AUTO_TEST_CASE(problems_name_the_key_path) {
   BOOST_TEST(contains(error_of(steps), "test.json"));
 }
 
+// Referenced files are checked with the configuration: a missing one is named at its key path,
+// and the material (with the overrides) is validated before anything runs.
+BOOST_AUTO_TEST_CASE(referenced_files_are_checked_at_their_key_path) {
+  const Json base = {{"material", "data/materials/al6061_t6.json"},
+                     {"data", {{{"file", "data/experiments/al6061_t6/cad_298K_0.001per_s.csv"}}}}};
+  BOOST_TEST(error_of(base).empty());
+  Json material = base;
+  material["material"] = "data/materials/steel.json";
+  BOOST_TEST(
+      contains(error_of(material),
+               "test.json: /material: cannot find the material file 'data/materials/steel.json'"));
+  Json data = base;
+  data["data"].push_back("data/experiments/none.csv");
+  BOOST_TEST(
+      contains(error_of(data),
+               "test.json: /data/1: cannot find the experiment file 'data/experiments/none.csv'"));
+  Json override = base;
+  override["material_overrides"] = {{"density", -1.0}};
+  BOOST_TEST(contains(error_of(override), "test.json: /material: in material "));
+  BOOST_TEST(
+      contains(error_of(override), "al6061_t6.json: /density: expected a number in (0, 30000]"));
+  // A room temperature in degC: read, with a warning at its key path (and one from the material
+  // it overrides).
+  Json celsius = base;
+  celsius["room_temperature"] = 21.0;
+  const FitConfig c = read_fit_config(celsius, fits + "test.json");
+  BOOST_TEST_REQUIRE(c.warnings.size() == 2u);
+  BOOST_TEST(contains(c.warnings[0], "test.json: /room_temperature: 21 looks like degC"));
+  BOOST_TEST(contains(c.warnings[1], "/material: in material "));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

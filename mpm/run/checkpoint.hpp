@@ -1,0 +1,134 @@
+// Checkpoints of `mpm run` (docs/mpm.md#checkpoint-and-restart): DIR/checkpoint.bin holds
+// everything the next steps depend on, so that `mpm run --restart DIR` continues bit for bit as
+// the uninterrupted run would (same thread count):
+//   - every particle array (x, v, mass, volumes, L, the whole PointState, wave speed, material,
+//     object, velocity field, artificial-viscosity q, numerical-fault flags),
+//   - the Simulation's time, step, signal speed (the next dt), failure/conversion/fault counters,
+//   - every ledger accumulator,
+//   - the run loop's next output time, the bytes and rows of history.csv written so far, the
+//     observables' running maxima, the .pvd entries, the wall time so far.
+// The grid holds nothing across steps (it is rebuilt from the particles every step), nor do the
+// stencils.
+// Format (little-endian, native doubles): the 16-byte magic "IMPACT-MPM-CKPT\n", u32 format
+// version, u32 byte-order mark 0x01020304, u32 sizeof(double), the header (thread count,
+// particle count, step, time, FNV-1a hash of DIR/scene.json, the working directory of the run),
+// then tagged sections (u32 tag length, tag, u64 element count, u32 element size, the elements),
+// and last the u64 FNV-1a hash of every byte before it. Written through write_file_atomically
+// (checkpoint.bin.tmp, then a rename): a kill while writing leaves the previous checkpoint.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <istream>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace impact::mpm {
+
+class Simulation;
+
+inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr const char* kCheckpointFile = "checkpoint.bin";
+
+/// 64-bit FNV-1a of a byte string (scene.json fingerprint, checkpoint trailer).
+std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 0xcbf29ce484222325ULL);
+
+/// Writes values and tagged arrays, hashing every byte.
+class CheckpointWriter {
+ public:
+  explicit CheckpointWriter(std::ostream& out) : out_(out) {}
+  void bytes(const void* data, std::size_t size);
+  template <class T>
+  void value(const T& v) {
+    bytes(&v, sizeof v);
+  }
+  void text(const std::string& s);
+  /// Tag, count, element size, elements (T trivially copyable, written as stored).
+  template <class T>
+  void array(const std::string& tag, const std::vector<T>& v) {
+    section(tag, v.size(), sizeof(T));
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+  void section(const std::string& tag, std::uint64_t count, std::uint32_t element_size);
+  /// The trailer: the hash of everything written so far.
+  void finish();
+
+ private:
+  std::ostream& out_;
+  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+/// Reads what CheckpointWriter wrote; throws CheckpointError naming the file and the section.
+class CheckpointReader {
+ public:
+  CheckpointReader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
+  void bytes(void* data, std::size_t size);
+  template <class T>
+  T value() {
+    T v;
+    bytes(&v, sizeof v);
+    return v;
+  }
+  std::string text();
+  /// Reads a section written by array(): the tag must match and the element size be sizeof(T);
+  /// `expected_count` (if not npos) must match too.
+  template <class T>
+  void array(const std::string& tag, std::vector<T>& v, std::uint64_t expected_count = npos) {
+    v.resize(section(tag, sizeof(T), expected_count));
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+  std::uint64_t section(const std::string& tag, std::uint32_t element_size,
+                        std::uint64_t expected_count = npos);
+  /// Checks the trailer hash and that nothing follows it.
+  void finish();
+  [[noreturn]] void fail(const std::string& why) const;
+  const std::string& file() const { return file_; }
+
+  static constexpr std::uint64_t npos = ~std::uint64_t(0);
+
+ private:
+  std::istream& in_;
+  std::string file_;
+  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+/// A checkpoint that cannot be used (missing, another version, corrupt, another scene).
+class CheckpointError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The header: what a restart checks before building anything.
+struct CheckpointHeader {
+  std::uint32_t version = kCheckpointVersion;
+  std::int32_t threads = 0;
+  std::uint64_t particles = 0;
+  std::int64_t step = 0;
+  double time = 0.0;
+  std::uint64_t scene_hash = 0;   ///< fnv1a of DIR/scene.json as written
+  std::string working_directory;  ///< of the run (material paths in scene.json are relative to it)
+};
+
+/// The run loop's state beside the Simulation's.
+struct RunState {
+  double next_output = 0.0;         ///< next history row / snapshot time [s]
+  std::uint64_t history_bytes = 0;  ///< history.csv so far (header included)
+  std::uint64_t history_rows = 0;
+  std::vector<double> observables;                        ///< Observables::state()
+  std::vector<std::pair<double, std::string>> snapshots;  ///< .pvd entries
+  double wall_time = 0.0;                                 ///< [s] of the step loop so far, all runs
+};
+
+/// Writes `file` atomically from the Simulation and the run state.
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const RunState& run,
+                      std::uint64_t scene_hash);
+/// Reads the header only (magic, version, byte order first); throws CheckpointError.
+CheckpointHeader read_checkpoint_header(const std::filesystem::path& file);
+/// Loads `file` into `sim` (built from the same scene with the checkpoint's thread count) and
+/// returns the run state; throws CheckpointError (the Simulation is then unusable).
+RunState read_checkpoint(const std::filesystem::path& file, Simulation& sim);
+
+}  // namespace impact::mpm

@@ -1,0 +1,137 @@
+#include "mpm/run/memory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "mpm/grid/grid.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/shape/shape.hpp"
+
+namespace impact::mpm {
+
+namespace {
+
+constexpr double kProgramBytes = 16e6;
+constexpr double kMB = 1e6;
+
+// "Key:   123 kB" of a /proc file, in bytes.
+std::optional<double> proc_field(const char* file, const std::string& key) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.compare(0, key.size() + 1, key + ":") != 0) continue;
+    std::istringstream s(line.substr(key.size() + 1));
+    double kb = 0.0;
+    if (s >> kb) return kb * 1024.0;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> read_number(const char* file) {
+  std::ifstream in(file);
+  double v = 0.0;
+  if (in >> v) return v;  // "max" (no limit) fails here
+  return std::nullopt;
+}
+
+}  // namespace
+
+double estimated_particle_count(const Scene& scene) {
+  const GridSpec& g = scene.grid;
+  const double cell = g.spacing().prod();
+  double n = 0.0;
+  for (const SceneObject& o : scene.objects) {
+    const auto [lo, hi] = bounds(o.geometry);
+    const Vec3 extent = (hi.cwiseMin(g.upper) - lo.cwiseMax(g.lower)).cwiseMax(0.0);
+    const double v = std::min(volume(o.geometry), extent.prod());
+    const auto& ppc = o.particles_per_cell;
+    n += std::ceil(v / cell * ppc[0] * ppc[1] * ppc[2]);
+  }
+  return n;
+}
+
+double estimated_grid_bytes(const Scene& scene, int threads) {
+  const GridSpec& g = scene.grid;
+  const double t = std::max(threads, 1);
+  const double nx = g.cells[0] + 3.0, ny = g.cells[1] + 3.0, nz = g.cells[2] + 3.0;
+  const double nodes = nx * ny * nz;
+  const double fields = scene.field_count();
+  const bool friction = fields > 1 && scene.physics.contact.type == ContactType::friction;
+  const bool musl = scene.solver.scheme == Scheme::musl;
+  double per_entry = t * 64.0 + 8.0 + 4.0 * 24.0;  // NodeData per thread, mass, 4 velocities
+  if (musl) per_entry += t * 24.0;                 // re-map momentum per thread
+  if (friction) per_entry += t * 48.0 + 8.0;       // nodal stress per thread, heat
+  double bytes = fields * nodes * per_entry;
+  bytes += nodes * 4.0;  // active-node list (dense: every node; blocks: reserved for all)
+  if (g.active_blocks) {
+    const double k = Grid::kBlock;
+    bytes += std::ceil(nx / k) * std::ceil(ny / k) * std::ceil(nz / k) * t;  // marks per thread
+  }
+  // Boundary nodes (constrained faces: face and ghost layers) and their free increments.
+  double boundary = 0.0;
+  const double n[3] = {nx, ny, nz};
+  for (int face = 0; face < 6; ++face) {
+    if (g.faces[face] == FaceCondition::free) continue;
+    const int axis = face / 2;
+    boundary += 2.0 * n[(axis + 1) % 3] * n[(axis + 2) % 3];
+  }
+  bytes += boundary * (4.0 + fields * 24.0);
+  return bytes;
+}
+
+MemoryEstimate estimate_memory(const Scene& scene, int threads,
+                               std::optional<std::size_t> particles) {
+  MemoryEstimate e;
+  e.exact_count = particles.has_value();
+  e.particles = particles ? double(*particles) : estimated_particle_count(scene);
+  double per_particle = double(Particles::bytes_per_particle());
+  if (scene.physics.artificial_viscosity.enabled) per_particle += sizeof(double);
+  if (scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle) per_particle += 1;
+  per_particle +=
+      scene.solver.interpolation == Interpolation::gimp ? sizeof(Stencil<3>) : sizeof(Stencil<2>);
+  e.particle_bytes = e.particles * per_particle;
+  e.grid_bytes = estimated_grid_bytes(scene, threads);
+  if (scene.output.snapshots) {
+    // Every array is kept (with an 8-byte size) until the file is written; the largest is
+    // allocated once more while it is copied in.
+    double per = 24.0 + 8.0 + 8.0 + 1.0, largest = 24.0;
+    for (const std::string& f : scene.output.fields) {
+      const double b = f == "velocity" ? 24.0 : f == "stress" ? 48.0 : 8.0;
+      per += b;
+      largest = std::max(largest, b);
+    }
+    e.output_bytes = e.particles * (per + largest);
+  }
+  e.program_bytes = kProgramBytes;
+  return e;
+}
+
+Json MemoryEstimate::json() const {
+  return {{"total [MB]", total() / kMB},
+          {"particles [MB]", particle_bytes / kMB},
+          {"grid [MB]", grid_bytes / kMB},
+          {"output [MB]", output_bytes / kMB},
+          {"program [MB]", program_bytes / kMB},
+          {"particles", particles},
+          {"particle_count", exact_count ? "seeded" : "estimated from the geometry"}};
+}
+
+std::optional<double> available_memory() {
+  std::optional<double> available = proc_field("/proc/meminfo", "MemAvailable");
+  const std::optional<double> limit = read_number("/sys/fs/cgroup/memory.max");
+  const std::optional<double> used = read_number("/sys/fs/cgroup/memory.current");
+  if (limit && used) {
+    const double left = std::max(*limit - *used, 0.0);
+    available = available ? std::min(*available, left) : left;
+  }
+  return available;
+}
+
+std::optional<double> peak_resident_memory() {
+  return proc_field("/proc/self/status", "VmHWM");
+}
+
+}  // namespace impact::mpm

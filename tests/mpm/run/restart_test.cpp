@@ -1,0 +1,276 @@
+// Checkpoint and restart (issue 8; docs/mpm.md#checkpoint-and-restart) on
+// tests/data/mpm_runs/contact_friction_av.json: two blocks in oblique contact with friction
+// (two velocity fields, nodal stress, friction heat into the temperatures), artificial viscosity
+// (q per particle) and physics.on_numerical_fault = fail_particle (one particle's stress is made
+// NaN at step 5, so the fault flags are part of the state), 2 threads.
+// (a) Simulation level: K = 40 steps uninterrupted against 20 steps, a checkpoint (in memory),
+//     a new Simulation loaded from it and 20 more steps: every particle array and every member of
+//     every PointState equal (==), the ledger row equal after every one of the 20 steps, and the
+//     counters equal.
+// (b) run() level: an uninterrupted run against one stopped by SIGTERM (injected after step 30:
+//     the real handler) and restarted with restart(): exit 143 then 0, status.json "interrupted"
+//     then "completed", and history.csv, particles.pvd and every particles/step_NNNNNN.vtu
+//     (every field, raw Float64) byte-identical, summary.json equal but for the wall-clock
+//     fields. And a run that wrote a checkpoint every 7 steps and then ran on to the end (as a
+//     run killed after its last checkpoint): restarting it drops the history rows after the
+//     checkpoint and ends byte-identical again.
+// (c) A restart is refused (InputError) for a checkpoint of another format version, a corrupt
+//     one (a flipped byte: checksum), a scene.json edited since, and a missing checkpoint.
+#include <unistd.h>
+
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "../verification_helpers.hpp"
+#include "mpm/run/checkpoint.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kScene =
+    std::string(IMPACT_SOURCE_DIR) + "/tests/data/mpm_runs/contact_friction_av.json";
+
+Scene scene() {
+  return load_scene(kScene);
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("mpm_restart_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string read_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  BOOST_REQUIRE_MESSAGE(in, "cannot open " << file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Json read_json(const fs::path& file) {
+  return Json::parse(read_bytes(file));
+}
+
+bool same_state(const PointState& a, const PointState& b) {
+  return a.stress == b.stress && a.F == b.F && a.R == b.R && a.plastic_strain == b.plastic_strain &&
+         a.plastic_strain_rate == b.plastic_strain_rate && a.temperature == b.temperature &&
+         a.internal_energy == b.internal_energy && a.damage == b.damage &&
+         a.porosity == b.porosity && a.melted == b.melted && a.failed == b.failed;
+}
+
+// Particles that differ in any array.
+std::size_t differing(const Particles& a, const Particles& b) {
+  BOOST_REQUIRE(a.size() == b.size());
+  BOOST_REQUIRE(a.q.size() == b.q.size());
+  BOOST_REQUIRE(a.fault.size() == b.fault.size());
+  std::size_t n = 0;
+  for (std::size_t p = 0; p < a.size(); ++p) {
+    const bool same =
+        a.x[p] == b.x[p] && a.v[p] == b.v[p] && a.mass[p] == b.mass[p] &&
+        a.volume0[p] == b.volume0[p] && a.volume[p] == b.volume[p] && a.L[p] == b.L[p] &&
+        same_state(a.state[p], b.state[p]) && a.wave_speed[p] == b.wave_speed[p] &&
+        a.material[p] == b.material[p] && a.object[p] == b.object[p] && a.field[p] == b.field[p] &&
+        (a.q.empty() || a.q[p] == b.q[p]) && (a.fault.empty() || a.fault[p] == b.fault[p]);
+    n += same ? 0 : 1;
+  }
+  return n;
+}
+
+std::vector<double> ledger_row(const Simulation& sim) {
+  return Ledger::values(sim.ledger().row(), sim.ledger().with_external());
+}
+
+// Every file of the run directory that must be identical, relative names.
+std::vector<std::string> output_files(const fs::path& dir) {
+  std::vector<std::string> files = {"history.csv", "particles.pvd", "scene.json"};
+  for (const auto& e : fs::directory_iterator(dir / "particles"))
+    files.push_back("particles/" + e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+void require_same_outputs(const fs::path& a, const fs::path& b) {
+  const auto files = output_files(a);
+  BOOST_TEST(files == output_files(b));
+  std::size_t same = 0;
+  for (const std::string& f : files) {
+    const bool equal = read_bytes(a / f) == read_bytes(b / f);
+    BOOST_TEST(equal, f << " differs");
+    same += equal;
+  }
+  BOOST_TEST_MESSAGE(same << " of " << files.size() << " output files byte-identical");
+  Json sa = read_json(a / "summary.json"), sb = read_json(b / "summary.json");
+  for (Json* s : {&sa, &sb}) {
+    for (const char* k : {"wall_time [s]", "particle_steps_per_second", "peak_resident_memory [MB]",
+                          "available_memory [MB]"})
+      s->erase(k);
+  }
+  BOOST_TEST(sa == sb);
+}
+
+// The uninterrupted run (2 threads), once for the test cases that compare with it; removed at
+// exit.
+const fs::path& uninterrupted() {
+  struct Run {
+    fs::path dir = scratch("uninterrupted");
+    Run() {
+      RunOptions options;
+      options.threads = 2;
+      options.out_dir = dir.string();
+      BOOST_REQUIRE(run(scene(), options) == 0);
+    }
+    ~Run() { fs::remove_all(dir); }
+  };
+  static const Run once;
+  return once.dir;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mpm_restart)
+
+BOOST_AUTO_TEST_CASE(simulation_continues_bit_for_bit_from_a_checkpoint) {
+  constexpr int kSteps = 40, kHalf = 20;
+  const Scene s = scene();
+  const FaultInjection nan{FaultInjection::Kind::nan, 5, 100};
+  std::vector<std::vector<double>> rows_a;
+  Particles end_a;
+  long faulted_a = 0;
+  {
+    Simulation a(s, 2);
+    a.inject(nan);
+    for (int i = 0; i < kSteps; ++i) {
+      a.step();
+      rows_a.push_back(ledger_row(a));
+    }
+    end_a = a.particles();
+    faulted_a = a.faulted_particles();
+  }
+  std::stringstream checkpoint;
+  {
+    Simulation b(s, 2);
+    b.inject(nan);
+    for (int i = 0; i < kHalf; ++i) b.step();
+    CheckpointWriter w(checkpoint);
+    b.save(w);
+    w.finish();
+  }
+  Simulation c(s, 2);
+  CheckpointReader r(checkpoint, "checkpoint in memory");
+  c.load(r);
+  r.finish();
+  BOOST_TEST(c.steps() == kHalf);
+  std::size_t rows_differ = 0;
+  for (int i = kHalf; i < kSteps; ++i) {
+    c.step();
+    rows_differ += ledger_row(c) == rows_a[i] ? 0 : 1;
+  }
+  const std::size_t particles_differ = differing(end_a, c.particles());
+  BOOST_TEST_MESSAGE(
+      end_a.size() << " particles, " << kSteps << " steps against " << kHalf << " + checkpoint + "
+                   << kSteps - kHalf << ": " << particles_differ << " particles and " << rows_differ
+                   << " ledger rows differ; " << c.faulted_particles() << " faulted particle");
+  BOOST_TEST(particles_differ == 0u);
+  BOOST_TEST(rows_differ == 0u);
+  BOOST_TEST(faulted_a == 1);
+  BOOST_TEST(c.faulted_particles() == faulted_a);
+}
+
+BOOST_AUTO_TEST_CASE(interrupted_and_restarted_run_matches_the_uninterrupted_one) {
+  const fs::path& a = uninterrupted();
+  BOOST_TEST(!fs::exists(a / kCheckpointFile));  // off by default
+  const fs::path b = scratch("b");
+  RunOptions options;
+  options.threads = 2;
+  options.out_dir = b.string();
+  options.faults = {{FaultInjection::Kind::sigterm, 30, 0}};
+  BOOST_TEST(run(scene(), options) == 128 + 15);
+  const Json status = read_json(b / "status.json");
+  BOOST_TEST_MESSAGE("status.json after SIGTERM: " << status.dump());
+  BOOST_TEST(status.at("status") == "interrupted");
+  BOOST_TEST(status.at("step") == 30);
+  BOOST_TEST(status.at("checkpoint").at("step") == 30);
+  BOOST_TEST(status.at("message").get<std::string>().find("mpm run --restart") !=
+             std::string::npos);
+  BOOST_TEST(fs::exists(b / kCheckpointFile));
+  BOOST_TEST(read_checkpoint_header(b / kCheckpointFile).step == 30);
+
+  RunOptions again;  // threads from the checkpoint
+  BOOST_REQUIRE(restart(b.string(), again) == 0);
+  BOOST_TEST(read_json(b / "status.json").at("status") == "completed");
+  require_same_outputs(a, b);
+  fs::remove_all(b);
+}
+
+BOOST_AUTO_TEST_CASE(a_restart_drops_history_rows_written_after_the_checkpoint) {
+  const fs::path& a = uninterrupted();
+  const fs::path c = scratch("c");
+  RunOptions options;
+  options.threads = 2;
+  Json doc = load_scene_document(kScene);
+  doc.merge_patch({{"output", {{"checkpoint_interval_steps", 7}}}});
+  const Scene every7 = read_scene(doc, kScene);
+  options.out_dir = c.string();
+  BOOST_REQUIRE(run(every7, options) == 0);
+  const CheckpointHeader h = read_checkpoint_header(c / kCheckpointFile);
+  const std::string full = read_bytes(c / "history.csv");
+  BOOST_TEST_MESSAGE("last checkpoint: step " << h.step << ", time " << h.time << " s; "
+                                              << read_json(c / "summary.json").at("steps")
+                                              << " steps in all");
+  BOOST_TEST(h.step % 7 == 0);
+  BOOST_REQUIRE(restart(c.string(), RunOptions{}) == 0);
+  BOOST_TEST(read_bytes(c / "history.csv") == full);  // no duplicated or lost rows
+  // The scene differs only in the checkpoint interval: the particle outputs must match a.
+  BOOST_TEST(read_bytes(c / "history.csv") == read_bytes(a / "history.csv"));
+  BOOST_TEST(read_bytes(c / "particles.pvd") == read_bytes(a / "particles.pvd"));
+  fs::remove_all(c);
+}
+
+BOOST_AUTO_TEST_CASE(a_restart_is_refused_for_a_foreign_or_corrupt_checkpoint) {
+  const fs::path dir = scratch("refused");
+  RunOptions options;
+  options.threads = 2;
+  options.out_dir = dir.string();
+  options.faults = {{FaultInjection::Kind::sigint, 10, 0}};
+  BOOST_REQUIRE(run(scene(), options) == 128 + 2);
+  const fs::path file = dir / kCheckpointFile;
+  const std::string good = read_bytes(file);
+  const auto refused = [&](const std::string& expected) {
+    try {
+      restart(dir.string(), RunOptions{});
+    } catch (const InputError& e) {
+      BOOST_TEST_MESSAGE("refused: " << e.what());
+      BOOST_TEST(std::string(e.what()).find(expected) != std::string::npos, e.what());
+      return;
+    }
+    BOOST_ERROR("restart was not refused (expected \"" << expected << "\")");
+  };
+  const auto write = [&](const fs::path& f, const std::string& bytes) {
+    std::ofstream(f, std::ios::binary) << bytes;
+  };
+  std::string other = good;
+  other[16] = 2;  // the format version (u32 after the 16-byte magic)
+  write(file, other);
+  refused("checkpoint format version 2, this mpm reads version 1");
+  std::string corrupt = good;
+  corrupt[good.size() / 2] ^= 0x10;
+  write(file, corrupt);
+  refused("checksum mismatch");
+  write(file, good);
+  const std::string scene_text = read_bytes(dir / "scene.json");
+  write(dir / "scene.json", scene_text + " ");
+  refused("changed since the checkpoint was written");
+  write(dir / "scene.json", scene_text);
+  fs::remove(file);
+  refused("no checkpoint");
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
