@@ -1,6 +1,7 @@
 #include "pointdriver/fit/fit_config.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -74,8 +75,12 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
       check_exists(r.problems(), e.key_path("file"), "experiment file", name, out.back().file);
     } else {
       const std::string pattern = e.string("glob", "experiment files ('*' and '?')");
-      std::string dir = fs::path(pattern).parent_path().string();
-      const std::string resolved_dir = resolve_file(dir.empty() ? "." : dir, file);
+      const std::string dir = fs::path(pattern).parent_path().string();
+      // A bare pattern ("lee_*.csv") means beside the configuration file, not the working
+      // directory (which always exists and would otherwise win in resolve_file).
+      const std::string resolved_dir = dir.empty()
+                                           ? fs::absolute(fs::path(file)).parent_path().string()
+                                           : resolve_file(dir, file);
       const auto files =
           glob_files((fs::path(resolved_dir) / fs::path(pattern).filename()).string());
       if (files.empty()) r.problems().add(at + "/glob", "no file matches '" + pattern + "'");
@@ -130,10 +135,14 @@ Json material_patch(JsonReader& r, const Json& doc) {
   return patch;
 }
 
+constexpr std::array<const char*, 2> kTemperatureShortcuts = {"room_temperature",
+                                                              "melt_temperature"};
+
 /// The material the configuration starts from, with its overrides: read now, so that a missing
 /// or bad material is reported against the configuration's key path before anything runs.
 std::vector<std::string> check_material(InputProblems& problems, const std::string& name,
-                                        const std::string& resolved, const Json& overrides) {
+                                        const std::string& resolved, const Json& overrides,
+                                        const Json& shortcuts) {
   std::error_code ec;
   if (name.empty()) return {};
   if (!fs::is_regular_file(resolved, ec)) {
@@ -141,7 +150,17 @@ std::vector<std::string> check_material(InputProblems& problems, const std::stri
     return {};
   }
   try {
-    return load_material(resolved, overrides).warnings;
+    std::vector<std::string> warnings = load_material(resolved, overrides).warnings;
+    // A temperature shortcut (room_temperature, melt_temperature) is the material's value now:
+    // its units warning was given at the configuration's own key, so the material's is a repeat.
+    std::erase_if(warnings, [&](const std::string& w) {
+      return std::any_of(kTemperatureShortcuts.begin(), kTemperatureShortcuts.end(),
+                         [&](const char* key) {
+                           return shortcuts.contains(key) &&
+                                  w.find(": /" + std::string(key) + ": ") != std::string::npos;
+                         });
+    });
+    return warnings;
   } catch (const InputError& e) {
     problems.add_nested("/material", "in material ", e);
   }
@@ -255,7 +274,7 @@ FitConfig read_fit_config(const Json& doc, const std::string& file) {
   }
   r.reject_unknown_keys();
   problems.warn_nested("/material", "in material ",
-                       check_material(problems, material_name, c.material_file, c.overrides));
+                       check_material(problems, material_name, c.material_file, c.overrides, doc));
   problems.throw_if_any();
   c.warnings = problems.warnings();
   if (c.output_material.empty())
@@ -305,7 +324,7 @@ CheckConfig read_check_config(const Json& doc, const std::string& file) {
   }
   r.reject_unknown_keys();
   problems.warn_nested("/material", "in material ",
-                       check_material(problems, material_name, c.material_file, c.overrides));
+                       check_material(problems, material_name, c.material_file, c.overrides, doc));
   problems.throw_if_any();
   c.warnings = problems.warnings();
   return c;

@@ -2,6 +2,9 @@
 // shipped examples read.
 #include "pointdriver/fit/fit_config.hpp"
 
+#include <algorithm>
+#include <filesystem>
+
 #include <boost/test/unit_test.hpp>
 
 using namespace impact;
@@ -66,6 +69,36 @@ BOOST_AUTO_TEST_CASE(problems_name_the_key_path) {
   BOOST_TEST(contains(error_of(steps), "test.json"));
 }
 
+// A glob without a folder matches beside the configuration file, whatever the working directory
+// (before: the working directory, where "lee_*.csv" matched nothing or the wrong files).
+BOOST_AUTO_TEST_CASE(a_bare_glob_matches_beside_the_configuration) {
+  const std::string experiments = std::string(IMPACT_SOURCE_DIR) + "/data/experiments/al6061_t6/";
+  const Json doc = {{"material", "data/materials/al6061_t6.json"},
+                    {"data", {{{"glob", "lee_298K_*.csv"}}}}};
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(std::filesystem::temp_directory_path());
+  const FitConfig config = read_fit_config(doc, experiments + "fit.json");
+  std::filesystem::current_path(cwd);
+  const auto expected = glob_files(experiments + "lee_298K_*.csv");
+  BOOST_TEST(!expected.empty());
+  BOOST_REQUIRE(config.data.size() == expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) BOOST_TEST(config.data[i].file == expected[i]);
+}
+
+// A shortcut typed in degC is reported once, at the configuration's key; the material check of
+// the overridden value said the same again before.
+BOOST_AUTO_TEST_CASE(a_shortcut_in_celsius_warns_once) {
+  const FitConfig config = read_fit_config(std::string(IMPACT_SOURCE_DIR) +
+                                           "/tests/data/unit_warnings/fits/"
+                                           "fit_room_temperature_in_celsius.json");
+  const auto about_room_temperature = std::count_if(
+      config.warnings.begin(), config.warnings.end(),
+      [](const std::string& w) { return contains(w, "room_temperature: 21 looks like degC"); });
+  BOOST_TEST(about_room_temperature == 1);
+  BOOST_TEST(
+      contains(config.warnings.at(0), "fit_room_temperature_in_celsius.json: /room_temperature"));
+}
+
 // Referenced files are checked with the configuration: a missing one is named at its key path,
 // and the material (with the overrides) is validated before anything runs.
 BOOST_AUTO_TEST_CASE(referenced_files_are_checked_at_their_key_path) {
@@ -87,14 +120,13 @@ BOOST_AUTO_TEST_CASE(referenced_files_are_checked_at_their_key_path) {
   BOOST_TEST(contains(error_of(override), "test.json: /material: in material "));
   BOOST_TEST(
       contains(error_of(override), "al6061_t6.json: /density: expected a number in (0, 30000]"));
-  // A room temperature in degC: read, with a warning at its key path (and one from the material
-  // it overrides).
+  // A room temperature in degC: read, with one warning at its key path (the material it
+  // overrides does not repeat it).
   Json celsius = base;
   celsius["room_temperature"] = 21.0;
   const FitConfig c = read_fit_config(celsius, fits + "test.json");
-  BOOST_TEST_REQUIRE(c.warnings.size() == 2u);
+  BOOST_TEST_REQUIRE(c.warnings.size() == 1u);
   BOOST_TEST(contains(c.warnings[0], "test.json: /room_temperature: 21 looks like degC"));
-  BOOST_TEST(contains(c.warnings[1], "/material: in material "));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
