@@ -45,6 +45,11 @@ void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, con
   const GridSpec& g = scene.grid;
   const Vec3 h = g.spacing();
   const SceneObject& o = scene.objects[oi];
+  // Only the cells of the object's bounding box can hold its points: a gauge region that spans a
+  // fine grid (or 1e300) costs what seeding the object costs, not a walk over the whole box.
+  const auto [blo, bhi] = bounds(o.geometry);
+  const Vec3 box_lo = lo.cwiseMax(blo);
+  const Vec3 box_hi = hi.cwiseMin(bhi);
   // Clamped in double before the conversion: a box far outside the grid (a scene's gauge region
   // of 1e300) would overflow int (undefined behaviour); NaN (inf / inf) gives an empty range.
   const auto cell = [&](double x, int d) {
@@ -52,8 +57,8 @@ void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, con
   };
   std::array<int, 3> c0{}, c1{};
   for (int d = 0; d < 3; ++d) {
-    c0[d] = cell(std::floor((lo(d) - g.lower(d)) / h(d)), d);
-    c1[d] = cell(std::ceil((hi(d) - g.lower(d)) / h(d)), d);
+    c0[d] = cell(std::floor((box_lo(d) - g.lower(d)) / h(d)), d);
+    c1[d] = cell(std::ceil((box_hi(d) - g.lower(d)) / h(d)), d);
   }
   const auto& ppc = o.particles_per_cell;
   for (int i = c0[0]; i < c1[0]; ++i)

@@ -104,6 +104,14 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   g.lower = read_vec3(r, n, "lower", "lower corner of the grid [m]");
   g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m]");
   g.cells = read_int3(r, n, "cells", 1, 100000, "cells per axis", std::nullopt);
+  // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int.
+  const double stored_nodes = (g.cells[0] + 3.0) * (g.cells[1] + 3.0) * (g.cells[2] + 3.0);
+  if (stored_nodes > static_cast<double>(std::numeric_limits<int>::max())) {
+    std::ostringstream m;
+    m << "(cells + 3) per axis multiplied is " << stored_nodes
+      << " stored grid nodes: expected at most 2147483647 (2^31 - 1)";
+    r.problems().add(r.key_path("cells"), m.str());
+  }
   if (!((g.upper - g.lower).array() > 0.0).all()) {
     r.problems().add(r.key_path("upper"), "expected upper > lower on every axis");
   } else if (auto hint = unit_hint(Quantity::length, (g.upper - g.lower).maxCoeff())) {

@@ -2,10 +2,10 @@
 // - the grid term equals what Grid allocates (Grid::bytes() after a few steps, when the MUSL
 //   re-map buffers exist) for one field (two_spheres.json) and for two fields with friction
 //   contact (nodal stress and heat; tests/data/mpm_runs/contact_friction_av.json), 1 and 2
-//   threads: both scenes have free faces, so the boundary-node lists (estimated, not in bytes())
-//   are empty;
+//   threads: both scenes have free faces, so the boundary-node and mirror lists (estimated as an
+//   upper bound: edge nodes counted once per face) are empty;
 // - the geometric particle count is within 3 % of the seeded one (spheres and boxes);
-// - an absurd resolution (tests/data/mpm_runs/huge_grid.json, 4000^3 cells) is refused by
+// - an absurd resolution (tests/data/mpm_runs/huge_grid.json, 1200^3 cells) is refused by
 //   memory_refusal() and by run() (kExitMemory, nothing written) within a second: nothing is
 //   seeded or allocated.
 #include <unistd.h>
@@ -64,7 +64,7 @@ BOOST_AUTO_TEST_CASE(an_absurd_resolution_is_refused_without_allocating) {
   const std::string refusal = memory_refusal(scene, 2);
   BOOST_TEST_MESSAGE("mpm: " << refusal);
   BOOST_TEST(refusal.find("refusing to start: estimated memory ") == 0u);
-  BOOST_TEST(refusal.find("4000 x 4000 x 4000 cells") != std::string::npos);
+  BOOST_TEST(refusal.find("1200 x 1200 x 1200 cells") != std::string::npos);
   BOOST_TEST(refusal.find("exceeds the available memory ") != std::string::npos);
   const fs::path dir = fs::temp_directory_path() / ("mpm_memory_" + std::to_string(::getpid()));
   RunOptions options;
