@@ -22,8 +22,9 @@
 // Jaumann rate (option "jaumann", for comparison): sigma is rotated with the spin W = skew L by the
 // Hughes-Winget increment Q = (I - W dt/2)^{-1} (I + W dt/2) (Hughes & Winget 1980, IJNME
 // 15:1862-1867); the composed model applies it over half a step before and half a step after the
-// material update with D (midpoint form, second order). Q is exactly orthogonal for skew W (a Cayley transform, rotation angle 2 atan(|w| dt/2)).
-// Under simple shear the Jaumann rate makes the elastic shear stress oscillate (mu sin gamma).
+// material update with D (midpoint form, second order). Q is exactly orthogonal for skew W (a
+// Cayley transform, rotation angle 2 atan(|w| dt/2)). Under simple shear the Jaumann rate makes the
+// elastic shear stress oscillate (mu sin gamma).
 #pragma once
 
 #include "models/core/tensor.hpp"

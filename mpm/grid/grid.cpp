@@ -45,15 +45,44 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
   for (int i = 0; i < n; ++i)
     if (mark[i]) boundary_nodes_.push_back(i);
   free_increment.assign(boundary_nodes_.size() * fields_, Vec3::Zero());
+  // The mirror's writes in its order: every face layer first (all faces), then the ghost layers
+  // in face order, so that a ghost corner node is the reflection in both planes of an interior
+  // node (grid/boundary.cpp).
+  const int c[3] = {spec_.cells[0], spec_.cells[1], spec_.cells[2]};
+  for (int pass = 0; pass < 2; ++pass)
+    for (int face = 0; face < 6; ++face) {
+      if (!constrained_[face]) continue;
+      const bool fixed = spec_.faces[face] == FaceCondition::fixed;
+      const int axis = face / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
+      const int layer = face % 2 == 0 ? 0 : c[axis];
+      const int ghost = face % 2 == 0 ? -1 : c[axis] + 1;
+      const int inner = face % 2 == 0 ? 1 : c[axis] - 1;
+      for (int u = -1; u <= c[a] + 1; ++u)
+        for (int w = -1; w <= c[b] + 1; ++w) {
+          int ijk[3];
+          ijk[a] = u;
+          ijk[b] = w;
+          ijk[axis] = pass == 0 ? layer : ghost;
+          const int target = index(ijk[0], ijk[1], ijk[2]);
+          ijk[axis] = inner;
+          mirror_all_.push_back(
+              {target, pass == 0 ? -1 : index(ijk[0], ijk[1], ijk[2]), axis, fixed});
+        }
+    }
   bx_ = (nx_ + kBlock - 1) / kBlock;
   by_ = (ny_ + kBlock - 1) / kBlock;
   bz_ = (nz_ + kBlock - 1) / kBlock;
   if (dense()) {
     active_.resize(n);
     for (int i = 0; i < n; ++i) active_[i] = i;
+    active_boundary_.resize(boundary_nodes_.size());
+    for (std::size_t k = 0; k < boundary_nodes_.size(); ++k) active_boundary_[k] = int(k);
+    mirror_active_ = mirror_all_;
   } else {
     marks_.assign(buffers_.size(), std::vector<char>(std::size_t(bx_) * by_ * bz_, 0));
     active_.reserve(n);  // no allocation in a step
+    active_boundary_.reserve(boundary_nodes_.size());
+    mirror_active_.reserve(mirror_all_.size());
   }
 }
 
@@ -82,6 +111,19 @@ void Grid::activate() {
               active_.push_back(first + k);
           }
       }
+  // The face conditions follow the particles too: a face node outside the marked blocks has no
+  // mass and is in no particle's stencil this step, so neither its mirror value nor its impulse
+  // term is read (both are skipped in the same order as on the dense grid: same bits).
+  const auto in_marked_block = [&](int node) {
+    const int i = node / (ny_ * nz_), j = (node / nz_) % ny_, k = node % nz_;
+    return m[std::size_t((i / kBlock) * by_ + j / kBlock) * bz_ + k / kBlock] != 0;
+  };
+  active_boundary_.clear();
+  for (std::size_t k = 0; k < boundary_nodes_.size(); ++k)
+    if (in_marked_block(boundary_nodes_[k])) active_boundary_.push_back(int(k));
+  mirror_active_.clear();
+  for (const MirrorWrite& w : mirror_all_)
+    if (in_marked_block(w.target)) mirror_active_.push_back(w);
   std::fill(m.begin(), m.end(), 0);
 }
 
@@ -142,6 +184,9 @@ std::size_t Grid::bytes() const {
       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size()) * sizeof(Vec3);
   b += active_.capacity() * sizeof(int);
   for (const auto& m : marks_) b += m.size();
+  b += (boundary_nodes_.capacity() + active_boundary_.capacity()) * sizeof(int) +
+       free_increment.capacity() * sizeof(Vec3) +
+       (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite);
   return b;
 }
 

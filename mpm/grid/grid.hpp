@@ -44,6 +44,16 @@ struct BoundaryLoad {
   double dissipation = 0.0;     ///< kinetic energy the face projection took from the grid [J]
 };
 
+/// One write of the face mirror (Grid::apply_mirror): `target` is a face-layer node (its
+/// constrained components zeroed) or a ghost node (the reflection of `source`, the first interior
+/// node); storage indices within one field.
+struct MirrorWrite {
+  int target;
+  int source;  ///< -1 on the face layer
+  int axis;
+  bool fixed;
+};
+
 class Grid {
  public:
   /// `fields` velocity fields; `nodal_stress`: also scatter the stress (friction contact).
@@ -105,22 +115,38 @@ class Grid {
   /// before the new blocks are marked): then they are zero everywhere.
   void clear();
   /// The scatter target of thread t.
-  NodeData* buffer(int t) { return buffers_[t].data(); }
+  NodeData* buffer(int t) {
+    return buffers_[t].data();
+  }
   /// Sums thread buffers into buffer 0 in thread order (deterministic), at the active nodes.
   void reduce();
   /// Nodal stress scatter target of thread t (empty unless constructed with nodal_stress).
-  NodeStress* stress_buffer(int t) { return stress_buffers_[t].data(); }
-  bool has_nodal_stress() const { return !stress_buffers_.empty(); }
-  const std::vector<NodeStress>& nodal_stress() const { return stress_buffers_[0]; }
+  NodeStress* stress_buffer(int t) {
+    return stress_buffers_[t].data();
+  }
+  bool has_nodal_stress() const {
+    return !stress_buffers_.empty();
+  }
+  const std::vector<NodeStress>& nodal_stress() const {
+    return stress_buffers_[0];
+  }
   /// The reduced node data (valid after reduce()).
-  std::vector<NodeData>& nodes() { return buffers_[0]; }
-  const std::vector<NodeData>& nodes() const { return buffers_[0]; }
+  std::vector<NodeData>& nodes() {
+    return buffers_[0];
+  }
+  const std::vector<NodeData>& nodes() const {
+    return buffers_[0];
+  }
 
   /// MUSL re-map: per-thread momentum buffers, zeroed / reduced like the node buffers.
-  Vec3* momentum_buffer(int t) { return remap_buffers_[t].data(); }
+  Vec3* momentum_buffer(int t) {
+    return remap_buffers_[t].data();
+  }
   void clear_momentum();
   void reduce_momentum();
-  const std::vector<Vec3>& remapped_momentum() const { return remap_buffers_[0]; }
+  const std::vector<Vec3>& remapped_momentum() const {
+    return remap_buffers_[0];
+  }
 
   std::vector<double> mass;        ///< m_I (copy of nodes()[I].mass, compact for gathers)
   std::vector<Vec3> velocity;      ///< v_I = p_I / m_I (ghost layer mirrored) [m/s]
@@ -135,7 +161,14 @@ class Grid {
 
   /// Nodes touched by a constrained (symmetric or fixed) face: face layers, ghost layers, once
   /// each (for the impulse / boundary bookkeeping); indices within one field.
-  const std::vector<int>& boundary_nodes() const { return boundary_nodes_; }
+  const std::vector<int>& boundary_nodes() const {
+    return boundary_nodes_;
+  }
+  /// Positions k in boundary_nodes() of the nodes in active blocks, ascending (all with a dense
+  /// grid): the only boundary nodes that can carry mass this step.
+  const std::vector<int>& active_boundary() const {
+    return active_boundary_;
+  }
 
   /// The mirror condition on every field of a nodal velocity array (grid/boundary.cpp): on every
   /// constrained face the constrained components on the face layer are zeroed, and the ghost
@@ -153,9 +186,12 @@ class Grid {
   std::vector<std::vector<NodeStress>> stress_buffers_;
   std::vector<std::vector<Vec3>> remap_buffers_;
   std::vector<int> boundary_nodes_;
+  std::vector<int> active_boundary_;
+  std::vector<MirrorWrite> mirror_all_;     ///< every face node, in the order of the mirror
+  std::vector<MirrorWrite> mirror_active_;  ///< those whose target is in an active block
   std::array<bool, 6> constrained_{};
-  int bx_ = 0, by_ = 0, bz_ = 0;         ///< blocks per axis
-  std::vector<int> active_;              ///< active nodes, ascending
+  int bx_ = 0, by_ = 0, bz_ = 0;          ///< blocks per axis
+  std::vector<int> active_;               ///< active nodes, ascending
   std::vector<std::vector<char>> marks_;  ///< per thread, per block (active blocks only)
 };
 

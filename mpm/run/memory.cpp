@@ -70,7 +70,8 @@ double estimated_grid_bytes(const Scene& scene, int threads) {
     const double k = Grid::kBlock;
     bytes += std::ceil(nx / k) * std::ceil(ny / k) * std::ceil(nz / k) * t;  // marks per thread
   }
-  // Boundary nodes (constrained faces: face and ghost layers) and their free increments.
+  // Boundary nodes (constrained faces: face and ghost layers), their free increments, the active
+  // subset's positions and the mirror's writes (all and active: Grid::apply_mirror).
   double boundary = 0.0;
   const double n[3] = {nx, ny, nz};
   for (int face = 0; face < 6; ++face) {
@@ -78,7 +79,7 @@ double estimated_grid_bytes(const Scene& scene, int threads) {
     const int axis = face / 2;
     boundary += 2.0 * n[(axis + 1) % 3] * n[(axis + 2) % 3];
   }
-  bytes += boundary * (4.0 + fields * 24.0);
+  bytes += boundary * (4.0 + 4.0 + fields * 24.0 + 2.0 * sizeof(MirrorWrite));
   return bytes;
 }
 

@@ -60,11 +60,13 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
   // The mirror holds for the start-of-step field too: the image cancels the face layer's normal
   // momentum, so the wall acts on the particles only through the stress (an affine field odd
   // about the face passes unchanged; tests/mpm/verification/uniaxial_compression_test.cpp).
+  // Only the boundary nodes in active blocks can carry mass (Grid::active_boundary()).
   const std::vector<int>& bn = G.boundary_nodes();
+  const std::vector<int>& active_bn = G.active_boundary();
   const std::size_t nb = bn.size();
   const int nn = G.node_count();
   for (int f = 0; f < G.fields(); ++f)
-    for (std::size_t k = 0; k < nb; ++k) {
+    for (const int k : active_bn) {
       const int e = f * nn + bn[k];
       G.free_increment[f * nb + k] = G.velocity_new[e] - G.velocity[e];
     }
@@ -74,7 +76,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
   // The faces' impulse: what they changed in the increments that move the particles (serial, in
   // node order: deterministic). A stationary wall does no work (docs/mpm.md#ledger).
   for (int f = 0; f < G.fields(); ++f)
-    for (std::size_t k = 0; k < nb; ++k) {
+    for (const int k : active_bn) {
       const int e = f * nn + bn[k];
       if (nodes[e].mass <= 0.0) continue;
       out.boundary.impulse += nodes[e].mass * (G.increment[e] - G.free_increment[f * nb + k]);

@@ -140,8 +140,8 @@ BOOST_AUTO_TEST_CASE(active_nodes_cover_the_stencils_and_skip_the_hollow) {
       if (G.mass[f * G.node_count() + I] > 0.0 && !set.count(I)) ++massive_outside;
   BOOST_TEST(massive_outside == 0u);
   const double fraction = double(active.size()) / G.node_count();
-  BOOST_TEST_MESSAGE("case01: " << active.size() << " of " << G.node_count()
-                                << " nodes active (" << fraction << ")");
+  BOOST_TEST_MESSAGE("case01: " << active.size() << " of " << G.node_count() << " nodes active ("
+                                << fraction << ")");
   BOOST_TEST(fraction < 0.6);
 }
 

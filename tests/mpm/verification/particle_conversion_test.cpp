@@ -1,11 +1,12 @@
 // create_new_particles: a particle that fails moves to its material's companion velocity field
 // (mpm/step/stress_update.cpp) keeping mass, velocity, stress and history. Scene: the two blocks
-// of contact_blocks.json with friction contact (mu 0.1), artificial viscosity, create_new_particles,
-// erosion KeepStress and do_melting (every optional path of the step: the test is labelled `unit`
-// so that the ASan + UBSan run covers contact, viscosity and conversion), the right block seeded at 1000 K (above the 925 K melting temperature), so every
-// right-block particle fails by melting on the first step and no left-block particle ever fails
-// (elastic, 294 K). One thread, so that the ledger's sums and the ones here add the same terms in
-// the same order. Asserted:
+// of contact_blocks.json with friction contact (mu 0.1), artificial viscosity,
+// create_new_particles, erosion KeepStress and do_melting (every optional path of the step: the
+// test is labelled `unit` so that the ASan + UBSan run covers contact, viscosity and conversion),
+// the right block seeded at 1000 K (above the 925 K melting temperature), so every right-block
+// particle fails by melting on the first step and no left-block particle ever fails (elastic, 294
+// K). One thread, so that the ledger's sums and the ones here add the same terms in the same order.
+// Asserted:
 //   - converted_particles() = failed_particles() = the right block's particle count after step 1,
 //     and every right-block particle is in Scene::companion_field(right material), every left
 //     one in its parent field, at every later step;
