@@ -7,8 +7,8 @@
 // Reference (computed here from the material, not typed in): u_p = (v_flyer - v_target)/2 =
 // 250 m/s, U_s = C0 + S u_p = 5720.75 m/s, p_H = rho0 U_s u_p = 3.8615 GPa, rho_H = rho0 U_s /
 // (U_s - u_p); asserted first that the EOS's own Hugoniot p_H(rho_H) equals rho0 U_s u_p (1e-12).
-// Strength: the scene makes the alloy hydrodynamic (Johnson-Cook A = 1 kPa, B = C = 0, so the
-// deviator is capped at 1 kPa = 3e-7 p_H and sigma = -p I): the tabulated Hugoniot is the
+// Strength: the scene makes the alloy hydrodynamic (Johnson-Cook A = 0.1 MPa, B = C = 0, so the
+// deviator is capped at 0.1 MPa = 2.6e-5 p_H and sigma = -p I): the tabulated Hugoniot is the
 // hydrodynamic one, and with strength no single stress of the shocked state equals it. At the
 // same u_p (exact by symmetry whatever the strength) the elastic-plastic state sits on
 // -sigma_xx = p + 2/3 Y with -sigma_xx ~ rho0 U u_p, which puts the mean stress at about
