@@ -2,13 +2,14 @@
 """Speed versus accuracy on the recommended sphere-cylinder scene (issue 7; docs/accuracy.md).
 
   accuracy_study.py OUT [--mpm build/bin/mpm] [--max-time 40e-6] [--levels 1,1.5,2.25,3]
-                        [--max-level-others 2.25] [--threads 2] [--analyse-only]
+                        [--max-level-others 2.25] [--threads 2] [--jobs 1] [--analyse-only]
 
 1. Writes variants of data/scenes/sphere_cylinder/recommended.json into OUT/scenes/ (each a
    two-line scene that `extends` it): per method (interpolation gimp/linear x scheme musl/usl)
    a resolution ladder (the report's 50 x 20 x 20 grid times each level), plus, on the report's
    grid with gimp/musl, time-step multipliers 0.2, 0.4, 0.8 and 1 and 3 particles per cell.
-2. Runs them with `mpm study OUT/scenes --out OUT/runs --no-plot` (one after another).
+2. Runs them with `mpm study OUT/scenes --out OUT/runs --no-plot` (one after another), or with
+   --jobs N as N concurrent `mpm run` processes (the most expensive first).
 3. Reads every run's summary.json: wall time, particle-steps, the ledger's energy_error, and every
    number under "observables" (per-object mean velocity and kinetic energy, crater depth and
    diameter, peak pressure, gauges: docs/mpm.md). The reference of each observable is the finest
@@ -23,6 +24,7 @@ Exit codes: 0 done, 1 usage error, 2 input error, 3 a run failed (analysed witho
 """
 
 import argparse
+import concurrent.futures
 import csv
 import json
 import math
@@ -78,6 +80,39 @@ def write_scene(path, interp, scheme, level, multiplier, ppc, max_time):
         json.dump(patch, f, indent=1)
 
 
+def estimated_cost(v):
+    """Relative cost of a variant: particles (level^3 ppc^3) x steps (level / multiplier)."""
+    interp, scheme, level, multiplier, ppc = v
+    return level ** 4 * ppc ** 3 / multiplier
+
+
+def run_in_parallel(mpm, scenes, runs_dir, table, jobs, threads):
+    """`mpm run` of every variant, JOBS at a time, the most expensive first (so the last to start
+    are the short ones). Each run writes runs_dir/NAME/ as `mpm study` would; a run that stops
+    before its summary gets one saying so. Returns 0, or 3 when a run failed, as mpm study does."""
+    order = sorted(table, key=estimated_cost, reverse=True)
+
+    def one(v):
+        name = variant_name(*v)
+        out = os.path.join(runs_dir, name)
+        os.makedirs(out, exist_ok=True)
+        for stale in ("summary.json", "history.csv"):
+            if os.path.exists(os.path.join(out, stale)):
+                os.remove(os.path.join(out, stale))
+        with open(os.path.join(out, "mpm.log"), "w") as log:
+            code = subprocess.call([mpm, "run", os.path.join(scenes, name + ".json"), "--out", out,
+                                    "--threads", str(threads)], stdout=log, stderr=subprocess.STDOUT)
+        if not os.path.exists(os.path.join(out, "summary.json")):
+            with open(os.path.join(out, "summary.json"), "w") as f:
+                json.dump({"status": "failed", "exit_code": code}, f)
+        print(f"accuracy_study: {name}: exit {code}", flush=True)
+        return code
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        codes = list(pool.map(one, order))
+    return 3 if any(c != 0 for c in codes) else 0
+
+
 def flatten(prefix, node, into):
     if isinstance(node, dict):
         for k, v in node.items():
@@ -103,21 +138,60 @@ def read_runs(runs_dir, table):
         flat["abs_energy_error"] = abs(s.get("final", {}).get("energy_error [-]", float("nan")))
         obs = {k: v for k, v in flat.items() if k in OBSERVABLES}
         hist = os.path.join(runs_dir, name, "history.csv")
+        histories = {}
         if os.path.exists(hist):
             with open(hist, newline="") as f:
-                rows = list(csv.reader(f))
+                rows = [x for x in csv.reader(f) if x]
             if len(rows) > 1:
+                rows = [rows[0]] + [x for x in rows[1:] if len(x) == len(rows[0])]
+                t = [float(x[0]) for x in rows[1:]]
                 for i, h in enumerate(rows[0]):
-                    if h.startswith("gauge_") and len(rows[-1]) == len(rows[0]):
+                    if h.startswith("gauge_"):
                         obs[h] = float(rows[-1][i])
+                        histories[h] = (t, [float(x[i]) for x in rows[1:]])
         runs.append({
             "name": name, "interp": interp, "scheme": scheme, "level": level,
             "multiplier": multiplier, "ppc": ppc, "status": s.get("status", "?"),
             "wall": float(s.get("wall_time [s]", float("nan"))),
             "particle_steps": float(s.get("particles", 0)) * float(s.get("steps", 0)),
-            "obs": obs,
+            "obs": obs, "histories": histories,
+            # Scales of the observables that pass through zero (docs/accuracy.md): the initial
+            # kinetic energy and the impact speed |p0| / m_sphere.
+            "e0": float(s.get("initial_energy [J]", float("nan"))),
+            "v0": (math.sqrt(sum(x * x for x in s.get("initial_momentum [kg m/s]", [0.0])))
+                   / s.get("observables", {}).get("objects", {}).get("sphere", {})
+                   .get("mass [kg]", float("nan"))),
         })
     return runs
+
+
+MIN_ORDER, MAX_ORDER = 0.5, 3.0
+
+
+def scale_of(name, reference, finest):
+    """What an observable's error is relative to: the initial kinetic energy for the bodies'
+    kinetic energies and the impact speed for their mean velocities (both pass near zero late in
+    the impact, where a relative error says nothing), else the reference value itself."""
+    if name.endswith("kinetic_energy [J]") and finest["e0"] > 0:
+        return finest["e0"]
+    if "mean_velocity" in name and finest["v0"] > 0:
+        return finest["v0"]
+    return abs(reference) if abs(reference) > 0 else 1.0
+
+
+def interp(xs, ys, x):
+    """Piecewise-linear y(x) on ascending xs (x within [xs[0], xs[-1]])."""
+    lo, hi = 0, len(xs) - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if xs[mid] <= x:
+            lo = mid
+        else:
+            hi = mid
+    if xs[hi] == xs[lo]:
+        return ys[lo]
+    w = (x - xs[lo]) / (xs[hi] - xs[lo])
+    return ys[lo] + w * (ys[hi] - ys[lo])
 
 
 def richardson(values, levels):
@@ -174,11 +248,35 @@ def analyse(out, runs, levels):
             if any(v is None for v in vals):
                 continue
             rich = richardson(vals, [r["level"] for r in t])
-            if rich:
+            # An observed order far from the methods' 1-2 means the three grids are not in the
+            # asymptotic range (the extrapolation would be wild): keep the finest run then.
+            if rich and MIN_ORDER <= rich[0] <= MAX_ORDER:
                 orders[n] = rich[0]
                 reference[n] = rich[1]
             break
+    # Gauge histories (the VISAR-like far-end velocity, the wall's strain gauges): the error is
+    # the largest difference over the reference's output times (linear interpolation) relative to
+    # the reference history's largest magnitude; the reference is the finest run (no Richardson
+    # for a whole history).
+    history_names = [h for h in sorted(finest["histories"])
+                     if max(map(abs, finest["histories"][h][1]), default=0.0) >
+                     next((f for u, f in floor.items() if h.endswith(u)), 0.0)]
     rows = []
+    for r in runs:
+        for h in history_names:
+            if h not in r["histories"]:
+                continue
+            tr, vr = finest["histories"][h]
+            t, v = r["histories"][h]
+            common = [(a, b) for a, b in zip(tr, vr) if t and t[0] <= a <= t[-1]]
+            if not common:
+                continue
+            peak = max(abs(b) for _, b in common)
+            diff = max(abs(interp(t, v, a) - b) for a, b in common)
+            rows.append({**{k: r[k] for k in ("name", "interp", "scheme", "level", "multiplier",
+                                                "ppc", "status", "wall", "particle_steps")},
+                         "observable": "history " + h, "value": max(map(abs, v)),
+                         "reference": peak, "error": diff / peak})
     for r in runs:
         for n in names:
             v, ref = r["obs"].get(n), reference.get(n)
@@ -187,8 +285,7 @@ def analyse(out, runs, levels):
             if n == "abs_energy_error":
                 err = v
             else:
-                scale = abs(ref) if abs(ref) > 0 else 1.0
-                err = abs(v - ref) / scale
+                err = abs(v - ref) / scale_of(n, ref, finest)
             rows.append({**{k: r[k] for k in ("name", "interp", "scheme", "level", "multiplier",
                                                 "ppc", "status", "wall", "particle_steps")},
                          "observable": n, "value": v, "reference": ref, "error": err})
@@ -204,19 +301,29 @@ def analyse(out, runs, levels):
     lines = ["# Speed versus accuracy: recommended sphere-cylinder scene", "",
              f"Reference: {'Richardson extrapolation where marked, else ' if orders else ''}"
              f"the finest gimp/musl run ({finest['name']}). Errors relative to the reference "
-             "(abs_energy_error: the ledger's |energy_error| itself).", "",
+             "(abs_energy_error: the ledger's |energy_error| itself; kinetic energies relative "
+             f"to the initial kinetic energy E0 = {finest['e0']:.5g} J, mean velocities relative "
+             f"to the impact speed {finest['v0']:.5g} m/s; gauge histories: the largest "
+             "difference over time relative to the reference history's largest magnitude). "
+             f"Richardson's observed order is accepted in [{MIN_ORDER:g}, {MAX_ORDER:g}].", "",
              "| observable | reference | observed order | cheapest run <= 1 % | <= 5 % | <= 10 % |",
              "|---|---|---|---|---|---|"]
+    names = names + ["history " + h for h in history_names]
     for n in names:
         cells = []
         for tol in (0.01, 0.05, 0.10):
+            # The finest run is a candidate only where the reference is not the run itself.
             ok = [x for x in rows if x["observable"] == n and x["error"] <= tol
-                  and x["status"] == "completed" and x["name"] != finest["name"]]
+                  and x["status"] == "completed"
+                  and (n in orders or x["name"] != finest["name"])]
             best = min(ok, key=lambda x: x["wall"]) if ok else None
             cells.append(f"{best['name']} ({best['wall']:.1f} s)" if best else "none")
         ref = reference.get(n)
-        lines.append(f"| {n} | {ref:.4g} | {orders[n]:.2f} |" if n in orders else
-                     f"| {n} | {ref:.4g} | - |")
+        if n.startswith("history "):
+            lines.append(f"| {n} (max over time) | finest run | - |")
+        else:
+            lines.append(f"| {n} | {ref:.4g} | {orders[n]:.2f} (Richardson) |" if n in orders
+                         else f"| {n} | {ref:.4g} | - |")
         lines[-1] += " " + " | ".join(cells) + " |"
     lines += ["", "| run | status | wall [s] | particle-steps | |energy_error| |", "|---|---|---|---|---|"]
     for r in runs:
@@ -236,7 +343,7 @@ def pareto_front(points):
     return front
 
 
-def draw(out, rows, names):
+def draw(out, rows, names, wall_label):
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -250,7 +357,7 @@ def draw(out, rows, names):
         if not pts:
             continue
         fig, axes = plt.subplots(1, 2, figsize=(13, 5))
-        for ax, cost, label in ((axes[0], "wall", "wall time [s] (2 threads)"),
+        for ax, cost, label in ((axes[0], "wall", wall_label),
                                 (axes[1], "particle_steps", "particle-steps [-]")):
             for interp, scheme in METHODS:
                 ladder = sorted((x for x in pts if (x["interp"], x["scheme"]) == (interp, scheme)
@@ -287,7 +394,10 @@ def main():
                    help="grid levels (x the deck's 50x20x20 cells per axis)")
     p.add_argument("--max-level-others", type=float, default=2.25,
                    help="finest level run for the methods other than gimp/musl")
-    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--threads", type=int, default=2, help="threads per run")
+    p.add_argument("--jobs", type=int, default=1,
+                   help="runs at a time (e.g. --jobs 2 --threads 1 on 2 cores: more runs per "
+                   "hour than one 2-thread run at a time; wall times are then 1-thread times)")
     p.add_argument("--analyse-only", action="store_true")
     a = p.parse_args()
     try:
@@ -301,12 +411,16 @@ def main():
     if not a.analyse_only:
         for v in table:
             write_scene(os.path.join(scenes, variant_name(*v) + ".json"), *v, a.max_time)
-        code = subprocess.call([a.mpm, "study", scenes, "--out", runs_dir, "--threads",
-                                str(a.threads), "--no-plot"])
+        if a.jobs == 1:
+            code = subprocess.call([a.mpm, "study", scenes, "--out", runs_dir, "--threads",
+                                    str(a.threads), "--no-plot"])
+        else:
+            code = run_in_parallel(a.mpm, scenes, runs_dir, table, a.jobs, a.threads)
         if code not in (0, 3):
             return code
     rows, names = analyse(a.out, read_runs(runs_dir, table), levels)
-    draw(a.out, rows, names)
+    draw(a.out, rows, names, f"wall time [s] ({a.threads} thread(s) per run, {a.jobs} run(s) "
+         "at a time)")
     print(f"accuracy_study: wrote {a.out}/accuracy.md, accuracy.csv and pareto_*.png")
     return code
 
