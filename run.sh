@@ -13,6 +13,7 @@
 #   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
 #   ./run.sh stability  build and run the sphere-cylinder stability map (docs/figures/stability/)
 #   ./run.sh accuracy   build and run the speed-versus-accuracy study (docs/figures/accuracy/)
+#   ./run.sh quarter    build and run the quarter model against the full model (docs/figures/quarter_model/)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -72,7 +73,10 @@ case "${1:-}" in
     build release
     build/bin/models_benchmark "${@:2}"
     build/bin/pointdriver_benchmark
-    build/bin/mpm_benchmark
+    # Scaling, feature cost and box size of the explicit step (CSV + figures in
+    # docs/figures/performance/; about 10 min on 2 idle cores).
+    build/bin/mpm_benchmark --out docs/figures/performance
+    /usr/bin/python3 mpm/benchmark/plot_benchmark.py docs/figures/performance
     ;;
   study)
     install_missing_packages
@@ -87,11 +91,21 @@ case "${1:-}" in
   accuracy)
     install_missing_packages
     build release
-    # Variants of recommended.json (grid x1, x1.5, x2 per interpolation/scheme, multipliers,
-    # particles per cell), their observables against the finest run, Pareto charts
-    # (docs/accuracy.md). Options after `accuracy` go to the script, e.g. --max-time 10e-6.
+    # Variants of recommended.json (grid x1, x1.5, x2.25, x3 per interpolation/scheme,
+    # multipliers, particles per cell) to 40 us, their observables against the
+    # Richardson-extrapolated or finest run, Pareto charts (docs/accuracy.md); about 50 min on 2
+    # idle cores. Options after `accuracy` go to the script, e.g. --max-level-others 1.5 (the
+    # 3x and 2.25x grids for gimp/MUSL only: about 20 min) or --jobs 2 --threads 1.
     /usr/bin/python3 mpm/study/accuracy_study.py docs/figures/accuracy --mpm build/bin/mpm \
       --threads 2 "${@:2}"
+    ;;
+  quarter)
+    install_missing_packages
+    build release
+    # The centred impact as a quarter with symmetric planes against the full model, 40 us
+    # (docs/performance.md#quarter-model-with-symmetric-planes).
+    /usr/bin/python3 mpm/study/quarter_model.py docs/figures/quarter_model --mpm build/bin/mpm \
+      --threads 1 "${@:2}"
     ;;
   stability)
     install_missing_packages
@@ -102,7 +116,7 @@ case "${1:-}" in
       --threads 2 "${@:2}"
     ;;
   *)
-    sed -n '2,15p' "$0"
+    sed -n '2,16p' "$0"
     exit 1
     ;;
 esac

@@ -74,7 +74,9 @@ Measured measure(const Json& doc, const std::string& file, int threads, int step
   return m;
 }
 
-double per_particle_step(const Measured& m) { return m.wall / (m.particles * m.steps); }
+double per_particle_step(const Measured& m) {
+  return m.wall / (m.particles * m.steps);
+}
 
 // The best of `repeats` runs (least disturbed by other load) and the spread max/min - 1.
 struct Repeated {
@@ -122,12 +124,14 @@ Json with_level(Json doc, double level) {
 
 void scaling(const Json& base, const std::string& file, bool quick, const std::string& dir) {
   std::printf("\n== scaling: recommended.json, MUSL, particle-steps per second ==\n");
-  std::printf("shape  level particles th | M p-steps/s | P2G  grid  G2P  remap stress | B/particle\n");
-  std::ofstream csv = open_csv(
-      dir, "scaling.csv",
-      "interpolation,level [-],cells_x [-],particles [-],threads [-],steps [-],wall [s],"
-      "particle_steps_per_second [1/s],seconds_per_particle_step [s]," +
-          std::string(kPhaseHeader) + ",particle_bytes_per_particle [B],grid_bytes_per_particle [B]");
+  std::printf(
+      "shape  level particles th | M p-steps/s | P2G  grid  G2P  remap stress | B/particle\n");
+  std::ofstream csv =
+      open_csv(dir, "scaling.csv",
+               "interpolation,level [-],cells_x [-],particles [-],threads [-],steps [-],wall [s],"
+               "particle_steps_per_second [1/s],seconds_per_particle_step [s]," +
+                   std::string(kPhaseHeader) +
+                   ",particle_bytes_per_particle [B],grid_bytes_per_particle [B]");
   const std::vector<double> levels =
       quick ? std::vector<double>{1.0} : std::vector<double>{1.0, 1.5, 2.0, 3.0};
   for (double level : levels)
@@ -139,12 +143,13 @@ void scaling(const Json& base, const std::string& file, bool quick, const std::s
         const int steps = quick ? 3 : std::max(4, int(std::lround(4e6 / n_est)));
         const Measured m = measure(doc, file, threads, steps);
         const double rate = 1.0 / per_particle_step(m);
-        std::printf("%-6s %5.2g %9.0f %2d | %8.3f    | %4.1f %4.1f %4.1f %4.1f %5.1f  | %5.0f + %4.0f\n",
-                    interp, level, m.particles, threads, rate / 1e6,
-                    100 * m.phases.particles_to_grid / m.wall, 100 * m.phases.grid_update / m.wall,
-                    100 * m.phases.grid_to_particles / m.wall, 100 * m.phases.remap / m.wall,
-                    100 * m.phases.stress / m.wall, m.particle_bytes / m.particles,
-                    m.grid_bytes / m.particles);
+        std::printf(
+            "%-6s %5.2g %9.0f %2d | %8.3f    | %4.1f %4.1f %4.1f %4.1f %5.1f  | %5.0f + %4.0f\n",
+            interp, level, m.particles, threads, rate / 1e6,
+            100 * m.phases.particles_to_grid / m.wall, 100 * m.phases.grid_update / m.wall,
+            100 * m.phases.grid_to_particles / m.wall, 100 * m.phases.remap / m.wall,
+            100 * m.phases.stress / m.wall, m.particle_bytes / m.particles,
+            m.grid_bytes / m.particles);
         std::fflush(stdout);
         if (csv)
           csv << interp << ',' << level << ',' << std::lround(50 * level) << ',' << m.particles
@@ -157,14 +162,11 @@ void scaling(const Json& base, const std::string& file, bool quick, const std::s
 // Everything optional off: one velocity field, no viscosity, no conversion, and per material no
 // damage, TEPLA, melting, heating, stability check or erosion.
 Json minimal(Json doc) {
-  const Json off_model = {{"damage", {{"type", "none"}}},
-                          {"tepla", {{"enabled", false}}},
-                          {"melting", {{"do_melting", false}}},
-                          {"adiabatic_heating", {{"enabled", false}}},
-                          {"stability_check", {{"type", "none"}}},
-                          {"erosion", {{"algorithm", "none"}}}};
-  for (auto& [name, m] : doc["materials"].items())
-    m["overrides"]["constitutive_model"] = off_model;
+  const Json off_model = {
+      {"damage", {{"type", "none"}}},          {"tepla", {{"enabled", false}}},
+      {"melting", {{"do_melting", false}}},    {"adiabatic_heating", {{"enabled", false}}},
+      {"stability_check", {{"type", "none"}}}, {"erosion", {{"algorithm", "none"}}}};
+  for (auto& [name, m] : doc["materials"].items()) m["overrides"]["constitutive_model"] = off_model;
   doc["physics"] = {{"contact", {{"type", "single_velocity"}}},
                     {"artificial_viscosity", {{"enabled", false}}},
                     {"create_new_particles", false}};
@@ -194,7 +196,8 @@ void features(const Json& base, const Json& case01, const std::string& file, boo
   };
   std::vector<std::pair<std::string, Json>> variants = {
       {"minimal (gimp)", min},
-      {"minimal, linear interpolation", [&] {
+      {"minimal, linear interpolation",
+       [&] {
          Json d = min;
          d["solver"]["interpolation"] = "linear";
          return d;
@@ -212,8 +215,9 @@ void features(const Json& base, const Json& case01, const std::string& file, boo
                     {"erosion", {{"algorithm", "KeepStress"}}}})},
       {"+ stability checks (drucker_becker)",
        model_patch({{"stability_check", {{"type", "drucker_becker"}}}})},
-      {"+ melting and adiabatic heating", model_patch({{"melting", {{"do_melting", true}}},
-                                                       {"adiabatic_heating", {{"enabled", true}}}})},
+      {"+ melting and adiabatic heating",
+       model_patch(
+           {{"melting", {{"do_melting", true}}}, {"adiabatic_heating", {{"enabled", true}}}})},
       {"recommended.json (as shipped)", base},
       {"case01.json (the report's Case 1)", case01},
   };
@@ -239,10 +243,10 @@ void box(const Json& base, const std::string& file, bool quick, const std::strin
   std::printf("\n== box: report's, tight and 2x box, dense grid vs active blocks, 2 threads ==\n");
   std::printf("%-22s %-13s | nodes    active | ns/p-step  spread | grid update share\n", "box",
               "grid");
-  std::ofstream csv = open_csv(
-      dir, "box.csv",
-      "box,grid,nodes [-],active_nodes [-],particles [-],seconds_per_particle_step [s],spread [-]," +
-          std::string(kPhaseHeader));
+  std::ofstream csv = open_csv(dir, "box.csv",
+                               "box,grid,nodes [-],active_nodes [-],particles "
+                               "[-],seconds_per_particle_step [s],spread [-]," +
+                                   std::string(kPhaseHeader));
   // Same cell size (2.38 x 3.3 x 3.3 mm) in every box, so the particles are the same.
   struct Box {
     const char* name;
@@ -266,8 +270,7 @@ void box(const Json& base, const std::string& file, bool quick, const std::strin
       const Measured& m = r.best;
       std::printf("%-22s %-13s | %7.0f %7.0f | %8.1f  %5.1f%% | %5.1f%%\n", b.name,
                   active ? "active blocks" : "dense", m.nodes, m.active_nodes,
-                  per_particle_step(m) * 1e9, 100 * r.spread,
-                  100 * m.phases.grid_update / m.wall);
+                  per_particle_step(m) * 1e9, 100 * r.spread, 100 * m.phases.grid_update / m.wall);
       std::fflush(stdout);
       if (csv)
         csv << '"' << b.name << "\"," << (active ? "active_blocks" : "dense") << ',' << m.nodes
