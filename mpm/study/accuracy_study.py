@@ -14,8 +14,9 @@
    number under "observables" (per-object mean velocity and kinetic energy, crater depth and
    diameter, peak pressure, gauges: docs/mpm.md). The reference of each observable is the finest
    gimp/musl run; where the gimp/musl ladder converges monotonically over three levels with one
-   refinement ratio (1, 1.5, 2.25), Richardson extrapolation gives the reference instead and the
-   observed order is reported. The 3x level runs for gimp/musl only (--max-level-others).
+   refinement ratio (1, 1.5, 2.25), with an observed order in [0.5, 3] and confirmed by any finer
+   run (3), Richardson extrapolation gives the reference instead and the observed order is
+   reported. The 3x level runs for gimp/musl only (--max-level-others).
 4. Writes OUT/accuracy.csv (one row per run and observable), OUT/accuracy.md (the table of the
    cheapest setting that reaches 1 %, 5 % and 10 % error per observable, and the observed orders)
    and OUT/pareto_<observable>.png (error versus wall time, one curve per method, the Pareto front
@@ -223,6 +224,25 @@ def equal_ratio_triples(ref_runs):
     return out
 
 
+def confirmed_by_finer(rich, last, finer, name):
+    """A run finer than the triple tests the extrapolation: with order p and limit f, it should
+    approach f from the same side as the triple, its error about |f_last - f| (h/h_last)^p. A
+    finer run on the other side of f, or more than twice that (and 0.1 % of f) away, means the
+    triple was not in the asymptotic range: no Richardson then."""
+    p, f = rich
+    tolerance = 1e-3 * abs(f)
+    for r in finer:
+        v = r["obs"].get(name)
+        if v is None:
+            continue
+        side = last["obs"][name] - f
+        predicted = abs(side) * (last["level"] / r["level"]) ** p
+        crossed = abs(v - f) > tolerance and (v - f > 0) != (side > 0)
+        if crossed or abs(v - f) > max(2.0 * predicted, tolerance):
+            return False
+    return True
+
+
 def analyse(out, runs, levels):
     ref_runs = [r for r in runs if (r["interp"], r["scheme"]) == ("gimp", "musl")
                 and r["multiplier"] == 0.1 and r["ppc"] == 2 and r["status"] == "completed"]
@@ -230,12 +250,13 @@ def analyse(out, runs, levels):
     if not ref_runs:
         raise SystemExit("accuracy_study: no completed gimp/musl reference run")
     finest = ref_runs[-1]
+    second = ref_runs[-2] if len(ref_runs) > 1 else finest
     names = sorted(set().union(*(r["obs"].keys() for r in runs)))
     # A gauge the wave has not reached by max_time reads round-off: no accuracy to measure.
     floor = {"[-]": 1e-6, "[m/s]": 1e-3, "[Pa]": 1e3}
     names = [n for n in names if not any(
         n.endswith(u) and abs(finest["obs"].get(n, 0.0)) < f for u, f in floor.items())]
-    reference, orders = {}, {}
+    reference, orders, rejected = {}, {}, {}
     for n in names:
         if n == "abs_energy_error":
             reference[n] = 0.0  # exact: the books close
@@ -250,9 +271,12 @@ def analyse(out, runs, levels):
             rich = richardson(vals, [r["level"] for r in t])
             # An observed order far from the methods' 1-2 means the three grids are not in the
             # asymptotic range (the extrapolation would be wild): keep the finest run then.
-            if rich and MIN_ORDER <= rich[0] <= MAX_ORDER:
+            if rich and MIN_ORDER <= rich[0] <= MAX_ORDER and confirmed_by_finer(
+                    rich, t[-1], [r for r in ref_runs if r["level"] > t[-1]["level"]], n):
                 orders[n] = rich[0]
                 reference[n] = rich[1]
+            elif rich:
+                rejected[n] = rich[0]
             break
     # Gauge histories (the VISAR-like far-end velocity, the wall's strain gauges): the error is
     # the largest difference over the reference's output times (linear interpolation) relative to
@@ -306,12 +330,25 @@ def analyse(out, runs, levels):
              f"to the impact speed {finest['v0']:.5g} m/s; gauge histories: the largest "
              "difference over time relative to the reference history's largest magnitude). "
              f"Richardson's observed order is accepted in [{MIN_ORDER:g}, {MAX_ORDER:g}].", "",
-             "| observable | reference | observed order | cheapest run <= 1 % | <= 5 % | <= 10 % |",
-             "|---|---|---|---|---|---|"]
+             f"The column x{second['level']:g} is the error of the next-finest gimp/musl level: "
+             "where the reference is the finest run itself, how far from converged the reference "
+             "may still be; where that exceeds a tolerance, no run is named for it (\"reference "
+             "not converged\").", "",
+             f"| observable | reference | observed order | x{second['level']:g} | "
+             "cheapest run <= 1 % | <= 5 % | <= 10 % |",
+             "|---|---|---|---|---|---|---|"]
     names = names + ["history " + h for h in history_names]
     for n in names:
         cells = []
+        prev = next((x["error"] for x in rows if x["observable"] == n
+                     and x["name"] == second["name"]), None)
         for tol in (0.01, 0.05, 0.10):
+            # A reference that the next-finest level misses by more than tol is not known to
+            # tol itself: a coarse run that happens to land within tol of it is a coincidence.
+            if (n != "abs_energy_error" and n not in orders and prev is not None
+                    and prev > tol):
+                cells.append("reference not converged")
+                continue
             # The finest run is a candidate only where the reference is not the run itself.
             ok = [x for x in rows if x["observable"] == n and x["error"] <= tol
                   and x["status"] == "completed"
@@ -323,8 +360,14 @@ def analyse(out, runs, levels):
             lines.append(f"| {n} (max over time) | finest run | - |")
         else:
             lines.append(f"| {n} | {ref:.4g} | {orders[n]:.2f} (Richardson) |" if n in orders
-                         else f"| {n} | {ref:.4g} | - |")
+                         else f"| {n} | {ref:.4g} | {rejected[n]:.2f} (not used: see below) |"
+                         if n in rejected else f"| {n} | {ref:.4g} | - |")
+        lines[-1] += (f" {prev * 100:.1f} % |" if prev is not None else " - |")
         lines[-1] += " " + " | ".join(cells) + " |"
+    if rejected:
+        lines += ["", "Not used: an order outside the accepted window, or a finer run that the "
+                  "extrapolation does not predict (farther from the extrapolated value than twice "
+                  "the error its order implies); the reference is then the finest run."]
     lines += ["", "| run | status | wall [s] | particle-steps | |energy_error| |", "|---|---|---|---|---|"]
     for r in runs:
         lines.append(f"| {r['name']} | {r['status']} | {r['wall']:.1f} | {r['particle_steps']:.3g} "
