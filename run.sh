@@ -74,7 +74,7 @@ case "${1:-}" in
     build/bin/models_benchmark "${@:2}"
     build/bin/pointdriver_benchmark
     # Scaling, feature cost and box size of the explicit step (CSV + figures in
-    # docs/figures/performance/; about 10 min on 2 idle cores).
+    # docs/figures/performance/; best of 3-5 repeats: 6 min on the 2-core VM).
     build/bin/mpm_benchmark --out docs/figures/performance
     /usr/bin/python3 mpm/benchmark/plot_benchmark.py docs/figures/performance
     ;;
@@ -91,11 +91,12 @@ case "${1:-}" in
   accuracy)
     install_missing_packages
     build release
-    # Variants of recommended.json (grid x1, x1.5, x2.25, x3 per interpolation/scheme,
-    # multipliers, particles per cell) to 40 us, their observables against the
-    # Richardson-extrapolated or finest run, Pareto charts (docs/accuracy.md); about 50 min on 2
-    # idle cores. Options after `accuracy` go to the script, e.g. --max-level-others 1.5 (the
-    # 3x and 2.25x grids for gimp/MUSL only: about 20 min) or --jobs 2 --threads 1.
+    # Variants of recommended.json (grid x1, x1.5, x2.25 per interpolation/scheme, x3 for
+    # gimp/MUSL, multipliers, particles per cell) to 40 us, their observables against the
+    # Richardson-extrapolated or finest run, Pareto charts (docs/accuracy.md); 77 min of runs on
+    # the 2-core VM at half speed (2026-11-24), the 3x grid 33 min of it. Options after
+    # `accuracy` go to the script, e.g. --levels 1,1.5,2.25 (no 3x grid), --max-level-others 1.5
+    # (the 2.25x grid for gimp/MUSL only) or --jobs 2 --threads 1.
     /usr/bin/python3 mpm/study/accuracy_study.py docs/figures/accuracy --mpm build/bin/mpm \
       --threads 2 "${@:2}"
     ;;
@@ -103,7 +104,7 @@ case "${1:-}" in
     install_missing_packages
     build release
     # The centred impact as a quarter with symmetric planes against the full model, 40 us
-    # (docs/performance.md#quarter-model-with-symmetric-planes).
+    # (docs/performance.md, "Quarter model with symmetric planes").
     /usr/bin/python3 mpm/study/quarter_model.py docs/figures/quarter_model --mpm build/bin/mpm \
       --threads 1 "${@:2}"
     ;;

@@ -2,11 +2,12 @@
 // the recommended sphere-cylinder scene (data/scenes/sphere_cylinder/recommended.json), measured
 // in process over a fixed number of steps after one warm-up step (no output writing):
 //   scaling   particle-steps per second for linear and GIMP at grid levels 1, 1.5, 2, 3 (the
-//             deck's 50 x 20 x 20 cells times the level per axis), 1 and 2 threads, with the share
+//             deck's 50 x 20 x 20 cells times the level per axis), 1 and 2 threads, best of 3
+//             repeats with their spread, with the share
 //             of each phase and the bytes per particle (particle arrays + grid / particles);
 //   features  each optional feature switched on alone on a minimal variant (everything optional
 //             off), then the recommended and the report's Case 1 set: time per particle-step,
-//             median of 3 repeats with the spread, and bytes per particle and per node;
+//             best of 5 repeats with the spread, and bytes per particle and per node;
 //   box       the report's box, the tight box around the bodies and a box twice as large per
 //             axis, each with the dense grid and with active blocks (grid/grid.hpp).
 // Not a test: the figures go to docs/performance.md (`./run.sh bench` draws them from the CSV
@@ -129,7 +130,7 @@ void scaling(const Json& base, const std::string& file, bool quick, const std::s
   std::ofstream csv =
       open_csv(dir, "scaling.csv",
                "interpolation,level [-],cells_x [-],particles [-],threads [-],steps [-],wall [s],"
-               "particle_steps_per_second [1/s],seconds_per_particle_step [s]," +
+               "particle_steps_per_second [1/s],seconds_per_particle_step [s],spread [-]," +
                    std::string(kPhaseHeader) +
                    ",particle_bytes_per_particle [B],grid_bytes_per_particle [B]");
   const std::vector<double> levels =
@@ -141,7 +142,8 @@ void scaling(const Json& base, const std::string& file, bool quick, const std::s
         doc["solver"]["interpolation"] = interp;
         const double n_est = 30000.0 * level * level * level;
         const int steps = quick ? 3 : std::max(4, int(std::lround(4e6 / n_est)));
-        const Measured m = measure(doc, file, threads, steps);
+        const Repeated r = repeat(doc, file, threads, steps, quick ? 1 : 3);
+        const Measured& m = r.best;
         const double rate = 1.0 / per_particle_step(m);
         std::printf(
             "%-6s %5.2g %9.0f %2d | %8.3f    | %4.1f %4.1f %4.1f %4.1f %5.1f  | %5.0f + %4.0f\n",
@@ -154,7 +156,7 @@ void scaling(const Json& base, const std::string& file, bool quick, const std::s
         if (csv)
           csv << interp << ',' << level << ',' << std::lround(50 * level) << ',' << m.particles
               << ',' << threads << ',' << m.steps << ',' << m.wall << ',' << rate << ','
-              << per_particle_step(m) << ',' << phase_csv(m) << ','
+              << per_particle_step(m) << ',' << r.spread << ',' << phase_csv(m) << ','
               << m.particle_bytes / m.particles << ',' << m.grid_bytes / m.particles << '\n';
       }
 }
@@ -221,7 +223,7 @@ void features(const Json& base, const Json& case01, const std::string& file, boo
       {"recommended.json (as shipped)", base},
       {"case01.json (the report's Case 1)", case01},
   };
-  const int steps = quick ? 3 : 150, repeats = quick ? 1 : 3;
+  const int steps = quick ? 3 : 150, repeats = quick ? 1 : 5;
   double t_min = 0;
   for (const auto& [name, doc] : variants) {
     const Repeated r = repeat(doc, file, 2, steps, repeats);
@@ -258,7 +260,7 @@ void box(const Json& base, const std::string& file, bool quick, const std::strin
       {"tight (114x66x66 mm)", {4.76e-3, -33e-3, -33e-3}, {119e-3, 33e-3, 33e-3}, {48, 20, 20}},
       {"2x (238x132x132 mm)", {0, -66e-3, -66e-3}, {238e-3, 66e-3, 66e-3}, {100, 40, 40}},
   };
-  const int steps = quick ? 3 : 150, repeats = quick ? 1 : 3;
+  const int steps = quick ? 3 : 150, repeats = quick ? 1 : 5;
   for (const Box& b : boxes)
     for (bool active : {false, true}) {
       Json doc = base;

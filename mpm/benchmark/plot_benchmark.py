@@ -136,6 +136,10 @@ def scaling_table(rows):
         if ratios:
             speed.append(f"{i} {min(ratios):.2f}-{max(ratios):.2f}x")
     out.append("Second thread: " + ", ".join(speed) + ".")
+    spreads = [float(r["spread [-]"]) for r in rows if r.get("spread [-]")]
+    if spreads:
+        out.append(f"Spread of the repeats (max/min - 1): {min(spreads) * 100:.1f} to "
+                   f"{max(spreads) * 100:.1f} %.")
     return out
 
 
@@ -178,6 +182,10 @@ def main():
         print(__doc__.splitlines()[2].strip(), file=sys.stderr)
         return 1
     out = sys.argv[1]
+    if not os.path.isdir(out):
+        print(f"plot_benchmark: {out}: no such directory (mpm_benchmark --out {out} writes it)",
+              file=sys.stderr)
+        return 2
     write_tables(out)
     try:
         import matplotlib
