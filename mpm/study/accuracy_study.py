@@ -338,10 +338,13 @@ def analyse(out, runs, levels):
              "cheapest run <= 1 % | <= 5 % | <= 10 % |",
              "|---|---|---|---|---|---|---|"]
     names = names + ["history " + h for h in history_names]
+    uncertainty = {}
     for n in names:
         cells = []
         prev = next((x["error"] for x in rows if x["observable"] == n
                      and x["name"] == second["name"]), None)
+        if n != "abs_energy_error" and n not in orders and prev is not None:
+            uncertainty[n] = (prev, second["level"])
         for tol in (0.01, 0.05, 0.10):
             # A reference that the next-finest level misses by more than tol is not known to
             # tol itself: a coarse run that happens to land within tol of it is a coincidence.
@@ -374,7 +377,7 @@ def analyse(out, runs, levels):
                      f"| {r['obs'].get('abs_energy_error', float('nan')):.3g} |")
     with open(os.path.join(out, "accuracy.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
-    return rows, names
+    return rows, names, uncertainty
 
 
 def pareto_front(points):
@@ -386,7 +389,7 @@ def pareto_front(points):
     return front
 
 
-def draw(out, rows, names, wall_label):
+def draw(out, rows, names, wall_label, uncertainty):
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -418,6 +421,12 @@ def draw(out, rows, names, wall_label):
             front = pareto_front([(x[cost], x["error"], x["name"]) for x in pts])
             ax.loglog([c for c, _, _ in front], [e for _, e, _ in front], "k--", lw=1,
                       label="Pareto front")
+            if n in uncertainty:
+                # Below the next-finest level's error the reference (the finest run) is not
+                # known well enough to rank runs: a point there agrees with it by chance.
+                u, lv = uncertainty[n]
+                ax.axhspan(min(x["error"] for x in pts) / 2, u, color="gold", alpha=0.25,
+                           label=f"below the x{lv:g} level's own error: not resolved")
             ax.set_xlabel(label)
             ax.set_ylabel(f"relative error of {n} [-]")
             ax.grid(True, which="both", alpha=0.3)
@@ -461,9 +470,9 @@ def main():
             code = run_in_parallel(a.mpm, scenes, runs_dir, table, a.jobs, a.threads)
         if code not in (0, 3):
             return code
-    rows, names = analyse(a.out, read_runs(runs_dir, table), levels)
+    rows, names, uncertainty = analyse(a.out, read_runs(runs_dir, table), levels)
     draw(a.out, rows, names, f"wall time [s] ({a.threads} thread(s) per run, {a.jobs} run(s) "
-         "at a time)")
+         "at a time)", uncertainty)
     print(f"accuracy_study: wrote {a.out}/accuracy.md, accuracy.csv and pareto_*.png")
     return code
 
