@@ -33,20 +33,34 @@ def slope(xs, ys):
     return sum((x - mx) * (y - my) for x, y in zip(lx, ly)) / sxx if sxx > 0 else float("nan")
 
 
+def scaling_series(rows):
+    """{(interpolation, threads): [(particles, wall per step, particle-steps per second)]}, by
+    particle count, and the log-log slope of wall per step against particles (nan for one point)."""
+    series = {}
+    for r in rows:
+        series.setdefault((r["interpolation"], r["threads [-]"]), []).append(
+            (float(r["particles [-]"]), float(r["wall [s]"]) / float(r["steps [-]"]),
+             float(r["particle_steps_per_second [1/s]"])))
+    out = {}
+    for key in sorted(series, key=lambda k: (k[0], int(k[1]))):
+        pts = sorted(series[key])
+        s = slope([p[0] for p in pts], [p[1] for p in pts]) if len(pts) > 1 else float("nan")
+        out[key] = (pts, s)
+    return out
+
+
+def save(plt, fig, out, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
+
 def scaling(plt, rows, out):
     fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.5))
-    for interp in sorted({r["interpolation"] for r in rows}):
-        for threads in sorted({r["threads [-]"] for r in rows}, key=int):
-            pts = sorted(((float(r["particles [-]"]), float(r["wall [s]"]) / float(r["steps [-]"]),
-                           float(r["particle_steps_per_second [1/s]"]))
-                          for r in rows if r["interpolation"] == interp
-                          and r["threads [-]"] == threads))
-            if not pts:
-                continue
-            n = [p[0] for p in pts]
-            s = slope(n, [p[1] for p in pts]) if len(pts) > 1 else float("nan")
-            a.loglog(n, [p[1] for p in pts], "o-", label=f"{interp}, {threads} thread(s): slope {s:.2f}")
-            b.semilogx(n, [p[2] / 1e6 for p in pts], "o-", label=f"{interp}, {threads} thread(s)")
+    for (interp, threads), (pts, s) in scaling_series(rows).items():
+        n = [p[0] for p in pts]
+        a.loglog(n, [p[1] for p in pts], "o-", label=f"{interp}, {threads} thread(s): slope {s:.2f}")
+        b.semilogx(n, [p[2] / 1e6 for p in pts], "o-", label=f"{interp}, {threads} thread(s)")
     a.set_xlabel("particles [-]")
     a.set_ylabel("wall time per step [s]")
     b.set_xlabel("particles [-]")
@@ -56,9 +70,7 @@ def scaling(plt, rows, out):
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle("recommended.json (MUSL), grid x1, x1.5, x2, x3 of the report's 50 x 20 x 20")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "scaling.png"), dpi=110)
-    plt.close(fig)
+    save(plt, fig, out, "scaling.png")
 
 
 def features(plt, rows, out):
@@ -74,9 +86,7 @@ def features(plt, rows, out):
     ax.set_xlabel("seconds per particle-step relative to the minimal deck [-] "
                   "(bar: best of the repeats; whisker: their spread)")
     ax.grid(True, axis="x", alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "features.png"), dpi=110)
-    plt.close(fig)
+    save(plt, fig, out, "features.png")
 
 
 def box(plt, rows, out):
@@ -97,9 +107,7 @@ def box(plt, rows, out):
         ax.grid(True, axis="y", alpha=0.3)
         ax.legend(fontsize=8)
     b.set_yscale("log")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "box.png"), dpi=110)
-    plt.close(fig)
+    save(plt, fig, out, "box.png")
 
 
 def fmt_int(x):
@@ -121,10 +129,10 @@ def scaling_table(rows):
         out.append(f"| {lv:g} | {fmt_int(any_row['particles [-]'])} | " + " | ".join(cells)
                    + f" | {float(grid):.0f} |")
     out.append("")
+    series = scaling_series(rows)
     out.append("Log-log slope of wall time per step against particles: " + ", ".join(
-        f"{i} {t} th {slope(*zip(*sorted((float(r['particles [-]']), float(r['wall [s]']) / float(r['steps [-]'])) for r in rows if r['interpolation'] == i and r['threads [-]'] == t))):.2f}"
-        for i, t in cols if sum(1 for r in rows if r["interpolation"] == i
-                                and r["threads [-]"] == t) > 1) + ".")
+        f"{i} {t} th {series[(i, t)][1]:.2f}" for i, t in cols
+        if (i, t) in series and len(series[(i, t)][0]) > 1) + ".")
     speed = []
     for i in ("linear", "gimp"):
         ratios = []
