@@ -1,5 +1,6 @@
 #include "models/flow_stress/johnson_cook.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -60,6 +61,32 @@ FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
   f.d_rate = hardening * d_rate_factor * thermal_factor;
   f.d_temperature = hardening * rate_factor * d_thermal_factor;
   return f;
+}
+
+double johnson_cook_increment_bound(const JohnsonCookParams& p, const JohnsonCookThermal& thermal,
+                                    double plastic_strain, double overshoot, double dt) {
+  double bound = std::numeric_limits<double>::infinity();
+  const double theta = thermal.factor;
+  if (!(theta > 0.0) || !(overshoot > 0.0)) return bound;
+  const double ep = plastic_strain > 0.0 ? plastic_strain : 0.0;
+  // Hardening: B ((ep + d)^n - ep^n) theta = overshoot, without cancellation for small d.
+  if (p.B > 0.0) {
+    const double z = overshoot / (p.B * theta);
+    bound = ep > 0.0 ? ep * std::expm1(std::log1p(z / std::pow(ep, p.n)) / p.n)
+                     : std::exp(std::log(z) / p.n);  // 0 when it underflows
+  }
+  // Rate: (A + B ep^n) theta (factor(d / dt) - 1) = overshoot. The clamped factor 1 + C ln rate*
+  // reaches 1 + y at rate* = e^(y / C); the 2004 form (1 + rate*)^C >= 1 + C rate* / (1 + rate*)
+  // below rate* = 1 reaches 1 + y by rate* = y / (C - y) when y < C / 2 (and the log branch
+  // above takes over otherwise).
+  if (p.C > 0.0) {
+    const double y = overshoot / ((p.A + p.B * std::pow(ep, p.n)) * theta);
+    double rate_star = std::numeric_limits<double>::infinity();
+    if (y < 700.0 * p.C) rate_star = std::exp(y / p.C);
+    if (p.rate_form == JohnsonCookRateForm::report_2004 && 2.0 * y < p.C) rate_star = y / (p.C - y);
+    bound = std::min(bound, rate_star * p.reference_strain_rate * dt);
+  }
+  return bound;
 }
 
 JohnsonCookParams read_johnson_cook(JsonReader& r, double room_temperature,

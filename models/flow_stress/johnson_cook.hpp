@@ -53,6 +53,29 @@ FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
 FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
                         double plastic_strain_rate, const JohnsonCookThermal& thermal);
 
+/// An upper bound of the radial return's plastic-strain increment d (models/plasticity/
+/// radial_return.hpp) for a trial stress `overshoot` [Pa] above sigma_y(ep, 0, T): the smaller of
+/// the increment the strain hardening alone and the one the rate factor alone would need to raise
+/// the flow stress by the overshoot. Both are bounds because every factor of the law is >= its
+/// static value: sigma_y(ep + d, d/dt) - sigma_y(ep, 0) >= B ((ep + d)^n - ep^n) theta and
+/// >= (A + B ep^n) (rate factor - 1) theta. +inf when neither applies (B = 0 and C = 0, or molten);
+/// 0 when the hardening bound is below the smallest double.
+double johnson_cook_increment_bound(const JohnsonCookParams& p, const JohnsonCookThermal& thermal,
+                                    double plastic_strain, double overshoot, double dt);
+
+/// The law at one temperature, as the radial return calls it: flow(ep, rate) and the increment's
+/// upper bound (models/plasticity/radial_return.hpp, BoundedFlow).
+struct JohnsonCookAtTemperature {
+  const JohnsonCookParams& params;
+  JohnsonCookThermal thermal;
+  FlowStress operator()(double plastic_strain, double plastic_strain_rate) const {
+    return johnson_cook(params, plastic_strain, plastic_strain_rate, thermal);
+  }
+  double increment_bound(double plastic_strain, double overshoot, double dt) const {
+    return johnson_cook_increment_bound(params, thermal, plastic_strain, overshoot, dt);
+  }
+};
+
 /// Homologous temperature T* = (T - T_room)/(T_melt - T_room), unclamped.
 inline double homologous_temperature(double temperature, double room, double melt) {
   return (temperature - room) / (melt - room);

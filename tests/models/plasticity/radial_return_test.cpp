@@ -3,6 +3,7 @@
 // and non-convergence is reported rather than accepted.
 #include "models/plasticity/radial_return.hpp"
 
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -116,6 +117,64 @@ BOOST_AUTO_TEST_CASE(unconverged_return_is_reported_not_accepted) {
                                ReturnAlgorithm::newton, 0.0, tol);
   BOOST_TEST(r.plastic);
   BOOST_TEST(!r.converged);
+}
+
+// The sweep the ledger audit asked for (issue 19): with a low hardening exponent at zero plastic
+// strain the root is tiny and the slope infinite at d = 0; Newton in d from the elastic bound
+// needed more than 60 iterations (n = 0.05 and 0.1 failed at 1000/s, dt 1e-8, for every overshoot).
+// 5184 cases; every case must converge within 8 iterations onto the yield surface at the step's
+// rate: |q_{n+1} - sigma_y(ep + d, d/dt)| <= 1e-10 q_tr, with q_{n+1} = q_tr - 3 mu d >= 0, for
+// both rate forms; at the report form's jump (rate* = 1) the point may sit between the one-sided
+// flow stresses (bracket_closed), which is checked as such. Temperatures 294 K (isothermal, room),
+// 600 K and 850 K (where adiabatic heating takes a point: the factor 1 - T*^m < 1).
+BOOST_AUTO_TEST_CASE(return_converges_in_8_iterations_over_exponents_rates_and_overshoots) {
+  const double dt = 1e-8;
+  int cases = 0, worst = 0;
+  for (const JohnsonCookRateForm form :
+       {JohnsonCookRateForm::clamped, JohnsonCookRateForm::report_2004})
+    for (const double n : {0.02, 0.05, 0.1, 0.2, 0.42, 1.0})
+      for (const double C : {0.0, 0.002, 0.1})
+        for (const double T : {294.0, 600.0, 850.0})
+          for (const double rate : {1e-4, 1.0, 1e3, 1e5})
+            for (const double over : {1e-9, 1e-4, 1e-1, 10.0})
+              for (const double ep0 : {0.0, 1e-3, 0.5}) {
+                JohnsonCookParams p = al6061();
+                p.n = n;
+                p.C = C;
+                p.rate_form = form;
+                const JohnsonCookAtTemperature flow{p, johnson_cook_thermal(p, T)};
+                const double yield = flow(ep0, 0.0).value;
+                // Trial = yield + overshoot, with the strain increment of the given rate: the
+                // overshoot scale is the yield itself; the rate enters through the guess and dt.
+                const double q = yield * (1.0 + over);
+                const auto r = radial_return(trial_with_von_mises(q), kMu, ep0, dt, flow,
+                                             ReturnAlgorithm::newton, 0.0, {}, rate * dt);
+                ++cases;
+                worst = std::max(worst, r.iterations);
+                BOOST_TEST_CONTEXT("n " << n << " C " << C << " T " << T << " rate " << rate
+                                        << " overshoot " << over << " ep0 " << ep0 << " form "
+                                        << int(form)) {
+                  BOOST_TEST_REQUIRE(r.converged);
+                  BOOST_TEST(r.iterations <= 8);
+                  const double d = r.delta_plastic_strain;
+                  BOOST_TEST(d >= 0.0);
+                  const double q_new = std::sqrt(1.5 * ddot(r.deviator, r.deviator));
+                  BOOST_TEST(std::abs(q_new - (q - 3.0 * kMu * d)) <= 1e-12 * q);
+                  if (r.bracket_closed) {  // between the one-sided limits of a jump
+                    const double below = flow(ep0 + d, d / dt * (1.0 - 1e-9)).value;
+                    const double above = flow(ep0 + d, d / dt * (1.0 + 1e-9)).value;
+                    BOOST_TEST(q_new >= std::min(below, above) * (1.0 - 1e-10));
+                    BOOST_TEST(q_new <= std::max(below, above) * (1.0 + 1e-10));
+                  } else if (d > 0.0) {
+                    BOOST_TEST(std::abs(q_new - flow(ep0 + d, d / dt).value) <= 1e-10 * q);
+                  } else {  // an increment below the smallest double: on the surface of ep0
+                    BOOST_TEST(std::abs(q_new - yield) <= 1e-8 * q);
+                  }
+                }
+              }
+  BOOST_TEST(cases == 5184);
+  BOOST_TEST_MESSAGE("radial return sweep: " << cases << " cases, worst " << worst
+                                             << " iterations");
 }
 
 BOOST_AUTO_TEST_CASE(report_2004_variant_rescales_the_trial_onto_the_flow_stress_in_one_shot) {
