@@ -54,13 +54,13 @@ double mie_gruneisen_bulk_modulus(const MieGruneisenParams& p, double rho0, doub
 MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, double rho_old,
                                       double rho_new, double p_old, double e_old,
                                       double heat_per_mass, double specific_heat,
-                                      double temperature_new, double room_temperature) {
+                                      double temperature_old, double temperature_new) {
   MieGruneisenStep step;
   if (!mie_gruneisen_admissible(p, rho0, rho_new)) return {infinity, e_old, false};
   const double cold = cold_pressure(p, rho0, 1.0 - rho0 / rho_new);
   const double stiffness = rho0 * p.Gamma0;  // dp/de at fixed rho
   if (p.energy == MieGruneisenEnergy::cp_temperature) {
-    step.internal_energy = specific_heat * (temperature_new - room_temperature);
+    step.internal_energy = e_old + specific_heat * (temperature_new - temperature_old);
   } else {
     // e1 = e0 - (p0 + cold + stiffness e1) dv/2 + dq, linear in e1.
     const double dv = 1.0 / rho_new - 1.0 / rho_old;

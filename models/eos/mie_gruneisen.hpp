@@ -24,11 +24,15 @@
 //      evolved (default): de = -p dv + dq (v = 1/rho; dq = heat per unit mass from plastic work),
 //        trapezoidal in p. Since p is linear in e, the implicit update is solved in closed form;
 //        it is second order and reversible to round-off (the trapezoidal rule is symmetric).
-//      cp_temperature: the report's approximation E = Cp T (eq. 15), measured from the reference
-//        state: e = Cp (T - T_room). The literal absolute form would put rho0 Gamma0 Cp T_room
-//        (= 2700 * 1.99 * 896 * 294 = 1.4 GPa for 6061-T6) of pressure into material at rest. This
-//        mode ignores the compression work -p dv; the report blames this approximation for the
-//        energy growth it saw with Mie-Gruneisen (report sec. 5.12, Case 13, Fig. 13).
+//      cp_temperature: the report's approximation E = Cp T (eq. 15), measured from the point's
+//        initial state: e = Cp (T - T_0), advanced as e += Cp (T_{n+1} - T_n). The literal
+//        absolute form would put rho0 Gamma0 Cp T (= 2700 * 1.99 * 896 * 294 = 1.4 GPa for
+//        6061-T6 at 294 K) of pressure into material at rest. This mode ignores the compression
+//        work -p dv; the report blames this approximation for the energy growth it saw with
+//        Mie-Gruneisen (report sec. 5.12, Case 13, Fig. 13).
+//  - Reference state: e is the specific internal energy above the point's initial state (at rest,
+//    stress-free, at its initial temperature T_0 and density rho0), so e = 0 at t = 0 whatever
+//    T_0 (docs/theory.md sec. 2, "internal energy and temperature").
 #pragma once
 
 #include "models/core/input.hpp"
@@ -78,7 +82,7 @@ struct MieGruneisenStep {
 ///   evolved:        e1 = e0 - (p0 + p1)/2 (v1 - v0) + dq,  p1 = p(rho_new, e1), solved exactly:
 ///                   e1 = [e0 + dq - (p0 + p_c(rho_new)) dv/2] / (1 + rho0 Gamma0 dv/2),
 ///                   with p_c the cold (e = 0) part. p_old should be p(rho_old, e_old).
-///   cp_temperature: e1 = Cp (T_new - T_room), p1 = p(rho_new, e1); p_old, e_old, dq unused
+///   cp_temperature: e1 = e_old + Cp (T_new - T_old), p1 = p(rho_new, e1); p_old and dq unused
 ///                   (the plastic heat is already in T_new).
 /// heat_per_mass [J/kg], specific_heat [J/(kg K)], temperatures [K]. Not admissible (pressure +inf,
 /// energy e_old) beyond the compression limit, or if 1 + rho0 Gamma0 dv/2 <= 0 (a compression by
@@ -86,7 +90,7 @@ struct MieGruneisenStep {
 MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, double rho_old,
                                       double rho_new, double p_old, double e_old,
                                       double heat_per_mass, double specific_heat,
-                                      double temperature_new, double room_temperature);
+                                      double temperature_old, double temperature_new);
 
 /// Reads {"C0" (m/s, > 0), "Gamma0" (>= 0), "S_alpha" ([0, 10]), "energy": "evolved" (default) |
 /// "cp_temperature"}; "type" is read by the caller.

@@ -1,6 +1,7 @@
 #include "models/material/elastic_plastic.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace impact {
 
@@ -16,6 +17,8 @@ std::string_view to_string(UpdateStatus s) {
       return "non-finite stress";
     case UpdateStatus::eos_out_of_range:
       return "compression beyond the Mie-Gruneisen limit";
+    case UpdateStatus::non_finite_wave_speed:
+      return "no wave speed: the equation of state's K_s + 4 mu/3 <= 0 (tension beyond its range)";
   }
   return "unknown";
 }
@@ -52,7 +55,9 @@ double ElasticPlastic::wave_speed(const PointState& s) const {
     const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
     bulk = mie_gruneisen_bulk_modulus(mg, p_.density, rho, s.internal_energy);
   }
-  return std::sqrt((bulk + 4.0 * p_.shear_modulus / 3.0) / rho);
+  const double modulus = bulk + 4.0 * p_.shear_modulus / 3.0;
+  if (!(modulus > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return std::sqrt(modulus / rho);
 }
 
 StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
@@ -105,10 +110,8 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     s_new = Mat3::Zero();  // no deviatoric strength once molten; the EOS still acts
     s1.melted = true;
   } else {
-    const JohnsonCookThermal thermal = johnson_cook_thermal(p_.flow_stress, T0);
-    const auto flow_at = [&](double ep, double rate) {
-      return johnson_cook(p_.flow_stress, ep, rate, thermal);
-    };
+    const JohnsonCookAtTemperature flow_at{p_.flow_stress,
+                                           johnson_cook_thermal(p_.flow_stress, T0)};
     const Mat3 eta = deviator(D_hat);
     // The previous step's plastic rate is a close first guess under steady loading.
     const ReturnResult r = radial_return(s_trial, mu, s0.plastic_strain, dt, flow_at,
@@ -124,17 +127,19 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
   s1.plastic_strain = s0.plastic_strain + d_ep;
   s1.plastic_strain_rate = d_ep / dt;
 
-  // 3. Adiabatic heating (eq. 8): the Taylor-Quinney fraction of the plastic work.
+  // 3. Adiabatic heating (eq. 8): the Taylor-Quinney fraction of the plastic work, retained by the
+  //    point only when heating is on (off: isothermal, the heat leaves; docs/theory.md sec. 5).
   report.plastic_work = flow.value * d_ep;
-  const double heat_per_mass = p_.heating.taylor_quinney * report.plastic_work / rho1;
+  double heat_per_mass = 0.0;
   if (p_.heating.enabled && d_ep > 0.0) {
+    heat_per_mass = p_.heating.taylor_quinney * report.plastic_work / rho1;
     report.temperature_rise = adiabatic_temperature_rise(p_.heating.taylor_quinney, flow.value,
                                                          d_ep, rho1, p_.specific_heat);
     s1.temperature = T0 + report.temperature_rise;
   }
 
   // 4. Pressure from the equation of state; the specific internal energy follows the work
-  //    -p dv (trapezoidal) plus the plastic heat.
+  //    -p dv (trapezoidal) plus the retained heat, so e = e_v + c_p (T - T_0) at every step.
   double p_new = 0.0;
   const double dv = 1.0 / rho1 - 1.0 / rho0_n;
   if (const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state)) {
@@ -149,7 +154,7 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     }
     const MieGruneisenStep m =
         mie_gruneisen_update(mg, p_.density, rho0_n, rho1, p_n, s0.internal_energy, heat_per_mass,
-                             p_.specific_heat, s1.temperature, p_.room_temperature);
+                             p_.specific_heat, T0, s1.temperature);
     p_new = m.pressure;
     s1.internal_energy = m.internal_energy;
   }
@@ -160,7 +165,7 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     s1.damage +=
         jc_damage_increment(*p_.damage, d_ep, triaxiality(stress_new), s1.plastic_strain_rate, T0);
   }
-  if (p_.tepla.evolve_porosity) {
+  if (p_.tepla.evolve_porosity && d_ep > 0.0) {  // on plastic steps only (report's code)
     s1.porosity =
         porosity_update(p_.tepla, s0.porosity, D_hat.trace(), s0.plastic_strain, d_ep, dt);
   }
@@ -210,6 +215,19 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
   s1.stress = rotate(stress_new, R_out);
   if (!s1.stress.allFinite()) report.status = UpdateStatus::non_finite_stress;
   report.wave_speed = wave_speed(s1);
+  if (!std::isfinite(report.wave_speed)) {
+    // A failed point whose erosion drops the tension (AllowNoTension, ZeroStress) no longer
+    // follows the EOS there: its signal speed is the reference one, the stiffest it has when it
+    // closes again. Any other point is outside the EOS's range: a fault, not a silent NaN that
+    // std::max would drop from the time step.
+    const bool tension_eroded = s1.failed && (p_.erosion == Erosion::allow_no_tension ||
+                                              p_.erosion == Erosion::zero_stress);
+    if (tension_eroded) {
+      report.wave_speed = std::sqrt((p_.bulk_modulus + 4.0 * mu / 3.0) / rho1);
+    } else if (report.status == UpdateStatus::ok) {
+      report.status = UpdateStatus::non_finite_wave_speed;
+    }
+  }
   return report;
 }
 

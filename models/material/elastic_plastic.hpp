@@ -66,6 +66,9 @@ enum class UpdateStatus : std::uint8_t {
   return_mapping_not_converged,  ///< the radial return missed its tolerance
   non_finite_stress,             ///< NaN or Inf in the updated stress
   eos_out_of_range,              ///< compression beyond the Mie-Gruneisen limit 1 - S eta > 0
+  /// K_s + 4 mu / 3 <= 0 (a Mie-Gruneisen fit extrapolated into tension beyond its spinodal) at
+  /// a point whose stress follows the EOS: no wave speed, no stable time step.
+  non_finite_wave_speed,
 };
 
 enum class FailureCause : std::uint8_t { none, melting, tepla, drucker, becker };
@@ -105,7 +108,8 @@ class ElasticPlastic {
   StepReport update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
                     PointState& s1) const;
 
-  /// Longitudinal wave speed of a state (for the first time step).
+  /// Longitudinal wave speed sqrt((K_s + 4 mu/3) / rho) of a state (for the time step); NaN when
+  /// K_s + 4 mu/3 <= 0.
   double wave_speed(const PointState& s) const;
 
  private:

@@ -8,9 +8,18 @@
 // 2004 code used the total stress power chi sigma:D / (rho c_p) (clipped at >= 0), which heats
 // under purely elastic loading and under hydrostatic compression too. Only plastic dissipation
 // heats here; elastic work is stored, and is returned on unloading.
+//
+// Internal energy and temperature (docs/theory.md sec. 5): e is the specific internal energy above
+// the point's initial state, T its temperature. Heat that a point retains raises both, e by h and
+// T by h / c_p, so that e - e_v = c_p (T - T_0) at every step, e_v = -int p dv the work of the
+// pressure. Heating on (`enabled`) means adiabatic: the point retains the heat of its dissipation
+// (the Taylor-Quinney share of the plastic work, and in the MPM solver the artificial viscosity's
+// work and the friction heat of contact); off means isothermal: that heat leaves the point and
+// neither e nor T changes by it.
 #pragma once
 
 #include "models/core/input.hpp"
+#include "models/core/point_state.hpp"
 
 namespace impact {
 
@@ -24,6 +33,14 @@ inline double adiabatic_temperature_rise(double taylor_quinney, double flow_stre
                                          double delta_plastic_strain, double density,
                                          double specific_heat) {
   return taylor_quinney * flow_stress * delta_plastic_strain / (density * specific_heat);
+}
+
+/// Retains heat [J/kg] at a point by the rule above: e += h and T += h / c_p when `retained`
+/// (heating on), nothing otherwise.
+inline void retain_heat(PointState& s, double heat_per_mass, bool retained, double specific_heat) {
+  if (!retained) return;
+  s.internal_energy += heat_per_mass;
+  s.temperature += heat_per_mass / specific_heat;
 }
 
 /// Reads {"enabled", "taylor_quinney"}; both optional.

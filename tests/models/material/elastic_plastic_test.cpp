@@ -253,6 +253,69 @@ BOOST_AUTO_TEST_CASE(mie_gruneisen_pressure_in_uniaxial_compression_matches_the_
   BOOST_TEST(s.internal_energy > 0.0);
 }
 
+// TEPLA's growth term (1 - f) max(tr D, 0) counts only the opening half of a cycle: updated on
+// elastic steps it ratcheted the porosity of a ringing point upward (the audit of issue 19). The
+// report's code updated it on plastic steps only: 1000 elastic volumetric cycles (+-1e-3, no
+// deviator, never plastic) must leave f exactly at f_0.
+BOOST_AUTO_TEST_CASE(porosity_is_unchanged_by_1000_elastic_cycles) {
+  const Material m = al6061(Json::parse(R"({"constitutive_model": {
+      "erosion": {"algorithm": "none"},
+      "tepla": {"evolve_porosity": true, "initial_porosity": 0.01}}})"));
+  PointState s = m.model.initial_state(294.0), s1;
+  const double dt = 1e-7, rate = 1e3;  // 10 steps per half cycle: volumetric strain 3e-3
+  for (int cycle = 0; cycle < 1000; ++cycle)
+    for (int step = 0; step < 20; ++step) {
+      const double r = (step < 5 || step >= 15) ? rate : -rate;
+      const Vec3 rates(r, r, r);
+      const StepReport rep =
+          m.model.update(s, Mat3(rates.asDiagonal()), stretch(s.F, rates, dt), dt, s1);
+      BOOST_REQUIRE(rep.status == UpdateStatus::ok);
+      BOOST_REQUIRE(!rep.plastic);
+      s = s1;
+    }
+  BOOST_TEST(std::abs(s.F.determinant() - 1.0) < 1e-10);  // back where it started
+  BOOST_TEST(s.porosity == 0.01);
+}
+
+// The 6061 Mie-Gruneisen fit's isentropic bulk modulus at e = 0 turns negative in tension beyond
+// J = 1.32: (1 + (S - Gamma0) eta)/(1 - S eta)^3 + Gamma0 eta (1 - Gamma0 eta/2)/(1 - S eta)^2 < 0
+// at eta = 1 - J = -0.32 (S 1.339, Gamma0 1.99), and K_s + 4 mu/3 < 0 at J = 1.6. A point that
+// followed the EOS into tension has gained e = int(-p dv) > 0, which keeps K_s positive; a failed
+// point whose tension was dropped (AllowNoTension) reaches J = 1.6 with e = 0. The sqrt of the
+// negative modulus was a NaN that std::max dropped from the time step. Now: a point that follows
+// the EOS there reports it (the MPM solver then names the particle); a failed point whose erosion
+// drops the tension takes the reference speed sqrt((K + 4 mu/3)/rho).
+BOOST_AUTO_TEST_CASE(negative_eos_modulus_in_tension_is_a_fault_not_a_nan) {
+  const Json eos = Json::parse(R"({"constitutive_model": {
+      "equation_of_state": {"type": "mie_gruneisen"}, "erosion": {"algorithm": "none"}}})");
+  const Material m = al6061(eos);
+  PointState s = m.model.initial_state(294.0), s1;
+  const double J = 1.6, dt = 1e-7;
+  s.F = Mat3::Identity() * std::cbrt(J);
+  s.internal_energy = 0.0;
+  BOOST_TEST(std::isnan(m.model.wave_speed(s)));
+  const PointState at_1_2 = [&] {
+    PointState t = s;
+    t.F = Mat3::Identity() * std::cbrt(1.2);
+    return t;
+  }();
+  BOOST_TEST(m.model.wave_speed(at_1_2) > 0.0);  // still defined short of the spinodal
+  const StepReport r = m.model.update(s, Mat3::Zero(), s.F, dt, s1);
+  BOOST_TEST(to_string(r.status) == to_string(UpdateStatus::non_finite_wave_speed));
+
+  const Material eroded = al6061(Json::parse(R"({"constitutive_model": {
+      "equation_of_state": {"type": "mie_gruneisen"}, "erosion": {"algorithm": "AllowNoTension"},
+      "tepla": {"enabled": false}, "stability_check": {"type": "none"}}})"));
+  PointState f = s;
+  f.failed = true;  // failed earlier; its stress no longer carries the tension
+  const StepReport rf = eroded.model.update(f, Mat3::Zero(), f.F, dt, s1);
+  const auto& p = eroded.model.params();
+  BOOST_TEST(to_string(rf.status) == to_string(UpdateStatus::ok));
+  BOOST_TEST(
+      rf.wave_speed == std::sqrt((p.bulk_modulus + 4.0 * p.shear_modulus / 3.0) / (p.density / J)),
+      boost::test_tools::tolerance(1e-12));
+}
+
 BOOST_AUTO_TEST_CASE(negative_jacobian_is_reported_not_integrated) {
   const Material m = al6061();
   PointState s1;
