@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -291,6 +292,15 @@ void JsonReader::reject_unknown_keys() {
 }
 
 Json load_json_file(const std::string& file) {
+  // Only a regular file (or a link to one): a FIFO or a device would block the run or stream
+  // forever, a directory cannot be parsed.
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw InputError({file + ": cannot open the file (does it exist, and is it readable?)"});
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError({file + ": not a regular file (a directory, FIFO, socket or device); expected "
+                             "a JSON file"});
   std::ifstream in(file);
   if (!in) throw InputError({file + ": cannot open the file (does it exist, and is it readable?)"});
   try {

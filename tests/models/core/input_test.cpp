@@ -2,7 +2,11 @@
 // once, unknown keys get a nearest-key suggestion.
 #include "models/core/input.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
+#include <filesystem>
 
 using namespace impact;
 
@@ -79,6 +83,25 @@ BOOST_AUTO_TEST_CASE(syntax_errors_and_missing_files_name_the_file) {
   BOOST_CHECK_EXCEPTION(load_json_file("/nonexistent/x.json"), InputError, [](const InputError& e) {
     return contains(e.what(), "/nonexistent/x.json: cannot open the file");
   });
+}
+
+// A FIFO given as a material file used to block the run forever (the open waits for a writer);
+// a directory opened, then failed to read. Both are refused before any read.
+BOOST_AUTO_TEST_CASE(special_files_are_refused_without_blocking) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("input_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string fifo = (dir / "material.json").string();
+  BOOST_REQUIRE_EQUAL(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto refused = [](const std::string& file) {
+    return [file](const InputError& e) {
+      return contains(e.what(), file + ": not a regular file") &&
+             contains(e.what(), "expected a JSON file");
+    };
+  };
+  BOOST_CHECK_EXCEPTION(load_json_file(fifo), InputError, refused(fifo));
+  BOOST_CHECK_EXCEPTION(load_json_file(dir.string()), InputError, refused(dir.string()));
+  std::filesystem::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(range_descriptions_show_open_and_closed_ends) {
