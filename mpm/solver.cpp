@@ -47,8 +47,8 @@ class PhaseClock {
 template <class Shape>
 StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S,
                    const StressUpdateSettings& settings, const SolverSpec& s,
-                   const ContactSpec* contact, const std::vector<double>& specific_heat, double dt,
-                   std::optional<Failure>& failure) {
+                   const ContactSpec* contact, const std::vector<HeatCapacity>& heat_capacity,
+                   double dt, std::optional<Failure>& failure) {
   StepTotals t;
   PhaseClock clock(t.seconds);
   const bool usl = s.scheme == Scheme::usl;
@@ -58,7 +58,7 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   t.grid = grid_update(G, dt, s.gravity, usl, contact);  // v*_I, contact, faces (eq. 24)
   clock.lap(&PhaseTimes::grid_update);
   // FLIP velocity, x from v*_I; USL: L from v^L_I (= v*_I but at light nodes)   (eqs. 23, 25-26)
-  t.particles = grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, specific_heat, failure);
+  t.particles = grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, heat_capacity, failure);
   clock.lap(&PhaseTimes::grid_to_particles);
   if (failure) return t;
   if (!usl) {
@@ -92,9 +92,9 @@ int thread_count(int requested) {
 
 // The energy-growth check (docs/mpm.md#failure-handling). An unstable explicit step shows itself
 // first as kinetic + strain energy growing far beyond what entered, many steps before a NaN or a
-// particle leaving the grid. Reference: the energy that entered, E_in = E0 + boundary_work +
-// external_work (at least E0); growth = (kinetic + strain + booked sinks - E_in) / E_ref, equal
-// to energy_error whenever no work enters through faces or gravity. Nothing is checked while no
+// particle leaving the grid. Reference: the energy that entered, E_in = E0 + external_work (at
+// least E0); growth = (kinetic + strain + booked sinks + outflow - E_in) / E_ref, equal to
+// energy_error whenever no work enters through gravity. Nothing is checked while no
 // energy has entered (E_ref = 0: a body at rest). Names the fastest particle: where the
 // instability runs away.
 std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t) {
@@ -114,10 +114,10 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   m.precision(6);
   m << "kinetic + strain energy " << r.total_energy << " J (kinetic " << r.kinetic_energy
     << " J, strain " << r.strain_energy << " J) against " << ledger.energy_input()
-    << " J that entered (E0 " << ledger.initial_energy() << " J, boundary work " << r.boundary_work
-    << " J, external work " << r.external_work << " J): growth " << std::showpos
-    << excess / reference << std::noshowpos << " (energy_error " << std::showpos << r.energy_error
-    << std::noshowpos << ") above time.max_energy_growth = " << t.max_energy_growth
+    << " J that entered (E0 " << ledger.initial_energy() << " J, external work " << r.external_work
+    << " J): growth " << std::showpos << excess / reference << std::noshowpos << " (energy_error "
+    << std::showpos << r.energy_error << std::noshowpos
+    << ") above time.max_energy_growth = " << t.max_energy_growth
     << "; this particle is the fastest, |v| = " << std::sqrt(speed2)
     << " m/s: the explicit step is unstable (time.multiplier " << t.multiplier << "; lower it)";
   return Failure{fastest, "energy", m.str()};
@@ -132,14 +132,14 @@ Simulation::Simulation(const Scene& scene, int threads)
             scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
-      ledger_(!scene.solver.gravity.isZero(0.0)) {
+      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove) {
   const PhysicsSpec& ph = scene_.physics;
   StressUpdateSettings& st = stress_settings_;
   bool erosion = false;
   for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
     const ElasticPlastic& model = scene_.materials[m].material.model;
     st.models.push_back(&model);
-    specific_heat_.push_back(model.params().specific_heat);
+    heat_capacity_.push_back({model.params().heating.enabled, model.params().specific_heat});
     erosion = erosion || model.params().erosion != Erosion::none;
     if (ph.create_new_particles && scene_.companion_field(int(m)) != scene_.parent_field(int(m))) {
       st.companion_field.push_back(static_cast<std::uint16_t>(scene_.companion_field(int(m))));
@@ -148,6 +148,7 @@ Simulation::Simulation(const Scene& scene, int threads)
   st.f_integration = scene_.solver.f_integration;
   st.fail_particle = ph.on_numerical_fault == NumericalFaultAction::fail_particle;
   if (st.fail_particle) particles_.fault.assign(particles_.size(), 0);
+  if (scene_.grid.outflow == Outflow::remove) particles_.removed.assign(particles_.size(), 0);
   st.mean_spacing = scene_.grid.spacing().sum() / 3.0;
   if (ph.artificial_viscosity.enabled) {
     st.viscosity = &scene_.physics.artificial_viscosity;
@@ -155,11 +156,9 @@ Simulation::Simulation(const Scene& scene, int threads)
   }
   // The ledger's columns follow the physics the scene switched on.
   if (st.viscosity) sinks_.viscous = ledger_.add_sink_column("viscous_work");
-  if (grid_.fields() > 1) {
-    sinks_.contact = ledger_.add_sink_column("contact_dissipation");
-    if (ph.contact.type == ContactType::friction)
-      sinks_.friction = ledger_.add_sink_column("friction_heat", /*in_balance=*/false);
-  }
+  // Contact's normal reaction does no work; friction's Coulomb work is heat (contact.hpp).
+  if (grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0)
+    sinks_.friction = ledger_.add_sink_column("friction_heat");
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
   if (!particles_.mass.empty()) {
     grid_.light_mass =
@@ -182,7 +181,11 @@ void Simulation::restart_ledger() {
 double Simulation::next_dt() const {
   double dt = stable_time_step(grid_.spacing(), max_signal_speed_, scene_.time.multiplier);
   if (steps_ == 0) dt = std::min(dt, scene_.time.initial_dt);
-  return std::min(dt, scene_.time.max_dt);
+  dt = std::min(dt, scene_.time.max_dt);
+  // No signal at all (every particle left the grid, grid.outflow = remove): nothing limits the
+  // step, and nothing is left to integrate.
+  if (std::isinf(dt) && max_signal_speed_ == 0.0) dt = scene_.time.max_time - time_;
+  return dt;
 }
 
 const StepTotals& Simulation::step() {
@@ -216,7 +219,7 @@ const StepTotals& Simulation::step() {
         auto& S = std::get<Stencils<Shape>>(stencils_);
         const ContactSpec* contact = grid_.fields() > 1 ? &scene_.physics.contact : nullptr;
         return advance(particles_, grid_, shape, S, stress_settings_, scene_.solver, contact,
-                       specific_heat_, dt, failure);
+                       heat_capacity_, dt, failure);
       },
       shape_);
   stress_settings_.inject_nan_stress = -1;
@@ -225,13 +228,16 @@ const StepTotals& Simulation::step() {
   ++steps_;
   max_signal_speed_ = last_.stress.max_signal_speed;
   ledger_.record_step(time_, last_.particles.kinetic_energy, last_.particles.momentum,
-                      last_.stress.strain_energy_increment, last_.grid.boundary.impulse,
-                      last_.grid.boundary.work, last_.grid.boundary.dissipation,
+                      last_.stress.strain_energy_increment, last_.grid.boundary_impulse,
                       last_.grid.external_impulse, last_.grid.external_work);
   if (sinks_.viscous >= 0) ledger_.add_sink(sinks_.viscous, last_.stress.viscous_work);
-  if (sinks_.contact >= 0) ledger_.add_sink(sinks_.contact, last_.grid.contact.dissipation);
   if (sinks_.friction >= 0) ledger_.add_sink(sinks_.friction, last_.grid.contact.friction_heat);
   if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
+  if (last_.particles.removed > 0) {
+    ledger_.add_outflow(last_.particles.outflow_mass, last_.particles.outflow_momentum,
+                        last_.particles.outflow_kinetic_energy);
+    removed_ += last_.particles.removed;
+  }
   failed_ += last_.stress.failed;
   converted_ += last_.stress.converted;
   faulted_ += static_cast<long>(last_.stress.faulted.size());
@@ -373,7 +379,7 @@ Json vec_json(const Vec3& v) {
 Json row_json(const Ledger& ledger) {
   const LedgerRow r = ledger.row();
   const auto cols = ledger.columns();
-  const auto vals = Ledger::values(r, ledger.with_external());
+  const auto vals = ledger.values(r);
   Json j;
   for (std::size_t i = 0; i < cols.size(); ++i) j[cols[i]] = vals[i];
   return j;
@@ -516,7 +522,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     observables.sample(sim.particles(), sim.time());  // max pressure: sampled at history rows
     std::vector<double> extra = gauges.read(sim.particles());
     if (fail_particle) extra.push_back(double(sim.faulted_particles()));
-    history->write(sim.ledger().row(), extra);
+    history->write(sim.ledger(), extra);
     write_status("running", "");
   };
   std::optional<SnapshotWriter> snapshots;

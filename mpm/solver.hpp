@@ -89,6 +89,8 @@ class Simulation {
   long converted_particles() const { return converted_; }  ///< moved to a companion field
   /// Particles flagged by physics.on_numerical_fault = fail_particle so far.
   long faulted_particles() const { return faulted_; }
+  /// Particles that left the grid and were removed so far (grid.outflow = remove).
+  long removed_particles() const { return removed_; }
   /// The particles flagged in the last step, and why (ascending index; fail_particle only).
   const std::vector<Failure>& last_faults() const { return last_.stress.faulted; }
   /// "step N, time T s: particle P (material, object, position, velocity, stress, eps_p, T, J,
@@ -111,13 +113,13 @@ class Simulation {
   std::variant<LinearShape, GimpShape> shape_;
   std::variant<Stencils<LinearShape>, Stencils<GimpShape>> stencils_;  ///< reused every step
   StressUpdateSettings stress_settings_;
-  std::vector<double> specific_heat_;  ///< per material, for friction heating
+  std::vector<HeatCapacity> heat_capacity_;  ///< per material, for friction heating
   Ledger ledger_;
   /// Ledger sink columns registered for this scene's physics (-1: not registered).
   struct SinkColumns {
-    int viscous = -1, contact = -1, friction = -1, eroded = -1;
+    int viscous = -1, friction = -1, eroded = -1;
   } sinks_;
-  long failed_ = 0, converted_ = 0, faulted_ = 0;
+  long failed_ = 0, converted_ = 0, faulted_ = 0, removed_ = 0;
   std::vector<FaultInjection> injections_;
   /// The particle loops' start-of-step check (positions inside the grid, velocities finite).
   void check_particles() const;

@@ -47,7 +47,7 @@ double particle_bytes(const Particles& P) {
   return bytes_of(P.x) + bytes_of(P.v) + bytes_of(P.mass) + bytes_of(P.volume0) +
          bytes_of(P.volume) + bytes_of(P.L) + bytes_of(P.state) + bytes_of(P.wave_speed) +
          bytes_of(P.material) + bytes_of(P.object) + bytes_of(P.field) + bytes_of(P.q) +
-         bytes_of(P.fault);
+         bytes_of(P.fault) + bytes_of(P.removed);
 }
 
 Measured measure(const Json& doc, const std::string& file, int threads, int steps) {

@@ -31,14 +31,15 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
 }  // namespace
 
 ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec3>& v,
-                            const std::vector<Vec3>* reference) {
-  const bool book_heat = reference != nullptr;
+                            ContactPass pass) {
+  const bool book = pass == ContactPass::step;
+  const bool write_heat = book && !G.heat.empty();
   const int nn = G.node_count();
   const int nf = std::min(G.fields(), kMaxFields);
   const int nt = G.threads();
   const bool friction = contact.type == ContactType::friction && G.has_nodal_stress();
   ContactTotals partial[kMaxThreads];
-  if (book_heat && !G.heat.empty()) G.for_active_entries([&](int e) { G.heat[e] = 0.0; });
+  if (write_heat) G.for_active_entries([&](int e) { G.heat[e] = 0.0; });
   const std::vector<int>& nodes = G.active_nodes();  // heat is read at active nodes only
   const int na_nodes = static_cast<int>(nodes.size());
 #pragma omp parallel num_threads(nt)
@@ -64,6 +65,15 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         gradM += grad[a];
       }
       const Vec3 vcm = P / M;
+      // The start field's centre-of-mass velocity: the slip the bodies make over the step.
+      Vec3 vcm_start = Vec3::Zero();
+      if (book) {
+        for (int a = 0; a < na; ++a) {
+          const int e = active[a] * nn + I;
+          vcm_start += G.mass[e] * G.velocity[e];
+        }
+        vcm_start /= M;
+      }
       Mat3 sigma = Mat3::Zero();
       if (friction) {
         for (int a = 0; a < na; ++a) {
@@ -73,41 +83,46 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           sigma += t;
         }
       }
-      Vec3 w_cm = Vec3::Zero();  // centre-of-mass reference velocity
-      if (reference)
-        for (int a = 0; a < na; ++a)
-          w_cm += G.mass[active[a] * nn + I] * (*reference)[active[a] * nn + I] / M;
-      Vec3 dv[kMaxFields], dn[kMaxFields];
+      Vec3 dv[kMaxFields];
+      double heat[kMaxFields];
       Vec3 net = Vec3::Zero();
       bool any = false;
       for (int a = 0; a < na; ++a) {
         dv[a].setZero();
-        dn[a].setZero();
+        heat[a] = 0.0;
         const Vec3 g = gradM - 2.0 * grad[a];  // grad m_rest - grad m_f
         const double gn = g.norm();
         if (!(gn > 0.0)) continue;  // no surface here: leave the field alone
         const Vec3 n = g / gn;
         const int e = active[a] * nn + I;
+        const double m = G.mass[e];
         const Vec3 u = v[e] - vcm;
         const double un = u.dot(n);
         const bool approaching = un > 0.0;
         // The report's friction also held surfaces that SEPARATE while the nodal stress is
         // compressive. With sigma_I summed from the particles inside the interface that glued
         // rebounding blocks whose interior still rang in compression, and the switching between
-        // glued and free fed energy in (two-block test: energy_error +2.33). Compression now
+        // glued and free fed energy in (contact_blocks_test). Compression now
         // keeps a touching (u_n = 0) pair in contact, never pulls a separating pair back.
         const bool compressed = friction && n.dot(sigma * n) < 0.0 && un >= 0.0;
         if (!approaching && !compressed) continue;
-        const Vec3 normal_part = -un * n;
         const Vec3 ut = u - un * n;
         const double ut_norm = ut.norm();
-        dv[a] = normal_part;
-        dn[a] = normal_part;
-        if (contact.mu > 0.0 && ut_norm > 0.0 && std::abs(un) > 0.0) {
-          const double mu_eff = std::min(contact.mu, ut_norm / std::abs(un));  // stick or slip
-          dv[a] -= mu_eff * std::abs(un) * (ut / ut_norm);
+        dv[a] = -un * n;
+        // Coulomb: the slip is reduced by s = min(mu |u_n|, |u_t|) (stick when it is all of it).
+        double s = 0.0;
+        if (contact.mu > 0.0 && ut_norm > 0.0) {
+          s = std::min(contact.mu * std::abs(un), ut_norm);
+          dv[a] -= s * (ut / ut_norm);
         }
-        net += G.mass[e] * dv[a];
+        // Coulomb work: the friction impulse m s times the slip speed of the motion over the
+        // step, that of the corrected start field (what the positions follow), >= 0. The
+        // normal reaction only keeps u_n = 0 and does no work.
+        if (book && s > 0.0) {
+          const Vec3 u0 = G.velocity[e] - vcm_start;
+          heat[a] = m * s * (u0 - u0.dot(n) * n).norm();
+        }
+        net += m * dv[a];
         any = true;
       }
       if (!any) continue;
@@ -115,17 +130,10 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       const Vec3 mean = net / M;  // zero to round-off for a pair; removes it for three or more
       for (int a = 0; a < na; ++a) {
         const int e = active[a] * nn + I;
-        const Vec3 du = dv[a] - mean;
-        v[e] += du;
-        if (reference) {
-          // Work on the relative start velocity (centre-of-mass frame: the corrections carry no
-          // net momentum); its tangential part is the friction heat.
-          const Vec3 w = (*reference)[e] - w_cm;
-          const double work = -G.mass[e] * du.dot(w);
-          const double heat = std::max(-G.mass[e] * (dv[a] - dn[a]).dot(w), 0.0);
-          sum.dissipation += work;
-          sum.friction_heat += heat;
-          if (book_heat && !G.heat.empty()) G.heat[e] = heat;
+        v[e] += dv[a] - mean;
+        if (book) {
+          sum.friction_heat += heat[a];
+          if (write_heat) G.heat[e] += heat[a];
         }
       }
     }
@@ -133,7 +141,6 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   }
   ContactTotals total;
   for (int t = 0; t < nt; ++t) {  // thread order: deterministic
-    total.dissipation += partial[t].dissipation;
     total.friction_heat += partial[t].friction_heat;
     total.contact_nodes += partial[t].contact_nodes;
   }

@@ -36,14 +36,6 @@ struct NodeStress {
   double s[6] = {};
 };
 
-/// Momentum and energy that the face conditions exchanged in one step (the ledger's boundary
-/// terms; docs/mpm.md#ledger).
-struct BoundaryLoad {
-  Vec3 impulse = Vec3::Zero();  ///< sum_I m_I (dv_I - dv_I^free) over constrained nodes [N s]
-  double work = 0.0;            ///< v_face . impulse: 0 for stationary faces [J]
-  double dissipation = 0.0;     ///< kinetic energy the face projection took from the grid [J]
-};
-
 /// One write of the face mirror (Grid::apply_mirror): `target` is a face-layer node (its
 /// constrained components zeroed) or a ghost node (the reflection of `source`, the first interior
 /// node); storage indices within one field.

@@ -21,15 +21,12 @@ void Ledger::start(double time, double kinetic_energy, const Vec3& momentum) {
 
 void Ledger::record_step(double time, double kinetic_energy, const Vec3& momentum,
                          double strain_energy_increment, const Vec3& boundary_impulse,
-                         double boundary_work, double boundary_dissipation,
                          const Vec3& external_impulse, double external_work) {
   time_ = time;
   kinetic_ = kinetic_energy;
   momentum_ = momentum;
   strain_ += strain_energy_increment;
   boundary_impulse_ += boundary_impulse;
-  boundary_work_ += boundary_work;
-  boundary_dissipation_ += boundary_dissipation;
   external_impulse_ += external_impulse;
   external_work_ += external_work;
 }
@@ -42,9 +39,10 @@ LedgerRow Ledger::row() const {
   r.total_energy = kinetic_ + strain_;
   r.momentum = momentum_;
   r.boundary_impulse = boundary_impulse_;
-  r.boundary_work = boundary_work_;
-  r.boundary_dissipation = boundary_dissipation_;
   r.sinks = sinks_;
+  r.outflow_mass = outflow_mass_;
+  r.outflow_momentum = outflow_momentum_;
+  r.outflow_kinetic_energy = outflow_kinetic_;
   r.external_impulse = external_impulse_;
   r.external_work = external_work_;
   const double scale = initial_energy_ > 0.0 ? initial_energy_ : 1.0;
@@ -56,8 +54,7 @@ double Ledger::energy_excess() const {
   double sunk = 0.0;
   for (std::size_t i = 0; i < sinks_.size(); ++i)
     if (in_balance_[i]) sunk += sinks_[i];
-  return (kinetic_ + strain_) + boundary_dissipation_ + sunk - initial_energy_ - boundary_work_ -
-         external_work_;
+  return (kinetic_ + strain_) + sunk + outflow_kinetic_ - initial_energy_ - external_work_;
 }
 
 std::vector<std::string> Ledger::columns() const {
@@ -70,10 +67,13 @@ std::vector<std::string> Ledger::columns() const {
                                 "momentum_z [kg m/s]",
                                 "boundary_impulse_x [N s]",
                                 "boundary_impulse_y [N s]",
-                                "boundary_impulse_z [N s]",
-                                "boundary_work [J]",
-                                "boundary_dissipation [J]"};
+                                "boundary_impulse_z [N s]"};
   for (const std::string& s : sink_names_) c.push_back(s + " [J]");
+  if (with_outflow_) {
+    c.insert(c.end(),
+             {"outflow_mass [kg]", "outflow_momentum_x [kg m/s]", "outflow_momentum_y [kg m/s]",
+              "outflow_momentum_z [kg m/s]", "outflow_kinetic_energy [J]"});
+  }
   if (with_external_) {
     c.insert(c.end(), {"external_impulse_x [N s]", "external_impulse_y [N s]",
                        "external_impulse_z [N s]", "external_work [J]"});
@@ -82,7 +82,7 @@ std::vector<std::string> Ledger::columns() const {
   return c;
 }
 
-std::vector<double> Ledger::values(const LedgerRow& r, bool with_external) {
+std::vector<double> Ledger::values(const LedgerRow& r) const {
   std::vector<double> v = {r.time,
                            r.kinetic_energy,
                            r.strain_energy,
@@ -92,11 +92,13 @@ std::vector<double> Ledger::values(const LedgerRow& r, bool with_external) {
                            r.momentum(2),
                            r.boundary_impulse(0),
                            r.boundary_impulse(1),
-                           r.boundary_impulse(2),
-                           r.boundary_work,
-                           r.boundary_dissipation};
+                           r.boundary_impulse(2)};
   v.insert(v.end(), r.sinks.begin(), r.sinks.end());
-  if (with_external) {
+  if (with_outflow_) {
+    v.insert(v.end(), {r.outflow_mass, r.outflow_momentum(0), r.outflow_momentum(1),
+                       r.outflow_momentum(2), r.outflow_kinetic_energy});
+  }
+  if (with_external_) {
     v.insert(v.end(), {r.external_impulse(0), r.external_impulse(1), r.external_impulse(2),
                        r.external_work});
   }
@@ -105,18 +107,21 @@ std::vector<double> Ledger::values(const LedgerRow& r, bool with_external) {
 }
 
 Ledger::State Ledger::state() const {
-  return {time_,
-          kinetic_,
-          strain_,
-          boundary_work_,
-          external_work_,
-          boundary_dissipation_,
-          initial_energy_,
-          momentum_,
-          p0_,
-          boundary_impulse_,
-          external_impulse_,
-          sinks_};
+  State s;
+  s.time = time_;
+  s.kinetic = kinetic_;
+  s.strain = strain_;
+  s.external_work = external_work_;
+  s.initial_energy = initial_energy_;
+  s.outflow_mass = outflow_mass_;
+  s.outflow_kinetic = outflow_kinetic_;
+  s.momentum = momentum_;
+  s.p0 = p0_;
+  s.boundary_impulse = boundary_impulse_;
+  s.external_impulse = external_impulse_;
+  s.outflow_momentum = outflow_momentum_;
+  s.sinks = sinks_;
+  return s;
 }
 
 void Ledger::restore(const State& s) {
@@ -127,10 +132,11 @@ void Ledger::restore(const State& s) {
   time_ = s.time;
   kinetic_ = s.kinetic;
   strain_ = s.strain;
-  boundary_work_ = s.boundary_work;
   external_work_ = s.external_work;
-  boundary_dissipation_ = s.boundary_dissipation;
   initial_energy_ = s.initial_energy;
+  outflow_mass_ = s.outflow_mass;
+  outflow_kinetic_ = s.outflow_kinetic;
+  outflow_momentum_ = s.outflow_momentum;
   momentum_ = s.momentum;
   p0_ = s.p0;
   boundary_impulse_ = s.boundary_impulse;

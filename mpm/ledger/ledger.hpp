@@ -1,15 +1,18 @@
-// Energy and momentum ledger (history.csv). Definitions (docs/mpm.md#ledger):
+// Energy and momentum ledger (history.csv). Definitions and the sign of every term
+// (docs/mpm.md#ledger):
 //   kinetic_energy  = sum_p 1/2 m_p |v_p|^2, end-of-step velocity            (report eq. 13)
 //   strain_energy   = sum_steps sum_p 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt   (eq. 14)
 //   total_energy    = kinetic + strain                                  (the report's quantity)
-//   boundary_impulse, boundary_work: what the grid-face conditions exerted (grid/boundary.cpp)
-//   boundary_dissipation = the kinetic energy the faces' velocity projection took, booked exactly
-//                     at the nodes (step/grid_update.cpp)
-//   sinks           = one column each, registered by the solver for the physics a scene uses:
-//                     viscous_work, contact_dissipation (in the balance),
-//                     friction_heat, eroded_energy (parts of other terms: shown, not added)
-//   energy_error    = (kinetic + strain + boundary_dissipation + sum of balance sinks - E0
-//                      - boundary_work - external_work) / E0
+//   boundary_impulse = what the grid-face conditions exerted (grid/boundary.cpp); stationary faces
+//                     do no work, so they have no energy column
+//   sinks           = one column each, registered by the solver for the physics a scene uses, each
+//                     >= 0 and non-decreasing by construction: viscous_work and friction_heat (in
+//                     the balance: heat), eroded_energy (part of strain_energy: shown, not added)
+//   outflow_*       = (grid.outflow = remove) mass, momentum and kinetic energy of the particles
+//                     that left the grid (the stress work done on them stays in strain_energy)
+//   energy_error    = (kinetic + strain + sum of balance sinks + outflow_kinetic_energy - E0
+//                      - external_work) / E0: the numerical residual (time integration and
+//                      transfers), the one term that is not physics
 // with E0 the initial kinetic energy (1 J if E0 = 0, i.e. then an absolute error in J).
 // Column names carry their unit, `name [unit]` (the point driver's convention).
 #pragma once
@@ -28,9 +31,10 @@ struct LedgerRow {
   double total_energy = 0.0;
   Vec3 momentum = Vec3::Zero();
   Vec3 boundary_impulse = Vec3::Zero();
-  double boundary_work = 0.0;
-  double boundary_dissipation = 0.0;
   std::vector<double> sinks;  ///< in Ledger::sink_names() order
+  double outflow_mass = 0.0;
+  Vec3 outflow_momentum = Vec3::Zero();
+  double outflow_kinetic_energy = 0.0;
   Vec3 external_impulse = Vec3::Zero();
   double external_work = 0.0;
   double energy_error = 0.0;
@@ -38,8 +42,11 @@ struct LedgerRow {
 
 class Ledger {
  public:
-  /// `with_external`: gravity is on, so body-force impulse and work get columns too.
-  explicit Ledger(bool with_external = false) : with_external_(with_external) {}
+  /// `with_external`: gravity is on, so body-force impulse and work get columns too;
+  /// `with_outflow`: particles that leave the grid are removed (grid.outflow = remove), so their
+  /// mass, momentum and kinetic energy get columns.
+  explicit Ledger(bool with_external = false, bool with_outflow = false)
+      : with_external_(with_external), with_outflow_(with_outflow) {}
 
   /// Registers an energy sink column (J, accumulated; `name` without unit: the header gets
   /// "name [J]"); returns its index for add_sink(). `in_balance`: a term of energy_error (false
@@ -53,14 +60,19 @@ class Ledger {
   /// One step's increments and end-of-step particle totals.
   void record_step(double time, double kinetic_energy, const Vec3& momentum,
                    double strain_energy_increment, const Vec3& boundary_impulse,
-                   double boundary_work, double boundary_dissipation, const Vec3& external_impulse,
-                   double external_work);
+                   const Vec3& external_impulse, double external_work);
   void add_sink(int index, double energy) { sinks_[index] += energy; }
+  /// Particles removed at the grid's edge this step (grid.outflow = remove).
+  void add_outflow(double mass, const Vec3& momentum, double kinetic_energy) {
+    outflow_mass_ += mass;
+    outflow_momentum_ += momentum;
+    outflow_kinetic_ += kinetic_energy;
+  }
 
   LedgerRow row() const;
-  /// The energy that entered so far: E0 + boundary_work + external_work [J].
-  double energy_input() const { return initial_energy_ + boundary_work_ + external_work_; }
-  /// kinetic + strain + boundary_dissipation + balance sinks - energy_input() [J]: the numerator
+  /// The energy that entered so far: E0 + external_work [J].
+  double energy_input() const { return initial_energy_ + external_work_; }
+  /// kinetic + strain + balance sinks + outflow - energy_input() [J]: the numerator
   /// of energy_error (no allocation: the solver's energy-growth check calls it every step).
   double energy_excess() const;
   double initial_energy() const { return initial_energy_; }
@@ -69,16 +81,17 @@ class Ledger {
   /// CSV header: "time [s]", "kinetic_energy [J]", ..., "energy_error [-]" (issue 4's names with
   /// their units).
   std::vector<std::string> columns() const;
-  static std::vector<double> values(const LedgerRow& r, bool with_external);
+  std::vector<double> values(const LedgerRow& r) const;
   bool with_external() const { return with_external_; }
+  bool with_outflow() const { return with_outflow_; }
 
   /// Every accumulator, for a checkpoint (mpm/run/checkpoint.cpp): restore() on a ledger with the
   /// same columns continues bit for bit.
   struct State {
-    double time = 0.0, kinetic = 0.0, strain = 0.0, boundary_work = 0.0, external_work = 0.0;
-    double boundary_dissipation = 0.0, initial_energy = 0.0;
+    double time = 0.0, kinetic = 0.0, strain = 0.0, external_work = 0.0, initial_energy = 0.0;
+    double outflow_mass = 0.0, outflow_kinetic = 0.0;
     Vec3 momentum = Vec3::Zero(), p0 = Vec3::Zero(), boundary_impulse = Vec3::Zero();
-    Vec3 external_impulse = Vec3::Zero();
+    Vec3 external_impulse = Vec3::Zero(), outflow_momentum = Vec3::Zero();
     std::vector<double> sinks;
   };
   State state() const;
@@ -86,12 +99,12 @@ class Ledger {
   void restore(const State& s);
 
  private:
-  bool with_external_;
-  double time_ = 0.0, kinetic_ = 0.0, strain_ = 0.0, boundary_work_ = 0.0, external_work_ = 0.0;
-  double boundary_dissipation_ = 0.0;
+  bool with_external_, with_outflow_;
+  double time_ = 0.0, kinetic_ = 0.0, strain_ = 0.0, external_work_ = 0.0;
   double initial_energy_ = 0.0;
+  double outflow_mass_ = 0.0, outflow_kinetic_ = 0.0;
   Vec3 momentum_ = Vec3::Zero(), p0_ = Vec3::Zero(), boundary_impulse_ = Vec3::Zero();
-  Vec3 external_impulse_ = Vec3::Zero();
+  Vec3 external_impulse_ = Vec3::Zero(), outflow_momentum_ = Vec3::Zero();
   std::vector<std::string> sink_names_;
   std::vector<double> sinks_;
   std::vector<bool> in_balance_;

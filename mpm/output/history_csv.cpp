@@ -25,7 +25,7 @@ std::string header_line(const Ledger& ledger, const std::vector<std::string>& ex
 
 HistoryCsv::HistoryCsv(const std::string& path, const Ledger& ledger,
                        const std::vector<std::string>& extra_columns)
-    : out_(path), with_external_(ledger.with_external()), extra_columns_(extra_columns.size()) {
+    : out_(path), extra_columns_(extra_columns.size()) {
   if (!out_) throw std::runtime_error("cannot write " + path);
   const std::string header = header_line(ledger, extra_columns);
   out_ << header << std::setprecision(17);
@@ -35,10 +35,7 @@ HistoryCsv::HistoryCsv(const std::string& path, const Ledger& ledger,
 HistoryCsv::HistoryCsv(const std::string& path, const Ledger& ledger,
                        const std::vector<std::string>& extra_columns, std::uint64_t bytes,
                        std::uint64_t rows)
-    : with_external_(ledger.with_external()),
-      extra_columns_(extra_columns.size()),
-      bytes_(bytes),
-      rows_(rows) {
+    : extra_columns_(extra_columns.size()), bytes_(bytes), rows_(rows) {
   namespace fs = std::filesystem;
   const auto fail = [&](const std::string& why) {
     throw std::runtime_error(path + ": " + why + ": not the history.csv of this checkpoint");
@@ -68,12 +65,12 @@ HistoryCsv::HistoryCsv(const std::string& path, const Ledger& ledger,
   out_ << std::setprecision(17);
 }
 
-void HistoryCsv::write(const LedgerRow& row, const std::vector<double>& extra) {
+void HistoryCsv::write(const Ledger& ledger, const std::vector<double>& extra) {
   if (extra.size() != extra_columns_) {
     throw std::logic_error("history.csv: " + std::to_string(extra.size()) + " extra values for " +
                            std::to_string(extra_columns_) + " extra columns");
   }
-  const auto v = Ledger::values(row, with_external_);
+  const auto v = ledger.values(ledger.row());
   for (std::size_t i = 0; i < v.size(); ++i) out_ << (i ? "," : "") << v[i];
   for (const double x : extra) out_ << ',' << x;
   out_ << '\n';

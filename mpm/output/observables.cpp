@@ -16,11 +16,9 @@ Gauges::Gauges(const Scene& scene, const Particles& initial) {
     gauge.column = "gauge_" + g.name + " [" + unit + "]";
     gauge.type = g.type;
     gauge.component = g.component;
-    gauge.mass = 0.0;
     for (std::size_t p = 0; p < initial.size(); ++p) {
       if (initial.object[p] != g.object || !in_box(initial.x[p], g.lower, g.upper)) continue;
       gauge.members.push_back(p);
-      gauge.mass += initial.mass[p];
     }
     if (gauge.members.empty()) {
       throw std::logic_error("gauge " + g.name + ": no particle in its region");
@@ -39,14 +37,17 @@ std::vector<double> Gauges::read(const Particles& P) const {
   std::vector<double> values;
   values.reserve(gauges_.size());
   for (const Gauge& g : gauges_) {
-    double sum = 0.0;
+    // Mass-weighted over the members still in play (a removed particle has zero mass); NaN once
+    // all have left the grid (grid.outflow = remove).
+    double sum = 0.0, mass = 0.0;
     for (const std::size_t p : g.members) {
       const double value = g.type == GaugeType::velocity ? P.v[p](g.component)
                            : g.type == GaugeType::strain ? log_strain(P.state[p].F, g.component)
                                                          : pressure(P.state[p].stress);
       sum += P.mass[p] * value;
+      mass += P.mass[p];
     }
-    values.push_back(sum / g.mass);
+    values.push_back(mass > 0.0 ? sum / mass : std::numeric_limits<double>::quiet_NaN());
   }
   return values;
 }

@@ -49,7 +49,6 @@ class Gauges {
     GaugeType type;
     int component;
     std::vector<std::size_t> members;
-    double mass;  ///< sum of the members' masses [kg]
   };
   std::vector<Gauge> gauges_;
 };

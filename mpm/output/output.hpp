@@ -24,15 +24,14 @@ class HistoryCsv {
   HistoryCsv(const std::string& path, const Ledger& ledger,
              const std::vector<std::string>& extra_columns, std::uint64_t bytes,
              std::uint64_t rows);
-  /// `extra`: one value per extra column.
-  void write(const LedgerRow& row, const std::vector<double>& extra = {});
+  /// The ledger's current row; `extra`: one value per extra column.
+  void write(const Ledger& ledger, const std::vector<double>& extra = {});
   /// Bytes and rows written so far (header included in the bytes), for a checkpoint.
   std::uint64_t bytes() const { return bytes_; }
   std::uint64_t rows() const { return rows_; }
 
  private:
   std::ofstream out_;
-  bool with_external_;
   std::size_t extra_columns_ = 0;
   std::uint64_t bytes_ = 0, rows_ = 0;
 };

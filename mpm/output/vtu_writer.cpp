@@ -64,7 +64,12 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
   char name[64];
   std::snprintf(name, sizeof name, "step_%06ld.vtu", step);
   const fs::path rel = fs::path("particles") / name;
-  const std::size_t n = P.size();
+  // The particles in play: those removed at the grid's edge (grid.outflow = remove) are not drawn.
+  std::vector<std::size_t> in_play;
+  in_play.reserve(P.size());
+  for (std::size_t p = 0; p < P.size(); ++p)
+    if (P.removed.empty() || !P.removed[p]) in_play.push_back(p);
+  const std::size_t n = in_play.size();
   write_file_atomically(fs::path(directory_) / rel, [&](std::ostream& o) {
     Appended data;
     o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
@@ -74,7 +79,7 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
     {
       std::vector<double> x(3 * n);
       for (std::size_t p = 0; p < n; ++p)
-        for (int d = 0; d < 3; ++d) x[3 * p + d] = P.x[p](d);
+        for (int d = 0; d < 3; ++d) x[3 * p + d] = P.x[in_play[p]](d);
       data.add(o, "Float64", nullptr, 3, std::move(x));
     }
     o << "</Points>\n<Cells>\n";
@@ -94,47 +99,49 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
       if (f == "velocity") {
         std::vector<double> v(3 * n);
         for (std::size_t p = 0; p < n; ++p)
-          for (int d = 0; d < 3; ++d) v[3 * p + d] = P.v[p](d);
+          for (int d = 0; d < 3; ++d) v[3 * p + d] = P.v[in_play[p]](d);
         data.add(o, "Float64", "velocity", 3, std::move(v));
       } else if (f == "stress") {
         std::vector<double> v(6 * n);
         for (std::size_t p = 0; p < n; ++p) {
-          const Mat3& s = P.state[p].stress;
+          const Mat3& s = P.state[in_play[p]].stress;
           const double c[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
           for (int d = 0; d < 6; ++d) v[6 * p + d] = c[d];
         }
         data.add(o, "Float64", "stress", 6, std::move(v));
       } else if (f == "plastic_strain") {
         data.add(o, "Float64", "plastic_strain", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[p].plastic_strain; }));
+                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].plastic_strain; }));
       } else if (f == "temperature") {
         data.add(o, "Float64", "temperature", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[p].temperature; }));
+                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].temperature; }));
       } else if (f == "damage") {
         data.add(o, "Float64", "damage", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[p].damage; }));
+                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].damage; }));
       } else if (f == "mass") {
-        data.add(o, "Float64", "mass", 1, scalar(n, [&](std::size_t p) { return P.mass[p]; }));
+        data.add(o, "Float64", "mass", 1,
+                 scalar(n, [&](std::size_t p) { return P.mass[in_play[p]]; }));
       } else if (f == "volume") {
-        data.add(o, "Float64", "volume", 1, scalar(n, [&](std::size_t p) { return P.volume[p]; }));
+        data.add(o, "Float64", "volume", 1,
+                 scalar(n, [&](std::size_t p) { return P.volume[in_play[p]]; }));
       } else if (f == "pressure") {
         data.add(o, "Float64", "pressure", 1,
-                 scalar(n, [&](std::size_t p) { return -mean(P.state[p].stress); }));
+                 scalar(n, [&](std::size_t p) { return -mean(P.state[in_play[p]].stress); }));
       } else if (f == "von_mises") {
         data.add(o, "Float64", "von_mises", 1,
-                 scalar(n, [&](std::size_t p) { return von_mises(P.state[p].stress); }));
+                 scalar(n, [&](std::size_t p) { return von_mises(P.state[in_play[p]].stress); }));
       } else if (f == "material") {
         data.add(o, "Float64", "material", 1,
-                 scalar(n, [&](std::size_t p) { return double(P.material[p]); }));
+                 scalar(n, [&](std::size_t p) { return double(P.material[in_play[p]]); }));
       } else if (f == "object") {
         data.add(o, "Float64", "object", 1,
-                 scalar(n, [&](std::size_t p) { return double(P.object[p]); }));
+                 scalar(n, [&](std::size_t p) { return double(P.object[in_play[p]]); }));
       } else if (f == "field") {
         data.add(o, "Float64", "field", 1,
-                 scalar(n, [&](std::size_t p) { return double(P.field[p]); }));
+                 scalar(n, [&](std::size_t p) { return double(P.field[in_play[p]]); }));
       } else if (f == "failed") {
         data.add(o, "Float64", "failed", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[p].failed ? 1.0 : 0.0; }));
+                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].failed ? 1.0 : 0.0; }));
       }
     }
     o << "</PointData>\n</Piece>\n</UnstructuredGrid>\n";

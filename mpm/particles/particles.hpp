@@ -29,6 +29,11 @@ struct Particles {
   /// fail_particle flagged it (it keeps mass and momentum, has zero stress and no further
   /// update); 0: none. Empty when the scene stops on a fault.
   std::vector<std::uint8_t> fault;
+  /// 1: the particle left the grid and was removed (grid.outflow = remove): its mass, momentum
+  /// and kinetic energy went to the ledger's outflow columns, it keeps zero mass, volume, stress
+  /// and velocity, parked inside the grid where it left, and takes no further part in the step;
+  /// 0: in play. Empty unless grid.outflow = remove.
+  std::vector<std::uint8_t> removed;
 
   std::size_t size() const { return x.size(); }
   void reserve(std::size_t n);

@@ -19,7 +19,7 @@ constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // version raised): these fail to compile until then.
 static_assert(sizeof(PointState) == 3 * sizeof(Mat3) + 6 * sizeof(double) + 8,
               "PointState changed: update Simulation::save/load and kCheckpointVersion");
-static_assert(sizeof(Particles) == 13 * sizeof(std::vector<double>),
+static_assert(sizeof(Particles) == 14 * sizeof(std::vector<double>),
               "Particles changed: update Simulation::save/load and kCheckpointVersion");
 // Eigen's fixed-size Vec3 and Mat3 are plain arrays of doubles: written as stored.
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Mat3) == 9 * sizeof(double));
@@ -164,19 +164,22 @@ void Simulation::save(CheckpointWriter& out) const {
   out.array("field", P.field);
   out.array("q", P.q);
   out.array("fault", P.fault);
-  out.section("simulation", 1, 3 * sizeof(double) + 3 * sizeof(std::int64_t));
+  out.array("removed", P.removed);
+  out.section("simulation", 1, 3 * sizeof(double) + 4 * sizeof(std::int64_t));
   out.value(time_);
   out.value(static_cast<std::int64_t>(steps_));
   out.value(max_signal_speed_);
   out.value(static_cast<std::int64_t>(failed_));
   out.value(static_cast<std::int64_t>(converted_));
   out.value(static_cast<std::int64_t>(faulted_));
+  out.value(static_cast<std::int64_t>(removed_));
   const Ledger::State l = ledger_.state();
-  out.section("ledger", 1, 7 * sizeof(double) + 4 * sizeof(Vec3));
-  for (const double d : {l.time, l.kinetic, l.strain, l.boundary_work, l.external_work,
-                         l.boundary_dissipation, l.initial_energy})
+  out.section("ledger", 1, 7 * sizeof(double) + 5 * sizeof(Vec3));
+  for (const double d : {l.time, l.kinetic, l.strain, l.external_work, l.initial_energy,
+                         l.outflow_mass, l.outflow_kinetic})
     out.value(d);
-  for (const Vec3* v : {&l.momentum, &l.p0, &l.boundary_impulse, &l.external_impulse})
+  for (const Vec3* v :
+       {&l.momentum, &l.p0, &l.boundary_impulse, &l.external_impulse, &l.outflow_momentum})
     out.value(*v);
   out.array("ledger_sinks", l.sinks);
 }
@@ -207,24 +210,27 @@ void Simulation::load(CheckpointReader& in) {
   in.array("field", P.field, n);
   in.array("q", P.q, P.q.size());
   in.array("fault", P.fault, P.fault.size());
+  in.array("removed", P.removed, P.removed.size());
   for (std::size_t p = 0; p < n; ++p) {
     if (P.material[p] >= scene_.materials.size() || P.object[p] >= scene_.objects.size() ||
         P.field[p] >= static_cast<std::size_t>(grid_.fields()))
       in.fail("particle " + std::to_string(p) + ": material, object or field out of range");
   }
-  in.section("simulation", 3 * sizeof(double) + 3 * sizeof(std::int64_t), 1);
+  in.section("simulation", 3 * sizeof(double) + 4 * sizeof(std::int64_t), 1);
   time_ = in.value<double>();
   steps_ = static_cast<long>(in.value<std::int64_t>());
   max_signal_speed_ = in.value<double>();
   failed_ = static_cast<long>(in.value<std::int64_t>());
   converted_ = static_cast<long>(in.value<std::int64_t>());
   faulted_ = static_cast<long>(in.value<std::int64_t>());
+  removed_ = static_cast<long>(in.value<std::int64_t>());
   Ledger::State l;
-  in.section("ledger", 7 * sizeof(double) + 4 * sizeof(Vec3), 1);
-  for (double* d : {&l.time, &l.kinetic, &l.strain, &l.boundary_work, &l.external_work,
-                    &l.boundary_dissipation, &l.initial_energy})
+  in.section("ledger", 7 * sizeof(double) + 5 * sizeof(Vec3), 1);
+  for (double* d : {&l.time, &l.kinetic, &l.strain, &l.external_work, &l.initial_energy,
+                    &l.outflow_mass, &l.outflow_kinetic})
     *d = in.value<double>();
-  for (Vec3* v : {&l.momentum, &l.p0, &l.boundary_impulse, &l.external_impulse})
+  for (Vec3* v :
+       {&l.momentum, &l.p0, &l.boundary_impulse, &l.external_impulse, &l.outflow_momentum})
     *v = in.value<Vec3>();
   in.array("ledger_sinks", l.sinks, ledger_.sink_names().size());
   ledger_.restore(l);

@@ -91,6 +91,7 @@ MemoryEstimate estimate_memory(const Scene& scene, int threads,
   double per_particle = double(Particles::bytes_per_particle());
   if (scene.physics.artificial_viscosity.enabled) per_particle += sizeof(double);
   if (scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle) per_particle += 1;
+  if (scene.grid.outflow == Outflow::remove) per_particle += 1;
   per_particle +=
       scene.solver.interpolation == Interpolation::gimp ? sizeof(Stencil<3>) : sizeof(Stencil<2>);
   e.particle_bytes = e.particles * per_particle;

@@ -134,6 +134,12 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   g.active_blocks = r.boolean_or(
       "active_blocks", true,
       "grid work only where the particles are (false: every node of the box every step)");
+  g.outflow = r.choice("outflow", {"stop", "remove"},
+                       "a particle that leaves the grid: stop the run, or remove it and book its "
+                       "mass, momentum and kinetic energy as outflow",
+                       "stop") == "remove"
+                  ? Outflow::remove
+                  : Outflow::stop;
   r.reject_unknown_keys();
 }
 

@@ -18,6 +18,9 @@ namespace impact::mpm {
 enum class Interpolation { linear, gimp };  ///< 8-node trilinear or 27-node uGIMP
 enum class Scheme { usl, musl };            ///< update stress last / modified USL
 enum class FaceCondition { symmetric, fixed, free };
+/// What a particle that leaves the grid does (grid.outflow): stop the run (a numerical failure), or
+/// leave the simulation with its mass, momentum and kinetic energy booked as outflow.
+enum class Outflow { stop, remove };
 
 /// Faces in the order x-, x+, y-, y+, z-, z+ (index 2*axis + side).
 inline constexpr std::array<const char*, 6> kFaceNames = {"x-", "x+", "y-", "y+", "z-", "z+"};
@@ -29,6 +32,7 @@ struct GridSpec {
   /// Grid work only on the 2x2x2-node blocks the particles' stencils touch (grid/grid.hpp);
   /// false: every node of the box every step (the 2004 code's dense loops).
   bool active_blocks = true;
+  Outflow outflow = Outflow::stop;
   Vec3 spacing() const { return (upper - lower).cwiseQuotient(Vec3(cells[0], cells[1], cells[2])); }
 };
 

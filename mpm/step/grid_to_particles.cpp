@@ -3,6 +3,8 @@
 // The weights are the cached start-of-step stencils throughout.
 #include <cmath>
 
+#include "models/thermal/adiabatic_heating.hpp"
+
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -44,13 +46,14 @@ Mat3 gradient(const Grid& G, const Stencil<N>& s, const std::vector<Vec3>& v, co
 
 template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
-                                 bool usl_gradient, const std::vector<double>& specific_heat,
+                                 bool usl_gradient, const std::vector<HeatCapacity>& heat_capacity,
                                  std::optional<Failure>& failure) {
   constexpr int N = Shape::N;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   const int nt = G.threads();
   const bool heat = !G.heat.empty();
+  const bool outflow = !P.removed.empty();  // grid.outflow = remove
   ParticleTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
@@ -59,6 +62,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
     std::optional<Failure> fail;
 #pragma omp for schedule(static)
     for (std::ptrdiff_t p = 0; p < n; ++p) {
+      if (outflow && P.removed[p]) continue;
       const Stencil<N>& s = S[p];
       const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
       Vec3 dv = Vec3::Zero(), v_new = Vec3::Zero();
@@ -78,15 +82,39 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
       if (usl_gradient) P.L[p] = gradient(G, s, G.velocity_L, P.v[p], offset);
       const double m = P.mass[p];
       if (h != 0.0) {
-        P.state[p].temperature += h / specific_heat[P.material[p]];
+        const HeatCapacity& c = heat_capacity[P.material[p]];
+        retain_heat(P.state[p], h, c.retained, c.specific_heat);
         sum.friction_heat += m * h;
       }
       P.v[p] += dv;
+      const Vec3 x_old = P.x[p];
       P.x[p] += dt * v_new;
-      if (!fail && !(P.x[p].allFinite() && !outside(G, P.x[p])))
-        fail = Failure{std::size_t(p), "position", "left the grid"};
       const Vec3& v = P.v[p];
       if (!fail && !v.allFinite()) fail = Failure{std::size_t(p), "velocity", "not finite"};
+      if (!(P.x[p].allFinite() && !outside(G, P.x[p]))) {
+        if (outflow && v.allFinite()) {
+          // Leaves the simulation: its mass, momentum and kinetic energy go to the outflow
+          // columns; it stays parked where it was, with nothing left to carry.
+          sum.outflow_mass += m;
+          sum.outflow_momentum += m * v;
+          sum.outflow_kinetic_energy += 0.5 * m * v.squaredNorm();
+          ++sum.removed;
+          P.removed[p] = 1;
+          P.x[p] = x_old;
+          P.v[p].setZero();
+          P.mass[p] = 0.0;
+          P.volume[p] = 0.0;
+          P.state[p].stress.setZero();
+          P.wave_speed[p] = 0.0;
+          if (!P.q.empty()) P.q[p] = 0.0;
+          continue;
+        }
+        if (!fail) {
+          fail = Failure{std::size_t(p), "position",
+                         "left the grid (grid.outflow = \"remove\" lets it leave the simulation, "
+                         "booked as outflow)"};
+        }
+      }
       sum.kinetic_energy += 0.5 * m * v.squaredNorm();  // report eq. 13, end-of-step velocity
       sum.momentum += m * v;
       sum.max_speed = std::max(sum.max_speed, v.norm());
@@ -100,6 +128,10 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
     total.momentum += partial[t].momentum;
     total.max_speed = std::max(total.max_speed, partial[t].max_speed);
     total.friction_heat += partial[t].friction_heat;
+    total.outflow_mass += partial[t].outflow_mass;
+    total.outflow_momentum += partial[t].outflow_momentum;
+    total.outflow_kinetic_energy += partial[t].outflow_kinetic_energy;
+    total.removed += partial[t].removed;
     merge_failure(failure, failures[t]);
   }
   return total;
@@ -135,7 +167,8 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S,
     G.velocity_L[i] = G.mass[i] > 0.0 ? Vec3(momentum[i] / G.mass[i]) : Vec3::Zero();
   });
   // Projections, not loads: the particles' momentum is already final.
-  if (contact != nullptr && G.fields() > 1) apply_contact(G, *contact, G.velocity_L, nullptr);
+  if (contact != nullptr && G.fields() > 1)
+    apply_contact(G, *contact, G.velocity_L, ContactPass::projection);
   G.apply_mirror(G.velocity_L);
 #pragma omp parallel for schedule(static) num_threads(nt)
   for (std::ptrdiff_t p = 0; p < n; ++p)
@@ -144,11 +177,11 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S,
 
 template ParticleTotals grid_to_particles<LinearShape>(Particles&, const Grid&,
                                                        const Stencils<LinearShape>&, double, bool,
-                                                       const std::vector<double>&,
+                                                       const std::vector<HeatCapacity>&,
                                                        std::optional<Failure>&);
 template ParticleTotals grid_to_particles<GimpShape>(Particles&, const Grid&,
                                                      const Stencils<GimpShape>&, double, bool,
-                                                     const std::vector<double>&,
+                                                     const std::vector<HeatCapacity>&,
                                                      std::optional<Failure>&);
 template void remap_and_gradient<LinearShape>(Particles&, Grid&, const Stencils<LinearShape>&,
                                               const ContactSpec*);

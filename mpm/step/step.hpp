@@ -55,13 +55,16 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S);
 inline constexpr double kLightNodeMassFraction = 0.5;
 
 /// Grid update (eq. 24), per velocity field: v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g); with
-/// `contact` and more than one field the contact model corrects v*_I (contact/contact.hpp); the
-/// face conditions as a mirror (grid/boundary.cpp) on v_I and v*_I; the FLIP increment
-/// v*_I - v_I; for USL the gradient velocity v^L_I (kLightNodeMassFraction). Books, exactly at
-/// the nodes, the faces' impulse and the kinetic energy the faces and the contact corrections
-/// removed, and the external (gravity) impulse and work (grid_update.cpp).
+/// `contact` and more than one field the contact model corrects v_I (the impact) and v*_I (the
+/// step) (contact/contact.hpp); the face conditions as a mirror (grid/boundary.cpp) on v_I and
+/// v*_I; the FLIP increment from the uncorrected p_I/m_I to the corrected v*_I; for USL the
+/// gradient velocity v^L_I (kLightNodeMassFraction). Books, exactly at the nodes, the faces'
+/// impulse, what the contact corrections removed, and the external (gravity) impulse and work
+/// (grid_update.cpp).
 struct GridUpdate {
-  BoundaryLoad boundary;
+  /// sum over constrained nodes of m_I (dv_I - dv_I^free): what the faces exerted [N s]. A
+  /// stationary face does no work (docs/mpm.md#ledger).
+  Vec3 boundary_impulse = Vec3::Zero();
   ContactTotals contact;
   Vec3 external_impulse = Vec3::Zero();
   double external_work = 0.0;
@@ -74,19 +77,33 @@ struct ParticleTotals {
   double kinetic_energy = 0.0;
   Vec3 momentum = Vec3::Zero();
   double max_speed = 0.0;      ///< max_p |v_p| [m/s]
-  double friction_heat = 0.0;  ///< friction heat delivered to particle temperatures [J]
+  double friction_heat = 0.0;  ///< friction heat delivered to the particles [J]
+  /// Particles that left the grid this step and were removed (grid.outflow = remove): their mass,
+  /// momentum and kinetic energy as they left [kg, kg m/s, J].
+  double outflow_mass = 0.0;
+  Vec3 outflow_momentum = Vec3::Zero();
+  double outflow_kinetic_energy = 0.0;
+  long removed = 0;
+};
+
+/// Per material: whether a particle retains heat (adiabatic heating on) and its c_p [J/(kg K)].
+struct HeatCapacity {
+  bool retained = false;
+  double specific_heat = 0.0;
 };
 
 /// Grid to particles: FLIP velocity v_p += sum_I S_Ip (v*_I - v_I) (eq. 23), position
 /// x_p += dt sum_I S_Ip v*_I (eq. 25), and with `usl_gradient` L_p = sum_I v^L_I (x) grad S_Ip
 /// (eq. 26, evaluated as sum_I (v^L_I - v_p) (x) grad S_Ip over nodes with mass: equal, as
 /// sum_I grad S_Ip = 0, and a massless node no longer fakes a velocity jump).
-/// With friction heat on the grid (G.heat), each particle's temperature rises by
-/// sum_I S_Ip h_I / (m_I c_p), `specific_heat` per material [J/(kg K)]: the heat of a node is
-/// shared among its particles in proportion to S_Ip m_p, so the total is delivered exactly.
+/// With friction heat on the grid (G.heat), each particle receives sum_I S_Ip h_I / m_I per unit
+/// mass (the heat of a node shared among its particles in proportion to S_Ip m_p, so the total is
+/// delivered exactly), retained by the rule of models/thermal/adiabatic_heating.hpp
+/// (`heat_capacity` per material). A particle that leaves the grid stops the step (a Failure), or
+/// with grid.outflow = remove (Particles::removed allocated) leaves the simulation.
 template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
-                                 bool usl_gradient, const std::vector<double>& specific_heat,
+                                 bool usl_gradient, const std::vector<HeatCapacity>& heat_capacity,
                                  std::optional<Failure>& failure);
 
 /// MUSL (Sulsky et al. 1995; Nairn 2003): re-map the updated particle momentum with the same
@@ -121,7 +138,7 @@ struct StressUpdateSettings {
 /// sigma_{n+1} by ElasticPlastic::update (objective, with the library's rotation), V = V0 det F.
 /// Returns the strain-energy increment of report eq. 14, sum_p 1/2 (sigma_n + sigma_{n+1}) : D
 /// V_{n+1} dt, and the largest signal speed for the next time step. With artificial viscosity:
-/// q_{n+1} (eq. 12) for the next internal force, its work 1/2 (q_n + q_{n+1}) (-tr D) V_{n+1} dt,
+/// q_{n+1} (eq. 12) for the next internal force, its dissipation q_{n+1} (-tr D) V_{n+1} dt >= 0,
 /// and the signal speed Q + sqrt(Q^2 + c^2), Q = C_L a + C_0 l |tr D| (Wilkins 1980). A particle
 /// that fails moves to its companion field (create_new_particles) in the same step.
 struct StressTotals {

@@ -3,14 +3,16 @@
 // Green-Naghdi or Jaumann as the material says), V_{n+1} = V_0 det F_{n+1}. The strain-energy
 // increment is report eq. 14 with the mid-step stress: 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt.
 // Artificial bulk viscosity (report eq. 12) is computed here from the same D, stored per particle
-// and added to the next step's internal force as -q I (reference_code_notes.md sec. 13: the 2004
-// code neither booked its work nor let it shorten the time step).
+// and added to the next step's internal force as -q I; its dissipation q (-tr D) V dt is booked
+// and retained as heat (reference_code_notes.md sec. 13: the 2004 code neither booked its work
+// nor let it shorten the time step).
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
 
 #include "models/kinematics/deformation_gradient.hpp"
+#include "models/thermal/adiabatic_heating.hpp"
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -36,7 +38,8 @@ std::string describe_fault(const Mat3& L, const Mat3& F1, const StepReport& r, b
     return m.str();
   }
   m << to_string(r.status);
-  if (r.status == UpdateStatus::negative_jacobian || r.status == UpdateStatus::eos_out_of_range)
+  if (r.status == UpdateStatus::negative_jacobian || r.status == UpdateStatus::eos_out_of_range ||
+      r.status == UpdateStatus::non_finite_wave_speed)
     m << " (det F_{n+1} = " << F1.determinant() << ")";
   if (r.status == UpdateStatus::return_mapping_not_converged)
     m << " (" << r.return_iterations << " iterations)";
@@ -55,6 +58,8 @@ bool checked_update(const ElasticPlastic& model, const PointState& s0, const Mat
   if (inject_nan) s1.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
   if (r.status == UpdateStatus::ok && !s1.stress.allFinite())
     r.status = UpdateStatus::non_finite_stress;
+  if (r.status == UpdateStatus::ok && !std::isfinite(r.wave_speed))
+    r.status = UpdateStatus::non_finite_wave_speed;
   return r.status == UpdateStatus::ok;
 }
 
@@ -68,6 +73,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   const double l = settings.mean_spacing;
   const bool convert = !settings.companion_field.empty();
   const bool fail_particle = settings.fail_particle && P.fault.size() == P.size();
+  const bool outflow = P.removed.size() == P.size() && !P.removed.empty();
   StressTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
@@ -80,6 +86,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
         sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
         continue;
       }
+      if (outflow && P.removed[p]) continue;  // left the grid: out of the simulation
       const PointState& s0 = P.state[p];
       const Mat3& L = P.L[p];
       const Mat3 F1 = advance_deformation_gradient(s0.F, L, dt, settings.f_integration);
@@ -112,15 +119,16 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
         const double rho = P.mass[p] / V1;
         const double K = model.params().bulk_modulus;
         const double q1 = bulk_viscosity(*av, rho, K, trD, l);
-        const double work = 0.5 * (P.q[p] + q1) * (-trD) * V1 * dt;
+        // The viscous dissipation of this step's compression: q(D) (-tr D) V dt >= 0, q > 0 only
+        // where tr D < 0 (the force applies q one step later; the lag is part of the residual).
+        const double work = q1 * (-trD) * V1 * dt;
         sum.viscous_work += work;
         P.q[p] = q1;
-        // The viscous work is the shock's entropy: it becomes internal energy (which the
-        // Mie-Gruneisen pressure reads) and, with adiabatic heating on, temperature. The 2004
-        // code dropped it (reference_code_notes.md sec. 13).
-        s1.internal_energy += work / P.mass[p];
-        if (model.params().heating.enabled)
-          s1.temperature += work / (P.mass[p] * model.params().specific_heat);
+        // The shock's entropy: heat retained by the point when heating is on (e and T, which
+        // the Mie-Gruneisen pressure and the flow stress read; models/thermal/
+        // adiabatic_heating.hpp). The 2004 code dropped it (reference_code_notes.md sec. 13).
+        retain_heat(s1, work / P.mass[p], model.params().heating.enabled,
+                    model.params().specific_heat);
         if (trD < 0.0) {
           const double Q = av->linear * std::sqrt(K / rho) + av->quadratic * l * std::abs(trD);
           signal = Q + std::sqrt(Q * Q + r.wave_speed * r.wave_speed);

@@ -12,7 +12,7 @@ Writes
   OUT/summary.md         the same as a markdown table, 4 significant digits.
 --no-figures writes the table only (needs no matplotlib).
 history.csv columns are read by name, so ledger columns added later are picked up: every `[J]`
-column between boundary_dissipation and energy_error is drawn and tabulated at the end time.
+column between boundary_impulse_z and energy_error is drawn and tabulated at the end time.
 
 Exit codes: 0 done, 1 usage error, 2 input error, 4 matplotlib missing.
 `mpm study` runs this script; it can also be run directly.
@@ -77,11 +77,12 @@ class History:
         return c[-1] if c else default
 
     def energy_terms(self):
-        """The further ledger terms: `[J]` columns between boundary_dissipation and energy_error
-        (sinks such as viscous_work, contact_dissipation; external_work with gravity)."""
-        if "boundary_dissipation" not in self.names or "energy_error" not in self.names:
+        """The further ledger terms: `[J]` columns between boundary_impulse_z and energy_error
+        (sinks such as viscous_work, friction_heat; outflow_kinetic_energy; external_work with
+        gravity)."""
+        if "boundary_impulse_z" not in self.names or "energy_error" not in self.names:
             return []
-        lo = self.names.index("boundary_dissipation")
+        lo = self.names.index("boundary_impulse_z")
         hi = self.names.index("energy_error")
         return [self.names[i] for i in range(lo + 1, hi) if unit_of(self.header[i]) == "J"]
 

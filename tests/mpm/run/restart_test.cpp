@@ -84,7 +84,7 @@ std::size_t differing(const Particles& a, const Particles& b) {
 }
 
 std::vector<double> ledger_row(const Simulation& sim) {
-  return Ledger::values(sim.ledger().row(), sim.ledger().with_external());
+  return sim.ledger().values(sim.ledger().row());
 }
 
 // Every file of the run directory that must be identical, relative names.
@@ -256,9 +256,11 @@ BOOST_AUTO_TEST_CASE(a_restart_is_refused_for_a_foreign_or_corrupt_checkpoint) {
     std::ofstream(f, std::ios::binary) << bytes;
   };
   std::string other = good;
-  other[16] = 2;  // the format version (u32 after the 16-byte magic)
+  other[16] = static_cast<char>(kCheckpointVersion + 1);  // the format version (u32 after the
+                                                          // 16-byte magic)
   write(file, other);
-  refused("checkpoint format version 2, this mpm reads version 1");
+  refused("checkpoint format version " + std::to_string(kCheckpointVersion + 1) +
+          ", this mpm reads version " + std::to_string(kCheckpointVersion));
   std::string corrupt = good;
   corrupt[good.size() / 2] ^= 0x10;
   write(file, corrupt);

@@ -45,7 +45,7 @@ Result run(const Scene& scene, int threads, int steps) {
   r.columns = sim.ledger().columns();
   for (int i = 0; i < steps && !sim.finished(); ++i) {
     sim.step();
-    r.rows.push_back(Ledger::values(sim.ledger().row(), sim.ledger().with_external()));
+    r.rows.push_back(sim.ledger().values(sim.ledger().row()));
   }
   BOOST_REQUIRE(sim.steps() == steps);
   const Particles& P = sim.particles();

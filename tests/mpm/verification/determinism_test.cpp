@@ -37,7 +37,7 @@ Result run_steps(int threads) {
   r.columns = sim.ledger().columns();
   for (int i = 0; i < kSteps && !sim.finished(); ++i) {
     sim.step();
-    r.rows.push_back(Ledger::values(sim.ledger().row(), sim.ledger().with_external()));
+    r.rows.push_back(sim.ledger().values(sim.ledger().row()));
   }
   BOOST_REQUIRE(sim.steps() == kSteps);
   const Particles& P = sim.particles();
