@@ -28,6 +28,71 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
   return g;
 }
 
+// The contact of n >= 2 bodies at one node: each body b has mass m[b], velocity v[b], mass
+// gradient grad[b] and start velocity v0[b] (for the slip of the motion). Writes the velocity
+// correction dv[b] (momentum-conserving: the mass-weighted mean correction removed, zero to
+// round-off for a pair) and the Coulomb work heat[b] >= 0; returns whether any body was corrected.
+struct Bodies {
+  int n = 0;
+  double m[kMaxFields];
+  Vec3 v[kMaxFields], grad[kMaxFields], v0[kMaxFields];
+};
+
+bool correct(const Bodies& B, const Mat3& sigma, bool friction, double mu, bool book, Vec3* dv,
+             double* heat) {
+  double M = 0.0;
+  Vec3 P = Vec3::Zero(), P0 = Vec3::Zero(), gradM = Vec3::Zero();
+  for (int b = 0; b < B.n; ++b) {
+    M += B.m[b];
+    P += B.m[b] * B.v[b];
+    gradM += B.grad[b];
+    if (book) P0 += B.m[b] * B.v0[b];
+  }
+  const Vec3 vcm = P / M;
+  const Vec3 vcm_start = P0 / M;  // the slip the bodies make over the step
+  Vec3 net = Vec3::Zero();
+  bool any = false;
+  for (int b = 0; b < B.n; ++b) {
+    dv[b].setZero();
+    heat[b] = 0.0;
+    const Vec3 g = gradM - 2.0 * B.grad[b];  // grad m_rest - grad m_b
+    const double gn = g.norm();
+    if (!(gn > 0.0)) continue;  // no surface here: leave the body alone
+    const Vec3 n = g / gn;
+    const Vec3 u = B.v[b] - vcm;
+    const double un = u.dot(n);
+    const bool approaching = un > 0.0;
+    // The report's friction also held surfaces that SEPARATE while the nodal stress is
+    // compressive. With sigma_I summed from the particles inside the interface that glued
+    // rebounding blocks whose interior still rang in compression, and the switching between
+    // glued and free fed energy in (contact_blocks_test). Compression now keeps a touching
+    // (u_n = 0) pair in contact, never pulls a separating pair back.
+    const bool compressed = friction && n.dot(sigma * n) < 0.0 && un >= 0.0;
+    if (!approaching && !compressed) continue;
+    const Vec3 ut = u - un * n;
+    const double ut_norm = ut.norm();
+    dv[b] = -un * n;
+    // Coulomb: the slip is reduced by s = min(mu |u_n|, |u_t|) (stick when it is all of it).
+    double s = 0.0;
+    if (mu > 0.0 && ut_norm > 0.0) {
+      s = std::min(mu * std::abs(un), ut_norm);
+      dv[b] -= s * (ut / ut_norm);
+    }
+    // Coulomb work: the friction impulse m s times the slip speed of the motion over the step,
+    // that of the corrected start field (what the positions follow), >= 0. The normal reaction
+    // only keeps u_n = 0 and does no work.
+    if (book && s > 0.0) {
+      const Vec3 u0 = B.v0[b] - vcm_start;
+      heat[b] = B.m[b] * s * (u0 - u0.dot(n) * n).norm();
+    }
+    net += B.m[b] * dv[b];
+    any = true;
+  }
+  const Vec3 mean = net / M;  // zero to round-off for a pair; removes it for three or more
+  for (int b = 0; b < B.n; ++b) dv[b] -= mean;
+  return any;
+}
+
 }  // namespace
 
 ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec3>& v,
@@ -38,6 +103,11 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   const int nf = std::min(G.fields(), kMaxFields);
   const int nt = G.threads();
   const bool friction = contact.type == ContactType::friction && G.has_nodal_stress();
+  // Body of each field: its material (a material's parent and companion fields are one body
+  // against the others); every field its own body if the solver set none.
+  int body_of[kMaxFields];
+  for (int f = 0; f < nf; ++f)
+    body_of[f] = f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
   ContactTotals partial[kMaxThreads];
   if (write_heat) G.for_active_entries([&](int e) { G.heat[e] = 0.0; });
   const std::vector<int>& nodes = G.active_nodes();  // heat is read at active nodes only
@@ -53,27 +123,10 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       for (int f = 0; f < nf; ++f)
         if (G.mass[f * nn + I] > 0.0) active[na++] = f;
       if (na < 2) continue;
-      double M = 0.0;
-      Vec3 P = Vec3::Zero(), gradM = Vec3::Zero();
-      Vec3 grad[kMaxFields];
       const std::array<int, 3> ijk = G.ijk(I);
-      for (int a = 0; a < na; ++a) {
-        const int e = active[a] * nn + I;
-        M += G.mass[e];
-        P += G.mass[e] * v[e];
+      Vec3 grad[kMaxFields];
+      for (int a = 0; a < na; ++a)
         grad[a] = mass_gradient(G, G.mass.data() + std::size_t(active[a]) * nn, ijk);
-        gradM += grad[a];
-      }
-      const Vec3 vcm = P / M;
-      // The start field's centre-of-mass velocity: the slip the bodies make over the step.
-      Vec3 vcm_start = Vec3::Zero();
-      if (book) {
-        for (int a = 0; a < na; ++a) {
-          const int e = active[a] * nn + I;
-          vcm_start += G.mass[e] * G.velocity[e];
-        }
-        vcm_start /= M;
-      }
       Mat3 sigma = Mat3::Zero();
       if (friction) {
         for (int a = 0; a < na; ++a) {
@@ -83,59 +136,85 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           sigma += t;
         }
       }
+      // 1. Between bodies: each body's fields summed (mass, momentum, mass gradient).
+      int body_index[kMaxFields];  // active field -> body slot
+      int members[kMaxFields];     // fields per body slot
+      int slot_of_body[kMaxFields];
+      for (int b = 0; b < nf; ++b) slot_of_body[b] = -1;
+      Bodies B;
+      Vec3 P[kMaxFields], P0[kMaxFields];
+      for (int a = 0; a < na; ++a) {
+        const int e = active[a] * nn + I;
+        int& slot = slot_of_body[body_of[active[a]]];
+        if (slot < 0) {
+          slot = B.n++;
+          B.m[slot] = 0.0;
+          B.grad[slot].setZero();
+          P[slot].setZero();
+          P0[slot].setZero();
+          members[slot] = 0;
+        }
+        body_index[a] = slot;
+        ++members[slot];
+        B.m[slot] += G.mass[e];
+        B.grad[slot] += grad[a];
+        P[slot] += G.mass[e] * v[e];
+        P0[slot] += G.mass[e] * G.velocity[e];
+      }
+      for (int b = 0; b < B.n; ++b) {
+        B.v[b] = P[b] / B.m[b];
+        B.v0[b] = P0[b] / B.m[b];
+      }
+      for (int a = 0; a < na; ++a) {  // a one-field body keeps its velocity bit for bit
+        const int b = body_index[a];
+        if (members[b] == 1) {
+          B.v[b] = v[active[a] * nn + I];
+          B.v0[b] = G.velocity[active[a] * nn + I];
+        }
+      }
       Vec3 dv[kMaxFields];
       double heat[kMaxFields];
-      Vec3 net = Vec3::Zero();
       bool any = false;
-      for (int a = 0; a < na; ++a) {
-        dv[a].setZero();
-        heat[a] = 0.0;
-        const Vec3 g = gradM - 2.0 * grad[a];  // grad m_rest - grad m_f
-        const double gn = g.norm();
-        if (!(gn > 0.0)) continue;  // no surface here: leave the field alone
-        const Vec3 n = g / gn;
-        const int e = active[a] * nn + I;
-        const double m = G.mass[e];
-        const Vec3 u = v[e] - vcm;
-        const double un = u.dot(n);
-        const bool approaching = un > 0.0;
-        // The report's friction also held surfaces that SEPARATE while the nodal stress is
-        // compressive. With sigma_I summed from the particles inside the interface that glued
-        // rebounding blocks whose interior still rang in compression, and the switching between
-        // glued and free fed energy in (contact_blocks_test). Compression now
-        // keeps a touching (u_n = 0) pair in contact, never pulls a separating pair back.
-        const bool compressed = friction && n.dot(sigma * n) < 0.0 && un >= 0.0;
-        if (!approaching && !compressed) continue;
-        const Vec3 ut = u - un * n;
-        const double ut_norm = ut.norm();
-        dv[a] = -un * n;
-        // Coulomb: the slip is reduced by s = min(mu |u_n|, |u_t|) (stick when it is all of it).
-        double s = 0.0;
-        if (contact.mu > 0.0 && ut_norm > 0.0) {
-          s = std::min(contact.mu * std::abs(un), ut_norm);
-          dv[a] -= s * (ut / ut_norm);
-        }
-        // Coulomb work: the friction impulse m s times the slip speed of the motion over the
-        // step, that of the corrected start field (what the positions follow), >= 0. The
-        // normal reaction only keeps u_n = 0 and does no work.
-        if (book && s > 0.0) {
-          const Vec3 u0 = G.velocity[e] - vcm_start;
-          heat[a] = m * s * (u0 - u0.dot(n) * n).norm();
-        }
-        net += m * dv[a];
+      if (B.n >= 2 && correct(B, sigma, friction, contact.mu, book, dv, heat)) {
         any = true;
-      }
-      if (!any) continue;
-      ++sum.contact_nodes;
-      const Vec3 mean = net / M;  // zero to round-off for a pair; removes it for three or more
-      for (int a = 0; a < na; ++a) {
-        const int e = active[a] * nn + I;
-        v[e] += dv[a] - mean;
-        if (book) {
-          sum.friction_heat += heat[a];
-          if (write_heat) G.heat[e] += heat[a];
+        for (int a = 0; a < na; ++a) {
+          const int e = active[a] * nn + I;
+          const int b = body_index[a];
+          v[e] += dv[b];
+          if (book && heat[b] > 0.0) {  // shared by the body's fields by mass
+            const double h = members[b] == 1 ? heat[b] : heat[b] * G.mass[e] / B.m[b];
+            sum.friction_heat += h;
+            if (write_heat) G.heat[e] += h;
+          }
         }
       }
+      // 2. Within a body with two fields here (a material's parent and its converted particles):
+      //    a pair, on the velocities step 1 left.
+      for (int b = 0; b < B.n; ++b) {
+        if (members[b] < 2) continue;
+        Bodies pair;
+        int field_of[kMaxFields];
+        for (int a = 0; a < na; ++a) {
+          if (body_index[a] != b) continue;
+          const int e = active[a] * nn + I;
+          field_of[pair.n] = e;
+          pair.m[pair.n] = G.mass[e];
+          pair.v[pair.n] = v[e];
+          pair.grad[pair.n] = grad[a];
+          pair.v0[pair.n] = G.velocity[e];
+          ++pair.n;
+        }
+        if (!correct(pair, sigma, friction, contact.mu, book, dv, heat)) continue;
+        any = true;
+        for (int k = 0; k < pair.n; ++k) {
+          v[field_of[k]] += dv[k];
+          if (book) {
+            sum.friction_heat += heat[k];
+            if (write_heat) G.heat[field_of[k]] += heat[k];
+          }
+        }
+      }
+      if (any) ++sum.contact_nodes;
     }
     partial[omp_get_thread_num()] = sum;
   }

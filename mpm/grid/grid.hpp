@@ -150,6 +150,9 @@ class Grid {
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;
   double light_mass = 0.0;  ///< [kg] see kLightNodeMassFraction in step/step.hpp
+  /// Contact body of each velocity field (its material: a material's parent and companion fields
+  /// are one body against the others, contact/contact.hpp); empty: every field its own body.
+  std::vector<int> field_body;
 
   /// Nodes touched by a constrained (symmetric or fixed) face: face layers, ghost layers, once
   /// each (for the impulse / boundary bookkeeping); indices within one field.
