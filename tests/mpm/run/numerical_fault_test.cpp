@@ -7,10 +7,14 @@
 // - a radial return that does not converge (the library's own report; forced here with one
 //   allowed iteration on a plastic impact) stops the run the same way;
 // - a stable step below time.min_dt stops it at step 1 and names the fastest particle;
+// - a particle whose Mie-Gruneisen modulus has no wave speed (K_s + 4 mu/3 <= 0: J = 1.6 at e = 0,
+//   set by hand) stops the run at step 1 and is named; before, its NaN speed was dropped from the
+//   time step by std::max (issue 19, item 6);
 // - physics.on_numerical_fault = fail_particle: a NaN stress and a negative Jacobian flag their
 //   particles (zero stress, state.failed, no further update) and the run completes with 2
 //   faulted particles; a particle outside the grid still stops it.
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 
 #include "../verification_helpers.hpp"
 
@@ -92,6 +96,23 @@ BOOST_AUTO_TEST_CASE(an_unconverged_radial_return_stops_the_run) {
   const Outcome o = run_to_end(sim);
   BOOST_TEST_REQUIRE(o.failed);
   BOOST_TEST(contains(o.message, "): stress: radial return did not converge (1 iterations)"));
+}
+
+BOOST_AUTO_TEST_CASE(a_particle_without_a_wave_speed_stops_the_run_and_is_named) {
+  const Json mie_gruneisen = {
+      {"overrides",
+       {{"constitutive_model", {{"equation_of_state", {{"type", "mie_gruneisen"}}}}}}}};
+  Simulation sim(faults_scene({{"materials", {{"left_al", mie_gruneisen}}}}), 2);
+  PointState& s = sim.particles().state[1234];
+  s.F = Mat3::Identity() * std::cbrt(1.6);  // deep tension, as a particle whose tension was
+  s.internal_energy = 0.0;                  // dropped reaches it (theory.md sec. 2)
+  const Outcome o = run_to_end(sim);
+  BOOST_TEST_REQUIRE(o.failed);
+  BOOST_TEST(sim.steps() == 0);
+  BOOST_TEST(contains(o.message, "step 1, time "));
+  BOOST_TEST(contains(o.message, ": particle 1234 (material left_al, object left"));
+  BOOST_TEST(contains(o.message, "): stress: no wave speed: the equation of state's K_s + 4 mu/3"),
+             o.message);
 }
 
 BOOST_AUTO_TEST_CASE(a_time_step_below_min_dt_stops_the_run_and_names_the_fastest_particle) {
