@@ -82,11 +82,19 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
     std::optional<Failure> fail;
 #pragma omp for schedule(static)
     for (std::ptrdiff_t p = 0; p < n; ++p) {
+      if (outflow && P.removed[p]) {  // left the grid: out of the simulation, nothing to carry
+        P.v[p].setZero();
+        P.mass[p] = 0.0;
+        P.volume[p] = 0.0;
+        P.state[p].stress.setZero();
+        P.wave_speed[p] = 0.0;
+        if (!P.q.empty()) P.q[p] = 0.0;
+        continue;
+      }
       if (fail_particle && P.fault[p] != 0) {  // flagged earlier: zero stress, no update
         sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
         continue;
       }
-      if (outflow && P.removed[p]) continue;  // left the grid: out of the simulation
       const PointState& s0 = P.state[p];
       const Mat3& L = P.L[p];
       const Mat3 F1 = advance_deformation_gradient(s0.F, L, dt, settings.f_integration);
