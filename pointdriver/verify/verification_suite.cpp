@@ -582,14 +582,17 @@ std::vector<Check> rotation_on_uniaxial_strain(const SuiteContext& ctx) {
 // =====================================================================================
 
 /// Reads "V/V0  p[GPa]" rows of one Hugoniot data file.
+// The project's Hugoniot file: header `source,volume_ratio [-],pressure [Pa]`, then one point per
+// line (data/experiments/al6061_t6_hugoniot/README.md).
 std::vector<std::array<double, 2>> read_hugoniot_file(const fs::path& file) {
   std::vector<std::array<double, 2>> v;
   std::ifstream in(file);
-  double x = 0.0, pgpa = 0.0;
   std::string line;
+  std::getline(in, line);  // header
   while (std::getline(in, line)) {
-    std::istringstream ss(line);
-    if (ss >> x >> pgpa) v.push_back({x, pgpa * 1e9});
+    const std::size_t a = line.find(','), b = line.find(',', a + 1);
+    if (a == std::string::npos || b == std::string::npos) continue;
+    v.push_back({std::stod(line.substr(a + 1, b - a - 1)), std::stod(line.substr(b + 1))});
   }
   return v;
 }
@@ -686,23 +689,16 @@ std::vector<Check> mie_gruneisen_uniaxial_strain(const SuiteContext& ctx) {
           pH_end, p_end, (pH_end - p_end) / pH_end, 1.0,
           max_excess < 0.0 && p_end > 0.0 && p_end < pH_end);
 
-  // Figure data: the closed-form Hugoniot and the experiments (read at run time, never copied).
+  // Figure data: the closed-form Hugoniot and the experiments.
   FigureCsv hug(ctx, "mie_gruneisen_hugoniot.csv", {"volume_ratio [-]", "pressure [Pa]"});
   for (double x = 1.0; x >= 0.559; x -= 0.005)
     hug.row({x, cf::hugoniot_pressure(mg, p.density / x)});
-  if (!ctx.hugoniot_dir.empty() && fs::is_directory(ctx.hugoniot_dir)) {
-    // McQueen et al. (1970), Mitchell & Nellis (1981), Vaidya et al. (1970), digitized by
-    // B. Banerjee (MIT licence): ../shared/data/al6061t6_experiments/hugoniot/AlEOS*.dat.
+  if (!ctx.hugoniot_file.empty() && fs::is_regular_file(ctx.hugoniot_file)) {
+    // McQueen et al. (1970), Mitchell & Nellis (1981), Vaidya & Kennedy (1970), digitized by
+    // B. Banerjee (MIT licence): data/experiments/al6061_t6_hugoniot/.
     FigureCsv exp(ctx, "mie_gruneisen_hugoniot_experiments.csv",
                   {"volume_ratio [-]", "pressure [Pa]"});
-    std::vector<fs::path> files;
-    for (const auto& f : fs::directory_iterator(ctx.hugoniot_dir)) {
-      if (f.path().extension() == ".dat") files.push_back(f.path());
-    }
-    std::vector<std::array<double, 2>> points;
-    for (const fs::path& f : files) {
-      for (const auto& point : read_hugoniot_file(f)) points.push_back(point);
-    }
+    std::vector<std::array<double, 2>> points = read_hugoniot_file(ctx.hugoniot_file);
     // One series, ordered by volume ratio (the figure draws it as a line).
     std::sort(points.begin(), points.end(),
               [](const auto& a, const auto& b) { return a[0] > b[0]; });
@@ -1010,8 +1006,10 @@ SuiteContext default_suite_context(const std::string& out_dir) {
   const fs::path material = "data/materials/al6061_t6.json";
   c.material_file = fs::exists(source / material) ? (source / material).string()
                                                   : fs::absolute(material).string();
-  const fs::path hugoniot = source.parent_path() / "shared/data/al6061t6_experiments/hugoniot";
-  c.hugoniot_dir = fs::is_directory(hugoniot) ? hugoniot.string() : "";
+  const fs::path hugoniot = "data/experiments/al6061_t6_hugoniot/hugoniot.csv";
+  c.hugoniot_file = fs::exists(source / hugoniot) ? (source / hugoniot).string()
+                    : fs::exists(hugoniot)        ? fs::absolute(hugoniot).string()
+                                                  : "";
   return c;
 }
 

@@ -26,8 +26,10 @@ struct Check {
 /// Where a case finds its inputs and writes its figure data.
 struct SuiteContext {
   std::string material_file;  ///< data/materials/al6061_t6.json (absolute)
-  std::string hugoniot_dir;   ///< experimental Hugoniot data, read only if present ("" = skip)
-  std::string out_dir;        ///< figure CSVs go here ("" = write none)
+  /// Measured aluminium compression points (data/experiments/al6061_t6_hugoniot/hugoniot.csv),
+  /// drawn beside the closed-form Hugoniot; "" = skip.
+  std::string hugoniot_file;
+  std::string out_dir;  ///< figure CSVs go here ("" = write none)
 };
 
 struct VerificationCase {
