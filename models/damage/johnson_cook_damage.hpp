@@ -5,7 +5,7 @@
 //   1).
 // The report prints exp(D3/3 sigma*) with sigma* = tr(sigma)/sigma_eq: D3 (tr sigma / 3)/sigma_eq
 // is the same thing; here sigma* is the usual triaxiality (uniaxial tension 1/3). Differences from
-// the 2004 code (reference_code_notes.md sec. 5), all deliberate:
+// the 2004 code (docs/report_code.md sec. 5), all deliberate:
 //  - rate is normalised by reference_strain_rate (2004: the raw rate in 1/s) and floored at the
 //    reference rate like the flow stress, so the factor is continuous and never below 1 + 0;
 //  - T* is clamped to [0, 1] (2004: unclamped; its adiabatic-heating bug started the model's

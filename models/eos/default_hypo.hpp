@@ -10,8 +10,8 @@
 // together with the deviatoric 2 mu dev(D) gives a uniaxial-strain modulus lambda + 4 mu/3 = K + 2
 // mu/3 instead of K + 4 mu/3: for 6061-T6 (K = 66.4, mu = 26 GPa, rho = 2700) the longitudinal wave
 // speed drops from 6118 to 5569 m/s. The 2004 code (DefaultHypoElasticEOS) used lambda; modulus =
-// report_eq2_lame reproduces it, for comparison with the report only (reference_code_notes.md, item
-// 3).
+// report_eq2_lame reproduces it, for comparison with the report only (docs/report_code.md sec. 0
+// item 3).
 #pragma once
 
 #include "models/core/input.hpp"

@@ -9,7 +9,8 @@
 // and p(rho, e_H) = p_H identically. The report's eq. (3), written with zeta = rho/rho0 - 1, is the
 // same cold term; its "+ Gamma0 Cp T" is misplaced inside the denominator, lacks the factor rho0
 // (J/kg added to Pa), and uses the absolute temperature. The 2004 code had the units error and also
-// returned p = 0 at rho = rho0 whatever T (reference_code_notes.md, item 4). We use rho0 Gamma0 e.
+// returned p = 0 at rho = rho0 whatever T (docs/report_code.md sec. 0 item 4). We use
+// rho0 Gamma0 e.
 //
 // Choices:
 //  - Tension (eta < 0) uses the same formula (as Uintah does): a smooth extrapolation of the

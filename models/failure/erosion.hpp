@@ -1,4 +1,4 @@
-// What happens to the stress of a failed point (report sec. 3; reference_code_notes.md sec. 11).
+// What happens to the stress of a failed point (report sec. 3; docs/report_code.md sec. 11).
 // Applied every step to the freshly updated stress of a failed point, as the 2004 code did:
 //   none            no failure detection at all (the caller skips TEPLA and stability checks);
 //                   the stress is left unchanged

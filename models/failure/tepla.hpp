@@ -6,7 +6,7 @@
 // and temperature. The report kept the porosity at zero (its sec. 3), so by default it does not
 // evolve and the criterion reduces to D >= 1.
 //
-// Optional porosity growth (the 2004 code's, reference_code_notes.md sec. 3 stage 3):
+// Optional porosity growth (the 2004 code's, docs/report_code.md sec. 3):
 //   f_dot = (1 - f) max(tr D, 0) + A(eps_p) eps_dot_p,
 //   A(eps_p) = f_n / (s_n sqrt(2 pi)) exp(-((eps_p - e_n) / s_n)^2 / 2)
 // (void growth from the dilatation rate by mass conservation of the matrix; Chu & Needleman (1980),

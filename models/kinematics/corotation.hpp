@@ -1,4 +1,4 @@
-// Objective stress rates for the hypoelastic update (report sec. 2; reference_code_notes.md sec. 0
+// Objective stress rates for the hypoelastic update (report sec. 2; docs/report_code.md sec. 0
 // item 2 and stage 1 items 4-7, stage 5 item 23).
 //
 // Green-Naghdi (polar) update (Dienes 1979, Acta Mech. 32:217-232; Flanagan & Taylor 1987, CMAME

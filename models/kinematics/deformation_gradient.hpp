@@ -1,5 +1,5 @@
 // Advancing the deformation gradient over a step from the velocity gradient L = grad v
-// (reference_code_notes.md stage 1 item 2):  dF/dt = L F.
+// (docs/report_code.md sec. 3):  dF/dt = L F.
 //
 //   forward_euler:  F_{n+1} = (I + L dt) F_n        (the 2004 code; the MPM default)
 //   exponential:    F_{n+1} = exp(L dt) F_n         (exact for L constant over the step)

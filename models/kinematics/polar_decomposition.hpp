@@ -1,5 +1,5 @@
 // Polar decomposition F = R U of a deformation gradient (report sec. 2, the hypoelastic update is
-// done in the unrotated configuration of R; reference_code_notes.md stage 1 item 4).
+// done in the unrotated configuration of R; docs/report_code.md sec. 3).
 //
 //   R proper orthogonal (R^T R = I, det R = +1), U = R^T F symmetric positive definite.
 //

@@ -25,7 +25,7 @@
 // stress is on the yield surface of ep + d and is returned unchanged. A result that met neither
 // test is reported as not converged, never silently accepted.
 //
-// The report's 2004 code (reference_code_notes.md sec. 3) instead took d = sqrt(2/3 eta:eta) dt,
+// The report's 2004 code (docs/report_code.md sec. 3) instead took d = sqrt(2/3 eta:eta) dt,
 // treating all deviatoric strain rate eta as plastic, and rescaled s_tr onto sigma_y(ep_n + d,
 // d/dt) in one shot: ReturnAlgorithm::report_2004 reproduces it for comparison.
 #pragma once

@@ -41,7 +41,7 @@
 // O(sigma_eq) in either direction; there the Drucker check (which fires at H <= 0) gives the same
 // verdict as Becker without them.
 //
-// Differences from the 2004 code (reference_code_notes.md sec. 9): it evaluated Becker's
+// Differences from the 2004 code (docs/report_code.md sec. 9): it evaluated Becker's
 // closed-form quadratic with C^ep components in the working (unrotated material) frame, not the
 // principal-stress frame, did no direction search, and used the inconsistent, effectively
 // ideal-plastic tangent of sec. 7. Here the search is done in the principal frame (or over the

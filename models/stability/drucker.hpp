@@ -13,7 +13,7 @@
 // when thermal (or any other) softening along the process outweighs strain hardening. At H = 0
 // exactly (ideal plasticity) the indicator is 0 up to round-off and the verdict is not meaningful.
 //
-// Difference from the 2004 code (reference_code_notes.md sec. 9): it tested sigma_dot : D with the
+// Difference from the 2004 code (docs/report_code.md sec. 9): it tested sigma_dot : D with the
 // total D, which equals D:C^e:D - (2 mu N:D)^2 / (3 mu + H) and is positive whenever D has an
 // elastic part not parallel to N, and it used a tangent that was effectively ideal-plastic (sec.
 // 7), so it almost never fired. Here the printed eq. (10) is used, with the consistent tangent.

@@ -14,7 +14,7 @@
 // eps_p = 0 for n < 1) gives C^e, as it should: no plastic flow can start against infinite
 // hardening.
 //
-// Difference from the 2004 code (reference_code_notes.md sec. 7): it used the denominator
+// Difference from the 2004 code (docs/report_code.md sec. 7): it used the denominator
 // f:C^e:f - f_q h_q with f = 3 s, f_q = d sigma_y/d eps_p and h_q = 2 sigma_eq^2/sigma_y; the terms
 // have units Pa^3 and Pa^2, and the hardening term carried the wrong sign and was 1e-8..1e-12 of
 // the first. Its C^ep was therefore that of ideal plasticity, whatever the hardening, and Drucker's

@@ -1,7 +1,7 @@
 // Stability checks of the report (sec. 3, eqs. 10-11): which check runs ("stability_check" block
 // of the material) and one call that builds the tangents and runs it. Evaluated by the composed
 // model only for points that flowed plastically in the step, and only with an erosion algorithm,
-// as in the report (reference_code_notes.md sec. 9).
+// as in the report (docs/report_code.md sec. 9).
 //   none            no check;
 //   drucker         Drucker's postulate, sigma_dot : D^p <= 0 (drucker.hpp);
 //   becker          loss of ellipticity, min_n det A^ep / det A^e <= 0 (becker.hpp);

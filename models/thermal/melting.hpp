@@ -1,4 +1,4 @@
-// Melting (report sec. 3, option do_melting; reference_code_notes.md sec. 10): at or above the
+// Melting (report sec. 3, option do_melting; docs/report_code.md sec. 10): at or above the
 // melting temperature a point keeps no deviatoric stress; the equation of state still gives the
 // pressure, so sigma -> (tr sigma / 3) I.
 // "Melted" is T >= T_m: the Johnson-Cook thermal factor 1 - T*^m is zero from there on, so the

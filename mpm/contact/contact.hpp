@@ -1,5 +1,5 @@
 // Multi-material contact at the nodes (Bardenhagen, Guilkey, Roessig, Brackbill, Witzel & Foster
-// 2001, CMES 2:509; reference_code_notes.md sec. 14). Each material (and each companion field of
+// 2001, CMES 2:509; docs/report_code.md sec. 14). Each material (and each companion field of
 // converted particles) has its own nodal mass and velocity; where two or more fields meet at a
 // node their velocities are corrected towards the centre-of-mass velocity v_cm:
 //   normal      n_f = unit(grad m_rest - grad m_f) (central differences of the nodal masses),

@@ -1,4 +1,4 @@
-// Grid face conditions as a mirror (Bardenhagen & Kober 2004 sec. 4; reference_code_notes.md
+// Grid face conditions as a mirror (Bardenhagen & Kober 2004 sec. 4; docs/report_code.md
 // sec. 15): a symmetric face is a rigid frictionless wall, i.e. a mirror plane through the face
 // nodes. On the face layer the normal component is zeroed (the mirror image cancels it); the ghost
 // layer outside, which uGIMP reaches from the first half cell, carries the reflection of the first
@@ -6,7 +6,7 @@
 // field odd about the face (v_n = -rate x_n) is continued exactly, and a particle in the first
 // cell sees the same nodal field as its image would. A fixed face is the antisymmetric mirror
 // (M = -I, all components zeroed on the face layer). The 2004 code zeroed all three components of
-// the ghost layer of every symmetric face (missing braces: reference_code_notes.md sec. 0 item 11).
+// the ghost layer of every symmetric face (missing braces: docs/report_code.md sec. 0 item 11).
 #include "mpm/grid/grid.hpp"
 
 namespace impact::mpm {

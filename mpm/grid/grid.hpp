@@ -31,7 +31,7 @@ struct NodeData {
 };
 
 /// Nodal stress sum_p S_Ip sigma_p (xx, yy, zz, xy, yz, zx): only its normal component's sign is
-/// used, by friction contact's compression test (reference_code_notes.md sec. 14).
+/// used, by friction contact's compression test (docs/report_code.md sec. 14).
 struct NodeStress {
   double s[6] = {};
 };

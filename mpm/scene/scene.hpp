@@ -55,7 +55,7 @@ struct SolverSpec {
 };
 
 /// How the velocity fields of different materials interact at shared nodes (Bardenhagen et al.
-/// 2001; reference_code_notes.md sec. 14). `single_velocity` is ordinary single-field MPM.
+/// 2001; docs/report_code.md sec. 14). `single_velocity` is ordinary single-field MPM.
 enum class ContactType { single_velocity, friction, approach };
 
 struct ContactSpec {

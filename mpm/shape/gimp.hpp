@@ -1,4 +1,4 @@
-// 27-node uGIMP shape functions (Bardenhagen & Kober 2004, CMES 5:477; reference_code_notes.md
+// 27-node uGIMP shape functions (Bardenhagen & Kober 2004, CMES 5:477; docs/report_code.md
 // sec. 15): the linear hat convolved with a particle box of half-width l (cells, l = 1/(2 ppc),
 // fixed at creation as in the report's code). With r the distance from the node in cells:
 //   S(r) = 1 - (r^2 + l^2)/(2l)          |r| <= l

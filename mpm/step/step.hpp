@@ -154,7 +154,7 @@ struct StressTotals {
 StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, double dt,
                            std::optional<Failure>& failure);
 
-/// Stable step: multiplier * min_d dx_d / max_p (c_p + |v_p|) (reference_code_notes.md sec. 16,
+/// Stable step: multiplier * min_d dx_d / max_p (c_p + |v_p|) (docs/report_code.md sec. 16,
 /// with the speed magnitude instead of per-axis components: slightly more conservative).
 double stable_time_step(const Vec3& dx, double max_signal_speed, double multiplier);
 /// max_p (c_p + |v_p|) from the stored wave speeds (first step).

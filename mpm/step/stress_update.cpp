@@ -4,7 +4,7 @@
 // increment is report eq. 14 with the mid-step stress: 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt.
 // Artificial bulk viscosity (report eq. 12) is computed here from the same D, stored per particle
 // and added to the next step's internal force as -q I; its dissipation q (-tr D) V dt is booked
-// and retained as heat (reference_code_notes.md sec. 13: the 2004 code neither booked its work
+// and retained as heat (docs/report_code.md sec. 13: the 2004 code neither booked its work
 // nor let it shorten the time step).
 #include <cmath>
 #include <limits>
@@ -134,7 +134,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
         P.q[p] = q1;
         // The shock's entropy: heat retained by the point when heating is on (e and T, which
         // the Mie-Gruneisen pressure and the flow stress read; models/thermal/
-        // adiabatic_heating.hpp). The 2004 code dropped it (reference_code_notes.md sec. 13).
+        // adiabatic_heating.hpp). The 2004 code dropped it (docs/report_code.md sec. 13).
         retain_heat(s1, work / P.mass[p], model.params().heating.enabled,
                     model.params().specific_heat);
         if (trD < 0.0) {
@@ -147,7 +147,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
         if (convert && P.field[p] != settings.companion_field[P.material[p]]) {
           // Same mass, velocity, stress and history: only the velocity field changes, at the
           // time level the failure happened (the 2004 code re-inserted the particle with its
-          // time-n position and velocity, a one-step lag: reference_code_notes.md sec. 12).
+          // time-n position and velocity, a one-step lag: docs/report_code.md sec. 12).
           P.field[p] = settings.companion_field[P.material[p]];
           ++sum.converted;
         }

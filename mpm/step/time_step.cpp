@@ -1,4 +1,4 @@
-// Stable time step (reference_code_notes.md sec. 16): dt = multiplier * min_d dx_d /
+// Stable time step (docs/report_code.md sec. 16): dt = multiplier * min_d dx_d /
 // max_p (c_p + |v_p|), c_p the longitudinal wave speed of the particle's current state.
 #include <limits>
 

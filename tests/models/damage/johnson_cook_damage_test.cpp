@@ -56,7 +56,7 @@ BOOST_AUTO_TEST_CASE(uniaxial_tension_fracture_strain_is_0_470) {
 }
 
 BOOST_AUTO_TEST_CASE(fracture_strains_match_the_table_of_the_reference_notes) {
-  // reference_code_notes.md sec. 5 (two-digit values at T* = 0); the closed form to 1e-12 and the
+  // docs/report_code.md sec. 5 (two-digit values at T* = 0); the closed form to 1e-12 and the
   // printed value to 0.01 (the notes' 0.92 at -1/3 is 0.926 truncated).
   const double sigma_star[] = {-1.0 / 3.0, 0.0, 1.0 / 3.0, 0.6, 1.0};
   const double table[] = {0.92, 0.68, 0.47, 0.32, 0.14};

@@ -88,7 +88,7 @@ BOOST_AUTO_TEST_CASE(
   const double modulus = r.sigma_xx / r.strain;
   BOOST_TEST(modulus == lambda + 4.0 * mu / 3.0, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(modulus == K + 2.0 * mu / 3.0, boost::test_tools::tolerance(1e-12));
-  // sqrt(83.73 GPa / 2700) = 5568.9 m/s (reference_code_notes.md item 3): 9 % slow.
+  // sqrt(83.73 GPa / 2700) = 5568.9 m/s (docs/report_code.md sec. 0 item 3): 9 % slow.
   BOOST_TEST(std::abs(std::sqrt(modulus / rho) - 5569.0) < 1.0);
 }
 
