@@ -19,7 +19,7 @@ double constrained_modulus(double bulk_modulus, double shear_modulus);
 // ---- elastic-perfectly-plastic uniaxial strain (von Mises, yield stress Y) ----
 // Elastic: sigma_xx = M eps, sigma_yy = (K - 2mu/3) eps, so sigma_xx - sigma_yy = 2 mu eps reaches
 // Y at |eps| = Y/(2mu): the Hugoniot elastic limit sigma_xx = M Y/(2mu) (e.g. Meyers, Dynamic
-// Behavior of Materials, 1994, sec. 7.2; verification_problems.md sec. 4.2). Beyond it
+// Behavior of Materials, 1994, sec. 7.2). Beyond it
 // |sigma_xx - sigma_yy| = Y and sigma_xx = K eps -+ 2Y/3.
 struct UniaxialStrainYield {
   double strain = 0.0;        ///< |eps_xx| at first yield [-]
@@ -69,8 +69,8 @@ ShearStress green_naghdi_simple_shear_series(double shear_modulus, double gamma)
 /// a check of the closed form at large gamma that shares none of its algebra.
 ShearStress green_naghdi_simple_shear_quadrature(double shear_modulus, double gamma, int intervals);
 
-// ---- Mie-Gruneisen EOS on the linear Us-up Hugoniot (Meyers 1994, ch. 4; Uintah MPM user guide;
-//      verification_problems.md sec. 4.5) ----
+// ---- Mie-Gruneisen EOS on the linear Us-up Hugoniot (Meyers 1994, ch. 4; Uintah MPM user
+//      guide) ----
 struct MieGruneisen {
   double rho0 = 0.0, C0 = 0.0, S = 0.0, Gamma0 = 0.0;
 };

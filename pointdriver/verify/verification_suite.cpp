@@ -612,8 +612,8 @@ std::vector<Check> mie_gruneisen_uniaxial_strain(const SuiteContext& ctx) {
   const cf::MieGruneisen mg{p.density, eos.C0, eos.S_alpha, eos.Gamma0};
   const double chi = p.heating.taylor_quinney;
 
-  // The Hugoniot formula against the Rankine-Hugoniot jump conditions (verification_problems.md
-  // sec. 4.5: 12.642 GPa at u_p = 735 m/s).
+  // The Hugoniot formula against the Rankine-Hugoniot jump conditions (by hand: 12.642 GPa at
+  // u_p = 735 m/s, p = rho0 (C0 + S u_p) u_p).
   for (double up : {350.0, 735.0}) {
     const cf::ShockState s = cf::shock_state(mg, up);
     rec.compare(

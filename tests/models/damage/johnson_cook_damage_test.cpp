@@ -48,7 +48,7 @@ std::string problems_text(const InputProblems& problems) {
 BOOST_AUTO_TEST_SUITE(damage_johnson_cook_damage)
 
 BOOST_AUTO_TEST_CASE(uniaxial_tension_fracture_strain_is_0_470) {
-  // verification_problems.md 4.8: sigma* = 1/3, D4 = 0, T* = 0: eps_f = D1 + D2 exp(D3/3).
+  // By hand: sigma* = 1/3, D4 = 0, T* = 0: eps_f = D1 + D2 exp(D3/3).
   const double expected = -0.77 + 1.45 * std::exp(-0.47 / 3.0);
   BOOST_TEST(jc_fracture_strain(al6061(), 1.0 / 3.0, 1.0, 294.0) == expected,
              boost::test_tools::tolerance(1e-12));

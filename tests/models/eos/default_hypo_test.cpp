@@ -76,7 +76,7 @@ BOOST_AUTO_TEST_CASE(bulk_modulus_gives_longitudinal_modulus_K_plus_four_thirds_
   const auto r = uniaxial_strain(with(HypoModulus::bulk), K, -0.01, 100);
   const double modulus = r.sigma_xx / r.strain;
   BOOST_TEST(modulus == K + 4.0 * mu / 3.0, boost::test_tools::tolerance(1e-12));
-  // c_L = sqrt((66.4 + 34.667) GPa / 2700) = 6118.2 m/s (verification_problems.md, wave speeds);
+  // c_L = sqrt((66.4 + 34.667) GPa / 2700) = 6118.2 m/s;
   // 1 m/s tolerance on the report-rounded number.
   BOOST_TEST(std::abs(std::sqrt(modulus / rho) - 6118.0) < 1.0);
 }

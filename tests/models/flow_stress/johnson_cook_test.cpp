@@ -36,7 +36,7 @@ BOOST_AUTO_TEST_CASE(equals_A_at_zero_strain_reference_rate_room_temperature) {
 }
 
 BOOST_AUTO_TEST_CASE(quasi_static_flow_stress_at_twenty_percent_strain_is_382_MPa) {
-  // verification_problems.md 4.8: 324 + 114 * 0.2^0.42 = 382.0 MPa.
+  // By hand: 324 + 114 * 0.2^0.42 = 382.0 MPa.
   const auto p = al6061();
   const double expected = 324e6 + 114e6 * std::exp(0.42 * std::log(0.2));
   BOOST_TEST(johnson_cook(p, 0.2, 1.0, 294.0).value == expected,

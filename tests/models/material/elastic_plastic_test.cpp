@@ -171,7 +171,7 @@ BOOST_AUTO_TEST_CASE(adiabatic_heating_equals_chi_sigma_dot_Dp_dt_over_rho_cp) {
 
 BOOST_AUTO_TEST_CASE(damage_at_constant_triaxiality_is_plastic_strain_over_fracture_strain) {
   // Uniaxial stress keeps triaxiality at 1/3; isothermal, D4 = 0: D = ep / eps_f with
-  // eps_f = D1 + D2 exp(D3 / 3) = 0.470 (verification_problems.md 4.8).
+  // eps_f = D1 + D2 exp(D3 / 3) = 0.470 (by hand).
   const Material m = al6061(kPlain);
   PointState s = m.model.initial_state(294.0), s1;
   double lateral_rate = -500.0;

@@ -1,6 +1,6 @@
 // Adiabatic heating (report eq. 8): the temperature rise equals chi sigma:D^p dt / (rho c_p) for a
 // stress on the yield surface with D^p built from associated J2 flow, elastic loading does not
-// heat, the 150.4 K rise of verification_problems.md 4.8, and the reader's error messages.
+// heat, the 150.4 K rise computed by hand, and the reader's error messages.
 #include "models/thermal/adiabatic_heating.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -48,7 +48,7 @@ BOOST_AUTO_TEST_CASE(elastic_loading_does_not_heat) {
 }
 
 BOOST_AUTO_TEST_CASE(plastic_work_to_unit_strain_heats_6061_by_150_4_kelvin) {
-  // verification_problems.md 4.8: Delta T = chi int_0^1 (A + B e^n) de / (rho c_p)
+  // By hand: Delta T = chi int_0^1 (A + B e^n) de / (rho c_p)
   //                                       = chi (A + B/(n+1)) / (rho c_p) = 150.4 K.
   // Summed from the function in 1e5 midpoint increments (quadrature error ~ h^1.42, about 1e-8).
   const double A = 324e6, B = 114e6, n = 0.42;

@@ -1,5 +1,5 @@
 // Symmetric flyer-plate impact, 6061-T6 on 6061-T6 at 500 m/s, Mie-Gruneisen EOS, uniaxial strain
-// (data/scenes/verification/flyer_plate.json; verification_problems.md sec. 4.5). In the frame of
+// (data/scenes/verification/flyer_plate.json). In the frame of
 // the impact plane a 20 mm flyer at +250 m/s meets a 40 mm target at -250 m/s at x = 0, t = 0; a
 // column 320 x 1 x 1 cells (dx = 0.2 mm, 2 particles per cell along x, 600 particles), lateral
 // faces symmetric (mirrors), x faces free, one material and one velocity field (the plates stick
@@ -72,7 +72,7 @@ struct Hugoniot {
 };
 
 /// Jump conditions of the symmetric impact, from the material and the two plate velocities
-/// (verification_problems.md sec. 4.5): u_p = (v_flyer - v_target)/2, U_s = C0 + S u_p,
+/// (Rankine-Hugoniot): u_p = (v_flyer - v_target)/2, U_s = C0 + S u_p,
 /// p_H = rho0 U_s u_p, rho_H = rho0 U_s / (U_s - u_p).
 Hugoniot symmetric_impact(const Scene& scene, double v_flyer, double v_target) {
   const auto& params = scene.materials.front().material.model.params();
