@@ -22,6 +22,8 @@ cd "$(dirname "$0")"
 PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev python3-matplotlib)
 # clang-14 + libclang-rt-14-dev (libFuzzer, sanitizer runtimes) build the fuzz targets (test, fuzz).
 FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
+# clang-format-14 checks every C++ file against .clang-format (test `clang_format`).
+STYLE_PACKAGES=(clang-format-14)
 
 install_missing_packages() {  # install_missing_packages [EXTRA_PACKAGE ...]
   local missing=() p
@@ -54,7 +56,7 @@ case "${1:-}" in
     /usr/bin/python3 mpm/study/study_plot.py build/recommended
     ;;
   test)
-    install_missing_packages "${FUZZ_PACKAGES[@]}"
+    install_missing_packages "${FUZZ_PACKAGES[@]}" "${STYLE_PACKAGES[@]}"
     build release
     ctest --preset release
     build asan
