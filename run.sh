@@ -38,8 +38,8 @@ install_missing_packages() {  # install_missing_packages [EXTRA_PACKAGE ...]
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
-build() {  # build <preset>
-  cmake --preset "$1" >/dev/null
+build() {  # build <preset> [CMAKE_ARG ...]
+  cmake --preset "$1" "${@:2}" >/dev/null
   cmake --build --preset "$1"
 }
 
@@ -57,12 +57,13 @@ case "${1:-}" in
     ;;
   test)
     install_missing_packages "${FUZZ_PACKAGES[@]}" "${STYLE_PACKAGES[@]}"
-    build release
+    # The test job treats every compiler warning as an error (-Wall -Wextra -Wpedantic are on).
+    build release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
     ctest --preset release
-    build asan
+    build asan -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
     ctest --preset asan
     # Each loader's fuzz target for a few seconds (about a minute in all); fails on any finding.
-    build fuzz
+    build fuzz -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
     ctest --preset fuzz
     ;;
   fuzz)
