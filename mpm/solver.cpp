@@ -160,8 +160,13 @@ Simulation::Simulation(const Scene& scene, int threads)
   if (grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0)
     sinks_.friction = ledger_.add_sink_column("friction_heat");
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
-  for (int f = 0; f < grid_.fields(); ++f)  // fields m and m + materials are material m's
-    grid_.field_body.push_back(f % static_cast<int>(scene_.materials.size()));
+  if (grid_.fields() > 1) {  // contact bodies: a material's parent and companion fields
+    grid_.field_body.assign(grid_.fields(), 0);
+    for (int m = 0; m < static_cast<int>(scene_.materials.size()); ++m) {
+      grid_.field_body[scene_.parent_field(m)] = m;
+      grid_.field_body[scene_.companion_field(m)] = m;
+    }
+  }
   if (!particles_.mass.empty()) {
     grid_.light_mass =
         kLightNodeMassFraction * *std::min_element(particles_.mass.begin(), particles_.mass.end());

@@ -9,8 +9,8 @@
 // the step) reaches both the positions and the velocities. Handing the particles the first pass
 // too (the increment from the uncorrected p_I/m_I) removes the same approach velocity again at
 // every step, because the particles keep carrying it to the grid: the sphere-cylinder lost 26 %
-// of E0 in 10 us that way (docs/mpm.md#contact). The faces are a mirror on the start and end
-// velocities alike: a stationary wall does no work (docs/mpm.md#ledger).
+// of E0 in 10 us that way (docs/mpm.md#velocity-fields-and-contact). The faces are a mirror on the
+// start and end velocities alike: a stationary wall does no work (docs/mpm.md#ledger).
 #include <omp.h>
 
 #include <algorithm>
