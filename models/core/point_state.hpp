@@ -8,6 +8,15 @@
 
 namespace impact {
 
+/// Which criterion failed a point (report sec. 3), kept with the point so that a run can say, per
+/// particle, why it failed (docs/models.md#failure-causes).
+enum class FailureCause : std::uint8_t { none, melting, tepla, drucker, becker };
+
+/// Bits of PointState::instability: a stability check fired at a plastic step but, with
+/// stability_check.outcome = "report", did not fail the point.
+inline constexpr std::uint8_t kDruckerFired = 1;
+inline constexpr std::uint8_t kBeckerFired = 2;
+
 struct PointState {
   Mat3 stress = Mat3::Zero();   ///< Cauchy stress in the lab frame [Pa], tension positive
   Mat3 F = Mat3::Identity();    ///< deformation gradient [-]
@@ -20,6 +29,11 @@ struct PointState {
   double porosity = 0.0;             ///< void volume fraction f [-]
   bool melted = false;               ///< T reached the melting temperature this step
   bool failed = false;               ///< localized by TEPLA, melting or a stability check (sticky)
+  FailureCause failure_cause = FailureCause::none;  ///< what failed it (sticky with `failed`)
+  std::uint8_t instability = 0;  ///< kDruckerFired | kBeckerFired, reported only (sticky)
+  /// The mean stress was tensile at the step that failed the point (before erosion): a spall-like
+  /// failure, as opposed to one under pressure (sticky with `failed`).
+  bool failed_in_tension = false;
 };
 
 }  // namespace impact

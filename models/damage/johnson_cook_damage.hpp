@@ -16,8 +16,14 @@
 //  - sigma* is not clamped to [-1.5, 1.5] and there is no "spall" shortcut D = 1 at sigma* > 8:
 //    the floor already makes damage grow fastest at high triaxiality, and compression only raises
 //    eps_f (D3 < 0), which is the model's intent.
+// Optional cut-off (not in the report): Bao & Wierzbicki (2005), "On the cut-off value of negative
+// triaxiality for fracture", Eng. Fract. Mech. 72:1049-1069, found no fracture below sigma* = -1/3
+// in their upsetting tests; with `cutoff_triaxiality` a plastic increment below it adds no damage,
+// so a compressed core (a Taylor rod's) does not fail on strain alone.
 // T_room and T_melt are the material's (one source of truth with the flow stress).
 #pragma once
+
+#include <optional>
 
 #include "models/core/input.hpp"
 #include "models/core/tensor.hpp"
@@ -32,8 +38,11 @@ struct JohnsonCookDamageParams {
   double D5 = 0.0;                     ///< temperature coefficient [-]
   double reference_strain_rate = 1.0;  ///< rate0 [1/s]
   double min_fracture_strain = 1e-3;   ///< floor on eps_f [-]
-  double room_temperature = 294.0;     ///< [K]
-  double melt_temperature = 925.0;     ///< [K]
+  /// Below this triaxiality no damage accumulates (Bao & Wierzbicki 2005 place the cut-off at
+  /// -1/3); absent: damage grows at every triaxiality (the report's eq. 7).
+  std::optional<double> cutoff_triaxiality;
+  double room_temperature = 294.0;  ///< [K]
+  double melt_temperature = 925.0;  ///< [K]
 };
 
 /// Fracture strain eps_f(sigma*, rate, T) >= min_fracture_strain; rate [1/s], T [K].
@@ -46,11 +55,12 @@ double jc_fracture_strain(const JohnsonCookDamageParams& p, double triaxiality,
 double triaxiality(const Mat3& stress);
 
 /// Damage increment d_ep / eps_f for a plastic-strain increment d_ep >= 0 taken at the given
-/// triaxiality, plastic strain rate [1/s] and temperature [K].
+/// triaxiality, plastic strain rate [1/s] and temperature [K]; 0 below cutoff_triaxiality.
 double jc_damage_increment(const JohnsonCookDamageParams& p, double delta_plastic_strain,
                            double triaxiality, double plastic_strain_rate, double temperature);
 
-/// Reads {"D1".."D5", "reference_strain_rate", "min_fracture_strain"} ("type" is the caller's);
+/// Reads {"D1".."D5", "reference_strain_rate", "min_fracture_strain", "cutoff_triaxiality"}
+/// ("type" is the caller's);
 /// temperatures are the material's.
 JohnsonCookDamageParams read_johnson_cook_damage(JsonReader& r, double room_temperature,
                                                  double melt_temperature);

@@ -42,6 +42,12 @@ TeplaParams read_tepla(JsonReader& r) {
                                     "Chu-Needleman mean strain e_n [-]");
   p.nucleation_std = r.number_or("nucleation_std", p.nucleation_std, Range::positive(),
                                  "Chu-Needleman strain standard deviation s_n [-]");
+  const std::string growth =
+      r.choice("porosity_growth", {"dilatation", "tension"},
+               "when porosity evolves: plastic steps with dilatation (the 2004 code's), or only "
+               "while the mean stress is tensile",
+               "dilatation");
+  if (growth == "tension") p.growth = PorosityGrowth::tension;
   // f_0 >= f_c would fail every point at its first plastic step.
   if (p.initial_porosity >= p.critical_porosity) {
     r.problems().add(r.key_path("initial_porosity"),

@@ -21,6 +21,10 @@
 
 namespace impact {
 
+/// When porosity evolves: at every plastic step with dilatation (the 2004 code's), or only while
+/// the mean stress is tensile: compression does not open voids (growth and nucleation).
+enum class PorosityGrowth { dilatation, tension };
+
 struct TeplaParams {
   bool enabled = true;             ///< check the criterion (only when erosion is on, report sec. 3)
   double critical_porosity = 0.5;  ///< f_c [-]
@@ -29,6 +33,7 @@ struct TeplaParams {
   double nucleation_fraction = 0.1;  ///< f_n, volume fraction of void-nucleating particles [-]
   double nucleation_strain = 0.3;    ///< e_n, mean plastic strain of nucleation [-]
   double nucleation_std = 0.1;       ///< s_n, standard deviation of the nucleation strain [-]
+  PorosityGrowth growth = PorosityGrowth::dilatation;  ///< the report's: dilatation
 };
 
 /// TEPLA-F indicator (f/f_c)^2 + D^2; the point has failed when it is >= 1.
@@ -44,7 +49,8 @@ double porosity_update(const TeplaParams& p, double porosity, double trace_D, do
                        double delta_plastic_strain, double dt);
 
 /// Reads {"enabled", "critical_porosity", "initial_porosity", "evolve_porosity",
-/// "nucleation_fraction", "nucleation_strain", "nucleation_std"}; every key is optional.
+/// "nucleation_fraction", "nucleation_strain", "nucleation_std", "porosity_growth"}; every key is
+/// optional.
 TeplaParams read_tepla(JsonReader& r);
 
 }  // namespace impact

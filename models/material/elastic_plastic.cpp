@@ -165,7 +165,10 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     s1.damage +=
         jc_damage_increment(*p_.damage, d_ep, triaxiality(stress_new), s1.plastic_strain_rate, T0);
   }
-  if (p_.tepla.evolve_porosity && d_ep > 0.0) {  // on plastic steps only (report's code)
+  // On plastic steps only (report's code); with porosity_growth = "tension", only while the mean
+  // stress is tensile (voids do not open under pressure).
+  const bool voids_grow = p_.tepla.growth == PorosityGrowth::dilatation || mean(stress_new) > 0.0;
+  if (p_.tepla.evolve_porosity && d_ep > 0.0 && voids_grow) {
     s1.porosity =
         porosity_update(p_.tepla, s0.porosity, D_hat.trace(), s0.plastic_strain, d_ep, dt);
   }
@@ -188,13 +191,21 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
             check_stability(p_.stability, p_.bulk_modulus, mu, stress_new, H, D_hat, Dp);
         report.drucker_indicator = st.drucker.indicator;
         report.becker_indicator = st.becker.indicator;
-        if (st.drucker.unstable) {
-          report.failure = FailureCause::drucker;
-        } else if (st.becker.unstable) {
-          report.failure = FailureCause::becker;
+        const FailureCause cause = st.drucker.unstable  ? FailureCause::drucker
+                                   : st.becker.unstable ? FailureCause::becker
+                                                        : FailureCause::none;
+        if (p_.stability.outcome == StabilityOutcome::fail) {
+          report.failure = cause;
+        } else {  // "report": a loss of stability is a localisation warning, not a fracture
+          if (st.drucker.unstable) s1.instability |= kDruckerFired;
+          if (st.becker.unstable) s1.instability |= kBeckerFired;
         }
       }
-      if (report.failure != FailureCause::none) s1.failed = true;
+      if (report.failure != FailureCause::none) {
+        s1.failed = true;
+        s1.failure_cause = report.failure;
+        s1.failed_in_tension = mean(stress_new) > 0.0;
+      }
     }
     if (s1.failed) {
       const Mat3 eroded = erode_stress(p_.erosion, stress_new);

@@ -71,8 +71,6 @@ enum class UpdateStatus : std::uint8_t {
   non_finite_wave_speed,
 };
 
-enum class FailureCause : std::uint8_t { none, melting, tepla, drucker, becker };
-
 /// What one update did, beyond the new state: for the caller's time step, ledger and diagnostics.
 struct StepReport {
   UpdateStatus status = UpdateStatus::ok;

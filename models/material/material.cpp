@@ -192,16 +192,19 @@ Json to_json(const Material& material) {
                     {"D5", d.D5},
                     {"reference_strain_rate", d.reference_strain_rate},
                     {"min_fracture_strain", d.min_fracture_strain}};
+    if (d.cutoff_triaxiality) cm["damage"]["cutoff_triaxiality"] = *d.cutoff_triaxiality;
   } else {
     cm["damage"] = {{"type", "none"}};
   }
-  cm["tepla"] = {{"enabled", p.tepla.enabled},
-                 {"critical_porosity", p.tepla.critical_porosity},
-                 {"initial_porosity", p.tepla.initial_porosity},
-                 {"evolve_porosity", p.tepla.evolve_porosity},
-                 {"nucleation_fraction", p.tepla.nucleation_fraction},
-                 {"nucleation_strain", p.tepla.nucleation_strain},
-                 {"nucleation_std", p.tepla.nucleation_std}};
+  cm["tepla"] = {
+      {"enabled", p.tepla.enabled},
+      {"critical_porosity", p.tepla.critical_porosity},
+      {"initial_porosity", p.tepla.initial_porosity},
+      {"evolve_porosity", p.tepla.evolve_porosity},
+      {"nucleation_fraction", p.tepla.nucleation_fraction},
+      {"nucleation_strain", p.tepla.nucleation_strain},
+      {"nucleation_std", p.tepla.nucleation_std},
+      {"porosity_growth", p.tepla.growth == PorosityGrowth::tension ? "tension" : "dilatation"}};
   cm["melting"] = {{"do_melting", p.melting.do_melting}};
   cm["adiabatic_heating"] = {{"enabled", p.heating.enabled},
                              {"taylor_quinney", p.heating.taylor_quinney}};
@@ -211,7 +214,8 @@ Json to_json(const Material& material) {
       {"normal_search",
        p.stability.search == NormalSearch::principal_plane ? "principal_plane" : "full_sphere"},
       {"rate_slope",
-       p.stability.rate_slope == RateSlope::constant_rate ? "constant_rate" : "algorithmic"}};
+       p.stability.rate_slope == RateSlope::constant_rate ? "constant_rate" : "algorithmic"},
+      {"outcome", p.stability.outcome == StabilityOutcome::fail ? "fail" : "report"}};
   cm["erosion"] = {{"algorithm", std::string(erosion_name(p.erosion))}};
   return j;
 }

@@ -18,6 +18,10 @@ StabilityParams read_stability(JsonReader& r) {
       "rate term of the hardening slope H: none at constant rate, or d sigma_y/d rate / dt",
       "constant_rate");
   if (rate == "algorithmic") p.rate_slope = RateSlope::algorithmic;
+  const std::string outcome =
+      r.choice("outcome", {"fail", "report"},
+               "what a check that fires does: fail the point, or only report it", "fail");
+  if (outcome == "report") p.outcome = StabilityOutcome::report;
   r.reject_unknown_keys();
   return p;
 }

@@ -23,14 +23,21 @@ namespace impact {
 
 enum class StabilityCheck { none, drucker, becker, drucker_becker };
 
+/// What a check that fires does: `fail` the point (the report's rule: it is then eroded), or only
+/// `report` it (PointState::instability; the point keeps its strength). Loss of Drucker stability
+/// or of ellipticity marks where deformation may localise (e.g. adiabatic shear under
+/// compression), not a crack; `report` lets a scene that must not fracture there say so.
+enum class StabilityOutcome { fail, report };
+
 struct StabilityParams {
   StabilityCheck check = StabilityCheck::none;
   NormalSearch search = NormalSearch::principal_plane;  ///< Becker's normal search
   RateSlope rate_slope = RateSlope::constant_rate;      ///< how rate sensitivity enters H
+  StabilityOutcome outcome = StabilityOutcome::fail;    ///< the report's: failure
 };
 
-/// Reads {"type", "normal_search", "rate_slope"}; "type" is required and read here (not by the
-/// caller), the others default to principal_plane and constant_rate.
+/// Reads {"type", "normal_search", "rate_slope", "outcome"}; "type" is required and read here (not
+/// by the caller), the others default to principal_plane, constant_rate and fail.
 StabilityParams read_stability(JsonReader& r);
 
 struct StabilityResult {

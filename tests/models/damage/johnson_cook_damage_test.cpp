@@ -176,6 +176,36 @@ BOOST_AUTO_TEST_CASE(reader_names_the_key_path_of_an_unknown_key_and_an_out_of_r
                 "in (0, inf), got -0.1") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(cutoff_triaxiality_gives_no_damage_below_it_and_the_closed_form_above) {
+  JohnsonCookDamageParams p = al6061();
+  p.cutoff_triaxiality = -1.0 / 3.0;
+  BOOST_TEST(jc_damage_increment(p, 0.01, -0.34, 1.0, 294.0) == 0.0);
+  BOOST_TEST(jc_damage_increment(p, 0.01, -1.5, 1.0, 294.0) == 0.0);
+  // Just above the cut-off: d_ep / (D1 + D2 exp(D3 sigma*)), by hand 0.01 / 0.9226 at -0.33.
+  BOOST_TEST(jc_damage_increment(p, 0.01, -0.33, 1.0, 294.0) ==
+                 0.01 / (-0.77 + 1.45 * std::exp(-0.47 * -0.33)),
+             boost::test_tools::tolerance(1e-14));
+  p.cutoff_triaxiality.reset();  // the report's eq. 7: damage at every triaxiality
+  BOOST_TEST(jc_damage_increment(p, 0.01, -0.34, 1.0, 294.0) > 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(reader_takes_a_cutoff_and_rejects_a_positive_one) {
+  const Json ok = Json::parse(
+      R"({"D1": -0.77, "D2": 1.45, "D3": -0.47, "D4": 0.0, "D5": 1.6, "cutoff_triaxiality": -0.5})");
+  InputProblems fine("mat.json");
+  JsonReader r(ok, "/constitutive_model/damage", fine);
+  BOOST_TEST(*read_johnson_cook_damage(r, 294.0, 925.0).cutoff_triaxiality == -0.5);
+  BOOST_TEST(fine.empty());
+  const Json bad = Json::parse(
+      R"({"D1": -0.77, "D2": 1.45, "D3": -0.47, "D4": 0.0, "D5": 1.6, "cutoff_triaxiality": 0.3})");
+  InputProblems problems("mat.json");
+  JsonReader rb(bad, "/constitutive_model/damage", problems);
+  read_johnson_cook_damage(rb, 294.0, 925.0);
+  BOOST_TEST(problems_text(problems).find(
+                 "mat.json: /constitutive_model/damage/cutoff_triaxiality: expected a number in "
+                 "[-10, 0], got 0.3") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(reader_rejects_a_non_positive_fracture_strain_in_pure_shear) {
   const Json j = Json::parse(R"({"D1": -0.77, "D2": -1.45, "D3": -0.47, "D4": 0.0, "D5": 1.6})");
   InputProblems problems("mat.json");

@@ -210,6 +210,105 @@ BOOST_AUTO_TEST_CASE(drucker_check_fails_a_point_softening_adiabatically_at_700_
   }
   BOOST_TEST(to_string(cause) == "drucker");
   BOOST_TEST(s.failed);
+  BOOST_TEST(to_string(s.failure_cause) == "drucker");  // the point keeps why it failed
+}
+
+BOOST_AUTO_TEST_CASE(drucker_outcome_report_flags_the_softening_point_but_keeps_its_strength) {
+  // The same softening path as above with stability_check.outcome = "report": the check fires
+  // (instability bit) but the point neither fails nor loses stress; its stress history is bitwise
+  // the one without any stability check.
+  const auto run = [](const char* overrides, PointState& s) {
+    const Material m = al6061(Json::parse(overrides));
+    s = m.model.initial_state(700.0);
+    s.plastic_strain = 0.3;
+    PointState s1;
+    double lateral_rate = -5e3;
+    for (int i = 0; i < 200; ++i) {
+      BOOST_REQUIRE(uniaxial_stress_step(m.model, s, 1e4, 1e-7, s1, lateral_rate).failure ==
+                    FailureCause::none);
+      s = s1;
+    }
+  };
+  PointState reported, unchecked;
+  run(R"({"constitutive_model": {"stability_check": {"type": "drucker", "outcome": "report"},
+          "tepla": {"enabled": false}}})",
+      reported);
+  run(R"({"constitutive_model": {"stability_check": {"type": "none"},
+          "tepla": {"enabled": false}}})",
+      unchecked);
+  BOOST_TEST(!reported.failed);
+  BOOST_TEST((reported.instability & kDruckerFired) != 0);
+  BOOST_TEST(unchecked.instability == 0);
+  BOOST_TEST((reported.stress - unchecked.stress).norm() == 0.0);
+  BOOST_TEST(reported.plastic_strain == unchecked.plastic_strain);
+}
+
+BOOST_AUTO_TEST_CASE(damage_cutoff_stops_damage_in_confined_compression_not_in_tension) {
+  // Uniaxial strain compression (lateral rates zero): sigma* = -p / sigma_y, far below -1/3 once
+  // the pressure exceeds the flow stress. With cutoff_triaxiality = -1/3 (Bao & Wierzbicki 2005)
+  // no damage accrues there; without it D = sum d_ep / eps_f > 0. In uniaxial tension (sigma* =
+  // 1/3) the cut-off changes nothing, bitwise.
+  const Json cutoff = Json::parse(R"({"constitutive_model": {"erosion": {"algorithm": "none"},
+      "adiabatic_heating": {"enabled": false}, "damage": {"cutoff_triaxiality": -0.3333333333}}})");
+  const Material with = al6061(cutoff), without = al6061(kPlain);
+  PointState a = with.model.initial_state(294.0), b = without.model.initial_state(294.0), a1, b1;
+  const Vec3 rates(-1e4, 0.0, 0.0);
+  for (int i = 0; i < 200; ++i) {  // 20 % axial compression
+    with.model.update(a, Mat3(rates.asDiagonal()), stretch(a.F, rates, 1e-6), 1e-6, a1);
+    without.model.update(b, Mat3(rates.asDiagonal()), stretch(b.F, rates, 1e-6), 1e-6, b1);
+    a = a1;
+    b = b1;
+  }
+  BOOST_TEST(a.plastic_strain > 0.1);
+  BOOST_TEST(triaxiality(a.stress) < -1.0);
+  BOOST_TEST(a.damage == 0.0);
+  BOOST_TEST(b.damage > 1e-3);
+  PointState t = with.model.initial_state(294.0), u = without.model.initial_state(294.0), t1, u1;
+  double lt = -500.0, lu = -500.0;
+  for (int i = 0; i < 500; ++i) {
+    uniaxial_stress_step(with.model, t, 1000.0, 2e-7, t1, lt);
+    uniaxial_stress_step(without.model, u, 1000.0, 2e-7, u1, lu);
+    t = t1;
+    u = u1;
+  }
+  BOOST_TEST(t.damage > 0.0);
+  BOOST_TEST(t.damage == u.damage);
+}
+
+BOOST_AUTO_TEST_CASE(porosity_growth_tension_opens_no_voids_under_pressure) {
+  // A point at -500 MPa mean stress and ep = 0.3 (the Chu-Needleman nucleation peak) loaded in
+  // uniaxial tension along x with rigid lateral walls: every step is plastic and dilatant but the
+  // mean stress stays compressive. With porosity_growth = dilatation (the 2004 code) voids grow
+  // and nucleate; with "tension" f stays at f0. Under hydrostatic tension both grow the same.
+  const auto run = [](const char* growth, double start_mean_stress, const Vec3& rates) {
+    const Material m =
+        al6061(Json::parse(std::string(R"({"constitutive_model": {"erosion": {"algorithm": "none"},
+            "tepla": {"evolve_porosity": true, "initial_porosity": 0.001,
+                      "porosity_growth": ")") +
+                           growth + R"("}}})"));
+    PointState s = m.model.initial_state(294.0), s1;
+    s.stress = start_mean_stress * Mat3::Identity();
+    s.plastic_strain = 0.3;
+    s.stress(0, 0) += 2.0 / 3.0 * 400e6;  // at yield in axial tension
+    s.stress(1, 1) -= 1.0 / 3.0 * 400e6;
+    s.stress(2, 2) -= 1.0 / 3.0 * 400e6;
+    for (int i = 0; i < 3; ++i) {  // 0.3 % axial strain: the mean stress rises by ~200 MPa
+      m.model.update(s, Mat3(rates.asDiagonal()), stretch(s.F, rates, 1e-7), 1e-7, s1);
+      s = s1;
+    }
+    return s;
+  };
+  const Vec3 axial(1e4, 0.0, 0.0);
+  const PointState dil = run("dilatation", -500e6, axial), ten = run("tension", -500e6, axial);
+  BOOST_TEST(mean(dil.stress) < 0.0);
+  BOOST_TEST(dil.plastic_strain > 0.3);
+  BOOST_TEST(dil.porosity > 0.001 + 1e-4);
+  BOOST_TEST(ten.porosity == 0.001);
+  const Vec3 spread(2e4, 1e4, 1e4);  // dilatant and deviatoric: plastic
+  const PointState dil_t = run("dilatation", 0.0, spread), ten_t = run("tension", 0.0, spread);
+  BOOST_TEST(mean(ten_t.stress) > 0.0);
+  BOOST_TEST(ten_t.porosity > 0.001);
+  BOOST_TEST(ten_t.porosity == dil_t.porosity);
 }
 
 BOOST_AUTO_TEST_CASE(hardening_point_at_room_temperature_is_never_flagged_by_drucker) {
@@ -328,13 +427,18 @@ BOOST_AUTO_TEST_CASE(resolved_parameters_read_back_to_the_same_material) {
   // to_json must name every parameter: reading its output again reproduces it exactly, including
   // values that differ from the defaults.
   const Material m = al6061(Json::parse(R"({"constitutive_model": {
-      "tepla": {"evolve_porosity": true, "nucleation_strain": 0.25},
+      "tepla": {"evolve_porosity": true, "nucleation_strain": 0.25, "porosity_growth": "tension"},
+      "damage": {"cutoff_triaxiality": -0.3333}, "stability_check": {"type": "drucker",
+      "outcome": "report"},
       "equation_of_state": {"type": "mie_gruneisen"}, "return_algorithm": "report_2004"}})"));
   const Json first = to_json(m);
   const Json second = to_json(read_material(first, "resolved"));
   BOOST_TEST(first == second);
   BOOST_TEST(first["constitutive_model"]["tepla"]["nucleation_strain"].get<double>() == 0.25);
   BOOST_TEST(first["constitutive_model"]["equation_of_state"]["type"] == "mie_gruneisen");
+  BOOST_TEST(first["constitutive_model"]["damage"]["cutoff_triaxiality"].get<double>() == -0.3333);
+  BOOST_TEST(first["constitutive_model"]["tepla"]["porosity_growth"] == "tension");
+  BOOST_TEST(first["constitutive_model"]["stability_check"]["outcome"] == "report");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
