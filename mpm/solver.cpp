@@ -2,6 +2,7 @@
 
 #include <omp.h>
 #include <unistd.h>
+#include <array>
 
 #include <algorithm>
 #include <chrono>
@@ -17,6 +18,7 @@
 #include "mpm/output/atomic_file.hpp"
 #include "mpm/output/observables.hpp"
 #include "mpm/output/output.hpp"
+#include "mpm/output/particle_paths.hpp"
 #include "mpm/run/checkpoint.hpp"
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
@@ -392,6 +394,27 @@ Json row_json(const Ledger& ledger) {
   return j;
 }
 
+// Failed particles per cause (melting, tepla, drucker, becker) and the particles where a stability
+// check fired without failing them (stability_check.outcome = "report").
+Json failure_causes(const Particles& P) {
+  std::array<std::int64_t, 5> by_cause{};
+  std::int64_t drucker = 0, becker = 0, in_tension = 0;
+  for (const PointState& s : P.state) {
+    if (s.failed) ++by_cause[static_cast<std::size_t>(s.failure_cause)];
+    in_tension += s.failed && s.failed_in_tension;
+    drucker += (s.instability & kDruckerFired) != 0;
+    becker += (s.instability & kBeckerFired) != 0;
+  }
+  Json j;
+  for (const FailureCause c :
+       {FailureCause::melting, FailureCause::tepla, FailureCause::drucker, FailureCause::becker})
+    j[std::string(to_string(c))] = by_cause[static_cast<std::size_t>(c)];
+  j["in_tension"] = in_tension;  // of all causes: failed with a tensile mean stress
+  j["drucker_reported"] = drucker;
+  j["becker_reported"] = becker;
+  return j;
+}
+
 // Per object counts, mass and volumes, and the memory estimate with the seeded count: what
 // `mpm check` and summary.json share.
 Json particle_report(const Scene& scene, const Particles& P, int threads) {
@@ -488,13 +511,16 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   const Gauges gauges(scene, sim.particles());
   Observables observables(scene, sim.particles());
   RunState resumed;
+  double paths_start = 0.0;  // set after a restart: the paths begin there
   if (resume) {
     resumed = read_checkpoint(dir / kCheckpointFile, sim);
     std::cerr << "mpm: restarting " << dir.string() << " from step " << sim.steps() << ", time "
               << sim.time() << " s (" << sim.threads() << " threads)\n";
     observables.restore(resumed.observables);
     wall_before = resumed.wall_time;
+    paths_start = sim.time();
   }
+  ParticlePaths paths(scene, sim.particles());  // after a restart: from the restored state
   const bool fail_particle =
       scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle;
   std::vector<std::string> columns = gauges.columns();
@@ -563,7 +589,10 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   constexpr long kFaultLines = 20;  // faulted particles printed on stderr, then only counted
   try {
     while (!sim.finished()) {
+      const double t_before = sim.time();
+      paths.before_step(sim.particles());
       sim.step();
+      paths.after_step(sim.particles(), sim.time(), sim.time() - t_before);
       for (const Failure& f : sim.last_faults()) {
         if (reported_faults < kFaultLines) {
           std::cerr << (options.progress ? "\n" : "")
@@ -627,6 +656,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
               << " particle(s) flagged failed by numerical faults (physics.on_numerical_fault = "
                  "fail_particle)\n";
   }
+  paths.write(dir, scene, scene.file, paths_start);  // also after a failure: the path up to it
   const double wall = wall_time();
   Json summary = particle_report(scene, sim.particles(), sim.threads());
   summary["status"] = status;
@@ -640,6 +670,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   summary["initial_energy [J]"] = sim.ledger().initial_energy();
   summary["velocity_fields"] = sim.grid().fields();
   summary["failed_particles"] = sim.failed_particles();
+  summary["failed_by_cause"] = failure_causes(sim.particles());
+  for (std::size_t i = 0; i < scene.output.particle_paths.size(); ++i)
+    summary["particle_paths"][scene.output.particle_paths[i].name] = paths.particle(i);
   summary["converted_particles"] = sim.converted_particles();
   summary["faulted_particles"] = sim.faulted_particles();
   summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());

@@ -139,6 +139,17 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
       } else if (f == "field") {
         data.add(o, "Float64", "field", 1,
                  scalar(n, [&](std::size_t p) { return double(P.field[in_play[p]]); }));
+      } else if (f == "failure_cause") {
+        data.add(o, "Float64", "failure_cause", 1, scalar(n, [&](std::size_t p) {
+                   return double(P.state[in_play[p]].failure_cause);
+                 }));
+      } else if (f == "failed_in_tension") {
+        data.add(o, "Float64", "failed_in_tension", 1, scalar(n, [&](std::size_t p) {
+                   return P.state[in_play[p]].failed_in_tension ? 1.0 : 0.0;
+                 }));
+      } else if (f == "instability") {
+        data.add(o, "Float64", "instability", 1,
+                 scalar(n, [&](std::size_t p) { return double(P.state[in_play[p]].instability); }));
       } else if (f == "failed") {
         data.add(o, "Float64", "failed", 1,
                  scalar(n, [&](std::size_t p) { return P.state[in_play[p]].failed ? 1.0 : 0.0; }));

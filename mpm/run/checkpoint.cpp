@@ -25,7 +25,7 @@ static_assert(sizeof(Particles) == 14 * sizeof(std::vector<double>),
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Mat3) == 9 * sizeof(double));
 
 // The PointState members, one record per particle (no padding bytes in the file).
-constexpr std::uint32_t kStateRecord = 3 * sizeof(Mat3) + 6 * sizeof(double) + 2;
+constexpr std::uint32_t kStateRecord = 3 * sizeof(Mat3) + 6 * sizeof(double) + 5;
 
 void write_header(CheckpointWriter& w, const CheckpointHeader& h) {
   w.bytes(kMagic, sizeof kMagic);
@@ -157,6 +157,9 @@ void Simulation::save(CheckpointWriter& out) const {
       out.value(d);
     out.value(static_cast<std::uint8_t>(s.melted));
     out.value(static_cast<std::uint8_t>(s.failed));
+    out.value(static_cast<std::uint8_t>(s.failure_cause));
+    out.value(s.instability);
+    out.value(static_cast<std::uint8_t>(s.failed_in_tension));
   }
   out.array("wave_speed", P.wave_speed);
   out.array("material", P.material);
@@ -203,6 +206,12 @@ void Simulation::load(CheckpointReader& in) {
       *d = in.value<double>();
     s.melted = in.value<std::uint8_t>() != 0;
     s.failed = in.value<std::uint8_t>() != 0;
+    const auto cause = in.value<std::uint8_t>();
+    if (cause > static_cast<std::uint8_t>(FailureCause::becker))
+      in.fail("failure cause out of range");
+    s.failure_cause = static_cast<FailureCause>(cause);
+    s.instability = in.value<std::uint8_t>();
+    s.failed_in_tension = in.value<std::uint8_t>() != 0;
   }
   in.array("wave_speed", P.wave_speed, n);
   in.array("material", P.material, n);

@@ -272,6 +272,7 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
   r.ignore("fields");
   r.ignore("gauges");  // read_observables(), once the objects are known
   r.ignore("crater");
+  r.ignore("particle_paths");
   o.fields = {"velocity", "stress", "plastic_strain", "temperature", "damage", "mass"};
   if (n.is_object() && n.contains("fields")) {
     const Json& f = n["fields"];
@@ -481,6 +482,34 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
                            "\" within one cell of the face: expected the x of a face of it [m]");
         }
         s.output.crater = spec;
+      }
+    }
+  }
+  if (out.is_object() && out.contains("particle_paths")) {
+    const Json& paths = out["particle_paths"];
+    JsonReader r(paths, "/output/particle_paths", problems);
+    if (!paths.is_object()) {
+      problems.add("/output/particle_paths", "expected an object of named particle paths");
+    } else {
+      for (const auto& item : paths.items()) {
+        JsonReader g = r.child(item.key(), "a particle path: object, position");
+        const std::string& name = item.key();
+        if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) {
+              return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+            })) {
+          problems.add(r.key_path(name),
+                       "expected a name of letters, digits and _ (it becomes the file "
+                       "paths/<name>.json)");
+        }
+        ParticlePathSpec spec;
+        spec.name = name;
+        const int object = read_object_name(g, s.objects, "name of an entry of /objects");
+        spec.position = read_vec3(g, item.value(), "position",
+                                  "initial position [m]; the object's nearest particle is taken");
+        g.reject_unknown_keys();
+        if (object < 0) continue;
+        spec.object = object;
+        s.output.particle_paths.push_back(std::move(spec));
       }
     }
   }

@@ -114,13 +114,22 @@ struct CraterSpec {
   std::optional<std::array<double, 2>> axis;
 };
 
+/// output.particle_paths.<name>: record the path of the particle of `object` whose initial
+/// position is nearest to `position` (mpm/output/particle_paths.hpp).
+struct ParticlePathSpec {
+  std::string name;
+  int object = 0;                ///< index into Scene::objects
+  Vec3 position = Vec3::Zero();  ///< [m]
+};
+
 struct OutputSpec {
-  std::string directory;             ///< where history.csv etc. go
-  double interval = 0.0;             ///< history row and snapshot interval [s]
-  bool snapshots = true;             ///< write particles/step_NNNNNN.vtu
-  std::vector<std::string> fields;   ///< VTU point-data fields
-  std::vector<GaugeSpec> gauges;     ///< history gauges (none: no columns, no work)
-  std::optional<CraterSpec> crater;  ///< crater observables in summary.json
+  std::string directory;                         ///< where history.csv etc. go
+  double interval = 0.0;                         ///< history row and snapshot interval [s]
+  bool snapshots = true;                         ///< write particles/step_NNNNNN.vtu
+  std::vector<std::string> fields;               ///< VTU point-data fields
+  std::vector<GaugeSpec> gauges;                 ///< history gauges (none: no columns, no work)
+  std::optional<CraterSpec> crater;              ///< crater observables in summary.json
+  std::vector<ParticlePathSpec> particle_paths;  ///< point-driver paths (none: no work)
   /// Write DIR/checkpoint.bin every this many steps (0: off; mpm/run/checkpoint.hpp).
   long checkpoint_interval_steps = 0;
 };
@@ -173,8 +182,9 @@ Scene read_scene(const Json& document, const std::string& file);
 /// The VTU point-data fields known to the writer.
 inline const std::vector<std::string>& known_output_fields() {
   static const std::vector<std::string> f = {
-      "velocity", "stress",    "plastic_strain", "temperature", "damage", "mass",  "volume",
-      "pressure", "von_mises", "material",       "object",      "field",  "failed"};
+      "velocity", "stress",        "plastic_strain",    "temperature", "damage", "mass",
+      "volume",   "pressure",      "von_mises",         "material",    "object", "field",
+      "failed",   "failure_cause", "failed_in_tension", "instability"};
   return f;
 }
 
