@@ -215,7 +215,8 @@ Json to_json(const Material& material) {
        p.stability.search == NormalSearch::principal_plane ? "principal_plane" : "full_sphere"},
       {"rate_slope",
        p.stability.rate_slope == RateSlope::constant_rate ? "constant_rate" : "algorithmic"},
-      {"outcome", p.stability.outcome == StabilityOutcome::fail ? "fail" : "report"}};
+      {"outcome", p.stability.outcome == StabilityOutcome::fail ? "fail" : "report"},
+      {"drucker_steps", p.stability.drucker_loading_only ? "loading" : "plastic"}};
   cm["erosion"] = {{"algorithm", std::string(erosion_name(p.erosion))}};
   return j;
 }

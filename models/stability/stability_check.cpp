@@ -22,6 +22,11 @@ StabilityParams read_stability(JsonReader& r) {
       r.choice("outcome", {"fail", "report"},
                "what a check that fires does: fail the point, or only report it", "fail");
   if (outcome == "report") p.outcome = StabilityOutcome::report;
+  p.drucker_loading_only =
+      r.choice("drucker_steps", {"plastic", "loading"},
+               "steps Drucker's check runs on: every plastic step (the report's), or only those "
+               "whose strain rate loads the flow direction (D^p : D > 0)",
+               "plastic") == "loading";
   r.reject_unknown_keys();
   return p;
 }
@@ -40,7 +45,10 @@ StabilityResult check_stability(const StabilityParams& params, double bulk_modul
   const Tensor4 tangent = need_tangent
                               ? elastic_plastic_tangent(bulk_modulus, shear_modulus, stress, H)
                               : Tensor4::Zero();
-  if (drucker) r.drucker = drucker_check(tangent, D, Dp);
+  if (drucker) {
+    r.drucker = drucker_check(tangent, D, Dp);
+    if (params.drucker_loading_only && !(ddot(Dp, D) > 0.0)) r.drucker.unstable = false;
+  }
   if (becker) {
     r.becker = params.search == NormalSearch::principal_plane
                    ? becker_check_j2(bulk_modulus, shear_modulus, stress, H)

@@ -34,10 +34,18 @@ struct StabilityParams {
   NormalSearch search = NormalSearch::principal_plane;  ///< Becker's normal search
   RateSlope rate_slope = RateSlope::constant_rate;      ///< how rate sensitivity enters H
   StabilityOutcome outcome = StabilityOutcome::fail;    ///< the report's: failure
+  /// Drucker only on loading steps (D^p : D > 0), not on every step with plastic flow. With a
+  /// rate-dependent flow stress a step can flow while the strain rate already unloads the flow
+  /// direction (the flow relaxes as the rate drops, at the tail of a plastic wave); there
+  /// sigma_dot : D^p passes through zero and Drucker's postulate, which concerns loading, does
+  /// not apply. The report's check (false) fired there on indicators of order 1 Pa/s^2 against
+  /// a scale of 1e15 (docs/taylor.md, "What fails in the rod").
+  bool drucker_loading_only = false;
 };
 
-/// Reads {"type", "normal_search", "rate_slope", "outcome"}; "type" is required and read here (not
-/// by the caller), the others default to principal_plane, constant_rate and fail.
+/// Reads {"type", "normal_search", "rate_slope", "outcome", "drucker_steps"}; "type" is required
+/// and read here (not by the caller), the others default to principal_plane, constant_rate, fail
+/// and plastic.
 StabilityParams read_stability(JsonReader& r);
 
 struct StabilityResult {

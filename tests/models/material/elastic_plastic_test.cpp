@@ -429,7 +429,7 @@ BOOST_AUTO_TEST_CASE(resolved_parameters_read_back_to_the_same_material) {
   const Material m = al6061(Json::parse(R"({"constitutive_model": {
       "tepla": {"evolve_porosity": true, "nucleation_strain": 0.25, "porosity_growth": "tension"},
       "damage": {"cutoff_triaxiality": -0.3333}, "stability_check": {"type": "drucker",
-      "outcome": "report"},
+      "outcome": "report", "drucker_steps": "loading"},
       "equation_of_state": {"type": "mie_gruneisen"}, "return_algorithm": "report_2004"}})"));
   const Json first = to_json(m);
   const Json second = to_json(read_material(first, "resolved"));
@@ -439,6 +439,7 @@ BOOST_AUTO_TEST_CASE(resolved_parameters_read_back_to_the_same_material) {
   BOOST_TEST(first["constitutive_model"]["damage"]["cutoff_triaxiality"].get<double>() == -0.3333);
   BOOST_TEST(first["constitutive_model"]["tepla"]["porosity_growth"] == "tension");
   BOOST_TEST(first["constitutive_model"]["stability_check"]["outcome"] == "report");
+  BOOST_TEST(first["constitutive_model"]["stability_check"]["drucker_steps"] == "loading");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -117,6 +117,36 @@ BOOST_AUTO_TEST_CASE(runs_only_the_selected_checks) {
   BOOST_TEST(db.unstable);  // either one fires
 }
 
+BOOST_AUTO_TEST_CASE(drucker_on_loading_steps_ignores_flow_that_relaxes_while_unloading) {
+  // A hardening point (H = +500 MPa) still flowing (D^p at 1e3 /s, as a rate-dependent return
+  // gives while the rate drops) under a strain rate that unloads it elastically (sigma_dot =
+  // -1e12 Pa/s along x): D^p : D < 0. The tangent's sigma_dot : D^p is then negative, so the
+  // report's check (every plastic step) fires; with drucker_steps = loading it does not. A
+  // softening point under loading (H = -20 MPa, the case above) fires either way.
+  const double H = 500e6;
+  Loading l = uniaxial(H);
+  const double E = 9.0 * kK * kMu / (3.0 * kK + kMu);
+  const double nu = (3.0 * kK - 2.0 * kMu) / (2.0 * (3.0 * kK + kMu));
+  l.D = (-1e12 / E) * Vec3(1.0, -nu, -nu).asDiagonal().toDenseMatrix();
+  BOOST_REQUIRE(ddot(l.Dp, l.D) < 0.0);
+  StabilityParams p;
+  p.check = StabilityCheck::drucker;
+  const StabilityResult every = check_stability(p, kK, kMu, l.stress, H, l.D, l.Dp);
+  p.drucker_loading_only = true;
+  const StabilityResult loading = check_stability(p, kK, kMu, l.stress, H, l.D, l.Dp);
+  BOOST_TEST(every.drucker.indicator < 0.0);
+  BOOST_TEST(every.unstable);
+  BOOST_TEST(loading.drucker.indicator == every.drucker.indicator);  // still reported
+  BOOST_TEST(!loading.unstable);
+  const Loading soft = uniaxial(-20e6);
+  BOOST_TEST(check_stability(p, kK, kMu, soft.stress, -20e6, soft.D, soft.Dp).unstable);
+  InputProblems problems("mat.json");
+  BOOST_TEST(
+      read(Json{{"type", "drucker"}, {"drucker_steps", "loading"}}, problems).drucker_loading_only);
+  BOOST_TEST(!read(Json{{"type", "drucker"}}, problems).drucker_loading_only);
+  BOOST_TEST(problems.empty());
+}
+
 BOOST_AUTO_TEST_CASE(becker_fires_below_its_critical_slope_and_uses_the_chosen_search) {
   // Uniaxial: -(1 + nu) mu / 2 = -17.25 GPa; 1 % either side.
   const double nu = (3.0 * kK - 2.0 * kMu) / (2.0 * (3.0 * kK + kMu));
