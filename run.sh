@@ -14,6 +14,8 @@
 #   ./run.sh stability  build and run the sphere-cylinder stability map (docs/figures/stability/)
 #   ./run.sh accuracy   build and run the speed-versus-accuracy study (docs/figures/accuracy/)
 #   ./run.sh quarter    build and run the quarter model against the full model (docs/figures/quarter_model/)
+#   ./run.sh taylor [OUT] [OPTIONS]  build and run the House et al. Taylor shots against the
+#                    experiments (docs/taylor.md; OUT defaults to docs/figures/taylor/)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -110,6 +112,17 @@ case "${1:-}" in
     # (docs/performance.md, "Quarter model with symmetric planes").
     /usr/bin/python3 mpm/study/quarter_model.py docs/figures/quarter_model --mpm build/bin/mpm \
       --threads 1 "${@:2}"
+    ;;
+  taylor)
+    install_missing_packages
+    build release
+    # House et al. (1995) Taylor shots (data/experiments/taylor/) with the Table 1 set and the set
+    # `pointdriver fit` gives from the stress-strain curves, failure off, 6 cells per radius, two
+    # runs at a time (docs/taylor.md). Options after OUT go to the script and override these,
+    # e.g. the failure study: ./run.sh taylor docs/figures/taylor_failure --sets fit_all
+    #   --cells-per-radius 4 --failure off,shipped,compression_aware
+    /usr/bin/python3 mpm/taylor/taylor.py "${2:-docs/figures/taylor}" --runs build/taylor \
+      --sets table1,fit_all --cells-per-radius 6 --jobs "$(nproc)" --threads 1 "${@:3}"
     ;;
   stability)
     install_missing_packages

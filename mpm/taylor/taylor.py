@@ -1,0 +1,371 @@
+#!/usr/bin/env python3
+"""Taylor impact of 6061-T6 rods (House et al. 1995): predicted shapes against the experiments.
+
+  python3 mpm/taylor/taylor.py OUT [--sets table1,fit_all] [--failure off]
+                              [--cells-per-radius 4] [--shots H1,H8] [--jobs J] [--threads T]
+                              [--mpm build/bin/mpm] [--pointdriver build/bin/pointdriver]
+
+For every parameter set x failure mode x resolution x shot it generates a quarter-model scene (the
+rod along x, its impact face on the symmetric x- face of the grid: a frictionless rigid anvil;
+mirror planes y = 0 and z = 0), runs `mpm run`, and measures on the last snapshot:
+  Lf  final length: the largest particle x plus the distance by which the outermost seeded particle
+      lay inside the rod's end at t = 0 (seed_offsets: the measure is exact at t = 0);
+  Dm  mushroom diameter: twice the largest radius of the particles within 0.5 mm of the anvil, plus
+      the radial seed offset likewise;
+  Xf  undeformed length: Lf minus the axial position where the cross-section mean plastic strain
+      falls below 0.2 % (Taylor 1948's X; reported, never judged);
+  the deformed profile (radius against axial position, per particle-spacing bin), the energy books
+  (history.csv), failed particles per cause and in the compressed core (initial radius <= R0/2).
+
+Parameter sets (calibration kept apart from validation: none is tuned to a Taylor shot):
+  table1   data/materials/al6061_t6.json as shipped (the report's Table 1 Johnson-Cook set);
+  fit_all  `pointdriver fit data/fits/al6061_t6_all.json` run first, here, from the stress-strain
+           curves alone (docs/fitting.md); its material file is what the scenes use;
+  fit_room `pointdriver fit data/fits/al6061_t6_room_temperature.json`, likewise.
+Failure modes:
+  off                erosion none: no failure detection (physics.erosion = none);
+  shipped            the material file's failure stack (JC damage, TEPLA, Drucker-Becker, erosion);
+  compression_aware  shipped plus the opt-in choices of docs/models.md (failure causes and failure
+                     in compression): damage.cutoff_triaxiality = -1/3, tepla.porosity_growth =
+                     tension, stability_check.outcome = report with drucker_steps = loading.
+
+Writes OUT/results.csv (one row per run, SI units), OUT/results.md (errors per set, shot table,
+resolution ladder), OUT/profiles/*.csv and the figures OUT/lf_dm_vs_speed.png,
+OUT/profiles.png, OUT/failure_causes_<set>_<failure>.png, OUT/ladder.png (with more than one
+resolution). Runs go to --runs DIR (default OUT/runs/; history every 1/40 of the run; only the
+last snapshot is kept).
+"""
+
+import argparse
+import concurrent.futures
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
+import vtu  # noqa: E402
+
+REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+DATA = os.path.join(REPO, "data", "experiments", "taylor", "house1995.csv")
+MATERIAL = os.path.join(REPO, "data", "materials", "al6061_t6.json")
+FITS = {"fit_all": "data/fits/al6061_t6_all.json",
+        "fit_room": "data/fits/al6061_t6_room_temperature.json"}
+COMPRESSION_AWARE = {"constitutive_model": {
+    "damage": {"cutoff_triaxiality": -1.0 / 3.0},
+    "tepla": {"porosity_growth": "tension"},
+    "stability_check": {"outcome": "report", "drucker_steps": "loading"}}}
+PPC = 2                 # particles per cell per axis
+ANVIL_LAYER = 0.5e-3    # Dm from the particles within this distance of the anvil [m]
+PLASTIC_EDGE = 2e-3     # Xf: the cross-section mean plastic strain below which a section is undeformed
+CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
+
+
+def read_shots(path=DATA):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    shots = []
+    for r in rows:
+        shots.append({"shot": r["shot"], "aspect": float(r["L0_over_D0 [-]"]),
+                      "D0": float(r["D0 [m]"]), "L0": float(r["L0 [m]"]),
+                      "U0": float(r["U0 [m/s]"]), "T0": float(r["T0 [K]"]),
+                      "Lf": float(r["Lf [m]"]), "Dm": float(r["Dm [m]"]), "Xf": float(r["Xf [m]"])})
+    return shots
+
+
+def end_time(shot):
+    """Long enough for the rod to come to rest: the plastic front stops within about 0.4 L0/U0
+    (docs/taylor.md); 0.8 L0/U0 + 20 us leaves the ringing to settle."""
+    return 0.8 * shot["L0"] / shot["U0"] + 20e-6
+
+
+def scene(shot, material_file, failure, cells_per_radius):
+    R0 = 0.5 * shot["D0"]
+    dx = R0 / cells_per_radius
+    # The mushroom reaches up to ~1.8 R0 (House H3: Dm/D0 = 1.69): the grid leaves 2.2 R0.
+    ny = math.ceil(2.2 * R0 / dx)
+    overrides = {}
+    if failure == "compression_aware":
+        overrides = COMPRESSION_AWARE
+    objects = {"rod": {"material": "al",
+                       "geometry": {"type": "cylinder", "bottom": [0.0, 0.0, 0.0],
+                                    "top": [shot["L0"], 0.0, 0.0], "radius": R0},
+                       "velocity": [-shot["U0"], 0.0, 0.0], "temperature": shot["T0"],
+                       "particles_per_cell": [PPC, PPC, PPC]}}
+    materials = {"al": {"file": material_file, "overrides": overrides}}
+    physics = {"artificial_viscosity": {"enabled": True}}
+    if failure == "off":
+        physics["erosion"] = "none"
+    nx = math.ceil(shot["L0"] / dx) + 1
+    t_end = end_time(shot)
+    boundary = {"x-": "symmetric", "x+": "symmetric",
+                "y-": "symmetric", "y+": "symmetric", "z-": "symmetric", "z+": "symmetric"}
+    return {
+        "description": f"Taylor impact, House et al. (1995) shot {shot['shot']}: quarter model, "
+                       f"{cells_per_radius} cells per radius, failure {failure}",
+        "materials": materials, "objects": objects,
+        "grid": {"lower": [0.0, 0.0, 0.0], "upper": [nx * dx, ny * dx, ny * dx],
+                 "cells": [nx, ny, ny], "boundary": boundary},
+        "time": {"max_time": t_end, "multiplier": 0.5},
+        "physics": physics,
+        "output": {"interval": t_end / 40.0, "fields": ["plastic_strain", "temperature", "damage",
+                                                  "failed", "failure_cause", "failed_in_tension",
+                                                  "instability",
+                                                  "object"]},
+    }
+
+
+def seed_offsets(shot, cells_per_radius):
+    """How far inside the true rod the outermost seeded particles lie at t = 0 (axially, L0 minus
+    the largest particle x; radially, R0 minus the largest particle radius): sub-cell centres
+    (i + 1/2) h inside the cylinder, as mpm seeds them (docs/scenes.md). Adding these to the
+    final extreme particles makes the measures exact at t = 0 (raw h/2 would read a 6-cells-per-
+    radius rod 3 % too thick and a short rod up to 2 % too long)."""
+    R0 = 0.5 * shot["D0"]
+    h = R0 / cells_per_radius / PPC
+    top = (math.floor(shot["L0"] / h - 0.5) + 0.5) * h
+    centres = [(i + 0.5) * h for i in range(int(R0 / h) + 1)]
+    rim = max(math.hypot(a, b) for a in centres for b in centres if math.hypot(a, b) <= R0)
+    return shot["L0"] - top, R0 - rim
+
+
+def measure(x, plastic_strain, shot, cells_per_radius):
+    """Lf, Dm, Xf and the profile [(x, radius, mean plastic strain)] from final positions x."""
+    R0 = 0.5 * shot["D0"]
+    h = R0 / cells_per_radius / PPC  # particle spacing
+    axial, radial = seed_offsets(shot, cells_per_radius)
+    r = (x[:, 1] ** 2 + x[:, 2] ** 2) ** 0.5
+    Lf = x[:, 0].max() + axial
+    near = x[:, 0] < ANVIL_LAYER
+    Dm = 2.0 * (r[near].max() + radial)
+    nbins = max(1, int(math.ceil(Lf / h)))
+    profile, edge = [], 0.0
+    for b in range(nbins):
+        inside = (x[:, 0] >= b * h) & (x[:, 0] < (b + 1) * h)
+        if not inside.any():
+            continue
+        mean_ep = float(plastic_strain[inside].mean())
+        profile.append(((b + 0.5) * h, r[inside].max() + radial, mean_ep))
+        if mean_ep >= PLASTIC_EDGE:
+            edge = (b + 1) * h
+    return Lf, Dm, Lf - edge, profile
+
+
+def extract(run_dir, shot, cells_per_radius):
+    """Lf, Dm, Xf, the profile and the failure counts of a finished run (module docstring)."""
+    snaps = vtu.snapshots(run_dir)
+    first, last = vtu.read_vtu(snaps[0][1]), vtu.read_vtu(snaps[-1][1])
+    rod0 = first["object"] == max(first["object"])
+    X0, x = first["points"][rod0], last["points"][rod0]
+    R0 = 0.5 * shot["D0"]
+    Lf, Dm, Xf, profile = measure(x, last["plastic_strain"][rod0], shot, cells_per_radius)
+    failed = last["failed"][rod0] > 0.5
+    core = (X0[:, 1] ** 2 + X0[:, 2] ** 2) ** 0.5 <= 0.5 * R0
+    causes = last["failure_cause"][rod0]
+    with open(f"{run_dir}/summary.json") as f:
+        summary = json.load(f)
+    with open(f"{run_dir}/history.csv", newline="") as f:
+        hist = list(csv.DictReader(f))
+    e0 = float(hist[0]["total_energy [J]"])
+    # At rest: the first history row with the kinetic energy below 3 % of the impact energy (what is left is elastic ringing).
+    rest = next((float(h["time [s]"]) for h in hist if float(h["kinetic_energy [J]"]) < 0.03 * e0),
+                float("nan"))
+    out = {"Lf [m]": Lf, "Dm [m]": Dm, "Xf [m]": Xf,
+           "particles": int(rod0.sum()), "failed": int(failed.sum()),
+           "failed_core": int((failed & core).sum()), "core": int(core.sum()),
+           "failed_core_under_pressure": int(
+               (failed & core & (last["failed_in_tension"][rod0] < 0.5)).sum()),
+           "reported_unstable": int((last["instability"][rod0] > 0).sum()),
+           "kinetic_end_over_E0 [-]": float(hist[-1]["kinetic_energy [J]"]) / e0,
+           "time_to_rest [s]": rest, "end_time [s]": float(hist[-1]["time [s]"]),
+           "viscous_work_over_E0 [-]": float(hist[-1].get("viscous_work [J]", 0.0)) / e0,
+           "energy_error [-]": float(hist[-1]["energy_error [-]"]),
+           "steps": summary["steps"], "wall_time [s]": summary["wall_time [s]"]}
+    for i, c in enumerate(CAUSES[1:], start=1):
+        out[f"failed_{c}"] = int((failed & (causes == i)).sum())
+    return out, profile
+
+
+def run_one(job):
+    shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads = job
+    tag = f"{set_name}_{failure}_n{n}"
+    run_dir = os.path.join(runs_dir, tag, shot["shot"])
+    os.makedirs(run_dir, exist_ok=True)
+    scene_file = os.path.join(run_dir, "scene_in.json")
+    with open(scene_file, "w") as f:
+        json.dump(scene(shot, material, failure, n), f, indent=1)
+    start = time.time()
+    proc = subprocess.run([mpm, "run", scene_file, "--out", run_dir, "--threads", str(threads)],
+                          capture_output=True, text=True)
+    row = {"set": set_name, "failure": failure, "cells_per_radius": n, "shot": shot["shot"],
+           "L0_over_D0 [-]": shot["aspect"], "U0 [m/s]": shot["U0"], "L0 [m]": shot["L0"],
+           "D0 [m]": shot["D0"], "Lf_exp [m]": shot["Lf"], "Dm_exp [m]": shot["Dm"],
+           "Xf_exp [m]": shot["Xf"], "exit_code": proc.returncode,
+           "elapsed [s]": time.time() - start}
+    if proc.returncode != 0:
+        row["message"] = (proc.stderr.strip().splitlines() or ["?"])[-1]
+        print(f"taylor: {tag} {shot['shot']} FAILED (exit {proc.returncode}): {row['message']}",
+              flush=True)
+        return row, None
+    m, profile = extract(run_dir, shot, n)
+    row.update(m)
+    record_shape(row, shot, profile, out_dir, tag)
+    # Keep the last snapshot (the failure-cause figure); drop the others (tens of MB per run).
+    snaps = vtu.snapshots(run_dir)
+    for _, f in snaps[:-1]:
+        os.remove(f)
+    with open(os.path.join(run_dir, "particles.pvd"), "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n'
+                f'<DataSet timestep="{snaps[-1][0]!r}" part="0" '
+                f'file="{os.path.relpath(snaps[-1][1], run_dir)}"/>\n</Collection>\n</VTKFile>\n')
+    print(f"taylor: {tag} {shot['shot']}: Lf {row['Lf_error [%]']:+.2f} %, "
+          f"Dm {row['Dm_error [%]']:+.2f} %, failed {m['failed']} (core {m['failed_core']}), "
+          f"{row['elapsed [s]']:.0f} s", flush=True)
+    row["last_snapshot"] = snaps[-1][1]
+    return row, profile
+
+
+def record_shape(row, shot, profile, out_dir, tag):
+    """Errors against the experiment into `row`; the profile into OUT/profiles/<tag>_<shot>.csv."""
+    for key in ("Lf", "Dm", "Xf"):
+        row[f"{key}_error [%]"] = 100.0 * (row[f"{key} [m]"] / shot[key] - 1.0)
+    prof_dir = os.path.join(out_dir, "profiles")
+    os.makedirs(prof_dir, exist_ok=True)
+    with open(os.path.join(prof_dir, f"{tag}_{shot['shot']}.csv"), "w") as f:
+        f.write("x [m],radius [m],mean_plastic_strain [-]\n")
+        for p in profile:
+            f.write(f"{p[0]:.6e},{p[1]:.6e},{p[2]:.6e}\n")
+
+
+def reextract(out_dir):
+    """Re-measures Lf, Dm, Xf and the profiles of OUT/results.csv from the runs' last snapshots
+    (after a change of the measures; nothing is re-run)."""
+    with open(os.path.join(out_dir, "results.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    shots = {s["shot"]: s for s in read_shots()}
+    for row in rows:
+        if row["exit_code"] != "0":
+            continue
+        shot, n = shots[row["shot"]], int(row["cells_per_radius"])
+        last = vtu.read_vtu(row["last_snapshot"])
+        rod = last["object"] == max(last["object"])
+        Lf, Dm, Xf, profile = measure(last["points"][rod], last["plastic_strain"][rod], shot, n)
+        row.update({"Lf [m]": Lf, "Dm [m]": Dm, "Xf [m]": Xf})
+        record_shape(row, shot, profile, out_dir, f"{row['set']}_{row['failure']}_n{n}")
+    with open(os.path.join(out_dir, "results.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, list(rows[0].keys()), lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+    print(f"taylor: re-measured {len(rows)} runs in {out_dir}/results.csv", flush=True)
+
+
+def fit_material(name, out_dir, pointdriver):
+    """Runs `pointdriver fit` for the set (stress-strain curves only) and returns its material."""
+    fit_dir = os.path.join(out_dir, "fits", name)
+    subprocess.run([pointdriver, "fit", os.path.join(REPO, FITS[name]), "--out", fit_dir,
+                    "--no-figures"], check=True, capture_output=True, cwd=REPO)
+    files = [f for f in os.listdir(fit_dir) if f.endswith(".json") and f != "fit_report.json"]
+    return os.path.join(fit_dir, files[0])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("out")
+    ap.add_argument("--sets", default="table1,fit_all")
+    ap.add_argument("--failure", default="off", help="comma list of off, shipped, compression_aware")
+    ap.add_argument("--failure-sets", default=None,
+                    help="sets run with the failure modes other than off (default: all --sets)")
+    ap.add_argument("--cells-per-radius", default="4", help="comma list: a resolution ladder")
+    ap.add_argument("--ladder-shots", default=None,
+                    help="shots run at resolutions other than the first (default: all --shots)")
+    ap.add_argument("--shots", default=None, help="comma list of shot names (default: all 23)")
+    ap.add_argument("--jobs", type=int, default=None, help="runs at a time (default: cores/threads)")
+    ap.add_argument("--threads", type=int, default=1, help="OpenMP threads per run")
+    ap.add_argument("--mpm", default=os.path.join(REPO, "build", "bin", "mpm"))
+    ap.add_argument("--pointdriver", default=os.path.join(REPO, "build", "bin", "pointdriver"))
+    ap.add_argument("--runs", default=None, help="directory of the runs (default: OUT/runs)")
+    ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--reextract", action="store_true",
+                    help="re-measure the runs of OUT/results.csv from their last snapshots, then "
+                         "redo the report (no run)")
+    a = ap.parse_args()
+    out_dir = os.path.abspath(a.out)
+    if a.reextract:
+        reextract(out_dir)
+        if not a.no_plot:
+            sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+            import taylor_report  # noqa: E402
+            taylor_report.report(out_dir)
+        return 0
+    os.makedirs(out_dir, exist_ok=True)
+    runs_dir = os.path.abspath(a.runs) if a.runs else os.path.join(out_dir, "runs")
+    shots = read_shots()
+    if a.shots:
+        wanted = a.shots.split(",")
+        unknown = [s for s in wanted if s not in {x["shot"] for x in shots}]
+        if unknown:
+            sys.exit(f"taylor: --shots: unknown shot(s) {unknown}; the data file has H1..H23")
+        shots = [s for s in shots if s["shot"] in wanted]
+    levels = [int(n) for n in a.cells_per_radius.split(",")]
+    ladder = set(a.ladder_shots.split(",")) if a.ladder_shots else None
+    failures = a.failure.split(",")
+    sets = a.sets.split(",")
+    failure_sets = a.failure_sets.split(",") if a.failure_sets else sets
+    for f in failures:
+        if f not in ("off", "shipped", "compression_aware"):
+            sys.exit(f"taylor: --failure: unknown mode '{f}' (off, shipped, compression_aware)")
+    materials = {}
+    for s in sets:
+        if s == "table1":
+            materials[s] = MATERIAL
+        elif s in FITS:
+            materials[s] = fit_material(s, out_dir, a.pointdriver)
+        else:
+            sys.exit(f"taylor: --sets: unknown set '{s}' (table1, {', '.join(FITS)})")
+    jobs = []
+    for s in sets:
+        for f in failures:
+            if f != "off" and s not in failure_sets:
+                continue
+            for i, n in enumerate(levels):
+                for shot in shots:
+                    if i > 0 and ladder is not None and shot["shot"] not in ladder:
+                        continue
+                    jobs.append((shot, s, materials[s], f, n, out_dir, runs_dir, a.mpm,
+                                 a.threads))
+    # Longest first, so that the pool ends together.
+    jobs.sort(key=lambda j: -(j[0]["L0"] * j[4] ** 4 / j[0]["U0"]))
+    n_jobs = a.jobs or max(1, (os.cpu_count() or 1) // a.threads)
+    print(f"taylor: {len(jobs)} runs, {n_jobs} at a time, {a.threads} thread(s) each", flush=True)
+    start = time.time()
+    rows = []
+    with concurrent.futures.ThreadPoolExecutor(n_jobs) as pool:
+        for row, _ in pool.map(run_one, jobs):
+            rows.append(row)
+    wall = time.time() - start
+    order = {s["shot"]: i for i, s in enumerate(read_shots())}
+    rows.sort(key=lambda r: (r["set"], r["failure"], r["cells_per_radius"], order[r["shot"]]))
+    keys = []
+    for r in rows:
+        keys += [k for k in r if k not in keys]
+    with open(os.path.join(out_dir, "results.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, keys, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(out_dir, "meta.json"), "w") as f:
+        json.dump({"wall_time [s]": wall, "jobs": n_jobs, "threads": a.threads, "runs": len(rows),
+                   "command": " ".join(sys.argv)}, f, indent=1)
+    print(f"taylor: {len(rows)} runs in {wall:.0f} s; wrote {out_dir}/results.csv", flush=True)
+    if not a.no_plot:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import taylor_report  # noqa: E402  (matplotlib only when plotting)
+        taylor_report.report(out_dir)
+    return 1 if any(r["exit_code"] != 0 for r in rows) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

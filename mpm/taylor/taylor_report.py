@@ -1,0 +1,303 @@
+#!/usr/bin/env python3
+"""Tables and figures of a Taylor-impact campaign (mpm/taylor/taylor.py OUT).
+
+  python3 mpm/taylor/taylor_report.py OUT
+
+Reads OUT/results.csv and OUT/profiles/, writes OUT/results.md and the figures
+OUT/lf_dm_vs_speed.png, OUT/profiles.png, OUT/failure_causes_<set>_<failure>.png (failure modes
+other than off) and OUT/ladder.png (when more than one resolution was run).
+"""
+
+import csv
+import math
+import os
+import sys
+from collections import defaultdict
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
+import vtu  # noqa: E402
+
+CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
+CAUSE_COLOURS = {"none": "#c8c8c8", "melting": "tab:orange", "tepla": "tab:red",
+                 "drucker": "tab:blue", "becker": "tab:green"}
+SET_MARKERS = {"table1": "s", "fit_all": "o", "fit_room": "^"}
+PROFILE_SHOTS = ["H3", "H8", "H10", "H13", "H16", "H21"]
+
+
+def load(out):
+    with open(os.path.join(out, "results.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        for k, v in list(r.items()):
+            try:
+                r[k] = float(v)
+            except (TypeError, ValueError):
+                pass
+        r["cells_per_radius"] = int(r["cells_per_radius"])
+        r["ok"] = r["exit_code"] == 0
+    return rows
+
+
+def group(rows, *keys):
+    g = defaultdict(list)
+    for r in rows:
+        g[tuple(r[k] for k in keys)].append(r)
+    return g
+
+
+def summary_table(rows):
+    lines = ["| set | failure | cells/radius | runs (ok) | Lf error mean / mean abs / worst abs [%] "
+             "| Dm error mean / mean abs / worst abs [%] | failed particles (core, core under "
+             "pressure) | at rest by [us] | energy error worst [%] | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for (s, f, n), rs in sorted(group(rows, "set", "failure", "cells_per_radius").items()):
+        ok = [r for r in rs if r["ok"]]
+        if not ok:
+            lines.append(f"| {s} | {f} | {n} | {len(rs)} (0) | | | | | | |")
+            continue
+        lf = [r["Lf_error [%]"] for r in ok]
+        dm = [r["Dm_error [%]"] for r in ok]
+        rest = [r["time_to_rest [s]"] for r in ok]
+        rest_text = ("not all" if any(math.isnan(x) for x in rest)
+                     else f"{1e6 * max(rest):.0f}")
+        lines.append(
+            f"| {s} | {f} | {n} | {len(rs)} ({len(ok)}) | {sum(lf) / len(lf):+.2f} / "
+            f"{sum(map(abs, lf)) / len(lf):.2f} / {max(map(abs, lf)):.2f} | "
+            f"{sum(dm) / len(dm):+.2f} / {sum(map(abs, dm)) / len(dm):.2f} / "
+            f"{max(map(abs, dm)):.2f} | {sum(int(r['failed']) for r in ok)} "
+            f"({sum(int(r['failed_core']) for r in ok)}, "
+            f"{sum(int(r['failed_core_under_pressure']) for r in ok)}) | {rest_text} | "
+            f"{100 * max(abs(r['energy_error [-]']) for r in ok):.2f} | "
+            f"{sum(r['wall_time [s]'] for r in ok):.0f} |")
+    return lines
+
+
+def shot_table(rows, failure="off"):
+    finest = defaultdict(int)
+    for r in rows:
+        if r["failure"] == failure:
+            finest[r["set"]] = max(finest[r["set"]], r["cells_per_radius"])
+    sets = sorted(finest)
+    by = {(r["set"], r["shot"]): r for r in rows
+          if r["failure"] == failure and r["cells_per_radius"] == finest[r["set"]]}
+    head = "| shot | L0/D0 | U0 [m/s] | Lf exp [mm] | " + " | ".join(
+        f"Lf {s} [mm] (%)" for s in sets) + " | Dm exp [mm] | " + " | ".join(
+        f"Dm {s} [mm] (%)" for s in sets) + " | Xf exp [mm] | " + " | ".join(
+        f"Xf {s} [mm]" for s in sets) + " |"
+    lines = [f"Failure {failure}, at {', '.join(f'{s}: {finest[s]}' for s in sets)} cells per "
+             "radius.", "", head, "|" + "---|" * (5 + 3 * len(sets))]
+    shots = sorted({r["shot"] for r in rows}, key=lambda x: int(x[1:]))
+    for sh in shots:
+        ref = next((by[(s, sh)] for s in sets if (s, sh) in by), None)
+        if ref is None:
+            continue
+
+        def cell(s, key, err):
+            r = by.get((s, sh))
+            if r is None or not r["ok"]:
+                return "stopped" if r is not None else ""
+            return f"{1e3 * r[key]:.2f} ({r[err]:+.1f})" if err else f"{1e3 * r[key]:.1f}"
+
+        lines.append(
+            f"| {sh} | {ref['L0_over_D0 [-]']:g} | {ref['U0 [m/s]']:g} | "
+            f"{1e3 * ref['Lf_exp [m]']:.1f} | " +
+            " | ".join(cell(s, "Lf [m]", "Lf_error [%]") for s in sets) +
+            f" | {1e3 * ref['Dm_exp [m]']:.1f} | " +
+            " | ".join(cell(s, "Dm [m]", "Dm_error [%]") for s in sets) +
+            f" | {1e3 * ref['Xf_exp [m]']:.1f} | " +
+            " | ".join(cell(s, "Xf [m]", None) for s in sets) + " |")
+    return lines
+
+
+def ladder_table(rows):
+    levels = sorted({r["cells_per_radius"] for r in rows})
+    if len(levels) < 2:
+        return []
+    lines = ["| set | failure | shot | " + " | ".join(f"Lf at {n} [mm]" for n in levels) +
+             " | change between the two finest [%] | " +
+             " | ".join(f"Dm at {n} [mm]" for n in levels) + " |",
+             "|" + "---|" * (4 + 2 * len(levels))]
+    for (s, f, sh), rs in sorted(group(rows, "set", "failure", "shot").items()):
+        by = {r["cells_per_radius"]: r for r in rs if r["ok"]}
+        if len(by) < 2:
+            continue
+        have = sorted(by)
+        change = 100 * (by[have[-1]]["Lf [m]"] / by[have[-2]]["Lf [m]"] - 1)
+        lines.append(f"| {s} | {f} | {sh} | " + " | ".join(
+            f"{1e3 * by[n]['Lf [m]']:.3f}" if n in by else "" for n in levels) +
+            f" | {change:+.2f} | " + " | ".join(
+            f"{1e3 * by[n]['Dm [m]']:.2f}" if n in by else "" for n in levels) + " |")
+    return lines
+
+
+def failure_table(rows):
+    fr = [r for r in rows if r["failure"] != "off" and r["ok"]]
+    if not fr:
+        return []
+    lines = ["| set | failure | cells/radius | shot | particles | failed | melting | tepla | "
+             "drucker | becker | core failed (of) | core under pressure | reported unstable | "
+             "Lf [mm] (% of failure off) |", "|" + "---|" * 14]
+    off = {(r["set"], r["cells_per_radius"], r["shot"]): r for r in rows
+           if r["failure"] == "off" and r["ok"]}
+    for r in sorted(fr, key=lambda r: (r["set"], r["failure"], r["cells_per_radius"],
+                                       int(r["shot"][1:]))):
+        o = off.get((r["set"], r["cells_per_radius"], r["shot"]))
+        rel = f"{100 * (r['Lf [m]'] / o['Lf [m]'] - 1):+.2f}" if o else "n/a"
+        lines.append(
+            f"| {r['set']} | {r['failure']} | {r['cells_per_radius']} | {r['shot']} | "
+            f"{int(r['particles'])} | {int(r['failed'])} | {int(r['failed_melting'])} | "
+            f"{int(r['failed_tepla'])} | {int(r['failed_drucker'])} | {int(r['failed_becker'])} | "
+            f"{int(r['failed_core'])} ({int(r['core'])}) | {int(r['failed_core_under_pressure'])} | "
+            f"{int(r['reported_unstable'])} | {1e3 * r['Lf [m]']:.2f} ({rel}) |")
+    return lines
+
+
+def figures(out, rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    off = [r for r in rows if r["failure"] == "off" and r["ok"]]
+    finest = defaultdict(int)
+    for r in off:
+        finest[r["set"]] = max(finest[r["set"]], r["cells_per_radius"])
+    off = [r for r in off if r["cells_per_radius"] == finest[r["set"]]]
+    aspects = sorted({r["L0_over_D0 [-]"] for r in rows})
+    colours = {a: plt.cm.viridis(i / max(1, len(aspects) - 1)) for i, a in enumerate(aspects)}
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+    for ax, key, exp, ref, label in [(axes[0], "Lf [m]", "Lf_exp [m]", "L0 [m]", "Lf / L0"),
+                                     (axes[1], "Dm [m]", "Dm_exp [m]", "D0 [m]", "Dm / D0")]:
+        for a in aspects:
+            ex = sorted({(r["U0 [m/s]"], r[exp] / r[ref]) for r in rows
+                         if r["L0_over_D0 [-]"] == a})
+            ax.plot([x for x, _ in ex], [y for _, y in ex], "*", ms=11, color=colours[a],
+                    mec="k", label=f"L0/D0 = {a:g}, experiment" if key == "Lf [m]" else None)
+            for s in sorted(finest):
+                sim = sorted((r["U0 [m/s]"], r[key] / r[ref]) for r in off
+                             if r["set"] == s and r["L0_over_D0 [-]"] == a)
+                ax.plot([x for x, _ in sim], [y for _, y in sim],
+                        SET_MARKERS.get(s, "d") + "-", mfc="none", color=colours[a], lw=0.8)
+        ax.set_xlabel("impact speed U0 [m/s]")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    for s in sorted(finest):
+        axes[1].plot([], [], SET_MARKERS.get(s, "d"), mfc="none", color="k",
+                     label=f"{s} ({finest[s]} cells/radius)")
+    axes[0].legend(fontsize=7)
+    axes[1].legend(fontsize=8)
+    fig.suptitle("Taylor impact of 6061-T6 (House et al. 1995): experiment (stars) and MPM "
+                 "prediction, failure off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "lf_dm_vs_speed.png"), dpi=110)
+    plt.close(fig)
+
+    shots = [s for s in PROFILE_SHOTS if any(r["shot"] == s for r in off)]
+    if shots:
+        fig, axes = plt.subplots(2, 3, figsize=(13, 7))
+        for ax, sh in zip(axes.flat, shots):
+            for r in off:
+                if r["shot"] != sh:
+                    continue
+                tag = f"{r['set']}_off_n{r['cells_per_radius']}"
+                with open(os.path.join(out, "profiles", f"{tag}_{sh}.csv")) as f:
+                    pts = [tuple(map(float, line.split(",")[:2])) for line in f.readlines()[1:]]
+                ax.plot([1e3 * x for x, _ in pts], [1e3 * y for _, y in pts],
+                        label=f"{r['set']} ({r['cells_per_radius']} cells/radius)")
+                exp = r
+            ax.plot([0.0], [0.5e3 * exp["Dm_exp [m]"]], "k*", ms=12, label="experiment Dm/2")
+            ax.axvline(1e3 * exp["Lf_exp [m]"], color="k", ls="--", lw=0.8, label="experiment Lf")
+            ax.axhline(0.5e3 * exp["D0 [m]"], color="0.6", ls=":", lw=0.8)
+            ax.set_title(f"{sh}: L0/D0 = {exp['L0_over_D0 [-]']:g}, {exp['U0 [m/s]']:g} m/s",
+                         fontsize=9)
+            ax.set_xlabel("x (distance from the anvil) [mm]")
+            ax.set_ylabel("radius [mm]")
+            ax.grid(alpha=0.3)
+        axes.flat[0].legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "profiles.png"), dpi=110)
+        plt.close(fig)
+
+    for (s, f, n), rs in sorted(group([r for r in rows if r["failure"] != "off" and r["ok"]],
+                                      "set", "failure", "cells_per_radius").items()):
+        shots = [r for r in sorted(rs, key=lambda r: int(r["shot"][1:]))]
+        cols = min(4, len(shots))
+        nrows = math.ceil(len(shots) / cols)
+        fig, axes = plt.subplots(nrows, cols, figsize=(3.6 * cols, 2.8 * nrows), squeeze=False)
+        for ax in axes.flat:
+            ax.axis("off")
+        for ax, r in zip(axes.flat, shots):
+            ax.axis("on")
+            if not os.path.exists(r["last_snapshot"]):
+                continue
+            d = vtu.read_vtu(r["last_snapshot"])
+            rod = d["object"] == d["object"].max()
+            h = 0.5 * r["D0 [m]"] / r["cells_per_radius"] / 2
+            cut = rod & (d["points"][:, 2] < h)  # the layer on the mirror plane z = 0
+            x, y = 1e3 * d["points"][cut, 0], 1e3 * d["points"][cut, 1]
+            cause = d["failure_cause"][cut].astype(int)
+            tension = d["failed_in_tension"][cut] > 0.5
+            for i, c in enumerate(CAUSES):
+                m = cause == i
+                ax.scatter(x[m & ~tension], y[m & ~tension], s=3, color=CAUSE_COLOURS[c],
+                           label=c if c != "none" else "not failed")
+                ax.scatter(x[m & tension], y[m & tension], s=5, marker="x",
+                           color=CAUSE_COLOURS[c])
+            ax.set_aspect("equal")
+            ax.set_title(f"{r['shot']}: {int(r['failed'])} of {int(r['particles'])} failed",
+                         fontsize=8)
+            ax.tick_params(labelsize=6)
+        axes.flat[0].legend(fontsize=6, markerscale=3)
+        fig.suptitle(f"Failed particles by cause, {s}, failure {f}, {n} cells/radius\nlayer on the "
+                     "mirror plane z = 0: x [mm] from the anvil across, radius [mm] up; x marks: "
+                     "failed with a tensile mean stress", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, f"failure_causes_{s}_{f}_n{n}.png"), dpi=110)
+        plt.close(fig)
+
+    levels = sorted({r["cells_per_radius"] for r in rows})
+    if len(levels) > 1:
+        fig, ax = plt.subplots(figsize=(6.5, 4.5))
+        for (s, f, sh), rs in sorted(group([r for r in rows if r["ok"]], "set", "failure",
+                                           "shot").items()):
+            rs = sorted(rs, key=lambda r: r["cells_per_radius"])
+            if len(rs) < 2:
+                continue
+            ax.plot([r["cells_per_radius"] for r in rs], [r["Lf_error [%]"] for r in rs],
+                    SET_MARKERS.get(s, "d") + "-", label=f"{s}, {sh}" + ("" if f == "off" else f))
+        ax.set_xlabel("cells per rod radius")
+        ax.set_ylabel("Lf error against the experiment [%]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "ladder.png"), dpi=110)
+        plt.close(fig)
+
+
+def report(out):
+    rows = load(out)
+    lines = ["# Taylor impact campaign", "",
+             "Written by mpm/taylor/taylor_report.py from results.csv (errors: simulation / "
+             "experiment - 1; lengths in mm in the tables, SI in results.csv).", "",
+             "## Per parameter set, failure mode and resolution", ""]
+    lines += summary_table(rows)
+    for f in sorted({r["failure"] for r in rows}):
+        lines += ["", f"## Per shot, failure {f}", ""] + shot_table(rows, f)
+    lad = ladder_table(rows)
+    if lad:
+        lines += ["", "## Resolution ladder", ""] + lad
+    ft = failure_table(rows)
+    if ft:
+        lines += ["", "## Failed particles by cause", ""] + ft
+    stopped = [r for r in rows if not r["ok"]]
+    if stopped:
+        lines += ["", "## Stopped runs", ""] + [
+            f"- {r['set']} {r['failure']} {r['cells_per_radius']} {r['shot']}: exit "
+            f"{int(r['exit_code'])}: {r.get('message', '')}" for r in stopped]
+    with open(os.path.join(out, "results.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    figures(out, rows)
+    print(f"taylor: wrote {out}/results.md and the figures")
+
+
+if __name__ == "__main__":
+    report(sys.argv[1])

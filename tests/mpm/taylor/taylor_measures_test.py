@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""The Taylor campaign's shape measures read the rod as seeded exactly (issue 20).
+
+  taylor_measures_test.py MPM WORK_DIR
+
+For three House shots at 3, 4 and 6 cells per radius, mpm/taylor/taylor.py writes the scene and
+`mpm run` seeds it (the t = 0 snapshot, read with mpm/study/vtu.py); the measures of
+mpm/taylor/taylor.py (final length Lf, impact-face diameter Dm) applied to the seeded particles
+must give L0 and D0 to 1e-12 relative: the seed offsets are what makes them exact at t = 0 (the
+plain half-spacing rule reads a 6-cells-per-radius rod 3 % too thick). Also checked: the
+profile's radius is D0/2 all along. Printed, not asserted: the seeded volume against the exact
+one (the staircase of sub-cell centres: x4 = 1.034 at 4 cells per radius, 0.990 at 3 and 6).
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "mpm", "taylor"))
+sys.path.insert(0, os.path.join(ROOT, "mpm", "study"))
+import taylor  # noqa: E402
+import vtu  # noqa: E402
+
+
+def main(mpm, work):
+    os.makedirs(work, exist_ok=True)
+    shots = {s["shot"]: s for s in taylor.read_shots()}
+    failures = []
+    for name in ["H3", "H16", "H21"]:
+        shot = shots[name]
+        for n in [3, 4, 6]:
+            sc = taylor.scene(shot, taylor.MATERIAL, "off", n)
+            sc["time"]["max_time"] = 1e-12  # one tiny step: the t = 0 snapshot is the seeding
+            sc["output"]["interval"] = 1e-12
+            scene_file = os.path.join(work, f"{name}_{n}.json")
+            with open(scene_file, "w") as f:
+                json.dump(sc, f)
+            run = os.path.join(work, f"{name}_{n}")
+            subprocess.run([mpm, "run", scene_file, "--out", run, "--threads", "1"], check=True,
+                           stdout=subprocess.DEVNULL)
+            seeded = vtu.read_vtu(vtu.snapshots(run)[0][1])
+            Lf, Dm, _, profile = taylor.measure(seeded["points"], seeded["plastic_strain"], shot,
+                                                n)
+            radius_error = max(abs(r / (0.5 * shot["D0"]) - 1.0) for _, r, _ in profile)
+            with open(os.path.join(run, "summary.json")) as f:
+                ratio = json.load(f)["objects"]["rod"]["volume_ratio"]
+            print(f"{name} at {n} cells/radius: Lf/L0 - 1 = {Lf / shot['L0'] - 1:.1e}, "
+                  f"Dm/D0 - 1 = {Dm / shot['D0'] - 1:.1e}, profile radius worst "
+                  f"{radius_error:.1e}, volume ratio x4 {4 * ratio:.4f}")
+            if not (abs(Lf / shot["L0"] - 1.0) < 1e-12 and abs(Dm / shot["D0"] - 1.0) < 1e-12):
+                failures.append(f"{name} n={n}: Lf {Lf}, Dm {Dm} against {shot['L0']}, "
+                                f"{shot['D0']}")
+            if not radius_error < 1e-12:
+                failures.append(f"{name} n={n}: profile radius off by {radius_error}")
+    for f in failures:
+        print("FAILED:", f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(*sys.argv[1:3]))
