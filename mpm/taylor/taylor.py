@@ -224,7 +224,7 @@ def run_one(job):
     print(f"taylor: {tag} {shot['shot']}: Lf {row['Lf_error [%]']:+.2f} %, "
           f"Dm {row['Dm_error [%]']:+.2f} %, failed {m['failed']} (core {m['failed_core']}), "
           f"{row['elapsed [s]']:.0f} s", flush=True)
-    row["last_snapshot"] = snaps[-1][1]
+    row["last_snapshot"] = os.path.relpath(snaps[-1][1], out_dir)  # relative to OUT
     return row, profile
 
 
@@ -250,7 +250,7 @@ def reextract(out_dir):
         if row["exit_code"] != "0":
             continue
         shot, n = shots[row["shot"]], int(row["cells_per_radius"])
-        last = vtu.read_vtu(row["last_snapshot"])
+        last = vtu.read_vtu(os.path.join(out_dir, row["last_snapshot"]))
         rod = last["object"] == max(last["object"])
         Lf, Dm, Xf, profile = measure(last["points"][rod], last["plastic_strain"][rod], shot, n)
         row.update({"Lf [m]": Lf, "Dm [m]": Dm, "Xf [m]": Xf})

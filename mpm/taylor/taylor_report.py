@@ -227,9 +227,10 @@ def figures(out, rows):
             ax.axis("off")
         for ax, r in zip(axes.flat, shots):
             ax.axis("on")
-            if not os.path.exists(r["last_snapshot"]):
+            snapshot = os.path.join(out, r["last_snapshot"])  # relative to OUT
+            if not os.path.exists(snapshot):
                 continue
-            d = vtu.read_vtu(r["last_snapshot"])
+            d = vtu.read_vtu(snapshot)
             rod = d["object"] == d["object"].max()
             h = 0.5 * r["D0 [m]"] / r["cells_per_radius"] / 2
             cut = rod & (d["points"][:, 2] < h)  # the layer on the mirror plane z = 0
