@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A particle's path written by `mpm run` (output.particle_paths) replayed by `pointdriver run`
-gives the particle's own stress history (issue 20: a law's behaviour inside an impact can be
+gives the particle's own stress history (docs/scenes.md: a law's behaviour inside an impact can be
 unit-tested along its real path).
 
   particle_path_replay_test.py MPM POINTDRIVER SOURCE_DIR WORK_DIR

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The Taylor campaign's shape measures read the rod as seeded exactly (issue 20).
+"""The Taylor campaign's shape measures read the rod as seeded exactly (docs/taylor.md).
 
   taylor_measures_test.py MPM WORK_DIR
 
