@@ -76,6 +76,7 @@ case "${1:-}" in
   bench)
     install_missing_packages
     build release
+    build/bin/machine_probe  # memory bandwidth and FMA peak per ISA (the roofline's limits)
     build/bin/models_benchmark "${@:2}"
     build/bin/pointdriver_benchmark
     # Scaling, feature cost and box size of the explicit step (CSV + figures in
