@@ -389,6 +389,13 @@ int read_object_name(JsonReader& r, const std::vector<SceneObject>& objects,
   return -1;
 }
 
+// A name that becomes part of an output (a history column, a file name): letters, digits and _.
+bool is_output_name(const std::string& name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+}
+
 // output.gauges and output.crater (docs/scenes.md): need the objects, and (for "no particle
 // inside") the grid and the objects' geometry, so they are read after everything else.
 void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
@@ -403,9 +410,7 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
       for (const auto& item : gauges.items()) {
         JsonReader g = r.child(item.key(), "a gauge: type, object, region, component");
         const std::string& name = item.key();
-        if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) {
-              return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-            })) {
+        if (!is_output_name(name)) {
           problems.add(r.key_path(name),
                        "expected a gauge name of letters, digits and _ (it becomes the history "
                        "column gauge_<name>)");
@@ -494,9 +499,7 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
       for (const auto& item : paths.items()) {
         JsonReader g = r.child(item.key(), "a particle path: object, position");
         const std::string& name = item.key();
-        if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) {
-              return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-            })) {
+        if (!is_output_name(name)) {
           problems.add(r.key_path(name),
                        "expected a name of letters, digits and _ (it becomes the file "
                        "paths/<name>.json)");
