@@ -3,6 +3,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <iterator>
 
 #include "mpm/output/atomic_file.hpp"
 #include "mpm/solver.hpp"
@@ -280,11 +281,30 @@ CheckpointHeader read_checkpoint_header(const std::filesystem::path& file) {
   return read_header(r);
 }
 
+namespace {
+
+// The trailer is checked before any field is parsed: a flipped bit must read as corruption,
+// not as whichever field check it happens to land on.
+void verify_checksum(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::uint64_t stored = 0;
+  if (bytes.size() < sizeof stored)
+    throw CheckpointError(file.string() + ": truncated (no trailer: corrupt checkpoint)");
+  const std::size_t payload = bytes.size() - sizeof stored;
+  std::memcpy(&stored, bytes.data() + payload, sizeof stored);
+  if (stored != fnv1a(bytes.data(), payload, kHashSeed))
+    throw CheckpointError(file.string() + ": checksum mismatch (corrupt checkpoint)");
+}
+
+}  // namespace
+
 RunState read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw CheckpointError(file.string() + ": cannot open (no checkpoint here?)");
   CheckpointReader r(in, file.string());
-  const CheckpointHeader h = read_header(r);
+  const CheckpointHeader h = read_header(r);  // magic and version first: their own messages
+  verify_checksum(file);
   if (h.particles != sim.particles().size()) {
     r.fail(std::to_string(h.particles) + " particles, the scene seeds " +
            std::to_string(sim.particles().size()));

@@ -35,7 +35,8 @@ inline constexpr std::uint32_t kCheckpointVersion =
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 /// 64-bit FNV-1a of a byte string (scene.json fingerprint, checkpoint trailer).
-std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 0xcbf29ce484222325ULL);
+inline constexpr std::uint64_t kHashSeed = 0xcbf29ce484222325ULL;  ///< FNV-1a offset basis
+std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = kHashSeed);
 
 /// Writes values and tagged arrays, hashing every byte.
 class CheckpointWriter {
@@ -59,7 +60,7 @@ class CheckpointWriter {
 
  private:
   std::ostream& out_;
-  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+  std::uint64_t hash_ = kHashSeed;
 };
 
 /// Reads what CheckpointWriter wrote; throws CheckpointError naming the file and the section.
@@ -93,7 +94,7 @@ class CheckpointReader {
  private:
   std::istream& in_;
   std::string file_;
-  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+  std::uint64_t hash_ = kHashSeed;
 };
 
 /// A checkpoint that cannot be used (missing, another version, corrupt, another scene).

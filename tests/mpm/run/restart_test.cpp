@@ -261,10 +261,18 @@ BOOST_AUTO_TEST_CASE(a_restart_is_refused_for_a_foreign_or_corrupt_checkpoint) {
   write(file, other);
   refused("checkpoint format version " + std::to_string(kCheckpointVersion + 1) +
           ", this mpm reads version " + std::to_string(kCheckpointVersion));
-  std::string corrupt = good;
-  corrupt[good.size() / 2] ^= 0x10;
-  write(file, corrupt);
-  refused("checksum mismatch");
+  // A flipped bit anywhere after the version reads as corruption, whichever field it lands on
+  // (the body's layout shifts with the length of the working directory stored in the header).
+  // A section tag is checked by the parser: without the trailer checked first, the flip there
+  // reads as a misplaced section.
+  for (const std::size_t at :
+       {std::size_t{40}, good.find("state"), good.size() / 4, good.size() / 2, 3 * good.size() / 4,
+        good.size() - 9, good.size() - 1}) {
+    std::string corrupt = good;
+    corrupt[at] ^= 0x10;
+    write(file, corrupt);
+    refused("checksum mismatch");
+  }
   write(file, good);
   const std::string scene_text = read_bytes(dir / "scene.json");
   write(dir / "scene.json", scene_text + " ");
