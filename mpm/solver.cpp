@@ -159,7 +159,12 @@ Simulation::Simulation(const Scene& scene, int threads)
   // The ledger's columns follow the physics the scene switched on.
   if (st.viscosity) sinks_.viscous = ledger_.add_sink_column("viscous_work");
   // Contact's normal reaction does no work; friction's Coulomb work is heat (contact.hpp).
-  if (grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0)
+  // So is the Coulomb work of a wall face (grid/wall.cpp): one column for both.
+  const bool wall_friction =
+      std::any_of(scene_.grid.wall_friction.begin(), scene_.grid.wall_friction.end(),
+                  [](double mu) { return mu > 0.0; });
+  if ((grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0) ||
+      wall_friction)
     sinks_.friction = ledger_.add_sink_column("friction_heat");
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
   if (grid_.fields() > 1) {  // contact bodies: a material's parent and companion fields
@@ -240,7 +245,10 @@ const StepTotals& Simulation::step() {
                       last_.stress.strain_energy_increment, last_.grid.boundary_impulse,
                       last_.grid.external_impulse, last_.grid.external_work);
   if (sinks_.viscous >= 0) ledger_.add_sink(sinks_.viscous, last_.stress.viscous_work);
-  if (sinks_.friction >= 0) ledger_.add_sink(sinks_.friction, last_.grid.contact.friction_heat);
+  if (sinks_.friction >= 0) {
+    ledger_.add_sink(sinks_.friction,
+                     last_.grid.contact.friction_heat + last_.grid.wall_friction_heat);
+  }
   if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
   if (last_.particles.removed > 0) {
     ledger_.add_outflow(last_.particles.outflow_mass, last_.particles.outflow_momentum,

@@ -109,7 +109,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   for (int f = 0; f < nf; ++f)
     body_of[f] = f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
   ContactTotals partial[kMaxThreads];
-  if (write_heat) G.for_active_entries([&](int e) { G.heat[e] = 0.0; });
+  // G.heat was zeroed at the start of the step (grid_update): contact adds to it.
   const std::vector<int>& nodes = G.active_nodes();  // heat is read at active nodes only
   const int na_nodes = static_cast<int>(nodes.size());
 #pragma omp parallel num_threads(nt)

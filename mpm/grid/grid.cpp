@@ -22,7 +22,9 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
   velocity_new.assign(e, Vec3::Zero());
   increment.assign(e, Vec3::Zero());
   velocity_L.assign(e, Vec3::Zero());
-  if (nodal_stress) heat.assign(e, 0.0);
+  const bool wall_friction = std::any_of(spec.wall_friction.begin(), spec.wall_friction.end(),
+                                         [](double mu) { return mu > 0.0; });
+  if (nodal_stress || wall_friction) heat.assign(e, 0.0);
   const int n = node_count();
   std::vector<char> mark(n, 0);
   for (int face = 0; face < 6; ++face) {
@@ -57,6 +59,8 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
       const int layer = face % 2 == 0 ? 0 : c[axis];
       const int ghost = face % 2 == 0 ? -1 : c[axis] + 1;
       const int inner = face % 2 == 0 ? 1 : c[axis] - 1;
+      // A wall's face layer is its own condition (apply_walls); its ghost layer is the mirror.
+      const bool wall = spec_.faces[face] == FaceCondition::wall;
       for (int u = -1; u <= c[a] + 1; ++u)
         for (int w = -1; w <= c[b] + 1; ++w) {
           int ijk[3];
@@ -65,8 +69,13 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
           ijk[axis] = pass == 0 ? layer : ghost;
           const int target = index(ijk[0], ijk[1], ijk[2]);
           ijk[axis] = inner;
-          mirror_all_.push_back(
-              {target, pass == 0 ? -1 : index(ijk[0], ijk[1], ijk[2]), axis, fixed});
+          if (wall && pass == 0) {
+            wall_all_.push_back(
+                {target, axis, face % 2 == 0 ? 1.0 : -1.0, spec_.wall_friction[face]});
+          } else {
+            mirror_all_.push_back(
+                {target, pass == 0 ? -1 : index(ijk[0], ijk[1], ijk[2]), axis, fixed});
+          }
         }
     }
   bx_ = (nx_ + kBlock - 1) / kBlock;
@@ -78,11 +87,13 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
     active_boundary_.resize(boundary_nodes_.size());
     for (std::size_t k = 0; k < boundary_nodes_.size(); ++k) active_boundary_[k] = int(k);
     mirror_active_ = mirror_all_;
+    wall_active_ = wall_all_;
   } else {
     marks_.assign(buffers_.size(), std::vector<char>(std::size_t(bx_) * by_ * bz_, 0));
     active_.reserve(n);  // no allocation in a step
     active_boundary_.reserve(boundary_nodes_.size());
     mirror_active_.reserve(mirror_all_.size());
+    wall_active_.reserve(wall_all_.size());
   }
 }
 
@@ -124,6 +135,9 @@ void Grid::activate() {
   mirror_active_.clear();
   for (const MirrorWrite& w : mirror_all_)
     if (in_marked_block(w.target)) mirror_active_.push_back(w);
+  wall_active_.clear();
+  for (const WallNode& w : wall_all_)
+    if (in_marked_block(w.node)) wall_active_.push_back(w);
   std::fill(m.begin(), m.end(), 0);
 }
 
@@ -186,7 +200,8 @@ std::size_t Grid::bytes() const {
   for (const auto& m : marks_) b += m.size();
   b += (boundary_nodes_.capacity() + active_boundary_.capacity()) * sizeof(int) +
        free_increment.capacity() * sizeof(Vec3) +
-       (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite);
+       (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite) +
+       (wall_all_.capacity() + wall_active_.capacity()) * sizeof(WallNode);
   return b;
 }
 

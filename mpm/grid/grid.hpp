@@ -46,6 +46,19 @@ struct MirrorWrite {
   bool fixed;
 };
 
+/// One face-layer node of a `wall` face (Grid::apply_walls): `inward` is +1 on a lower face and
+/// -1 on an upper one (the direction the wall pushes), `mu` the face's Coulomb coefficient.
+struct WallNode {
+  int node;
+  int axis;
+  double inward;
+  double mu;
+};
+
+/// Which velocity a wall acts on: `step` on the step's end velocity v* (contact, friction and its
+/// heat), `projection` on the MUSL re-map (normal contact only).
+enum class WallPass { step, projection };
+
 class Grid {
  public:
   /// `fields` velocity fields; `nodal_stress`: also scatter the stress (friction contact).
@@ -145,7 +158,7 @@ class Grid {
   std::vector<Vec3> velocity_new;  ///< v*_I after the momentum update and face conditions
   std::vector<Vec3> increment;     ///< v*_I - v_I (FLIP increment)
   std::vector<Vec3> velocity_L;    ///< the nodal velocity L_p is built from (USL/MUSL)
-  std::vector<double> heat;        ///< friction heat of the step per entry [J] (friction only)
+  std::vector<double> heat;  ///< friction heat of the step per entry [J] (contact or wall friction)
   /// v*_I - v_I before the face conditions at the boundary nodes (field-major, boundary_nodes()
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;
@@ -169,6 +182,15 @@ class Grid {
   /// constrained face the constrained components on the face layer are zeroed, and the ghost
   /// layer outside is set to the reflection of the first interior layer.
   void apply_mirror(std::vector<Vec3>& v) const;
+  /// The `wall` faces' face layers (grid/wall.cpp), on every field of the end velocity `end`: a
+  /// node moving into the wall has its normal component zeroed and, in the step pass, friction
+  /// takes up to mu times that normal velocity off its tangential one; any other node is left
+  /// free (the wall never pulls). Step pass: adds the Coulomb heat to `heat` (if allocated) and
+  /// returns its sum [J].
+  double apply_walls(std::vector<Vec3>& end, WallPass pass);
+  bool has_walls() const {
+    return !wall_all_.empty();
+  }
 
   std::size_t bytes() const;
 
@@ -184,6 +206,8 @@ class Grid {
   std::vector<int> active_boundary_;
   std::vector<MirrorWrite> mirror_all_;     ///< every face node, in the order of the mirror
   std::vector<MirrorWrite> mirror_active_;  ///< those whose target is in an active block
+  std::vector<WallNode> wall_all_;          ///< face layers of the wall faces
+  std::vector<WallNode> wall_active_;       ///< those in an active block
   std::array<bool, 6> constrained_{};
   int bx_ = 0, by_ = 0, bz_ = 0;          ///< blocks per axis
   std::vector<int> active_;               ///< active nodes, ascending

@@ -120,16 +120,35 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
                       "largest extent (upper - lower) " + *hint + "; the value is used as given");
   }
   g.faces.fill(FaceCondition::symmetric);
-  if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed or free")) {
+  if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed, free or wall")) {
     for (int f = 0; f < 6; ++f) {
-      const std::string c =
-          b->choice(kFaceNames[f], {"symmetric", "fixed", "free"},
-                    "grid face condition (symmetric: frictionless rigid wall)", "symmetric");
+      const std::string c = b->choice(kFaceNames[f], {"symmetric", "fixed", "free", "wall"},
+                                      "grid face condition (symmetric: frictionless mirror plane; "
+                                      "wall: rigid wall that never pulls, with friction)",
+                                      "symmetric");
       g.faces[f] = c == "fixed"  ? FaceCondition::fixed
                    : c == "free" ? FaceCondition::free
+                   : c == "wall" ? FaceCondition::wall
                                  : FaceCondition::symmetric;
     }
     b->reject_unknown_keys();
+  }
+  if (auto w = r.optional_child("wall_friction", "Coulomb friction coefficient per wall face")) {
+    for (int f = 0; f < 6; ++f) {
+      if (!w->has(kFaceNames[f])) continue;
+      if (g.faces[f] != FaceCondition::wall) {
+        w->problems().add(w->key_path(kFaceNames[f]),
+                          std::string("face ") + kFaceNames[f] +
+                              " is not a wall: friction acts only on a face whose "
+                              "grid.boundary." +
+                              kFaceNames[f] + " is \"wall\"");
+        w->ignore(kFaceNames[f]);  // reported above, not also as an unknown key
+        continue;
+      }
+      g.wall_friction[f] =
+          w->number(kFaceNames[f], Range::closed(0.0, 10.0), "Coulomb coefficient mu [-]");
+    }
+    w->reject_unknown_keys();
   }
   g.active_blocks = r.boolean_or(
       "active_blocks", true,

@@ -17,7 +17,10 @@ namespace impact::mpm {
 
 enum class Interpolation { linear, gimp };  ///< 8-node trilinear or 27-node uGIMP
 enum class Scheme { usl, musl };            ///< update stress last / modified USL
-enum class FaceCondition { symmetric, fixed, free };
+/// symmetric: mirror plane (rigid frictionless wall that also holds in tension); fixed: no-slip;
+/// free: nothing; wall: rigid stationary wall that pushes and never pulls, with Coulomb friction
+/// (grid/wall.cpp).
+enum class FaceCondition { symmetric, fixed, free, wall };
 /// What a particle that leaves the grid does (grid.outflow): stop the run (a numerical failure), or
 /// leave the simulation with its mass, momentum and kinetic energy booked as outflow.
 enum class Outflow { stop, remove };
@@ -26,9 +29,10 @@ enum class Outflow { stop, remove };
 inline constexpr std::array<const char*, 6> kFaceNames = {"x-", "x+", "y-", "y+", "z-", "z+"};
 
 struct GridSpec {
-  Vec3 lower, upper;                     ///< [m]
-  std::array<int, 3> cells{};            ///< cells per axis
-  std::array<FaceCondition, 6> faces{};  ///< per face, kFaceNames order
+  Vec3 lower, upper;                      ///< [m]
+  std::array<int, 3> cells{};             ///< cells per axis
+  std::array<FaceCondition, 6> faces{};   ///< per face, kFaceNames order
+  std::array<double, 6> wall_friction{};  ///< Coulomb coefficient of each `wall` face [-]
   /// Grid work only on the 2x2x2-node blocks the particles' stencils touch (grid/grid.hpp);
   /// false: every node of the box every step (the 2004 code's dense loops).
   bool active_blocks = true;

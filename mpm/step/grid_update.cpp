@@ -1,16 +1,16 @@
 // Grid momentum update (Sulsky et al. 1994 eq. 24): v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g)
 // per velocity field; contact between fields (contact/contact.hpp) on v_I and on v*_I (the two
 // passes of Bardenhagen et al. 2001); then the face conditions as a mirror (grid/boundary.cpp),
-// the FLIP increment v*_I - v_I, and, for USL, the gradient velocity v^L_I
-// (kLightNodeMassFraction).
-// The particles move with the corrected v*_I and their velocity changes by the increment between
-// the CORRECTED fields, as in Bardenhagen et al. (2001) and single-field MPM: the first pass only
-// sets the start from which the step's forces act, and the second pass (the contact impulse of
-// the step) reaches both the positions and the velocities. Handing the particles the first pass
-// too (the increment from the uncorrected p_I/m_I) removes the same approach velocity again at
-// every step, because the particles keep carrying it to the grid: the sphere-cylinder lost 26 %
-// of E0 in 10 us that way (docs/mpm.md#velocity-fields-and-contact). The faces are a mirror on the
-// start and end velocities alike: a stationary wall does no work (docs/mpm.md#ledger).
+// the walls (grid/wall.cpp), the FLIP increment v*_I - v_I, and, for USL, the gradient velocity
+// v^L_I (kLightNodeMassFraction). The particles move with the corrected v*_I and their velocity
+// changes by the increment between the CORRECTED fields, as in Bardenhagen et al. (2001) and
+// single-field MPM: the first pass only sets the start from which the step's forces act, and the
+// second pass (the contact impulse of the step) reaches both the positions and the velocities.
+// Handing the particles the first pass too (the increment from the uncorrected p_I/m_I) removes the
+// same approach velocity again at every step, because the particles keep carrying it to the grid:
+// the sphere-cylinder lost 26 % of E0 in 10 us that way (docs/mpm.md#velocity-fields-and-contact).
+// The faces are a mirror on the start and end velocities alike: a stationary wall does no work
+// (docs/mpm.md#ledger).
 #include <omp.h>
 
 #include <algorithm>
@@ -33,6 +33,8 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     }
   });
   GridUpdate out;
+  // Friction heat of this step (contact and walls add to it; grid-to-particles reads it).
+  if (!G.heat.empty()) G.for_active_entries([&](int e) { G.heat[e] = 0.0; });
   if (contact_on) apply_contact(G, *contact, G.velocity, ContactPass::start);
   G.for_active_entries([&](int i) {
     const NodeData& a = nodes[i];
@@ -74,6 +76,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     }
   G.apply_mirror(G.velocity);
   G.apply_mirror(G.velocity_new);
+  if (G.has_walls()) out.wall_friction_heat = G.apply_walls(G.velocity_new, WallPass::step);
   G.for_active_entries([&](int i) { G.increment[i] = G.velocity_new[i] - G.velocity[i]; });
   // The faces' impulse: what they changed in the increments that move the particles (serial, in
   // node order: deterministic). A stationary wall does no work (docs/mpm.md#ledger).

@@ -66,6 +66,7 @@ struct GridUpdate {
   /// stationary face does no work (docs/mpm.md#ledger).
   Vec3 boundary_impulse = Vec3::Zero();
   ContactTotals contact;
+  double wall_friction_heat = 0.0;  ///< Coulomb heat of the wall faces (grid/wall.cpp) [J]
   Vec3 external_impulse = Vec3::Zero();
   double external_work = 0.0;
 };

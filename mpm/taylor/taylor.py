@@ -2,12 +2,13 @@
 """Taylor impact of 6061-T6 rods (House et al. 1995): predicted shapes against the experiments.
 
   python3 mpm/taylor/taylor.py OUT [--sets table1,fit_all] [--failure off]
-                              [--cells-per-radius 4] [--shots H1,H8] [--jobs J] [--threads T]
+                              [--cells-per-radius 4] [--shots H1,H8] [--anvil mirror]
+                              [--jobs J] [--threads T]
                               [--mpm build/bin/mpm] [--pointdriver build/bin/pointdriver]
 
 For every parameter set x failure mode x resolution x shot it generates a quarter-model scene (the
-rod along x, its impact face on the symmetric x- face of the grid: a frictionless rigid anvil;
-mirror planes y = 0 and z = 0), runs `mpm run`, and measures on the last snapshot:
+rod along x, its impact face on the x- face of the grid, the anvil; mirror planes y = 0 and
+z = 0), runs `mpm run`, and measures on the last snapshot:
   Lf  final length: the largest particle x plus the distance by which the outermost seeded particle
       lay inside the rod's end at t = 0 (seed_offsets: the measure is exact at t = 0);
   Dm  mushroom diameter: twice the largest radius of the particles within 0.5 mm of the anvil, plus
@@ -16,6 +17,11 @@ mirror planes y = 0 and z = 0), runs `mpm run`, and measures on the last snapsho
       falls below 0.2 % (Taylor 1948's X; reported, never judged);
   the deformed profile (radius against axial position, per particle-spacing bin), the energy books
   (history.csv), failed particles per cause and in the compressed core (initial radius <= R0/2).
+  A rod that bounced off a `wall` anvil is measured from its impact face (face_lift: how far its
+  lowest particle rose above its lowest position over the run).
+Anvil (--anvil, one per OUT):
+  mirror   the symmetric x- face: rigid and frictionless, and it holds the rod in tension too;
+  wall:MU  a rigid wall that never pulls, with Coulomb friction MU (docs/scenes.md#grid).
 
 Parameter sets (calibration kept apart from validation: none is tuned to a Taylor shot):
   table1   data/materials/al6061_t6.json as shipped (the report's Table 1 Johnson-Cook set);
@@ -82,7 +88,23 @@ def end_time(shot):
     return 0.8 * shot["L0"] / shot["U0"] + 20e-6
 
 
-def scene(shot, material_file, failure, cells_per_radius):
+def parse_anvil(text):
+    """'mirror' (the symmetric x- face: frictionless, and it holds the rod in tension) or
+    'wall[:MU]' (a rigid wall that never pulls, Coulomb friction MU, default 0): (kind, mu)."""
+    kind, _, mu = text.partition(":")
+    if kind == "mirror" and not mu:
+        return "mirror", 0.0
+    if kind == "wall":
+        try:
+            value = float(mu) if mu else 0.0
+        except ValueError:
+            value = -1.0
+        if 0.0 <= value <= 10.0:
+            return "wall", value
+    sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall or wall:MU with MU in [0, 10]")
+
+
+def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0)):
     R0 = 0.5 * shot["D0"]
     dx = R0 / cells_per_radius
     # The mushroom reaches up to ~1.8 R0 (House H3: Dm/D0 = 1.69): the grid leaves 2.2 R0.
@@ -103,12 +125,16 @@ def scene(shot, material_file, failure, cells_per_radius):
     t_end = end_time(shot)
     boundary = {"x-": "symmetric", "x+": "symmetric",
                 "y-": "symmetric", "y+": "symmetric", "z-": "symmetric", "z+": "symmetric"}
+    grid = {"lower": [0.0, 0.0, 0.0], "upper": [nx * dx, ny * dx, ny * dx],
+            "cells": [nx, ny, ny], "boundary": boundary}
+    if anvil[0] == "wall":
+        boundary["x-"] = "wall"
+        grid["wall_friction"] = {"x-": anvil[1]}
     return {
         "description": f"Taylor impact, House et al. (1995) shot {shot['shot']}: quarter model, "
                        f"{cells_per_radius} cells per radius, failure {failure}",
         "materials": materials, "objects": objects,
-        "grid": {"lower": [0.0, 0.0, 0.0], "upper": [nx * dx, ny * dx, ny * dx],
-                 "cells": [nx, ny, ny], "boundary": boundary},
+        "grid": grid,
         "time": {"max_time": t_end, "multiplier": 0.5},
         "physics": physics,
         "output": {"interval": t_end / 40.0, "fields": ["plastic_strain", "temperature", "damage",
@@ -132,11 +158,13 @@ def seed_offsets(shot, cells_per_radius):
     return shot["L0"] - top, R0 - rim
 
 
-def measure(x, plastic_strain, shot, cells_per_radius):
-    """Lf, Dm, Xf and the profile [(x, radius, mean plastic strain)] from final positions x."""
+def measure(x, plastic_strain, shot, cells_per_radius, face_lift=0.0):
+    """Lf, Dm, Xf and the profile [(x, radius, mean plastic strain)] from final positions x, with
+    the impact face `face_lift` above the anvil (a rod that bounced off a `wall` anvil)."""
     R0 = 0.5 * shot["D0"]
     h = R0 / cells_per_radius / PPC  # particle spacing
     axial, radial = seed_offsets(shot, cells_per_radius)
+    x = x - [face_lift, 0.0, 0.0]
     r = (x[:, 1] ** 2 + x[:, 2] ** 2) ** 0.5
     Lf = x[:, 0].max() + axial
     near = x[:, 0] < ANVIL_LAYER
@@ -161,7 +189,17 @@ def extract(run_dir, shot, cells_per_radius):
     rod0 = first["object"] == max(first["object"])
     X0, x = first["points"][rod0], last["points"][rod0]
     R0 = 0.5 * shot["D0"]
-    Lf, Dm, Xf, profile = measure(x, last["plastic_strain"][rod0], shot, cells_per_radius)
+    with open(f"{run_dir}/scene.json") as f:
+        wall = json.load(f)["grid"]["boundary"]["x-"] == "wall"
+    # A wall anvil lets the rod bounce off (~10 m/s): the measures take its face where it was
+    # while it touched, i.e. the rod's lowest particle at its lowest over the snapshots. The
+    # mirror holds the face on the anvil (no lift).
+    face_lift = 0.0
+    if wall:
+        lowest = min(vtu.read_vtu(f)["points"][rod0][:, 0].min() for _, f in snaps)
+        face_lift = float(x[:, 0].min() - lowest)
+    Lf, Dm, Xf, profile = measure(x, last["plastic_strain"][rod0], shot, cells_per_radius,
+                                  face_lift)
     failed = last["failed"][rod0] > 0.5
     core = (X0[:, 1] ** 2 + X0[:, 2] ** 2) ** 0.5 <= 0.5 * R0
     causes = last["failure_cause"][rod0]
@@ -173,7 +211,7 @@ def extract(run_dir, shot, cells_per_radius):
     # At rest: the first history row with the kinetic energy below 3 % of the impact energy (what is left is elastic ringing).
     rest = next((float(h["time [s]"]) for h in hist if float(h["kinetic_energy [J]"]) < 0.03 * e0),
                 float("nan"))
-    out = {"Lf [m]": Lf, "Dm [m]": Dm, "Xf [m]": Xf,
+    out = {"Lf [m]": Lf, "Dm [m]": Dm, "Xf [m]": Xf, "face_lift [m]": face_lift,
            "particles": int(rod0.sum()), "failed": int(failed.sum()),
            "failed_core": int((failed & core).sum()), "core": int(core.sum()),
            "failed_core_under_pressure": int(
@@ -182,6 +220,7 @@ def extract(run_dir, shot, cells_per_radius):
            "kinetic_end_over_E0 [-]": float(hist[-1]["kinetic_energy [J]"]) / e0,
            "time_to_rest [s]": rest, "end_time [s]": float(hist[-1]["time [s]"]),
            "viscous_work_over_E0 [-]": float(hist[-1].get("viscous_work [J]", 0.0)) / e0,
+           "friction_heat_over_E0 [-]": float(hist[-1].get("friction_heat [J]", 0.0)) / e0,
            "energy_error [-]": float(hist[-1]["energy_error [-]"]),
            "steps": summary["steps"], "wall_time [s]": summary["wall_time [s]"]}
     for i, c in enumerate(CAUSES[1:], start=1):
@@ -190,17 +229,18 @@ def extract(run_dir, shot, cells_per_radius):
 
 
 def run_one(job):
-    shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads = job
+    shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads, anvil = job
     tag = f"{set_name}_{failure}_n{n}"
     run_dir = os.path.join(runs_dir, tag, shot["shot"])
     os.makedirs(run_dir, exist_ok=True)
     scene_file = os.path.join(run_dir, "scene_in.json")
     with open(scene_file, "w") as f:
-        json.dump(scene(shot, material, failure, n), f, indent=1)
+        json.dump(scene(shot, material, failure, n, anvil), f, indent=1)
     start = time.time()
     proc = subprocess.run([mpm, "run", scene_file, "--out", run_dir, "--threads", str(threads)],
                           capture_output=True, text=True)
-    row = {"set": set_name, "failure": failure, "cells_per_radius": n, "shot": shot["shot"],
+    row = {"set": set_name, "failure": failure, "cells_per_radius": n,
+           "anvil": anvil[0] if anvil[0] == "mirror" else f"wall:{anvil[1]:g}", "shot": shot["shot"],
            "L0_over_D0 [-]": shot["aspect"], "U0 [m/s]": shot["U0"], "L0 [m]": shot["L0"],
            "D0 [m]": shot["D0"], "Lf_exp [m]": shot["Lf"], "Dm_exp [m]": shot["Dm"],
            "Xf_exp [m]": shot["Xf"], "exit_code": proc.returncode,
@@ -252,7 +292,8 @@ def reextract(out_dir):
         shot, n = shots[row["shot"]], int(row["cells_per_radius"])
         last = vtu.read_vtu(os.path.join(out_dir, row["last_snapshot"]))
         rod = last["object"] == max(last["object"])
-        Lf, Dm, Xf, profile = measure(last["points"][rod], last["plastic_strain"][rod], shot, n)
+        Lf, Dm, Xf, profile = measure(last["points"][rod], last["plastic_strain"][rod], shot, n,
+                                      float(row.get("face_lift [m]") or 0.0))
         row.update({"Lf [m]": Lf, "Dm [m]": Dm, "Xf [m]": Xf})
         record_shape(row, shot, profile, out_dir, f"{row['set']}_{row['failure']}_n{n}")
     with open(os.path.join(out_dir, "results.csv"), "w", newline="") as f:
@@ -282,6 +323,9 @@ def main():
     ap.add_argument("--cells-per-radius", default="4", help="comma list: a resolution ladder")
     ap.add_argument("--ladder-shots", default=None,
                     help="shots run at resolutions other than the first (default: all --shots)")
+    ap.add_argument("--anvil", default="mirror",
+                    help="mirror (default: symmetric x- face, frictionless) or wall[:MU] (rigid "
+                         "wall that never pulls, Coulomb friction MU; one per OUT)")
     ap.add_argument("--shots", default=None, help="comma list of shot names (default: all 23)")
     ap.add_argument("--jobs", type=int, default=None, help="runs at a time (default: cores/threads)")
     ap.add_argument("--threads", type=int, default=1, help="OpenMP threads per run")
@@ -313,6 +357,7 @@ def main():
     levels = [int(n) for n in a.cells_per_radius.split(",")]
     ladder = set(a.ladder_shots.split(",")) if a.ladder_shots else None
     failures = a.failure.split(",")
+    anvil = parse_anvil(a.anvil)
     sets = a.sets.split(",")
     failure_sets = a.failure_sets.split(",") if a.failure_sets else sets
     for f in failures:
@@ -336,7 +381,7 @@ def main():
                     if i > 0 and ladder is not None and shot["shot"] not in ladder:
                         continue
                     jobs.append((shot, s, materials[s], f, n, out_dir, runs_dir, a.mpm,
-                                 a.threads))
+                                 a.threads, anvil))
     # Longest first, so that the pool ends together.
     jobs.sort(key=lambda j: -(j[0]["L0"] * j[4] ** 4 / j[0]["U0"]))
     n_jobs = a.jobs or max(1, (os.cpu_count() or 1) // a.threads)

@@ -1,0 +1,135 @@
+// A rigid wall face with Coulomb friction (grid.boundary = "wall", grid/wall.cpp) against
+// Coulomb's law for a block sliding on it (data/scenes/verification/sliding_block.json): gravity
+// g = 1e5 m/s^2 presses an elastic block onto the x- wall while it slides along y at v0 = 5 m/s.
+// The friction force is mu M g, so the mean velocity is v_y = v0 - mu g t until t_stop = v0 /
+// (mu g) = 200 us, and zero after (stick: the static limit mu M g exceeds the zero tangential
+// load). The heat is the kinetic energy lost, 1/2 M (v0^2 - v_y^2), booked in friction_heat.
+// Tolerances: v_y within 0.02 v0 of the law at every step (the sudden load sets the block
+// vibrating normal to the wall; the friction per step follows the normal impulse, whose average
+// is M g), |v_y| < 0.02 v0 once stopped, friction heat within 3 % of the lost energy.
+// A mirror plane with a per-step |impulse| bound measured 1.5-2 times the law's deceleration:
+// the one-sided wall is what makes this test pass (docs/scenes.md#grid).
+// The energy books close to a residual that falls with the time step (second order).
+// The same block on a frictionless wall keeps v0 to 1e-9 relative, and a block pulled away from
+// the wall by gravity leaves it freely (the wall never pulls; a mirror plane would hold it).
+#include <boost/test/unit_test.hpp>
+
+#include "../verification_helpers.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+struct Motion {
+  Vec3 velocity;  ///< mass-weighted mean [m/s]
+  Vec3 lower;     ///< lowest particle position per axis [m]
+};
+
+Motion motion(const Particles& P) {
+  Vec3 p = Vec3::Zero();
+  double m = 0.0;
+  Vec3 lower = Vec3::Constant(1e30);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    p += P.mass[i] * P.v[i];
+    m += P.mass[i];
+    lower = lower.cwiseMin(P.x[i]);
+  }
+  return {p / m, lower};
+}
+
+double sink(const Ledger& ledger, const std::string& name) {
+  const auto& names = ledger.sink_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  BOOST_REQUIRE(it != names.end());
+  return ledger.row().sinks[std::size_t(it - names.begin())];
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(wall_friction)
+
+BOOST_AUTO_TEST_CASE(a_sliding_block_follows_coulombs_law_and_then_sticks) {
+  const Scene scene = test::verification_scene("sliding_block.json");
+  Simulation sim(scene);
+  const double v0 = 5.0, g = 1.0e5, mu = 0.25, t_stop = v0 / (mu * g);
+  double mass = 0.0;
+  for (const double m : sim.particles().mass) mass += m;
+  double worst_sliding = 0.0, worst_stopped = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const double vy = motion(sim.particles()).velocity(1);
+    const double law = std::max(v0 - mu * g * sim.time(), 0.0);
+    if (sim.time() < t_stop) {
+      worst_sliding = std::max(worst_sliding, std::abs(vy - law) / v0);
+    } else {
+      worst_stopped = std::max(worst_stopped, std::abs(vy) / v0);
+    }
+  }
+  const double vy = motion(sim.particles()).velocity(1);
+  const double lost = 0.5 * mass * (v0 * v0 - vy * vy);
+  const double heat = sink(sim.ledger(), "friction_heat");
+  BOOST_TEST_MESSAGE(sim.steps() << " steps: v_y against v0 - mu g t worst " << worst_sliding
+                                 << " v0 while sliding, " << worst_stopped
+                                 << " v0 after the stop; friction heat " << heat << " J against "
+                                 << lost << " J of kinetic energy lost (" << heat / lost - 1
+                                 << "); energy_error " << sim.ledger().row().energy_error);
+  BOOST_TEST(worst_sliding < 0.02);
+  BOOST_TEST(worst_stopped < 0.02);
+  BOOST_TEST(std::abs(heat / lost - 1.0) < 0.03);
+}
+
+BOOST_AUTO_TEST_CASE(the_books_converge_with_the_time_step) {
+  // energy_error is the numerical residual of the friction step (MUSL: the re-map does not see
+  // the friction the positions moved with; USL: -0.76 % at 240 us). Measured over the first
+  // 120 us: +0.88 % of E0 at multiplier 0.5, +0.25 % at 0.25 (+2.9 % and +0.7 % at 240 us).
+  // Asserted: below 2 % at 0.5 and falling at least 2.5-fold per halving of the step.
+  double error[2];
+  for (const int k : {0, 1}) {
+    const Scene scene = test::verification_scene(
+        "sliding_block.json",
+        {{"time", {{"multiplier", k == 0 ? 0.5 : 0.25}, {"max_time", 1.2e-4}}}});
+    Simulation sim(scene);
+    while (!sim.finished()) sim.step();
+    error[k] = sim.ledger().row().energy_error;
+  }
+  BOOST_TEST_MESSAGE("energy_error at multiplier 0.5: " << error[0] << ", at 0.25: " << error[1]);
+  BOOST_TEST(std::abs(error[0]) < 0.02);
+  BOOST_TEST(std::abs(error[1]) < std::abs(error[0]) / 2.5);
+}
+
+BOOST_AUTO_TEST_CASE(a_frictionless_wall_lets_the_block_slide_on) {
+  const Scene scene = test::verification_scene(
+      "sliding_block.json",
+      {{"grid", {{"wall_friction", {{"x-", 0.0}}}}}, {"time", {{"max_time", 1e-4}}}});
+  Simulation sim(scene);
+  double worst = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    worst = std::max(worst, std::abs(motion(sim.particles()).velocity(1) / 5.0 - 1.0));
+  }
+  BOOST_TEST_MESSAGE("frictionless wall: v_y within " << worst << " of v0 over " << sim.steps()
+                                                      << " steps");
+  BOOST_TEST(worst < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(the_wall_never_pulls) {
+  // Gravity away from the wall: the block must accelerate freely at g (a mirror plane would hold
+  // its face layer and pull it back). After t its mean x velocity is g t and its lowest particle
+  // has moved g t^2 / 2 (within 2 %: the block starts stress-free and moves as a rigid body).
+  const Scene scene = test::verification_scene(
+      "sliding_block.json",
+      {{"solver", {{"gravity", {1.0e5, 0.0, 0.0}}}}, {"time", {{"max_time", 5e-5}}}});
+  Simulation sim(scene);
+  const double x0 = motion(sim.particles()).lower(0);
+  while (!sim.finished()) sim.step();
+  const Motion m = motion(sim.particles());
+  const double t = sim.time(), g = 1.0e5;
+  BOOST_TEST_MESSAGE("pulled away: v_x " << m.velocity(0) << " m/s against g t = " << g * t
+                                         << ", lowest particle moved " << m.lower(0) - x0
+                                         << " m against g t^2/2 = " << 0.5 * g * t * t);
+  BOOST_TEST(std::abs(m.velocity(0) / (g * t) - 1.0) < 0.02);
+  BOOST_TEST(std::abs((m.lower(0) - x0) / (0.5 * g * t * t) - 1.0) < 0.02);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
