@@ -231,7 +231,9 @@ def extract(run_dir, shot, cells_per_radius):
 def run_one(job):
     shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads, anvil = job
     tag = f"{set_name}_{failure}_n{n}"
-    run_dir = os.path.join(runs_dir, tag, shot["shot"])
+    # Campaigns with different anvils may share --runs: each anvil has its own run directories.
+    run_tag = tag if anvil[0] == "mirror" else f"{tag}_wall{anvil[1]:g}"
+    run_dir = os.path.join(runs_dir, run_tag, shot["shot"])
     os.makedirs(run_dir, exist_ok=True)
     scene_file = os.path.join(run_dir, "scene_in.json")
     with open(scene_file, "w") as f:
