@@ -278,8 +278,11 @@ def report(out):
     rows = load(out)
     lines = ["# Taylor impact campaign", "",
              "Written by mpm/taylor/taylor_report.py from results.csv (errors: simulation / "
-             "experiment - 1; lengths in mm in the tables, SI in results.csv).", "",
-             "## Per parameter set, failure mode and resolution", ""]
+             "experiment - 1; lengths in mm in the tables, SI in results.csv).", ""]
+    anvils = sorted({r.get("anvil") or "mirror" for r in rows})
+    lines += [f"Anvil: {', '.join(anvils)} (mirror: the symmetric x- face, rigid and frictionless; "
+              "wall:MU: a rigid wall that never pulls, Coulomb friction MU).", "",
+              "## Per parameter set, failure mode and resolution", ""]
     lines += summary_table(rows)
     for f in sorted({r["failure"] for r in rows}):
         lines += ["", f"## Per shot, failure {f}", ""] + shot_table(rows, f)
