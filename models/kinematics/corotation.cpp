@@ -30,6 +30,35 @@ Corotation corotation(const Mat3& R_old, const Mat3& F_new) {
   return {R_old, R_new, midpoint_rotation(R_old, R_new)};
 }
 
+namespace {
+
+// Cayley rotation (I - [c]x)^{-1} (I + [c]x) = I + 2 ([c]x + [c]x^2) / (1 + |c|^2) for the
+// half-angle vector c = omega dt / 2: the Hughes-Winget increment of the spin [omega]x over dt,
+// in closed form.
+Mat3 cayley_rotation(const Vec3& c) {
+  Mat3 K;
+  K << 0.0, -c(2), c(1), c(2), 0.0, -c(0), -c(1), c(0), 0.0;
+  return Mat3::Identity() + (2.0 / (1.0 + c.squaredNorm())) * (K + K * K);
+}
+
+}  // namespace
+
+Vec3 green_naghdi_spin(const Mat3& L, const Mat3& V) {
+  const Mat3 LV = L * V;
+  const Vec3 z(LV(2, 1) - LV(1, 2), LV(0, 2) - LV(2, 0), LV(1, 0) - LV(0, 1));  // 2 axial(skew LV)
+  const Mat3 A = V.trace() * Mat3::Identity() - V;
+  return A.inverse() * z;
+}
+
+Corotation incremental_corotation(const Mat3& R_old, const Mat3& F_old, const Mat3& F_new,
+                                  const Mat3& L, double dt) {
+  const Vec3 w0 = green_naghdi_spin(L, sym(F_old * R_old.transpose()));
+  const Mat3 R_pred = cayley_rotation(0.5 * dt * w0) * R_old;
+  const Vec3 w1 = green_naghdi_spin(L, sym(F_new * R_pred.transpose()));
+  const Vec3 w = 0.5 * (w0 + w1);
+  return {R_old, cayley_rotation(0.5 * dt * w) * R_old, cayley_rotation(0.25 * dt * w) * R_old};
+}
+
 Mat3 hughes_winget_rotation(const Mat3& W, double dt) {
   const Mat3 half = 0.5 * dt * W;
   // I - W dt/2 is never singular for skew W (its eigenvalues are 1 and 1 +- i |w| dt/2).

@@ -19,6 +19,19 @@
 // stress is never carried with the material (a stressed body spun rigidly keeps its lab-frame
 // stress), which is not objective. Fixed in the code only in 2011. corotation_test shows both.
 //
+// Incremental Green-Naghdi update (option "green_naghdi_incremental"): the same rotations without a
+// polar decomposition. The Green-Naghdi spin Omega = dR/dt R^T follows from L and the left
+// stretch V = F R^T (Dienes 1979 eq. 4.6; Flanagan & Taylor 1987 eq. 24): F = V R gives
+// L V = dV/dt + V Omega with dV/dt symmetric, and for symmetric V the skew part of V Omega has the
+// axial vector (tr V I - V) omega / 2, so
+//   omega = 2 (tr V I - V)^{-1} axial(skew(L V)).
+// (tr V I - V is positive definite for V positive definite.) One step, second order in dt: V_n =
+// sym(F_n R_n^T) gives omega_n; a predictor R* = cay(omega_n dt) R_n gives V_{n+1} =
+// sym(F_{n+1} R*^T) and omega_{n+1}; with their mean omega, R_{n+1} = cay(omega dt) R_n and
+// R_{n+1/2} = cay(omega dt / 2) R_n, cay the Cayley (Hughes-Winget) rotation, exactly orthogonal.
+// No state beyond R: V is recomputed from F and R each step. It drifts from the polar factor by
+// O(dt^2) over a path (kinematics_test states the size on rotation and simple shear).
+//
 // Jaumann rate (option "jaumann", for comparison): sigma is rotated with the spin W = skew L by the
 // Hughes-Winget increment Q = (I - W dt/2)^{-1} (I + W dt/2) (Hughes & Winget 1980, IJNME
 // 15:1862-1867); the composed model applies it over half a step before and half a step after the
@@ -31,7 +44,7 @@
 
 namespace impact {
 
-enum class ObjectiveRate { green_naghdi, jaumann };
+enum class ObjectiveRate { green_naghdi, green_naghdi_incremental, jaumann };
 
 struct Corotation {
   Mat3 R_old;  ///< R_n: un-rotates the old stress
@@ -46,6 +59,15 @@ Mat3 midpoint_rotation(const Mat3& R_old, const Mat3& R_new);
 
 /// The rotations of one Green-Naghdi step; R_new = polar_rotation(F_new, R_old), det F_new > 0.
 Corotation corotation(const Mat3& R_old, const Mat3& F_new);
+
+/// The Green-Naghdi spin vector omega (Omega = dR/dt R^T = [omega]x) for the velocity gradient L
+/// [1/s] and the left stretch V (symmetric positive definite) of F = V R.
+Vec3 green_naghdi_spin(const Mat3& L, const Mat3& V);
+
+/// The rotations of one Green-Naghdi step without a polar decomposition (header comment):
+/// F_old = F_n with rotation R_old = R_n, F_new = F_{n+1}, L the step's velocity gradient.
+Corotation incremental_corotation(const Mat3& R_old, const Mat3& F_old, const Mat3& F_new,
+                                  const Mat3& L, double dt);
 
 /// R^T a R: lab frame -> unrotated frame.
 inline Mat3 unrotate(const Mat3& a, const Mat3& R) {

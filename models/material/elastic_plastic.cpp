@@ -81,8 +81,10 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
   Mat3 stress_n;  // old stress in the working frame
   Mat3 D_hat;     // rate of deformation in the working frame
   Mat3 R_out;     // rotation back to the lab frame
-  if (p_.objective_rate == ObjectiveRate::green_naghdi) {
-    const Corotation c = corotation(s0.R, F1);
+  if (p_.objective_rate != ObjectiveRate::jaumann) {
+    const Corotation c = p_.objective_rate == ObjectiveRate::green_naghdi
+                             ? corotation(s0.R, F1)
+                             : incremental_corotation(s0.R, s0.F, F1, L, dt);
     stress_n = unrotate(s0.stress, c.R_old);
     D_hat = unrotate(D, c.R_mid);
     R_out = c.R_new;

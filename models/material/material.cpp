@@ -6,9 +6,13 @@ namespace {
 
 ObjectiveRate read_objective_rate(JsonReader& r) {
   const std::string name =
-      r.choice("objective_rate", {"green_naghdi", "jaumann"},
-               "stress rate: polar (Green-Naghdi) rotation or Jaumann spin", "green_naghdi");
-  return name == "jaumann" ? ObjectiveRate::jaumann : ObjectiveRate::green_naghdi;
+      r.choice("objective_rate", {"green_naghdi", "green_naghdi_incremental", "jaumann"},
+               "stress rate: polar (Green-Naghdi) rotation, the same rotation integrated from its "
+               "spin, or the Jaumann spin",
+               "green_naghdi");
+  return name == "jaumann"                    ? ObjectiveRate::jaumann
+         : name == "green_naghdi_incremental" ? ObjectiveRate::green_naghdi_incremental
+                                              : ObjectiveRate::green_naghdi;
 }
 
 EquationOfState read_equation_of_state(JsonReader& cm) {
@@ -152,7 +156,10 @@ Json to_json(const Material& material) {
   j["melt_temperature"] = p.melt_temperature;
   Json& cm = j["constitutive_model"];
   cm["type"] = "elastic_plastic";
-  cm["objective_rate"] = p.objective_rate == ObjectiveRate::jaumann ? "jaumann" : "green_naghdi";
+  cm["objective_rate"] = p.objective_rate == ObjectiveRate::jaumann ? "jaumann"
+                         : p.objective_rate == ObjectiveRate::green_naghdi_incremental
+                             ? "green_naghdi_incremental"
+                             : "green_naghdi";
   cm["return_algorithm"] =
       p.return_algorithm == ReturnAlgorithm::report_2004 ? "report_2004" : "newton";
   cm["return_tolerance"] = p.return_tolerance.relative_residual;

@@ -93,9 +93,9 @@ double time_per_call(int points, int repeats, Body&& body) {
 void run_parts(int points, int repeats) {
   // Where the time goes: the pieces of one plastic update, timed alone on the inputs of the
   // plastic scenario (a step of dt = 1e-8 s: rotation per step ~2e-5 rad).
-  std::vector<Mat3> F_old(points), F(points), R_old(points), R(points);
+  std::vector<Mat3> F_old(points), F(points), R_old(points), R(points), Ls(points);
   for (int i = 0; i < points; ++i) {
-    const Mat3 L = velocity_gradient(1e4, i);
+    const Mat3 L = Ls[i] = velocity_gradient(1e4, i);
     F_old[i] = Mat3::Identity() + L * 1e-6 * (1 + i % 7);
     F[i] = (Mat3::Identity() + L * 1e-8) * F_old[i];
     R_old[i] = polar_decomposition(F_old[i]).R;
@@ -110,6 +110,12 @@ void run_parts(int points, int repeats) {
        }));
   line("midpoint rotation (quaternion square root)", time_per_call(points, repeats, [&](int i) {
          sink += midpoint_rotation(R_old[i], R[i])(0, 1);
+       }));
+  line("corotation: polar rotation + midpoint", time_per_call(points, repeats, [&](int i) {
+         sink += corotation(R_old[i], F[i]).R_mid(0, 1);
+       }));
+  line("incremental corotation (spin, no polar)", time_per_call(points, repeats, [&](int i) {
+         sink += incremental_corotation(R_old[i], F_old[i], F[i], Ls[i], 1e-8).R_mid(0, 1);
        }));
   line("un-rotate stress and D, re-rotate stress", time_per_call(points, repeats, [&](int i) {
          sink += rotate(unrotate(F[i], R_old[i]) + unrotate(F_old[i], R[i]), R[i])(0, 1);
@@ -158,6 +164,11 @@ int main(int argc, char** argv) {
       // Compression keeps the points unfailed, so every step runs damage and both checks.
       {"plastic + damage + drucker_becker",
        R"({"constitutive_model": {"erosion": {"algorithm": "AllowNoTension"}}})", -1e4, 1e-8, 200},
+      // The second one with the rotation integrated from the spin instead of the polar factor.
+      {"plastic, incremental rotation",
+       R"({"constitutive_model": {"erosion": {"algorithm": "none"}, "damage": {"type": "none"},
+           "objective_rate": "green_naghdi_incremental"}})",
+       -1e4, 1e-8, 200},
   };
   std::printf("models_benchmark: %d points x %d steps, best of %d, one thread\n", points, steps,
               repeats);
