@@ -77,6 +77,8 @@ case "${1:-}" in
     install_missing_packages
     build release
     build/bin/machine_probe  # memory bandwidth and FMA peak per ISA (the roofline's limits)
+    # vector pow/log (libmvec) on the Johnson-Cook flow stress (x86-64 only)
+    if [ -x build/bin/simd_math_probe ]; then build/bin/simd_math_probe; fi
     build/bin/models_benchmark "${@:2}"
     build/bin/pointdriver_benchmark
     # Scaling, feature cost and box size of the explicit step (CSV + figures in
