@@ -160,11 +160,8 @@ Simulation::Simulation(const Scene& scene, int threads)
   if (st.viscosity) sinks_.viscous = ledger_.add_sink_column("viscous_work");
   // Contact's normal reaction does no work; friction's Coulomb work is heat (contact.hpp).
   // So is the Coulomb work of a wall face (grid/wall.cpp): one column for both.
-  const bool wall_friction =
-      std::any_of(scene_.grid.wall_friction.begin(), scene_.grid.wall_friction.end(),
-                  [](double mu) { return mu > 0.0; });
   if ((grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0) ||
-      wall_friction)
+      scene_.grid.has_wall_friction())
     sinks_.friction = ledger_.add_sink_column("friction_heat");
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
   if (grid_.fields() > 1) {  // contact bodies: a material's parent and companion fields

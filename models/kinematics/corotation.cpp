@@ -30,19 +30,6 @@ Corotation corotation(const Mat3& R_old, const Mat3& F_new) {
   return {R_old, R_new, midpoint_rotation(R_old, R_new)};
 }
 
-namespace {
-
-// Cayley rotation (I - [c]x)^{-1} (I + [c]x) = I + 2 ([c]x + [c]x^2) / (1 + |c|^2) for the
-// half-angle vector c = omega dt / 2: the Hughes-Winget increment of the spin [omega]x over dt,
-// in closed form.
-Mat3 cayley_rotation(const Vec3& c) {
-  Mat3 K;
-  K << 0.0, -c(2), c(1), c(2), 0.0, -c(0), -c(1), c(0), 0.0;
-  return Mat3::Identity() + (2.0 / (1.0 + c.squaredNorm())) * (K + K * K);
-}
-
-}  // namespace
-
 Vec3 green_naghdi_spin(const Mat3& L, const Mat3& V) {
   const Mat3 LV = L * V;
   const Vec3 z(LV(2, 1) - LV(1, 2), LV(0, 2) - LV(2, 0), LV(1, 0) - LV(0, 1));  // 2 axial(skew LV)

@@ -53,13 +53,6 @@ bool positive_definite(const Mat3& S) {
   return S(0, 0) > 0.0 && S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0) > 0.0 && S.determinant() > 0.0;
 }
 
-// Cayley rotation through 2 atan(|c|) about c: I + 2 ([c]x + [c]x^2) / (1 + |c|^2).
-Mat3 cayley(const Vec3& c) {
-  Mat3 K;
-  K << 0.0, -c(2), c(1), c(2), 0.0, -c(0), -c(1), c(0), 0.0;
-  return Mat3::Identity() + (2.0 / (1.0 + c.squaredNorm())) * (K + K * K);
-}
-
 }  // namespace
 
 Mat3 polar_rotation(const Mat3& F, const Mat3& guess, int* iterations) {
@@ -74,7 +67,7 @@ Mat3 polar_rotation(const Mat3& F, const Mat3& guess, int* iterations) {
     const double det = J.determinant();
     if (!(det > 0.0)) break;  // far from the polar factor: J is positive definite near it
     const Vec3 delta = 2.0 * (J.inverse() * w);
-    Q = Q * cayley(0.5 * delta);
+    Q = Q * cayley_rotation(0.5 * delta);
     if (delta.squaredNorm() <= quadratic_stop * quadratic_stop) {
       Q -= 0.5 * Q * (Q.transpose() * Q - Mat3::Identity());  // one Newton-Schulz step
       if (!positive_definite(sym(Q.transpose() * F))) break;
@@ -85,6 +78,12 @@ Mat3 polar_rotation(const Mat3& F, const Mat3& guess, int* iterations) {
   const PolarDecomposition pd = polar_decomposition(F);
   if (iterations) *iterations = max_iterations + pd.iterations;
   return pd.R;
+}
+
+Mat3 cayley_rotation(const Vec3& c) {
+  Mat3 K;
+  K << 0.0, -c(2), c(1), c(2), 0.0, -c(0), -c(1), c(0), 0.0;
+  return Mat3::Identity() + (2.0 / (1.0 + c.squaredNorm())) * (K + K * K);
 }
 
 Mat3 nearest_rotation(const Mat3& Q) {

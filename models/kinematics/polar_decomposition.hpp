@@ -47,6 +47,11 @@ PolarDecomposition polar_decomposition(const Mat3& F);
 /// factor. `iterations`, when given, receives the steps taken (fallback steps included).
 Mat3 polar_rotation(const Mat3& F, const Mat3& guess, int* iterations = nullptr);
 
+/// Cayley rotation (I - [c]x)^{-1} (I + [c]x) = I + 2 ([c]x + [c]x^2) / (1 + |c|^2): the rotation
+/// about c through 2 atan(|c|), exactly orthogonal (for a spin omega over dt, c = omega dt / 2:
+/// the Hughes-Winget increment).
+Mat3 cayley_rotation(const Vec3& c);
+
 /// The rotation nearest to a nearly orthogonal Q (singular values in (0, sqrt 3), e.g. the average
 /// (R_n + R_{n+1})/2 of two rotations, whose singular values are cos of half the step's rotation
 /// angle): Newton-Schulz iteration X <- X (3 I - X^T X) / 2 until ||X^T X - I||_F < 1e-15 (at most

@@ -22,9 +22,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
   velocity_new.assign(e, Vec3::Zero());
   increment.assign(e, Vec3::Zero());
   velocity_L.assign(e, Vec3::Zero());
-  const bool wall_friction = std::any_of(spec.wall_friction.begin(), spec.wall_friction.end(),
-                                         [](double mu) { return mu > 0.0; });
-  if (nodal_stress || wall_friction) heat.assign(e, 0.0);
+  if (nodal_stress || spec.has_wall_friction()) heat.assign(e, 0.0);
   const int n = node_count();
   std::vector<char> mark(n, 0);
   for (int face = 0; face < 6; ++face) {

@@ -33,6 +33,12 @@ struct GridSpec {
   std::array<int, 3> cells{};             ///< cells per axis
   std::array<FaceCondition, 6> faces{};   ///< per face, kFaceNames order
   std::array<double, 6> wall_friction{};  ///< Coulomb coefficient of each `wall` face [-]
+  /// A wall face with mu > 0: its Coulomb work is heat (grid heat array, ledger column).
+  bool has_wall_friction() const {
+    for (const double mu : wall_friction)
+      if (mu > 0.0) return true;
+    return false;
+  }
   /// Grid work only on the 2x2x2-node blocks the particles' stencils touch (grid/grid.hpp);
   /// false: every node of the box every step (the 2004 code's dense loops).
   bool active_blocks = true;
