@@ -11,7 +11,14 @@
 // T_room and T_melt come from the material (one source of truth), not from this block.
 #pragma once
 
+#include <limits>
+
 #include "models/core/input.hpp"
+#include "models/core/lane_math.hpp"
+
+// Vectors pass between always-inlined templates only (models/core/lane_math.hpp).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace impact {
 
@@ -29,13 +36,16 @@ struct JohnsonCookParams {
   JohnsonCookRateForm rate_form = JohnsonCookRateForm::clamped;
 };
 
-/// Flow stress with its partial derivatives, as the return mapping and the stability tangent need.
-struct FlowStress {
-  double value = 0.0;             ///< sigma_y [Pa]
-  double d_plastic_strain = 0.0;  ///< d sigma_y / d ep [Pa]; +inf at ep = 0 when n < 1
-  double d_rate = 0.0;            ///< d sigma_y / d rate [Pa s]
-  double d_temperature = 0.0;     ///< d sigma_y / d T [Pa/K]
+/// Flow stress with its partial derivatives, as the return mapping and the stability tangent need;
+/// for one point (FlowStress) or a vector of points (BasicFlowStress<lane::Vec>).
+template <class V>
+struct BasicFlowStress {
+  V value{};             ///< sigma_y [Pa]
+  V d_plastic_strain{};  ///< d sigma_y / d ep [Pa]; +inf at ep = 0 when n < 1
+  V d_rate{};            ///< d sigma_y / d rate [Pa s]
+  V d_temperature{};     ///< d sigma_y / d T [Pa/K]
 };
+using FlowStress = BasicFlowStress<double>;
 
 /// The temperature factor 1 - T*^m and its slope d/dT [1/K]. A return mapping at fixed
 /// temperature evaluates it once instead of once per Newton step (it holds a pow).
@@ -49,9 +59,59 @@ JohnsonCookThermal johnson_cook_thermal(const JohnsonCookParams& p, double tempe
 FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
                         double plastic_strain_rate, double temperature);
 
-/// The same with the temperature factor evaluated beforehand (johnson_cook_thermal).
-FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
-                        double plastic_strain_rate, const JohnsonCookThermal& thermal);
+/// The same with the temperature factor evaluated beforehand (johnson_cook_thermal). Inline and
+/// branch-free in the points' values, for one point (V = double) or a vector of them (V =
+/// lane::Vec, the batched return of models/plasticity/johnson_cook_return.hpp): one source for
+/// both. Branches only on the parameters, which every lane shares; the rate form is a template
+/// argument.
+template <JohnsonCookRateForm Form, class V>
+[[gnu::always_inline]] inline BasicFlowStress<V> johnson_cook_form(const JohnsonCookParams& p,
+                                                                   V plastic_strain,
+                                                                   V plastic_strain_rate,
+                                                                   V thermal_factor,
+                                                                   V thermal_d_factor) {
+  using lane::select;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  // Strain hardening A + B ep^n; its slope is unbounded at ep = 0 for n < 1.
+  const auto strained = plastic_strain > 0.0;
+  const V ep = select<V>(strained, plastic_strain, 1.0);  // 1: a harmless argument, not used
+  const V ep_n = lane::pow(ep, p.n);
+  const V hardening = select<V>(strained, p.A + p.B * ep_n, p.A);
+  const double slope_at_zero = p.B == 0.0 ? 0.0 : (p.n < 1.0 ? inf : (p.n == 1.0 ? p.B : 0.0));
+  const V d_hardening = select<V>(strained, p.B * p.n * ep_n / ep, slope_at_zero);
+
+  // Rate factor: 1 + C ln rate* at and above the reference rate, below it 1 (clamped) or
+  // (1 + rate*)^C (report_2004).
+  const V rate_star = plastic_strain_rate / p.reference_strain_rate;
+  const auto above = rate_star >= 1.0;
+  V rate_factor = select<V>(above, 1.0 + p.C * lane::log(select<V>(above, rate_star, 1.0)), 1.0);
+  V d_rate_factor = select<V>(above, p.C / plastic_strain_rate, 0.0);  // d factor / d rate
+  if constexpr (Form == JohnsonCookRateForm::report_2004) {
+    const auto below = (!above) & (rate_star > 0.0);
+    const V power = lane::pow(V(1.0 + select<V>(below, rate_star, 0.0)), p.C);
+    rate_factor = select<V>(below, power, rate_factor);
+    d_rate_factor =
+        select<V>(below, p.C * power / (1.0 + rate_star) / p.reference_strain_rate, d_rate_factor);
+  }
+
+  BasicFlowStress<V> f;
+  f.value = hardening * rate_factor * thermal_factor;
+  f.d_plastic_strain = select<V>((d_hardening == 0.0) | (rate_factor * thermal_factor == 0.0), 0.0,
+                                 d_hardening * rate_factor * thermal_factor);
+  f.d_rate = hardening * d_rate_factor * thermal_factor;
+  f.d_temperature = hardening * rate_factor * thermal_d_factor;
+  return f;
+}
+
+inline FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
+                               double plastic_strain_rate, const JohnsonCookThermal& thermal) {
+  constexpr auto report = JohnsonCookRateForm::report_2004;
+  constexpr auto clamped = JohnsonCookRateForm::clamped;
+  return p.rate_form == report ? johnson_cook_form<report>(p, plastic_strain, plastic_strain_rate,
+                                                           thermal.factor, thermal.d_factor)
+                               : johnson_cook_form<clamped>(p, plastic_strain, plastic_strain_rate,
+                                                            thermal.factor, thermal.d_factor);
+}
 
 /// An upper bound of the radial return's plastic-strain increment d (models/plasticity/
 /// radial_return.hpp) for a trial stress `overshoot` [Pa] above sigma_y(ep, 0, T): the smaller of
@@ -59,9 +119,61 @@ FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
 /// the flow stress by the overshoot. Both are bounds because every factor of the law is >= its
 /// static value: sigma_y(ep + d, d/dt) - sigma_y(ep, 0) >= B ((ep + d)^n - ep^n) theta and
 /// >= (A + B ep^n) (rate factor - 1) theta. +inf when neither applies (B = 0 and C = 0, or molten);
-/// 0 when the hardening bound is below the smallest double.
-double johnson_cook_increment_bound(const JohnsonCookParams& p, const JohnsonCookThermal& thermal,
-                                    double plastic_strain, double overshoot, double dt);
+/// 0 when the hardening bound is below the smallest double. For one point or a vector, like
+/// johnson_cook_form.
+template <JohnsonCookRateForm Form, class V>
+[[gnu::always_inline]] inline V johnson_cook_increment_bound_form(const JohnsonCookParams& p,
+                                                                  V thermal_factor,
+                                                                  V plastic_strain, V overshoot,
+                                                                  V dt) {
+  using lane::select;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const auto applies = (thermal_factor > 0.0) & (overshoot > 0.0);
+  const V theta = select<V>(applies, thermal_factor, 1.0);  // harmless where it does not apply
+  const V over = select<V>(applies, overshoot, 1.0);
+  const auto strained = plastic_strain > 0.0;
+  const V ep = select<V>(strained, plastic_strain, 1.0);
+  const V ep_n = lane::pow(ep, p.n);
+  V bound = lane::splat<V>(inf);
+  // Hardening: B ((ep + d)^n - ep^n) theta = overshoot, without cancellation for small d:
+  // ep > 0: ep expm1(log1p(z / ep^n) / n); ep = 0: exp(log(z) / n), 0 when it underflows. One
+  // log and one exponential serve both (a vector evaluates both sides of a select).
+  if (p.B > 0.0) {
+    const V z = over / (p.B * theta);
+    const V x = z / ep_n;
+    const V u = select<V>(strained, 1.0 + x, z);
+    const V log_u = lane::log(u) + select<V>(strained, (x - (u - 1.0)) / u, 0.0);  // log1p(x)
+    const lane::detail::ExpParts<V> e = lane::detail::exp_parts(V(log_u / p.n));
+    const V from_strained = ep * ((e.q * e.a) * e.b + (e.a * e.b - 1.0));  // ep expm1
+    const V from_zero = ((1.0 + e.q) * e.a) * e.b;                         // exp
+    bound = select<V>(strained, from_strained, from_zero);
+  }
+  // Rate: (A + B ep^n) theta (factor(d / dt) - 1) = overshoot. The clamped factor 1 + C ln rate*
+  // reaches 1 + y at rate* = e^(y / C); the 2004 form (1 + rate*)^C >= 1 + C rate* / (1 + rate*)
+  // below rate* = 1 reaches 1 + y by rate* = y / (C - y) when y < C / 2 (and the log branch
+  // above takes over otherwise).
+  if (p.C > 0.0) {
+    const V y = over / ((p.A + select<V>(strained, p.B * ep_n, 0.0)) * theta);
+    const auto finite = y < 700.0 * p.C;
+    V rate_star = select<V>(finite, lane::exp(V(select<V>(finite, y, 0.0) / p.C)), inf);
+    if constexpr (Form == JohnsonCookRateForm::report_2004)
+      rate_star = select<V>(2.0 * y < p.C, y / (p.C - y), rate_star);
+    const V rate_bound = rate_star * p.reference_strain_rate * dt;
+    bound = select<V>(rate_bound < bound, rate_bound, bound);
+  }
+  return select<V>(applies, bound, inf);
+}
+
+inline double johnson_cook_increment_bound(const JohnsonCookParams& p,
+                                           const JohnsonCookThermal& thermal, double plastic_strain,
+                                           double overshoot, double dt) {
+  constexpr auto report = JohnsonCookRateForm::report_2004;
+  constexpr auto clamped = JohnsonCookRateForm::clamped;
+  return p.rate_form == report ? johnson_cook_increment_bound_form<report>(
+                                     p, thermal.factor, plastic_strain, overshoot, dt)
+                               : johnson_cook_increment_bound_form<clamped>(
+                                     p, thermal.factor, plastic_strain, overshoot, dt);
+}
 
 /// The law at one temperature, as the radial return calls it: flow(ep, rate) and the increment's
 /// upper bound (models/plasticity/radial_return.hpp, BoundedFlow).
@@ -87,3 +199,5 @@ JohnsonCookParams read_johnson_cook(JsonReader& r, double room_temperature,
                                     double melt_temperature);
 
 }  // namespace impact
+
+#pragma GCC diagnostic pop

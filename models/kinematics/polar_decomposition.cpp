@@ -1,5 +1,7 @@
 #include "models/kinematics/polar_decomposition.hpp"
 
+#include "models/kinematics/polar_rotation_lanes.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -46,35 +48,24 @@ PolarDecomposition polar_decomposition(const Mat3& F) {
   return {X, sym(X.transpose() * F), k};
 }
 
-namespace {
-
-// Sylvester's criterion on a symmetric 3x3.
-bool positive_definite(const Mat3& S) {
-  return S(0, 0) > 0.0 && S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0) > 0.0 && S.determinant() > 0.0;
-}
-
-}  // namespace
-
 Mat3 polar_rotation(const Mat3& F, const Mat3& guess, int* iterations) {
-  constexpr int max_iterations = 8;
-  // As in polar_decomposition: once a correction is below 1e-8 rad, the error left is ~1e-16.
-  constexpr double quadratic_stop = 1e-8;
-  Mat3 Q = guess;
-  for (int k = 1; k <= max_iterations; ++k) {
-    const Mat3 S = Q.transpose() * F;
-    const Vec3 w(0.5 * (S(2, 1) - S(1, 2)), 0.5 * (S(0, 2) - S(2, 0)), 0.5 * (S(1, 0) - S(0, 1)));
-    const Mat3 J = S.trace() * Mat3::Identity() - sym(S);
-    const double det = J.determinant();
-    if (!(det > 0.0)) break;  // far from the polar factor: J is positive definite near it
-    const Vec3 delta = 2.0 * (J.inverse() * w);
-    Q = Q * cayley_rotation(0.5 * delta);
-    if (delta.squaredNorm() <= quadratic_stop * quadratic_stop) {
-      Q -= 0.5 * Q * (Q.transpose() * Q - Mat3::Identity());  // one Newton-Schulz step
-      if (!positive_definite(sym(Q.transpose() * F))) break;
-      if (iterations) *iterations = k;
-      return Q;
+  // The lanes' algorithm on one point (polar_rotation_lanes.hpp): the batched update's rotation
+  // gives the same bits.
+  LaneMat3<double> f, g;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      f.a[i][j] = F(i, j);
+      g.a[i][j] = guess(i, j);
     }
+  const PolarLanes<double> warm = polar_rotation_lanes(f, g);
+  if (warm.converged != 0) {
+    Mat3 R;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) R(i, j) = warm.R.a[i][j];
+    if (iterations) *iterations = static_cast<int>(warm.iterations);
+    return R;
   }
+  constexpr int max_iterations = 8;
   const PolarDecomposition pd = polar_decomposition(F);
   if (iterations) *iterations = max_iterations + pd.iterations;
   return pd.R;

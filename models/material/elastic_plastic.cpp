@@ -60,17 +60,18 @@ double ElasticPlastic::wave_speed(const PointState& s) const {
   return std::sqrt(modulus / rho);
 }
 
-StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
-                                  PointState& s1) const {
-  StepReport report;
+bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
+                                  PointState& s1, UpdateTrial& t, StepReport& report,
+                                  const Mat3* R_new) const {
+  report = StepReport{};
   const double J1 = F1.determinant();
   if (!(J1 > 0.0)) {
     report.status = UpdateStatus::negative_jacobian;
-    return report;
+    return false;
   }
   const double mu = p_.shear_modulus;
-  const double rho0_n = p_.density / s0.F.determinant();
-  const double rho1 = p_.density / J1;
+  t.rho0_n = p_.density / s0.F.determinant();
+  t.rho1 = p_.density / J1;
   s1 = s0;
   s1.F = F1;
   s1.melted = false;
@@ -79,15 +80,14 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
   //    Hughes-Winget rotation of the old stress (Jaumann).
   const Mat3 D = sym(L);
   Mat3 stress_n;  // old stress in the working frame
-  Mat3 D_hat;     // rate of deformation in the working frame
-  Mat3 R_out;     // rotation back to the lab frame
   if (p_.objective_rate != ObjectiveRate::jaumann) {
     const Corotation c = p_.objective_rate == ObjectiveRate::green_naghdi
-                             ? corotation(s0.R, F1)
+                             ? (R_new ? Corotation{s0.R, *R_new, midpoint_rotation(s0.R, *R_new)}
+                                      : corotation(s0.R, F1))
                              : incremental_corotation(s0.R, s0.F, F1, L, dt);
     stress_n = unrotate(s0.stress, c.R_old);
-    D_hat = unrotate(D, c.R_mid);
-    R_out = c.R_new;
+    t.D_hat = unrotate(D, c.R_mid);
+    t.R_out = c.R_new;
     s1.R = c.R_new;
   } else {
     // Midpoint form: the increment C:D dt is added in the mid-step orientation, between two
@@ -96,36 +96,65 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     // only first order (docs/theory.md).
     const Mat3 Qh = hughes_winget_rotation(skew(L), 0.5 * dt);
     stress_n = rotate(s0.stress, Qh);
-    D_hat = D;
-    R_out = Qh;
+    t.D_hat = D;
+    t.R_out = Qh;
   }
-  const double p_n = -mean(stress_n);
+  t.p_n = -mean(stress_n);
 
-  // 2. Deviatoric update (eq. 4) and radial return (eq. 5-6) at the start-of-step temperature.
-  const Mat3 s_trial = deviator(stress_n) + 2.0 * mu * deviator(D_hat) * dt;
-  const double T0 = s0.temperature;
-  Mat3 s_new;
-  double d_ep = 0.0;
-  FlowStress flow;
-  const bool molten = p_.melting.do_melting && is_melted(T0, p_.melt_temperature);
-  if (molten) {
-    s_new = Mat3::Zero();  // no deviatoric strength once molten; the EOS still acts
-    s1.melted = true;
-  } else {
-    const JohnsonCookAtTemperature flow_at{p_.flow_stress,
-                                           johnson_cook_thermal(p_.flow_stress, T0)};
-    const Mat3 eta = deviator(D_hat);
-    // The previous step's plastic rate is a close first guess under steady loading.
-    const ReturnResult r = radial_return(s_trial, mu, s0.plastic_strain, dt, flow_at,
-                                         p_.return_algorithm, std::sqrt(2.0 / 3.0 * ddot(eta, eta)),
-                                         p_.return_tolerance, s0.plastic_strain_rate * dt);
-    report.return_iterations = r.iterations;
-    if (!r.converged) report.status = UpdateStatus::return_mapping_not_converged;
-    s_new = r.deviator;
-    d_ep = r.delta_plastic_strain;
-    flow = r.flow;
-    report.plastic = r.plastic;
+  // 2. Deviatoric trial (eq. 4) at the start-of-step temperature; the radial return (eq. 5-6)
+  //    follows, for one point (update) or a batch (UpdateBatch).
+  t.s_trial = deviator(stress_n) + 2.0 * mu * deviator(t.D_hat) * dt;
+  t.molten = p_.melting.do_melting && is_melted(s0.temperature, p_.melt_temperature);
+  t.thermal = johnson_cook_thermal(p_.flow_stress, s0.temperature);
+  t.batched = !t.molten && p_.return_algorithm == ReturnAlgorithm::newton;
+  return true;
+}
+
+ReturnResult ElasticPlastic::unbatched_return(const PointState& s0, const UpdateTrial& t,
+                                              double dt) const {
+  ReturnResult r;
+  if (t.molten) {  // no deviatoric strength once molten; the EOS still acts
+    r.deviator = Mat3::Zero();
+    return r;
   }
+  if (t.batched) {
+    ReturnValues<double> point;
+    to_lane(s0, t, dt, point, 0);
+    johnson_cook_return_one(p_.flow_stress, p_.return_tolerance, point, t.thermal);
+    return finish_return(t.s_trial, point, 0);
+  }
+  const JohnsonCookAtTemperature flow_at{p_.flow_stress, t.thermal};
+  const Mat3 eta = deviator(t.D_hat);
+  return radial_return(t.s_trial, p_.shear_modulus, s0.plastic_strain, dt, flow_at,
+                       p_.return_algorithm, std::sqrt(2.0 / 3.0 * ddot(eta, eta)),
+                       p_.return_tolerance, s0.plastic_strain_rate * dt);
+}
+
+StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
+                                  PointState& s1) const {
+  StepReport report;
+  UpdateTrial t;
+  if (!begin_update(s0, L, F1, dt, s1, t, report)) return report;
+  finish_update(s0, t, unbatched_return(s0, t, dt), dt, s1, report);
+  return report;
+}
+
+void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
+                                   const ReturnResult& r, double dt, PointState& s1,
+                                   StepReport& report) const {
+  const double mu = p_.shear_modulus;
+  const double rho1 = t.rho1;
+  const double rho0_n = t.rho0_n;
+  const double p_n = t.p_n;
+  const Mat3& D_hat = t.D_hat;
+  const double T0 = s0.temperature;
+  s1.melted = t.molten;
+  report.return_iterations = r.iterations;
+  if (!r.converged) report.status = UpdateStatus::return_mapping_not_converged;
+  const Mat3& s_new = r.deviator;
+  const double d_ep = r.delta_plastic_strain;
+  const FlowStress& flow = r.flow;
+  report.plastic = r.plastic;
   s1.plastic_strain = s0.plastic_strain + d_ep;
   s1.plastic_strain_rate = d_ep / dt;
 
@@ -152,7 +181,7 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
     const double eta = 1.0 - p_.density / rho1;
     if (!(mg.S_alpha * eta < 1.0)) {
       report.status = UpdateStatus::eos_out_of_range;
-      return report;
+      return;
     }
     const MieGruneisenStep m =
         mie_gruneisen_update(mg, p_.density, rho0_n, rho1, p_n, s0.internal_energy, heat_per_mass,
@@ -225,7 +254,7 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
   }
 
   // 7. Back to the lab frame.
-  s1.stress = rotate(stress_new, R_out);
+  s1.stress = rotate(stress_new, t.R_out);
   if (!s1.stress.allFinite()) report.status = UpdateStatus::non_finite_stress;
   report.wave_speed = wave_speed(s1);
   if (!std::isfinite(report.wave_speed)) {
@@ -241,7 +270,6 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
       report.status = UpdateStatus::non_finite_wave_speed;
     }
   }
-  return report;
 }
 
 }  // namespace impact

@@ -17,6 +17,7 @@
 //  7. re-rotate with R_{n+1}.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -31,6 +32,7 @@
 #include "models/failure/tepla.hpp"
 #include "models/flow_stress/johnson_cook.hpp"
 #include "models/kinematics/corotation.hpp"
+#include "models/plasticity/johnson_cook_return.hpp"
 #include "models/plasticity/radial_return.hpp"
 #include "models/stability/stability_check.hpp"
 #include "models/thermal/adiabatic_heating.hpp"
@@ -88,6 +90,21 @@ struct StepReport {
   double eroded_energy = 0.0;
 };
 
+/// A step after its kinematics and before its radial return (begin_update), kept for the rest
+/// (finish_update): what the return needs and what the pressure, damage, failure and rotation back
+/// read.
+struct UpdateTrial {
+  Mat3 D_hat;                  ///< rate of deformation in the working frame [1/s]
+  Mat3 R_out;                  ///< rotation back to the lab frame
+  Mat3 s_trial;                ///< trial deviator [Pa]
+  double p_n = 0.0;            ///< start-of-step pressure [Pa]
+  double rho0_n = 0.0;         ///< start-of-step density [kg/m^3]
+  double rho1 = 0.0;           ///< end-of-step density [kg/m^3]
+  JohnsonCookThermal thermal;  ///< flow stress's temperature factor at the start-of-step T
+  bool molten = false;         ///< no return: the deviator is zero
+  bool batched = false;        ///< Newton's return, which a batch can do (johnson_cook_return)
+};
+
 std::string_view to_string(UpdateStatus);
 std::string_view to_string(FailureCause);
 
@@ -105,6 +122,29 @@ class ElasticPlastic {
   /// Advances s0 over dt with velocity gradient L to the deformation gradient F1; writes s1.
   StepReport update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
                     PointState& s1) const;
+
+  /// update() in three parts, so that a caller can do the radial returns of many points at once
+  /// (UpdateBatch): begin_update (false when det F1 <= 0, with report.status set), the return
+  /// (unbatched_return for one point, or johnson_cook_return on a batch's lanes filled by
+  /// to_lane), finish_update. update() is exactly these three with the one-point return.
+  /// `R_new`, when given, is the polar rotation of F1 already computed (a batch computes them
+  /// together, polar_rotation_batch); used with the green_naghdi rate only.
+  bool begin_update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt, PointState& s1,
+                    UpdateTrial& t, StepReport& report, const Mat3* R_new = nullptr) const;
+  ReturnResult unbatched_return(const PointState& s0, const UpdateTrial& t, double dt) const;
+  /// Fills point (V = double) or lane k (V = lane::Vec) of a return's inputs.
+  template <class V>
+  void to_lane(const PointState& s0, const UpdateTrial& t, double dt, ReturnValues<V>& r,
+               int k) const {
+    lane::set(r.q_trial, k, std::sqrt(1.5 * ddot(t.s_trial, t.s_trial)));
+    lane::set(r.three_mu, k, 3.0 * p_.shear_modulus);
+    lane::set(r.plastic_strain, k, s0.plastic_strain);
+    lane::set(r.dt, k, dt);
+    // The previous step's plastic rate is a close first guess under steady loading.
+    lane::set(r.guess, k, s0.plastic_strain_rate * dt);
+  }
+  void finish_update(const PointState& s0, const UpdateTrial& t, const ReturnResult& r, double dt,
+                     PointState& s1, StepReport& report) const;
 
   /// Longitudinal wave speed sqrt((K_s + 4 mu/3) / rho) of a state (for the time step); NaN when
   /// K_s + 4 mu/3 <= 0.

@@ -33,9 +33,16 @@
 #include <algorithm>
 #include <cmath>
 #include <concepts>
+#include <cstdint>
+#include <limits>
 
+#include "models/core/lane_math.hpp"
 #include "models/core/tensor.hpp"
 #include "models/flow_stress/johnson_cook.hpp"
+
+// Vectors pass between always-inlined templates only (models/core/lane_math.hpp).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace impact {
 
@@ -65,11 +72,129 @@ concept BoundedFlow = requires(const Flow& f) {
   { f.increment_bound(0.0, 0.0, 0.0) } -> std::convertible_to<double>;
 };
 
+/// The inputs and outputs of the return for one point (V = double) or a vector of points (V =
+/// lane::Vec, one per lane): fill the inputs, call return_values, read the outputs. A lane with
+/// q_trial = 0 is elastic and costs nothing but its share of the vector instructions. Flags are
+/// nonzero where set.
+template <class V>
+struct ReturnValues {
+  using Int = lane::IntOf<V>;
+  // Inputs.
+  V q_trial{};         ///< sqrt(3/2 s_tr:s_tr) [Pa]
+  V three_mu{};        ///< 3 mu [Pa]
+  V plastic_strain{};  ///< ep_n [-]
+  V dt{};              ///< [s]
+  V guess{};           ///< first estimate of d (0: none)
+  // Outputs.
+  V increment{};            ///< d [-]
+  BasicFlowStress<V> flow;  ///< as ReturnResult::flow
+  Int iterations{};
+  Int plastic{};
+  Int converged{};
+  Int bracket_closed{};
+};
+
+/// The radial return of the header comment, one algorithm for one point or a vector of them:
+/// each lane iterates until its own test is met, lanes that are done keep their values while the
+/// others go on, and a lane's arithmetic is the same whatever the others do (selects, no branch
+/// on a lane's value), so a point gets the same bits alone or in a vector.
+/// `flow(ep, rate)` returns the lanes' BasicFlowStress<V>; `bound(ep, overshoot, dt)` an upper
+/// bound of their increments (+inf when none is known).
+template <class V, class Flow, class Bound>
+[[gnu::always_inline]] inline void return_values(ReturnValues<V>& b, const Flow& flow,
+                                                 const Bound& bound, const ReturnTolerance& tol) {
+  using lane::select;
+  using Int = lane::IntOf<V>;
+  const V q = b.q_trial;
+  const BasicFlowStress<V> f0 = flow(b.plastic_strain, lane::splat<V>(0.0));
+  const auto plastic = q > f0.value;
+  b.plastic = lane::flag<V>(plastic);
+  b.converged = Int{} + 1;  // set: elastic lanes are done
+  b.bracket_closed = Int{};
+  b.iterations = Int{};
+  b.increment = lane::splat<V>(0.0);
+  b.flow = f0;
+  if (!lane::any(plastic)) return;  // all elastic: the common case, without the bound's cost
+
+  const V overshoot = q - f0.value;
+  const V elastic_bound = overshoot / b.three_mu;
+  const V flow_bound = bound(b.plastic_strain, select<V>(plastic, overshoot, 0.0), b.dt);
+  const V h = select<V>(flow_bound < elastic_bound, flow_bound, elastic_bound);
+  // h <= 0: the root lies below the smallest double, d = 0 to double precision, and the trial
+  // stress is on the yield surface of ep_n + d.
+  const auto below_smallest = plastic & !(h > 0.0);
+  auto active = plastic & !below_smallest;
+  const V g0 = b.guess;
+  V d = select<V>(active, select<V>((g0 > 0.0) & (g0 < h), g0, h), 0.0);
+  auto from_guess = d < h;     // the iteration started at a guess: hi not evaluated yet
+  V lo = lane::splat<V>(0.0);  // g(lo) > 0
+  V hi = h;                    // g(hi) <= 0
+  b.converged = lane::flag<V>(!active);
+  b.iterations = lane::flag<V>(below_smallest) & 1;
+  b.flow.value = select<V>(below_smallest, q, b.flow.value);
+
+  for (int it = 1; it <= tol.max_iterations && lane::any(active); ++it) {
+    const BasicFlowStress<V> f = flow(V(b.plastic_strain + d), V(d / b.dt));
+    const V g = q - b.three_mu * d - f.value;
+    const auto root = lane::abs(g) <= tol.relative_residual * q;
+    const auto up = g > 0.0;
+    const V lo1 = select<V>(up, d, lo);
+    const V hi1 = select<V>(up, hi, d);
+    const auto guess1 = up & from_guess;
+    // The bracket closed without a root: a jump of sigma_y; the point sits on the set-valued
+    // surface, q_{n+1} = q_tr - 3 mu d.
+    const auto closed = (!root) & (hi1 - lo1 <= 1e-15 * hi1);
+    // Newton in u = ln d: du = -g / (d dg/dd), dg/dd = -(3 mu + dsigma/dep + dsigma/drate / dt).
+    const V slope = b.three_mu + f.d_plastic_strain + f.d_rate / b.dt;
+    V next = d * lane::exp(V(g / (slope * d)));
+    // Outside the bracket (also NaN): the upper bound if a guess below the root started the
+    // iteration (from there Newton is monotone), else a geometric bisection.
+    const auto outside = !((next > lo1) & (next < hi1));
+    const V bisection = select<V>(lo1 > 0.0, lane::sqrt(V(lo1 * hi1)), 0.5 * hi1);
+    next = select<V>(outside, select<V>(guess1, hi1, bisection), next);
+    const auto done = root | closed;
+    b.iterations = select(active, Int{} + it, b.iterations);
+    b.flow.value = select<V>(active, select<V>(closed, q - b.three_mu * d, f.value), b.flow.value);
+    b.flow.d_plastic_strain = select<V>(active, f.d_plastic_strain, b.flow.d_plastic_strain);
+    b.flow.d_rate = select<V>(active, f.d_rate, b.flow.d_rate);
+    b.flow.d_temperature = select<V>(active, f.d_temperature, b.flow.d_temperature);
+    b.converged |= lane::flag<V>(active & done);
+    b.bracket_closed |= lane::flag<V>(active & closed);
+    const auto go_on = active & !done;
+    lo = select<V>(go_on, lo1, lo);
+    hi = select<V>(go_on, hi1, hi);
+    from_guess = go_on ? (guess1 & !outside) : from_guess;
+    d = select<V>(go_on, next, d);
+    active = go_on;
+  }
+  b.increment = select<V>(plastic, d, 0.0);
+}
+
+/// A point's outcome (lane k of a vector) as a ReturnResult, with s_{n+1} = s_tr (1 - 3 mu d /
+/// q_tr).
+template <class V>
+ReturnResult finish_return(const Mat3& s_trial, const ReturnValues<V>& b, int k) {
+  using lane::get;
+  ReturnResult out;
+  out.plastic = get(b.plastic, k) != 0;
+  out.converged = get(b.converged, k) != 0;
+  out.bracket_closed = get(b.bracket_closed, k) != 0;
+  out.iterations = static_cast<int>(get(b.iterations, k));
+  out.delta_plastic_strain = get(b.increment, k);
+  out.flow = FlowStress{get(b.flow.value, k), get(b.flow.d_plastic_strain, k),
+                        get(b.flow.d_rate, k), get(b.flow.d_temperature, k)};
+  const bool scaled = out.plastic && out.delta_plastic_strain > 0.0;
+  out.deviator = scaled ? Mat3(s_trial * (1.0 - get(b.three_mu, k) * out.delta_plastic_strain /
+                                                    get(b.q_trial, k)))
+                        : s_trial;
+  return out;
+}
+
 /// `flow(ep, rate)` returns the FlowStress at the step's temperature (a BoundedFlow also bounds the
 /// increment). `deviatoric_rate_norm` is sqrt(2/3 eta:eta), used only by
 /// ReturnAlgorithm::report_2004. `guess` is a first estimate of the increment d (e.g. the previous
 /// step's plastic rate times dt), used when it lies inside the bracket; it changes the iteration
-/// count, not the root.
+/// count, not the root. Newton's return is return_values on one point.
 template <class Flow>
 ReturnResult radial_return(const Mat3& s_trial, double shear_modulus, double plastic_strain,
                            double dt, const Flow& flow, ReturnAlgorithm algorithm,
@@ -77,15 +202,14 @@ ReturnResult radial_return(const Mat3& s_trial, double shear_modulus, double pla
                            double guess = 0.0) {
   ReturnResult out;
   const double q_trial = std::sqrt(1.5 * ddot(s_trial, s_trial));
-  const FlowStress static_flow = flow(plastic_strain, 0.0);
-  if (q_trial <= static_flow.value) {
-    out.deviator = s_trial;
-    out.flow = static_flow;
-    return out;
-  }
-  out.plastic = true;
-
   if (algorithm == ReturnAlgorithm::report_2004) {
+    const FlowStress static_flow = flow(plastic_strain, 0.0);
+    if (q_trial <= static_flow.value) {
+      out.deviator = s_trial;
+      out.flow = static_flow;
+      return out;
+    }
+    out.plastic = true;
     const double d = deviatoric_rate_norm * dt;
     out.flow = flow(plastic_strain + d, deviatoric_rate_norm);
     out.delta_plastic_strain = d;
@@ -93,61 +217,22 @@ ReturnResult radial_return(const Mat3& s_trial, double shear_modulus, double pla
     out.iterations = 1;
     return out;
   }
-
-  const double three_mu = 3.0 * shear_modulus;
-  const double overshoot = q_trial - static_flow.value;
-  double lo = 0.0;                   // g(lo) > 0
-  double hi = overshoot / three_mu;  // g(hi) <= 0: the elastic bound
-  if constexpr (BoundedFlow<Flow>)
-    hi = std::min(hi, flow.increment_bound(plastic_strain, overshoot, dt));
-  if (!(hi > 0.0)) {
-    // The root lies below the smallest double: d = 0 to double precision, and the trial stress is
-    // on the yield surface of ep_n + d.
-    out.deviator = s_trial;
-    out.flow = static_flow;
-    out.flow.value = q_trial;
-    out.iterations = 1;
-    return out;
-  }
-  double d = (guess > 0.0 && guess < hi) ? guess : hi;
-  bool from_guess = d < hi;  // the iteration started at a guess: hi not evaluated yet
-  FlowStress f;
-  out.converged = false;
-  for (int it = 1; it <= tol.max_iterations; ++it) {
-    f = flow(plastic_strain + d, d / dt);
-    const double g = q_trial - three_mu * d - f.value;
-    out.iterations = it;
-    if (std::abs(g) <= tol.relative_residual * q_trial) {
-      out.converged = true;
-      break;
-    }
-    if (g > 0.0) {
-      lo = d;
-    } else {
-      hi = d;
-      from_guess = false;
-    }
-    if (hi - lo <= 1e-15 * hi) {  // the bracket closed without a root: a jump of sigma_y
-      out.converged = true;
-      out.bracket_closed = true;
-      f.value = q_trial - three_mu * d;
-      break;
-    }
-    // Newton in u = ln d: du = -g / (d dg/dd), dg/dd = -(3 mu + dsigma/dep + dsigma/drate / dt).
-    const double slope = three_mu + f.d_plastic_strain + f.d_rate / dt;
-    double next = d * std::exp(g / (slope * d));
-    // Outside the bracket (also NaN): the upper bound if a guess below the root started the
-    // iteration (from there Newton is monotone), else a geometric bisection.
-    if (!(next > lo && next < hi)) {
-      next = from_guess ? hi : (lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * hi);
-      from_guess = false;
-    }
-    d = next;
-  }
-  out.delta_plastic_strain = d;
-  out.flow = f;
-  out.deviator = s_trial * (1.0 - three_mu * d / q_trial);
-  return out;
+  ReturnValues<double> b;
+  b.q_trial = q_trial;
+  b.three_mu = 3.0 * shear_modulus;
+  b.plastic_strain = plastic_strain;
+  b.dt = dt;
+  b.guess = guess;
+  const auto bound = [&](double ep, double overshoot, double step) {
+    if constexpr (BoundedFlow<Flow>)
+      return flow.increment_bound(ep, overshoot, step);
+    else
+      return std::numeric_limits<double>::infinity();
+  };
+  return_values(b, flow, bound, tol);
+  return finish_return(s_trial, b, 0);
 }
 
 }  // namespace impact
+
+#pragma GCC diagnostic pop

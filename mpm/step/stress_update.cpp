@@ -1,5 +1,6 @@
 // Constitutive update of every particle by the library (models/material/elastic_plastic.hpp):
-// F_{n+1} = (I + L dt) F_n (or exp(L dt) F_n), sigma_{n+1} from ElasticPlastic::update (objective,
+// F_{n+1} = (I + L dt) F_n (or exp(L dt) F_n), sigma_{n+1} as ElasticPlastic::update gives it,
+// in blocks whose radial returns share the vector lanes (UpdateBatch) (objective,
 // Green-Naghdi or Jaumann as the material says), V_{n+1} = V_0 det F_{n+1}. The strain-energy
 // increment is report eq. 14 with the mid-step stress: 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt.
 // Artificial bulk viscosity (report eq. 12) is computed here from the same D, stored per particle
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "models/kinematics/deformation_gradient.hpp"
+#include "models/material/update_batch.hpp"
 #include "models/thermal/adiabatic_heating.hpp"
 #include "mpm/step/parallel.hpp"
 
@@ -47,14 +49,11 @@ std::string describe_fault(const Mat3& L, const Mat3& F1, const StepReport& r, b
   return m.str();
 }
 
-// Runs the particle's constitutive update; false when it cannot be used: a non-finite F_{n+1}
-// (not passed to the model), the model's own status (negative Jacobian, radial return not
-// converged, non-finite stress, EOS out of range), or a non-finite stress it did not flag.
-// `inject_nan`: the stress it returned is replaced by NaN first (mpm run --inject-fault nan).
-bool checked_update(const ElasticPlastic& model, const PointState& s0, const Mat3& L,
-                    const Mat3& F1, double dt, PointState& s1, StepReport& r, bool inject_nan) {
-  if (!F1.allFinite()) return false;
-  r = model.update(s0, L, F1, dt, s1);
+// Completes a batched update's checks; false when it cannot be used: the model's own status
+// (negative Jacobian, radial return not converged, non-finite stress, EOS out of range), or a
+// non-finite stress or wave speed it did not flag. `inject_nan`: the stress it returned is
+// replaced by NaN first (mpm run --inject-fault nan).
+bool checked(PointState& s1, StepReport& r, bool inject_nan) {
   if (inject_nan) s1.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
   if (r.status == UpdateStatus::ok && !s1.stress.allFinite())
     r.status = UpdateStatus::non_finite_stress;
@@ -74,88 +73,118 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   const bool convert = !settings.companion_field.empty();
   const bool fail_particle = settings.fail_particle && P.fault.size() == P.size();
   const bool outflow = P.removed.size() == P.size() && !P.removed.empty();
+  // Particles go through the model in blocks of one batch: their radial returns run together on
+  // the vector lanes (models/material/update_batch.hpp), with the same bits as one at a time.
+  constexpr std::ptrdiff_t kBlock = UpdateBatch::capacity;
+  const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
   StressTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
   {
     StressTotals sum;
     std::optional<Failure> fail;
+    UpdateBatch batch;
+    PointState next[kBlock];
+    Mat3 F1s[kBlock];
+    int lane_of[kBlock];
+    // A particle whose update cannot be used keeps its start-of-step state (the last good values).
+    const auto fault = [&](std::ptrdiff_t p, std::string why) {
+      Failure f{std::size_t(p), "stress", std::move(why), std::nullopt};
+      if (!fail_particle) {
+        if (!fail) fail = std::move(f);
+        return;
+      }
+      f.state = P.state[p];
+      P.fault[p] = 1;
+      P.state[p].stress.setZero();
+      P.state[p].failed = true;
+      if (av != nullptr) P.q[p] = 0.0;
+      sum.faulted.push_back(std::move(f));
+      sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
+    };
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t p = 0; p < n; ++p) {
-      if (outflow && P.removed[p]) {  // left the grid: out of the simulation, nothing to carry
-        P.v[p].setZero();
-        P.mass[p] = 0.0;
-        P.volume[p] = 0.0;
-        P.state[p].stress.setZero();
-        P.wave_speed[p] = 0.0;
-        if (!P.q.empty()) P.q[p] = 0.0;
-        continue;
-      }
-      if (fail_particle && P.fault[p] != 0) {  // flagged earlier: zero stress, no update
-        sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
-        continue;
-      }
-      const PointState& s0 = P.state[p];
-      const Mat3& L = P.L[p];
-      const Mat3 F1 = advance_deformation_gradient(s0.F, L, dt, settings.f_integration);
-      const ElasticPlastic& model = *settings.models[P.material[p]];
-      PointState s1;
-      StepReport r;
-      const bool inject = p == settings.inject_nan_stress;
-      if (!checked_update(model, s0, L, F1, dt, s1, r, inject)) {
-        // The particle keeps its start-of-step state (the last good values).
-        Failure f{std::size_t(p), "stress", describe_fault(L, F1, r, inject), std::nullopt};
-        if (!fail_particle) {
-          if (!fail) fail = std::move(f);
+    for (std::ptrdiff_t block = 0; block < blocks; ++block) {
+      const std::ptrdiff_t p0 = block * kBlock, p1 = std::min(n, p0 + kBlock);
+      batch.clear();
+      for (std::ptrdiff_t p = p0; p < p1; ++p) {
+        const std::ptrdiff_t i = p - p0;
+        lane_of[i] = -1;
+        if (outflow && P.removed[p]) {  // left the grid: out of the simulation, nothing to carry
+          P.v[p].setZero();
+          P.mass[p] = 0.0;
+          P.volume[p] = 0.0;
+          P.state[p].stress.setZero();
+          P.wave_speed[p] = 0.0;
+          if (!P.q.empty()) P.q[p] = 0.0;
           continue;
         }
-        f.state = P.state[p];
-        P.fault[p] = 1;
-        P.state[p].stress.setZero();
-        P.state[p].failed = true;
-        if (av != nullptr) P.q[p] = 0.0;
-        sum.faulted.push_back(std::move(f));
-        sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
-        continue;
-      }
-      const double V1 = P.volume0[p] * F1.determinant();
-      sum.strain_energy_increment += 0.5 * ddot(s0.stress + s1.stress, sym(L)) * V1 * dt;
-      sum.eroded_energy += r.eroded_energy * V1;
-      double signal = r.wave_speed;
-      if (av != nullptr) {
-        const double trD = L.trace();
-        const double rho = P.mass[p] / V1;
-        const double K = model.params().bulk_modulus;
-        const double q1 = bulk_viscosity(*av, rho, K, trD, l);
-        // The viscous dissipation of this step's compression: q(D) (-tr D) V dt >= 0, q > 0 only
-        // where tr D < 0 (the force applies q one step later; the lag is part of the residual).
-        const double work = q1 * (-trD) * V1 * dt;
-        sum.viscous_work += work;
-        P.q[p] = q1;
-        // The shock's entropy: heat retained by the point when heating is on (e and T, which
-        // the Mie-Gruneisen pressure and the flow stress read; models/thermal/
-        // adiabatic_heating.hpp). The 2004 code dropped it (docs/report_code.md sec. 13).
-        retain_heat(s1, work / P.mass[p], model.params().heating.enabled,
-                    model.params().specific_heat);
-        if (trD < 0.0) {
-          const double Q = av->linear * std::sqrt(K / rho) + av->quadratic * l * std::abs(trD);
-          signal = Q + std::sqrt(Q * Q + r.wave_speed * r.wave_speed);
+        if (fail_particle && P.fault[p] != 0) {  // flagged earlier: zero stress, no update
+          sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
+          continue;
         }
-      }
-      if (r.failure != FailureCause::none) {
-        ++sum.failed;
-        if (convert && P.field[p] != settings.companion_field[P.material[p]]) {
-          // Same mass, velocity, stress and history: only the velocity field changes, at the
-          // time level the failure happened (the 2004 code re-inserted the particle with its
-          // time-n position and velocity, a one-step lag: docs/report_code.md sec. 12).
-          P.field[p] = settings.companion_field[P.material[p]];
-          ++sum.converted;
+        F1s[i] = advance_deformation_gradient(P.state[p].F, P.L[p], dt, settings.f_integration);
+        if (!F1s[i].allFinite()) {  // not passed to the model
+          fault(p, describe_fault(P.L[p], F1s[i], StepReport{}, false));
+          continue;
         }
+        lane_of[i] =
+            batch.add(*settings.models[P.material[p]], P.state[p], P.L[p], F1s[i], dt, next[i]);
       }
-      P.state[p] = s1;
-      P.volume[p] = V1;
-      P.wave_speed[p] = signal;
-      sum.max_signal_speed = std::max(sum.max_signal_speed, signal + P.v[p].norm());
+      batch.run(dt);
+      for (std::ptrdiff_t p = p0; p < p1; ++p) {
+        const std::ptrdiff_t i = p - p0;
+        if (lane_of[i] < 0) continue;
+        const PointState& s0 = P.state[p];
+        const Mat3& L = P.L[p];
+        const Mat3& F1 = F1s[i];
+        PointState& s1 = next[i];
+        StepReport r = batch.finish(lane_of[i], dt, s1);
+        const bool inject = p == settings.inject_nan_stress;
+        if (!checked(s1, r, inject)) {
+          fault(p, describe_fault(L, F1, r, inject));
+          continue;
+        }
+        const ElasticPlastic& model = *settings.models[P.material[p]];
+        const double V1 = P.volume0[p] * F1.determinant();
+        sum.strain_energy_increment += 0.5 * ddot(s0.stress + s1.stress, sym(L)) * V1 * dt;
+        sum.eroded_energy += r.eroded_energy * V1;
+        double signal = r.wave_speed;
+        if (av != nullptr) {
+          const double trD = L.trace();
+          const double rho = P.mass[p] / V1;
+          const double K = model.params().bulk_modulus;
+          const double q1 = bulk_viscosity(*av, rho, K, trD, l);
+          // The viscous dissipation of this step's compression: q(D) (-tr D) V dt >= 0, q > 0
+          // only where tr D < 0 (the force applies q one step later; the lag is part of the
+          // residual).
+          const double work = q1 * (-trD) * V1 * dt;
+          sum.viscous_work += work;
+          P.q[p] = q1;
+          // The shock's entropy: heat retained by the point when heating is on (e and T, which
+          // the Mie-Gruneisen pressure and the flow stress read; models/thermal/
+          // adiabatic_heating.hpp). The 2004 code dropped it (docs/report_code.md sec. 13).
+          retain_heat(s1, work / P.mass[p], model.params().heating.enabled,
+                      model.params().specific_heat);
+          if (trD < 0.0) {
+            const double Q = av->linear * std::sqrt(K / rho) + av->quadratic * l * std::abs(trD);
+            signal = Q + std::sqrt(Q * Q + r.wave_speed * r.wave_speed);
+          }
+        }
+        if (r.failure != FailureCause::none) {
+          ++sum.failed;
+          if (convert && P.field[p] != settings.companion_field[P.material[p]]) {
+            // Same mass, velocity, stress and history: only the velocity field changes, at the
+            // time level the failure happened (the 2004 code re-inserted the particle with its
+            // time-n position and velocity, a one-step lag: docs/report_code.md sec. 12).
+            P.field[p] = settings.companion_field[P.material[p]];
+            ++sum.converted;
+          }
+        }
+        P.state[p] = s1;
+        P.volume[p] = V1;
+        P.wave_speed[p] = signal;
+        sum.max_signal_speed = std::max(sum.max_signal_speed, signal + P.v[p].norm());
+      }
     }
     partial[omp_get_thread_num()] = sum;
     failures[omp_get_thread_num()] = fail;

@@ -15,6 +15,7 @@
 #include "models/kinematics/corotation.hpp"
 #include "models/kinematics/polar_decomposition.hpp"
 #include "models/material/material.hpp"
+#include "models/material/update_batch.hpp"
 
 using namespace impact;
 using Clock = std::chrono::steady_clock;
@@ -27,6 +28,7 @@ struct Scenario {
   double axial_rate;      // [1/s]
   double dt;              // [s]
   int warmup_steps;       // steps before timing (to reach the plastic range)
+  bool batched = false;   // through UpdateBatch (the MPM's path) instead of update()
 };
 
 double seconds_since(Clock::time_point t0) {
@@ -51,13 +53,29 @@ void run(const Scenario& sc, const std::string& material_file, int points, int s
   for (int i = 0; i < points; ++i) L[i] = velocity_gradient(sc.axial_rate, i);
 
   long plastic = 0, failed = 0, iterations = 0;
+  UpdateBatch batch;
+  const auto tally = [&](bool count, const StepReport& r) {
+    if (count) {
+      plastic += r.plastic;
+      iterations += r.return_iterations;
+    }
+  };
   const auto advance = [&](bool count) {
-    for (int i = 0; i < points; ++i) {
-      const Mat3 F1 = (Mat3::Identity() + L[i] * sc.dt) * state[i].F;
-      const StepReport r = m.model.update(state[i], L[i], F1, sc.dt, next[i]);
-      if (count) {
-        plastic += r.plastic;
-        iterations += r.return_iterations;
+    if (!sc.batched) {
+      for (int i = 0; i < points; ++i) {
+        const Mat3 F1 = (Mat3::Identity() + L[i] * sc.dt) * state[i].F;
+        tally(count, m.model.update(state[i], L[i], F1, sc.dt, next[i]));
+      }
+    } else {
+      for (int i0 = 0; i0 < points; i0 += UpdateBatch::capacity) {
+        const int i1 = std::min(points, i0 + UpdateBatch::capacity);
+        batch.clear();
+        for (int i = i0; i < i1; ++i) {
+          const Mat3 F1 = (Mat3::Identity() + L[i] * sc.dt) * state[i].F;
+          batch.add(m.model, state[i], L[i], F1, sc.dt, next[i]);
+        }
+        batch.run(sc.dt);
+        for (int i = i0; i < i1; ++i) tally(count, batch.finish(i - i0, sc.dt, next[i]));
       }
     }
     std::swap(state, next);
@@ -136,6 +154,25 @@ void run_parts(int points, int repeats) {
          sink += radial_return(s, p.shear_modulus, 0.05, 1e-8, flow, ReturnAlgorithm::newton)
                      .delta_plastic_strain;
        }));
+  // The same returns eight at a time (johnson_cook_return, the batch's kernel), per point.
+  std::vector<JohnsonCookReturnBatch> batches((points + kReturnLanes - 1) / kReturnLanes);
+  const JohnsonCookThermal th = johnson_cook_thermal(p.flow_stress, 400.0);
+  for (int i = 0; i < int(batches.size()) * kReturnLanes; ++i) {
+    auto& b = batches[i / kReturnLanes];
+    const int k = i % kReturnLanes;
+    lane::set(b.lanes.q_trial, k, 3.6e8 + 1e3 * i);
+    lane::set(b.lanes.three_mu, k, 3.0 * p.shear_modulus);
+    lane::set(b.lanes.plastic_strain, k, 0.05);
+    lane::set(b.lanes.dt, k, 1e-8);
+    lane::set(b.lanes.guess, k, 0.0);
+    lane::set(b.thermal_factor, k, th.factor);
+    lane::set(b.thermal_d_factor, k, th.d_factor);
+  }
+  const double per_batch = time_per_call(int(batches.size()), repeats, [&](int i) {
+    johnson_cook_return(p.flow_stress, p.return_tolerance, batches[i]);
+    sink += lane::get(batches[i].lanes.increment, 0);
+  });
+  line("radial return, 8 lanes at once (per point)", per_batch / kReturnLanes);
   if (sink == 42.0) std::puts("");  // keep the loops alive
 }
 
@@ -164,6 +201,12 @@ int main(int argc, char** argv) {
       // Compression keeps the points unfailed, so every step runs damage and both checks.
       {"plastic + damage + drucker_becker",
        R"({"constitutive_model": {"erosion": {"algorithm": "AllowNoTension"}}})", -1e4, 1e-8, 200},
+      // The first two through UpdateBatch: the radial returns of 8 points at once (the MPM's path).
+      {"elastic, batched", R"({"constitutive_model": {"erosion": {"algorithm": "none"}}})", 1.0,
+       1e-8, 0, true},
+      {"plastic, batched",
+       R"({"constitutive_model": {"erosion": {"algorithm": "none"}, "damage": {"type": "none"}}})",
+       -1e4, 1e-8, 200, true},
       // The second one with the rotation integrated from the spin instead of the polar factor.
       {"plastic, incremental rotation",
        R"({"constitutive_model": {"erosion": {"algorithm": "none"}, "damage": {"type": "none"},

@@ -1,0 +1,132 @@
+// UpdateBatch (models/material/update_batch.hpp) against ElasticPlastic::update, the one-point
+// path the point driver takes: the same bits for every point, whatever its neighbours in the
+// batch. Points on random loading histories (elastic, plastic, at a jump of the 2004 rate form,
+// hot enough to melt), batches that are not full, and batches mixing two materials. Without the
+// lanes' independence (a lane's result depending on another's iteration count, a mask leaking a
+// neighbour's value) or with a different law in the vector path, the states differ.
+#include "models/material/update_batch.hpp"
+
+#include <boost/test/unit_test.hpp>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "models/material/material.hpp"
+
+using namespace impact;
+
+namespace {
+
+const std::string kMaterialFile = std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json";
+
+bool same_bits(const PointState& a, const PointState& b) {
+  const auto bits = [](const Mat3& m, const Mat3& n) {
+    return std::memcmp(m.data(), n.data(), sizeof(double) * 9) == 0;
+  };
+  const auto eq = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  return bits(a.stress, b.stress) && bits(a.F, b.F) && bits(a.R, b.R) &&
+         eq(a.plastic_strain, b.plastic_strain) &&
+         eq(a.plastic_strain_rate, b.plastic_strain_rate) && eq(a.temperature, b.temperature) &&
+         eq(a.internal_energy, b.internal_energy) && eq(a.damage, b.damage) &&
+         eq(a.porosity, b.porosity) && a.failed == b.failed && a.melted == b.melted;
+}
+
+bool same_report(const StepReport& a, const StepReport& b) {
+  return a.status == b.status && a.plastic == b.plastic &&
+         a.return_iterations == b.return_iterations &&
+         std::memcmp(&a.wave_speed, &b.wave_speed, sizeof(double)) == 0 &&
+         std::memcmp(&a.plastic_work, &b.plastic_work, sizeof(double)) == 0;
+}
+
+struct Point {
+  const ElasticPlastic* model;
+  PointState state;
+  Mat3 L;
+};
+
+// Advances every point `steps` steps both ways, in batches of `batch_size` (1..8) points, and
+// counts the points whose state or report differ in any bit. Every step's velocity gradient is
+// random: compression, tension and shear at 1e2..1e6 /s with spin.
+int differing_points(std::vector<Point> points, int steps, int batch_size, std::mt19937_64& gen,
+                     int& plastic_updates) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double dt = 2e-9;
+  std::vector<Point> alone = points;
+  int differing = 0;
+  UpdateBatch batch;
+  for (int step = 0; step < steps; ++step) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      Mat3 L;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) L(a, b) = u(gen);
+      L *= std::pow(10.0, 2.0 + 2.0 * (u(gen) + 1.0));
+      points[i].L = alone[i].L = L;
+    }
+    std::vector<PointState> next(points.size()), next_alone(points.size());
+    std::vector<StepReport> reports(points.size()), reports_alone(points.size());
+    for (std::size_t i0 = 0; i0 < points.size(); i0 += batch_size) {
+      const std::size_t i1 = std::min(points.size(), i0 + batch_size);
+      batch.clear();
+      for (std::size_t i = i0; i < i1; ++i) {
+        const Mat3 F1 = (Mat3::Identity() + points[i].L * dt) * points[i].state.F;
+        batch.add(*points[i].model, points[i].state, points[i].L, F1, dt, next[i]);
+      }
+      batch.run(dt);
+      for (std::size_t i = i0; i < i1; ++i) reports[i] = batch.finish(int(i - i0), dt, next[i]);
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Mat3 F1 = (Mat3::Identity() + alone[i].L * dt) * alone[i].state.F;
+      reports_alone[i] = alone[i].model->update(alone[i].state, alone[i].L, F1, dt, next_alone[i]);
+      if (!same_bits(next[i], next_alone[i]) || !same_report(reports[i], reports_alone[i]))
+        ++differing;
+      plastic_updates += reports[i].plastic;
+      points[i].state = next[i];
+      alone[i].state = next_alone[i];
+    }
+  }
+  return differing;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(material_update_batch)
+
+BOOST_AUTO_TEST_CASE(a_batch_gives_every_point_the_bits_of_the_one_point_update) {
+  const Material al = load_material(kMaterialFile);
+  // A second material in the same batches: the 2004 return and rate form, a lower yield stress,
+  // damage and failure off.
+  const Material soft = load_material(kMaterialFile, Json::parse(R"({"constitutive_model": {
+      "flow_stress": {"A": 1.5e8, "rate_form": "report_2004"},
+      "erosion": {"algorithm": "none"}}})"));
+  std::mt19937_64 gen(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point> points;
+  for (int i = 0; i < 61; ++i) {  // not a multiple of 8: the last batch is partial
+    const ElasticPlastic* model = (i % 5 == 3) ? &soft.model : &al.model;
+    // Temperatures from room to above melting (925 K), plastic strains from 0 to 0.5.
+    PointState s = model->initial_state(294.0 + 700.0 * u(gen) * u(gen));
+    s.plastic_strain = i % 3 == 0 ? 0.0 : 0.5 * u(gen);
+    s.plastic_strain_rate = i % 2 == 0 ? 0.0 : 1e4 * u(gen);
+    points.push_back({model, s, Mat3::Zero()});
+  }
+  for (const int size : {8, 5, 1}) {
+    int plastic = 0;
+    const int differing = differing_points(points, 40, size, gen, plastic);
+    BOOST_TEST_INFO("batches of " << size << ": " << plastic << " plastic updates of "
+                                  << 40 * points.size());
+    BOOST_TEST(differing == 0);
+    BOOST_TEST(plastic > 200);  // the returns were exercised
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_2004_return_algorithm_takes_the_one_point_path_in_a_batch) {
+  const Material old = load_material(kMaterialFile, Json::parse(R"({"constitutive_model": {
+      "return_algorithm": "report_2004", "erosion": {"algorithm": "none"}}})"));
+  std::mt19937_64 gen(3);
+  std::vector<Point> points(13, Point{&old.model, old.model.initial_state(294.0), Mat3::Zero()});
+  int plastic = 0;
+  BOOST_TEST(differing_points(points, 30, 8, gen, plastic) == 0);
+  BOOST_TEST(plastic > 10);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
