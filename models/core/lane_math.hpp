@@ -36,8 +36,15 @@ namespace impact::lane {
 
 #define IMPACT_LANE_INLINE [[gnu::always_inline]] inline
 
-/// Doubles per vector: eight fill an AVX-512 register (two AVX2, four SSE2 registers).
+/// Doubles per vector: eight fill an AVX-512 register (two AVX2, four SSE2 registers). Clang
+/// refuses a vector wider than the baseline's registers as a by-value argument even between
+/// inlined functions, so its builds (the fuzz targets) use two lanes: a lane's bits do not depend
+/// on the width.
+#if defined(__clang__)
+inline constexpr int kLaneWidth = 2;
+#else
 inline constexpr int kLaneWidth = 8;
+#endif
 using Vec = double __attribute__((vector_size(kLaneWidth * sizeof(double))));
 using IntVec = std::int64_t __attribute__((vector_size(kLaneWidth * sizeof(std::int64_t))));
 
@@ -54,6 +61,16 @@ IMPACT_LANE_INLINE V splat(double x) {
     return x;
   else
     return V{} + x;
+}
+
+/// The bits of x as a value of type To of the same size: std::bit_cast for a double, the vector
+/// extension's cast for a vector (which reinterprets; UBSan misreads std::bit_cast of a vector).
+template <class To, class From>
+IMPACT_LANE_INLINE To bits_as(From x) {
+  if constexpr (std::is_arithmetic_v<From>)
+    return std::bit_cast<To>(x);
+  else
+    return (To)x;
 }
 
 /// m ? a : b per lane, with the arms broadcast.
@@ -109,7 +126,7 @@ IMPACT_LANE_INLINE bool any(M m) {
 
 template <class V>
 IMPACT_LANE_INLINE V abs(V x) {
-  return std::bit_cast<V>(std::bit_cast<IntOf<V>>(x) & 0x7fffffffffffffffLL);
+  return bits_as<V>(bits_as<IntOf<V>>(x) & 0x7fffffffffffffffLL);
 }
 
 template <class V>
@@ -148,8 +165,8 @@ IMPACT_LANE_INLINE V expm1_series(V r) {
 template <class V>
 IMPACT_LANE_INLINE V two_to(V k) {
   using I = IntOf<V>;
-  const I bits = std::bit_cast<I>(k + kShift) - std::bit_cast<std::int64_t>(kShift);
-  return std::bit_cast<V>((bits + 1023) << 52);
+  const I bits = bits_as<I>(V(k + kShift)) - std::bit_cast<std::int64_t>(kShift);
+  return bits_as<V>(I((bits + 1023) << 52));
 }
 
 /// e^x = 2^n (1 + q) with 2^n = a b split in two factors (n spans [-1075, 1024], beyond one
@@ -192,11 +209,11 @@ IMPACT_LANE_INLINE V log(V x) {
   using I = IntOf<V>;
   const MaskOf<V> subnormal = x < 0x1p-1022;
   const V xs = select<V>(subnormal, x * 0x1p54, x);
-  const I bits = std::bit_cast<I>(xs);
+  const I bits = bits_as<I>(xs);
   // Exponent field as a double, without an integer-to-double conversion (not a vector
   // instruction before AVX-512): the field's bits placed under 2^52.
-  const V biased = std::bit_cast<V>((bits >> 52) | std::bit_cast<std::int64_t>(0x1p52)) - 0x1p52;
-  V m = std::bit_cast<V>((bits & 0x000fffffffffffffLL) | 0x3ff0000000000000LL);
+  const V biased = bits_as<V>(I((bits >> 52) | std::bit_cast<std::int64_t>(0x1p52))) - 0x1p52;
+  V m = bits_as<V>(I((bits & 0x000fffffffffffffLL) | 0x3ff0000000000000LL));
   V e = biased - select<V>(subnormal, 1023.0 + 54.0, splat<V>(1023.0));
   const MaskOf<V> upper = m > kSqrt2;  // m in [sqrt(1/2), sqrt(2))
   m = select<V>(upper, m * 0.5, m);

@@ -14,6 +14,7 @@
 
 #include "models/kinematics/corotation.hpp"
 #include "models/kinematics/polar_decomposition.hpp"
+#include "models/kinematics/polar_rotation_batch.hpp"
 #include "models/material/material.hpp"
 #include "models/material/update_batch.hpp"
 
@@ -126,6 +127,22 @@ void run_parts(int points, int repeats) {
   line("polar rotation, warm start from R_n", time_per_call(points, repeats, [&](int i) {
          sink += polar_rotation(F[i], R_old[i])(0, 1);
        }));
+  // The same rotations eight at a time (polar_rotation_batch, the batch's kernel), per point.
+  std::vector<PolarRotationBatch> rotations((points + lane::kLaneWidth - 1) / lane::kLaneWidth);
+  for (int i = 0; i < int(rotations.size()) * lane::kLaneWidth; ++i) {
+    const int src = std::min(i, points - 1), k = i % lane::kLaneWidth;
+    auto& r = rotations[i / lane::kLaneWidth];
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) {
+        lane::set(r.F.a[a][c], k, F[src](a, c));
+        lane::set(r.guess.a[a][c], k, R_old[src](a, c));
+      }
+  }
+  line("polar rotation, 8 lanes at once (per point)",
+       time_per_call(int(rotations.size()), repeats, [&](int i) {
+         polar_rotation_batch(rotations[i]);
+         sink += lane::get(rotations[i].out.R.a[0][1], 0);
+       }) / lane::kLaneWidth);
   line("midpoint rotation (quaternion square root)", time_per_call(points, repeats, [&](int i) {
          sink += midpoint_rotation(R_old[i], R[i])(0, 1);
        }));
