@@ -45,8 +45,13 @@ inline constexpr int kLaneWidth = 2;
 #else
 inline constexpr int kLaneWidth = 8;
 #endif
-using Vec = double __attribute__((vector_size(kLaneWidth * sizeof(double))));
-using IntVec = std::int64_t __attribute__((vector_size(kLaneWidth * sizeof(std::int64_t))));
+/// A vector type's alignment follows the instruction set of the file that declares it (16 bytes
+/// without AVX), while the AVX-512 copy of a kernel loads it with 64-byte aligned instructions:
+/// every struct that holds vectors is declared alignas(kLaneBytes), and its vector members are
+/// whole multiples of that size.
+inline constexpr int kLaneBytes = kLaneWidth * int(sizeof(double));
+using Vec = double __attribute__((vector_size(kLaneBytes)));
+using IntVec = std::int64_t __attribute__((vector_size(kLaneBytes)));
 
 /// The integer of a lane's width, and the type of a comparison: bool for a double, a vector of
 /// 0 / -1 for a Vec (a ? b : c then selects per lane).

@@ -9,7 +9,7 @@
 
 namespace impact {
 
-struct PolarRotationBatch {
+struct alignas(lane::kLaneBytes) PolarRotationBatch {
   LaneMat3<lane::Vec> F;      ///< F_{n+1} of each lane
   LaneMat3<lane::Vec> guess;  ///< R_n of each lane
   PolarLanes<lane::Vec> out;

@@ -15,7 +15,7 @@ namespace impact {
 
 /// A 3x3 matrix of lanes, row-major.
 template <class V>
-struct LaneMat3 {
+struct alignas(lane::kLaneBytes) LaneMat3 {
   V a[3][3];
 };
 
@@ -69,7 +69,7 @@ IMPACT_LANE_INLINE LaneMat3<V> cayley(V c0, V c1, V c2) {
 /// The outcome on each lane: R, whether the warm start converged (else the caller falls back to
 /// the cold polar decomposition), and the Newton steps taken.
 template <class V>
-struct PolarLanes {
+struct alignas(lane::kLaneBytes) PolarLanes {
   LaneMat3<V> R;
   lane::IntOf<V> converged;
   lane::IntOf<V> iterations;

@@ -19,7 +19,7 @@ inline constexpr int kReturnLanes = lane::kLaneWidth;
 
 /// The return's inputs and outputs for kReturnLanes points of one material, with each point's
 /// temperature factor of the flow stress (johnson_cook_thermal at its start-of-step temperature).
-struct JohnsonCookReturnBatch {
+struct alignas(lane::kLaneBytes) JohnsonCookReturnBatch {
   ReturnValues<lane::Vec> lanes;
   lane::Vec thermal_factor{};
   lane::Vec thermal_d_factor{};

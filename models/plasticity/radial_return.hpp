@@ -77,7 +77,7 @@ concept BoundedFlow = requires(const Flow& f) {
 /// q_trial = 0 is elastic and costs nothing but its share of the vector instructions. Flags are
 /// nonzero where set.
 template <class V>
-struct ReturnValues {
+struct alignas(lane::kLaneBytes) ReturnValues {
   using Int = lane::IntOf<V>;
   // Inputs.
   V q_trial{};         ///< sqrt(3/2 s_tr:s_tr) [Pa]
