@@ -117,12 +117,7 @@ ReturnResult ElasticPlastic::unbatched_return(const PointState& s0, const Update
     r.deviator = Mat3::Zero();
     return r;
   }
-  if (t.batched) {
-    ReturnValues<double> point;
-    to_lane(s0, t, dt, point, 0);
-    johnson_cook_return_one(p_.flow_stress, p_.return_tolerance, point, t.thermal);
-    return finish_return(t.s_trial, point, 0);
-  }
+  // Newton's return here is return_values on one double: the arithmetic of a batch's lane.
   const JohnsonCookAtTemperature flow_at{p_.flow_stress, t.thermal};
   const Mat3 eta = deviator(t.D_hat);
   return radial_return(t.s_trial, p_.shear_modulus, s0.plastic_strain, dt, flow_at,

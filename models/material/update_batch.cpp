@@ -5,8 +5,7 @@
 namespace impact {
 
 int UpdateBatch::add(const ElasticPlastic& model, const PointState& s0, const Mat3& L,
-                     const Mat3& F1, double dt, PointState& s1) {
-  (void)dt;  // the batch's step, given again to run and finish
+                     const Mat3& F1, PointState& s1) {
   const int k = size_++;
   Lane& lane = lanes_[k];
   lane.model = &model;

@@ -6,7 +6,7 @@
 // (tests/models/material/update_batch_test.cpp). The MPM's stress update drives one per thread.
 //
 //   UpdateBatch batch;
-//   for each point i of a block: batch.add(model_i, s0_i, L_i, F1_i, dt, s1_i)  (lane i)
+//   for each point i of a block: batch.add(model_i, s0_i, L_i, F1_i, s1_i)  (lane i)
 //   batch.run(dt);                       // the returns, grouped by material
 //   for each lane i: report_i = batch.finish(i, s0_i, dt, s1_i)
 #pragma once
@@ -29,7 +29,7 @@ class UpdateBatch {
   /// until finish. Returns the lane. A point that cannot start (det F1 <= 0) gets its report's
   /// status from run and takes no part in the return.
   int add(const ElasticPlastic& model, const PointState& s0, const Mat3& L, const Mat3& F1,
-          double dt, PointState& s1);
+          PointState& s1);
 
   /// The rotations, trial stresses and radial returns of every lane added since the last clear.
   void run(double dt);

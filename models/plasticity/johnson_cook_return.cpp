@@ -66,9 +66,4 @@ IMPACT_LANE_CLONES void johnson_cook_return(const JohnsonCookParams& p, const Re
   return_on(p, tol, batch.lanes, batch.thermal_factor, batch.thermal_d_factor);
 }
 
-void johnson_cook_return_one(const JohnsonCookParams& p, const ReturnTolerance& tol,
-                             ReturnValues<double>& point, const JohnsonCookThermal& thermal) {
-  return_on(p, tol, point, thermal.factor, thermal.d_factor);
-}
-
 }  // namespace impact

@@ -2,8 +2,8 @@
 // once: the batched half of the constitutive update (models/material/update_batch.hpp). The
 // vector is lane::Vec (eight doubles, GCC's vector extension); its operations are compiled for
 // AVX-512, AVX2 and SSE2 and the widest the CPU has is chosen when the program loads. The law and
-// the return are the templates the one-point update instantiates with double
-// (johnson_cook_return_one, used by ElasticPlastic::update and so by the point driver), and every
+// the return are the templates the one-point update instantiates with double (radial_return with
+// JohnsonCookAtTemperature, used by ElasticPlastic::update and so by the point driver), and every
 // operation is an IEEE basic one (models/core/lane_math.hpp), so a point gets the same bits in a
 // vector as alone: tests/models/plasticity/johnson_cook_return_test.cpp checks it.
 #pragma once
@@ -31,9 +31,5 @@ struct alignas(lane::kLaneBytes) JohnsonCookReturnBatch {
 /// Newton's radial return on every lane (ReturnAlgorithm::newton).
 void johnson_cook_return(const JohnsonCookParams& p, const ReturnTolerance& tol,
                          JohnsonCookReturnBatch& batch);
-
-/// The same for one point.
-void johnson_cook_return_one(const JohnsonCookParams& p, const ReturnTolerance& tol,
-                             ReturnValues<double>& point, const JohnsonCookThermal& thermal);
 
 }  // namespace impact

@@ -128,7 +128,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
           continue;
         }
         lane_of[i] =
-            batch.add(*settings.models[P.material[p]], P.state[p], P.L[p], F1s[i], dt, next[i]);
+            batch.add(*settings.models[P.material[p]], P.state[p], P.L[p], F1s[i], next[i]);
       }
       batch.run(dt);
       for (std::ptrdiff_t p = p0; p < p1; ++p) {

@@ -73,7 +73,7 @@ void run(const Scenario& sc, const std::string& material_file, int points, int s
         batch.clear();
         for (int i = i0; i < i1; ++i) {
           const Mat3 F1 = (Mat3::Identity() + L[i] * sc.dt) * state[i].F;
-          batch.add(m.model, state[i], L[i], F1, sc.dt, next[i]);
+          batch.add(m.model, state[i], L[i], F1, next[i]);
         }
         batch.run(sc.dt);
         for (int i = i0; i < i1; ++i) tally(count, batch.finish(i - i0, sc.dt, next[i]));

@@ -73,7 +73,7 @@ int differing_points(std::vector<Point> points, int steps, int batch_size, std::
       batch.clear();
       for (std::size_t i = i0; i < i1; ++i) {
         const Mat3 F1 = (Mat3::Identity() + points[i].L * dt) * points[i].state.F;
-        batch.add(*points[i].model, points[i].state, points[i].L, F1, dt, next[i]);
+        batch.add(*points[i].model, points[i].state, points[i].L, F1, next[i]);
       }
       batch.run(dt);
       for (std::size_t i = i0; i < i1; ++i) reports[i] = batch.finish(int(i - i0), dt, next[i]);
