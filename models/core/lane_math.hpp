@@ -36,6 +36,15 @@ namespace impact::lane {
 
 #define IMPACT_LANE_INLINE [[gnu::always_inline]] inline
 
+/// A kernel on vectors, compiled once per instruction set and chosen when the program loads (an
+/// ifunc) with GCC on x86-64; every template it calls must be always_inline, so that each copy is
+/// vectorised for its set. Clang (the fuzz build) gets one generic copy of its two-lane vectors.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define IMPACT_LANE_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define IMPACT_LANE_CLONES
+#endif
+
 /// Doubles per vector: eight fill an AVX-512 register (two AVX2, four SSE2 registers). Clang
 /// refuses a vector wider than the baseline's registers as a by-value argument even between
 /// inlined functions, so its builds (the fuzz targets) use two lanes: a lane's bits do not depend

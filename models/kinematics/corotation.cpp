@@ -2,27 +2,43 @@
 
 #include <cmath>
 
+#include "models/kinematics/corotation_lanes.hpp"
 #include "models/kinematics/polar_decomposition.hpp"
 
 namespace impact {
 
+namespace {
+
+LaneMat3<double> lanes(const Mat3& A) {
+  LaneMat3<double> L;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) L.a[i][j] = A(i, j);
+  return L;
+}
+
+Mat3 matrix(const LaneMat3<double>& L) {
+  Mat3 A;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) A(i, j) = L.a[i][j];
+  return A;
+}
+
+}  // namespace
+
 Mat3 midpoint_rotation(const Mat3& R_old, const Mat3& R_new) {
-  // Q = R_old^T R_new as a unit quaternion (w, v); its square root is (1 + w, v) normalised.
-  const Mat3 Q = R_old.transpose() * R_new;
-  const double one_plus_trace = 1.0 + Q.trace();  // = 4 w^2 = 2 + 2 cos(angle)
-  if (one_plus_trace < 0.25) {  // step rotation beyond ~130 degrees: w loses digits
-    return nearest_rotation(0.5 * (R_old + R_new));
-  }
-  const double w = 0.5 * std::sqrt(one_plus_trace);
-  const Vec3 v = Vec3(Q(2, 1) - Q(1, 2), Q(0, 2) - Q(2, 0), Q(1, 0) - Q(0, 1)) / (4.0 * w);
-  const double a0 = 1.0 + w;
-  const double norm = std::sqrt(a0 * a0 + v.squaredNorm());
-  const double a = a0 / norm, b = v(0) / norm, c = v(1) / norm, d = v(2) / norm;
-  Mat3 half;
-  half << a * a + b * b - c * c - d * d, 2.0 * (b * c - a * d), 2.0 * (b * d + a * c),
-      2.0 * (b * c + a * d), a * a - b * b + c * c - d * d, 2.0 * (c * d - a * b),
-      2.0 * (b * d - a * c), 2.0 * (c * d + a * b), a * a - b * b - c * c + d * d;
-  return R_old * half;
+  bool wide = false;
+  const Mat3 R_mid = matrix(lane_algebra::midpoint_lanes(lanes(R_old), lanes(R_new), wide));
+  // Beyond a ~151-degree step w = cos(angle / 2) loses digits: the polar factor of the mean.
+  return wide ? nearest_rotation(0.5 * (R_old + R_new)) : R_mid;
+}
+
+Corotated corotate(const Mat3& R_old, const Mat3& R_new, const Mat3& stress, const Mat3& D) {
+  const CorotatedLanes<double> c =
+      corotate_lanes(lanes(R_old), lanes(R_new), lanes(stress), lanes(D));
+  if (c.wide == 0) return {R_new, matrix(c.R_mid), matrix(c.stress), matrix(c.D)};
+  const Mat3 R_mid = midpoint_rotation(R_old, R_new);
+  return {R_new, R_mid, matrix(c.stress),
+          matrix(lane_algebra::unrotate_symmetric(lanes(D), lanes(R_mid)))};
 }
 
 Corotation corotation(const Mat3& R_old, const Mat3& F_new) {

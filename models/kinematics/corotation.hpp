@@ -54,8 +54,23 @@ struct Corotation {
 
 /// R_old (R_old^T R_new)^{1/2}: the rotation halfway from R_old to R_new, by the square root of the
 /// unit quaternion of R_old^T R_new (closed form, no iteration). Equals
-/// nearest_rotation((R_old + R_new) / 2), which is used beyond a 130-degree step.
+/// nearest_rotation((R_old + R_new) / 2), which is used beyond a 151-degree step (1 + tr(R_old^T
+/// R_new) < 1/4).
 Mat3 midpoint_rotation(const Mat3& R_old, const Mat3& R_new);
+
+/// One Green-Naghdi step applied to the symmetric stress and rate of deformation: what the
+/// hypoelastic update works with in the unrotated frame.
+struct Corotated {
+  Mat3 R_new;   ///< R_{n+1}
+  Mat3 R_mid;   ///< midpoint_rotation(R_n, R_{n+1})
+  Mat3 stress;  ///< R_n^T sigma_n R_n
+  Mat3 D;       ///< R_mid^T D R_mid
+};
+
+/// The step from R_old to R_new applied to sigma_n and D (both symmetric; the results are exactly
+/// symmetric): corotate_lanes (corotation_lanes.hpp) on one double, so that corotation_batch gives
+/// the same bits.
+Corotated corotate(const Mat3& R_old, const Mat3& R_new, const Mat3& stress, const Mat3& D);
 
 /// The rotations of one Green-Naghdi step; R_new = polar_rotation(F_new, R_old), det F_new > 0.
 Corotation corotation(const Mat3& R_old, const Mat3& F_new);

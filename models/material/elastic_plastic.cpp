@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "models/kinematics/polar_decomposition.hpp"
+
 namespace impact {
 
 std::string_view to_string(UpdateStatus s) {
@@ -62,7 +64,7 @@ double ElasticPlastic::wave_speed(const PointState& s) const {
 
 bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
                                   PointState& s1, UpdateTrial& t, StepReport& report,
-                                  const Mat3* R_new) const {
+                                  const Corotated* corotated) const {
   report = StepReport{};
   const double J1 = F1.determinant();
   if (!(J1 > 0.0)) {
@@ -80,11 +82,15 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   //    Hughes-Winget rotation of the old stress (Jaumann).
   const Mat3 D = sym(L);
   Mat3 stress_n;  // old stress in the working frame
-  if (p_.objective_rate != ObjectiveRate::jaumann) {
-    const Corotation c = p_.objective_rate == ObjectiveRate::green_naghdi
-                             ? (R_new ? Corotation{s0.R, *R_new, midpoint_rotation(s0.R, *R_new)}
-                                      : corotation(s0.R, F1))
-                             : incremental_corotation(s0.R, s0.F, F1, L, dt);
+  if (p_.objective_rate == ObjectiveRate::green_naghdi) {
+    const Corotated c =
+        corotated ? *corotated : corotate(s0.R, polar_rotation(F1, s0.R), s0.stress, D);
+    stress_n = c.stress;
+    t.D_hat = c.D;
+    t.R_out = c.R_new;
+    s1.R = c.R_new;
+  } else if (p_.objective_rate == ObjectiveRate::green_naghdi_incremental) {
+    const Corotation c = incremental_corotation(s0.R, s0.F, F1, L, dt);
     stress_n = unrotate(s0.stress, c.R_old);
     t.D_hat = unrotate(D, c.R_mid);
     t.R_out = c.R_new;

@@ -127,10 +127,11 @@ class ElasticPlastic {
   /// (UpdateBatch): begin_update (false when det F1 <= 0, with report.status set), the return
   /// (unbatched_return for one point, or johnson_cook_return on a batch's lanes filled by
   /// to_lane), finish_update. update() is exactly these three with the one-point return.
-  /// `R_new`, when given, is the polar rotation of F1 already computed (a batch computes them
-  /// together, polar_rotation_batch); used with the green_naghdi rate only.
+  /// `corotated`, when given, is the green_naghdi step already applied, corotate(s0.R, R_new,
+  /// s0.stress, sym L) with R_new the polar rotation of F1 (a batch computes them together,
+  /// polar_rotation_batch and corotation_batch); used with the green_naghdi rate only.
   bool begin_update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt, PointState& s1,
-                    UpdateTrial& t, StepReport& report, const Mat3* R_new = nullptr) const;
+                    UpdateTrial& t, StepReport& report, const Corotated* corotated = nullptr) const;
   ReturnResult unbatched_return(const PointState& s0, const UpdateTrial& t, double dt) const;
   /// Fills point (V = double) or lane k (V = lane::Vec) of a return's inputs.
   template <class V>

@@ -13,6 +13,7 @@
 
 #include <array>
 
+#include "models/kinematics/corotation_batch.hpp"
 #include "models/kinematics/polar_rotation_batch.hpp"
 #include "models/material/elastic_plastic.hpp"
 
@@ -53,6 +54,7 @@ class UpdateBatch {
   };
   std::array<Lane, capacity> lanes_;
   PolarRotationBatch rotations_;
+  CorotationBatch corotations_;
   JohnsonCookReturnBatch returns_;
   int size_ = 0;
 };

@@ -7,15 +7,6 @@ namespace impact {
 
 namespace {
 
-// GCC compiles the batch function once per listed instruction set and picks one when the program
-// loads (an ifunc); every template it calls is always_inline, so each copy is vectorised for its
-// set. Clang (the fuzz build) gets one generic copy of its two-lane vectors (lane_math.hpp).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define IMPACT_LANE_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define IMPACT_LANE_CLONES
-#endif
-
 // The law with its rate form fixed, on one point or a vector; theta and its slope per lane.
 // Structs with inlined calls, not lambdas: every call must be inlined into the instruction set's
 // copy of the kernel, since a vector argument cannot cross into code compiled for another.

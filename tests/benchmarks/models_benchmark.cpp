@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "models/kinematics/corotation.hpp"
+#include "models/kinematics/corotation_batch.hpp"
 #include "models/kinematics/polar_decomposition.hpp"
 #include "models/kinematics/polar_rotation_batch.hpp"
 #include "models/material/material.hpp"
@@ -155,6 +156,31 @@ void run_parts(int points, int repeats) {
   line("un-rotate stress and D, re-rotate stress", time_per_call(points, repeats, [&](int i) {
          sink += rotate(unrotate(F[i], R_old[i]) + unrotate(F_old[i], R[i]), R[i])(0, 1);
        }));
+  // The un-rotations of a green_naghdi step as the update takes them: midpoint rotation, R_n^T
+  // sigma R_n and R_mid^T D R_mid, on one point (corotate) and eight at a time (corotation_batch).
+  std::vector<Mat3> S(points);
+  for (int i = 0; i < points; ++i) S[i] = sym(F_old[i]) * 1e8;
+  line("corotate: midpoint, un-rotate stress and D", time_per_call(points, repeats, [&](int i) {
+         sink += corotate(R_old[i], R[i], S[i], sym(Ls[i])).D(0, 1);
+       }));
+  std::vector<CorotationBatch> corotations((points + lane::kLaneWidth - 1) / lane::kLaneWidth);
+  for (int i = 0; i < int(corotations.size()) * lane::kLaneWidth; ++i) {
+    const int src = std::min(i, points - 1), k = i % lane::kLaneWidth;
+    auto& c = corotations[i / lane::kLaneWidth];
+    const Mat3 D = sym(Ls[src]);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        lane::set(c.R_old.a[a][b], k, R_old[src](a, b));
+        lane::set(c.R_new.a[a][b], k, R[src](a, b));
+        lane::set(c.stress.a[a][b], k, S[src](a, b));
+        lane::set(c.D.a[a][b], k, D(a, b));
+      }
+  }
+  line("corotate, 8 lanes at once (per point)",
+       time_per_call(int(corotations.size()), repeats, [&](int i) {
+         corotation_batch(corotations[i]);
+         sink += lane::get(corotations[i].out.D.a[0][1], 0);
+       }) / lane::kLaneWidth);
 
   const Material m =
       load_material(std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json");

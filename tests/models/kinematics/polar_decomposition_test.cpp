@@ -154,7 +154,7 @@ BOOST_AUTO_TEST_CASE(warm_started_rotation_equals_the_cold_polar_factor_from_any
 
 BOOST_AUTO_TEST_CASE(midpoint_rotation_is_the_half_rotation_for_any_step_angle) {
   // R_old rotated about a fixed axis by a; the midpoint must be R_old rotated by a/2, from tiny
-  // steps through the 130-degree switch to the Newton-Schulz form.
+  // steps through the 151-degree switch to the polar factor of the mean.
   const Mat3 R_old = rodrigues(Vec3(0.3, -1.0, 0.4), 0.8);
   const Vec3 axis(1.0, 2.0, 2.0);
   for (double a : {1e-9, 1e-3, 0.3, 2.0, 2.4, 3.0}) {

@@ -6,6 +6,7 @@
 // neighbour's value) or with a different law in the vector path, the states differ.
 #include "models/material/update_batch.hpp"
 
+#include <Eigen/Geometry>
 #include <boost/test/unit_test.hpp>
 #include <cstdint>
 #include <cstring>
@@ -99,6 +100,7 @@ BOOST_AUTO_TEST_CASE(batches_are_aligned_for_the_widest_vector_loads) {
   BOOST_TEST(alignof(UpdateBatch) % lane::kLaneBytes == 0);
   BOOST_TEST(alignof(JohnsonCookReturnBatch) == std::size_t(lane::kLaneBytes));
   BOOST_TEST(alignof(PolarRotationBatch) == std::size_t(lane::kLaneBytes));
+  BOOST_TEST(alignof(CorotationBatch) == std::size_t(lane::kLaneBytes));
   std::vector<UpdateBatch> heap(3);
   BOOST_TEST(reinterpret_cast<std::uintptr_t>(&heap[1]) % lane::kLaneBytes == 0);
 }
@@ -129,6 +131,40 @@ BOOST_AUTO_TEST_CASE(a_batch_gives_every_point_the_bits_of_the_one_point_update)
     BOOST_TEST(differing == 0);
     BOOST_TEST(plastic > 200);  // the returns were exercised
   }
+}
+
+// A lane whose step rotates by more than ~151 degrees leaves the vector midpoint rotation for the
+// polar factor of the mean rotation (corotation.cpp), in a batch as alone; the others stay on the
+// lanes. Without the per-lane fallback its D would be rotated by a midpoint that lost its digits.
+BOOST_AUTO_TEST_CASE(a_lane_rotating_beyond_151_degrees_in_one_step_gets_the_one_point_bits) {
+  const Material al = load_material(kMaterialFile);
+  const double dt = 2e-9;
+  std::vector<PointState> s0(8, al.model.initial_state(294.0));
+  std::vector<Mat3> L(8), F1(8);
+  for (int k = 0; k < 8; ++k) {
+    s0[k].stress << 1e8, 2e7, 0, 2e7, -5e7, 3e7, 0, 3e7, 4e7;
+    L[k] << 1e4 * k, 3e3, 0, -2e3, -5e3, 1e3, 4e2, 0, 2e3;
+    const double angle = (k == 2 || k == 5) ? 2.8 : 1e-3 * k;  // 160 degrees on lanes 2 and 5
+    const Mat3 Q = Eigen::AngleAxisd(angle, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    F1[k] = Q * (Mat3::Identity() + sym(L[k]) * dt);
+  }
+  UpdateBatch batch;
+  std::vector<PointState> batched(8), alone(8);
+  for (int k = 0; k < 8; ++k) batch.add(al.model, s0[k], L[k], F1[k], batched[k]);
+  batch.run(dt);
+  for (int k = 0; k < 8; ++k) {
+    const StepReport r = batch.finish(k, dt, batched[k]);
+    const StepReport r_alone = al.model.update(s0[k], L[k], F1[k], dt, alone[k]);
+    BOOST_TEST_INFO("lane " << k);
+    BOOST_TEST(same_bits(batched[k], alone[k]));
+    BOOST_TEST(same_report(r, r_alone));
+  }
+  // The wide lane's midpoint is the half rotation (to round-off), R_new the full one.
+  const Mat3 Q = Eigen::AngleAxisd(2.8, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Corotated c = corotate(Mat3::Identity(), Q, s0[2].stress, sym(L[2]));
+  const Mat3 half = Eigen::AngleAxisd(1.4, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  BOOST_TEST((c.R_mid - half).norm() < 1e-14);
+  BOOST_TEST((batched[2].R - Q).norm() < 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(the_2004_return_algorithm_takes_the_one_point_path_in_a_batch) {
