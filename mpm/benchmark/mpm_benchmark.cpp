@@ -1,6 +1,6 @@
-// mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box]: what the explicit step costs on
-// the recommended sphere-cylinder scene (data/scenes/sphere_cylinder/recommended.json), measured
-// in process over a fixed number of steps after one warm-up step (no output writing):
+// mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] [order]: what the explicit step
+// costs on the recommended sphere-cylinder scene (data/scenes/sphere_cylinder/recommended.json),
+// measured in process over a fixed number of steps after one warm-up step (no output writing):
 //   scaling   particle-steps per second for linear and GIMP at grid levels 1, 1.5, 2, 3 (the
 //             deck's 50 x 20 x 20 cells times the level per axis), 1 and 2 threads, best of 3
 //             repeats with their spread, with the share
@@ -10,6 +10,9 @@
 //             best of 5 repeats with the spread, and bytes per particle and per node;
 //   box       the report's box, the tight box around the bodies and a box twice as large per
 //             axis, each with the dense grid and with active blocks (grid/grid.hpp).
+//   order     what the order of the particle arrays costs: the seeded order, the particles sorted
+//             by host cell (the order a periodic sort would restore) and a random order, GIMP at
+//             level 2, one thread, best of 3, with the phase shares.
 // Not a test: the figures go to docs/performance.md (`./run.sh bench` draws them from the CSV
 // files written to DIR).
 #include <omp.h>
@@ -20,6 +23,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -50,9 +54,46 @@ double particle_bytes(const Particles& P) {
          bytes_of(P.fault) + bytes_of(P.removed);
 }
 
-Measured measure(const Json& doc, const std::string& file, int threads, int steps) {
+enum class Order { seeded, by_cell, shuffled };
+
+// Permutes every per-particle array (particle i takes particle order[i]'s data); the Simulation
+// keeps no other per-particle data between steps (its stencils are recomputed every step).
+void permute(Particles& P, const std::vector<std::size_t>& order) {
+  const auto apply = [&](auto& v) {
+    if (v.empty()) return;
+    const auto old = v;
+    for (std::size_t i = 0; i < order.size(); ++i) v[i] = old[order[i]];
+  };
+  apply(P.x), apply(P.v), apply(P.mass), apply(P.volume0), apply(P.volume), apply(P.L);
+  apply(P.state), apply(P.wave_speed), apply(P.material), apply(P.object), apply(P.field);
+  apply(P.q), apply(P.fault), apply(P.removed);
+}
+
+void reorder(Simulation& sim, Order how) {
+  Particles& P = sim.particles();
+  std::vector<std::size_t> order(P.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if (how == Order::shuffled) {
+    std::mt19937_64 gen(7);
+    std::shuffle(order.begin(), order.end(), gen);
+  } else if (how == Order::by_cell) {
+    const Grid& G = sim.grid();
+    std::vector<long> key(P.size());
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const Vec3 c = (P.x[p] - G.lower()).cwiseProduct(G.inverse_spacing());
+      key[p] = G.index(int(std::floor(c(0))), int(std::floor(c(1))), int(std::floor(c(2))));
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  }
+  if (how != Order::seeded) permute(P, order);
+}
+
+Measured measure(const Json& doc, const std::string& file, int threads, int steps,
+                 Order order = Order::seeded) {
   const Scene scene = read_scene(doc, file);
   Simulation sim(scene, threads);
+  reorder(sim, order);
   sim.step();  // warm-up: first touch of the grid buffers and the stencils
   Measured m;
   const double t0 = omp_get_wtime();
@@ -84,11 +125,12 @@ struct Repeated {
   Measured best;
   double spread = 0;
 };
-Repeated repeat(const Json& doc, const std::string& file, int threads, int steps, int repeats) {
+Repeated repeat(const Json& doc, const std::string& file, int threads, int steps, int repeats,
+                Order order = Order::seeded) {
   Repeated r;
   double lo = 1e300, hi = 0;
   for (int i = 0; i < repeats; ++i) {
-    const Measured m = measure(doc, file, threads, steps);
+    const Measured m = measure(doc, file, threads, steps, order);
     const double t = per_particle_step(m);
     if (t < lo) r.best = m;
     lo = std::min(lo, t);
@@ -281,6 +323,35 @@ void box(const Json& base, const std::string& file, bool quick, const std::strin
     }
 }
 
+// The same scene with the particle arrays in three orders (see the header).
+void order(const Json& base, const std::string& file, bool quick, const std::string& dir) {
+  std::printf("\n== order: recommended.json, GIMP/MUSL, level %s, 1 thread ==\n",
+              quick ? "1" : "2");
+  std::printf("order     particles | M p-steps/s | P2G  grid  G2P  remap stress | spread\n");
+  std::ofstream csv = open_csv(dir, "order.csv",
+                               "order,particles [-],steps [-],particle_steps_per_second [1/s],"
+                               "spread [-]," +
+                                   std::string(kPhaseHeader));
+  Json doc = with_level(base, quick ? 1.0 : 2.0);
+  doc["solver"]["interpolation"] = "gimp";
+  const int steps = quick ? 3 : 20;
+  for (const auto& [name, how] :
+       {std::pair{"seeded", Order::seeded}, std::pair{"by_cell", Order::by_cell},
+        std::pair{"shuffled", Order::shuffled}}) {
+    const Repeated r = repeat(doc, file, 1, steps, quick ? 1 : 3, how);
+    const Measured& m = r.best;
+    const double rate = 1.0 / per_particle_step(m);
+    std::printf("%-9s %9.0f | %8.3f    | %4.1f %4.1f %4.1f %4.1f %5.1f  | %4.1f %%\n", name,
+                m.particles, rate / 1e6, 100 * m.phases.particles_to_grid / m.wall,
+                100 * m.phases.grid_update / m.wall, 100 * m.phases.grid_to_particles / m.wall,
+                100 * m.phases.remap / m.wall, 100 * m.phases.stress / m.wall, 100 * r.spread);
+    std::fflush(stdout);
+    if (csv)
+      csv << name << ',' << m.particles << ',' << m.steps << ',' << rate << ',' << r.spread << ','
+          << phase_csv(m) << '\n';
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -293,10 +364,11 @@ int main(int argc, char** argv) {
       quick = true;
     } else if (a == "--out" && i + 1 < argc) {
       dir = argv[++i];
-    } else if (a == "scaling" || a == "features" || a == "box") {
+    } else if (a == "scaling" || a == "features" || a == "box" || a == "order") {
       sections.push_back(a);
     } else {
-      std::cerr << "usage: mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box]\n";
+      std::cerr << "usage: mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] "
+                   "[order]\n";
       return 1;
     }
   }
@@ -311,6 +383,7 @@ int main(int argc, char** argv) {
       if (s == "scaling") scaling(base, file, quick, dir);
       if (s == "features") features(base, case01, file, quick, dir);
       if (s == "box") box(base, file, quick, dir);
+      if (s == "order") order(base, file, quick, dir);
     }
   } catch (const std::exception& e) {
     std::cerr << "mpm_benchmark: " << e.what() << '\n';
