@@ -158,8 +158,7 @@ int main(int argc, char** argv) {
       std::cout << scene.resolved.dump(2) << '\n';
       const int threads = impact::mpm::run_threads(options.threads);
       // An oversized scene is reported without seeding it.
-      if (const std::string refusal = impact::mpm::memory_refusal(scene, threads);
-          !refusal.empty()) {
+      if (const std::string refusal = impact::mpm::memory_refusal(scene); !refusal.empty()) {
         std::cerr << "mpm: check: mpm run would refuse this scene: " << refusal << '\n';
         return impact::mpm::kExitMemory;
       }

@@ -48,14 +48,15 @@ class PhaseClock {
 // energy: report eq. 14; artificial viscosity: report eq. 12.
 template <class Shape>
 StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S,
-                   const StressUpdateSettings& settings, const SolverSpec& s,
+                   ScatterOrder& order, const StressUpdateSettings& settings, const SolverSpec& s,
                    const ContactSpec* contact, const std::vector<HeatCapacity>& heat_capacity,
                    double dt, std::optional<Failure>& failure) {
   StepTotals t;
   PhaseClock clock(t.seconds);
   const bool usl = s.scheme == Scheme::usl;
   compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n, once per step
-  particles_to_grid<Shape>(P, G, S);                  // m_I, p_I, f_I per field  (eqs. 20-22)
+  order_for_scatter(S, G, order);  // by slab and colour: race-free scatters, any thread count
+  particles_to_grid<Shape>(P, G, S, order);  // m_I, p_I, f_I per field  (eqs. 20-22)
   clock.lap(&PhaseTimes::particles_to_grid);
   t.grid = grid_update(G, dt, s.gravity, usl, contact);  // v*_I, contact, faces (eq. 24)
   clock.lap(&PhaseTimes::grid_update);
@@ -64,7 +65,7 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   clock.lap(&PhaseTimes::grid_to_particles);
   if (failure) return t;
   if (!usl) {
-    remap_and_gradient<Shape>(P, G, S, contact);  // MUSL: L from the re-mapped v^{n+1}_I
+    remap_and_gradient<Shape>(P, G, S, order, contact);  // MUSL: L from the re-mapped v^{n+1}_I
     clock.lap(&PhaseTimes::remap);
   }
   t.stress = update_stress(P, settings, dt, failure);  // sigma, F, V, q; eq. 14
@@ -229,8 +230,8 @@ const StepTotals& Simulation::step() {
         using Shape = std::decay_t<decltype(shape)>;
         auto& S = std::get<Stencils<Shape>>(stencils_);
         const ContactSpec* contact = grid_.fields() > 1 ? &scene_.physics.contact : nullptr;
-        return advance(particles_, grid_, shape, S, stress_settings_, scene_.solver, contact,
-                       heat_capacity_, dt, failure);
+        return advance(particles_, grid_, shape, S, scatter_order_, stress_settings_, scene_.solver,
+                       contact, heat_capacity_, dt, failure);
       },
       shape_);
   stress_settings_.inject_nan_stress = -1;
@@ -446,7 +447,7 @@ Json particle_report(const Scene& scene, const Particles& P, int threads) {
         {"kinetic_energy [J]", 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
     total_mass += mass;
   }
-  const MemoryEstimate memory = estimate_memory(scene, threads, P.size());
+  const MemoryEstimate memory = estimate_memory(scene, P.size());
   Json report = {{"objects", objects},
                  {"particles", P.size()},
                  {"mass [kg]", total_mass},
@@ -480,7 +481,7 @@ bool is_signal(const FaultInjection& f) {
 int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume) {
   const int threads = run_threads(options.threads);
   // Refuse before anything is allocated or written.
-  if (const std::string refusal = memory_refusal(scene, threads); !refusal.empty()) {
+  if (const std::string refusal = memory_refusal(scene); !refusal.empty()) {
     std::cerr << "mpm: " << refusal << '\n';
     return kExitMemory;
   }
@@ -700,8 +701,8 @@ int run_threads(int requested) {
   return std::min(requested > 0 ? requested : omp_get_max_threads(), kMaxThreads);
 }
 
-std::string memory_refusal(const Scene& scene, int threads) {
-  const MemoryEstimate e = estimate_memory(scene, threads);
+std::string memory_refusal(const Scene& scene) {
+  const MemoryEstimate e = estimate_memory(scene);
   const std::optional<double> available = available_memory();
   if (!available || e.total() <= *available) return {};
   std::ostringstream m;
@@ -710,11 +711,11 @@ std::string memory_refusal(const Scene& scene, int threads) {
     << e.particle_bytes / 1e6 << " MB for " << e.particles
     << " particles estimated from the geometry, grid " << e.grid_bytes / 1e6 << " MB for "
     << scene.grid.cells[0] << " x " << scene.grid.cells[1] << " x " << scene.grid.cells[2]
-    << " cells, " << scene.field_count() << " velocity field(s) and " << threads
-    << " thread(s), output " << e.output_bytes / 1e6 << " MB, program " << e.program_bytes / 1e6
-    << " MB) exceeds the available memory " << *available / 1e6
+    << " cells and " << scene.field_count() << " velocity field(s), output " << e.output_bytes / 1e6
+    << " MB, program " << e.program_bytes / 1e6 << " MB) exceeds the available memory "
+    << *available / 1e6
     << " MB (MemAvailable in /proc/meminfo, or the cgroup's memory.max); coarsen grid.cells or "
-       "objects.*.particles_per_cell, or use fewer --threads";
+       "objects.*.particles_per_cell";
   return m.str();
 }
 

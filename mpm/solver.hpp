@@ -112,6 +112,7 @@ class Simulation {
   Grid grid_;
   std::variant<LinearShape, GimpShape> shape_;
   std::variant<Stencils<LinearShape>, Stencils<GimpShape>> stencils_;  ///< reused every step
+  ScatterOrder scatter_order_;  ///< rebuilt every step from the stencils
   StressUpdateSettings stress_settings_;
   std::vector<HeatCapacity> heat_capacity_;  ///< per material, for friction heating
   Ledger ledger_;
@@ -163,9 +164,9 @@ int restart(const std::string& dir, const RunOptions& options);
 
 /// The thread count a run gets: `requested` if > 0, else OpenMP's default (at most kMaxThreads).
 int run_threads(int requested);
-/// Why `mpm run` must not start this scene with `threads` threads (the memory estimate exceeds
-/// the available memory: both in the message), or empty. Allocates nothing.
-std::string memory_refusal(const Scene& scene, int threads);
+/// Why `mpm run` must not start this scene (the memory estimate, which does not depend on the
+/// thread count, exceeds the available memory: both in the message), or empty. Allocates nothing.
+std::string memory_refusal(const Scene& scene);
 
 /// What `mpm check` prints after the resolved scene: per-object counts, mass, particle volume
 /// against the exact geometric volume, estimated steps and memory.

@@ -14,9 +14,10 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
       ny_(spec.cells[1] + 3),
       nz_(spec.cells[2] + 3),
       fields_(std::max(fields, 1)),
-      buffers_(std::max(threads, 1), std::vector<NodeData>(entry_count())) {
+      threads_(std::max(threads, 1)),
+      nodes_(entry_count()) {
   const int e = entry_count();
-  if (nodal_stress) stress_buffers_.assign(buffers_.size(), std::vector<NodeStress>(e));
+  if (nodal_stress) stress_.assign(e, NodeStress{});
   mass.assign(e, 0.0);
   velocity.assign(e, Vec3::Zero());
   velocity_new.assign(e, Vec3::Zero());
@@ -87,7 +88,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
     mirror_active_ = mirror_all_;
     wall_active_ = wall_all_;
   } else {
-    marks_.assign(buffers_.size(), std::vector<char>(std::size_t(bx_) * by_ * bz_, 0));
+    marks_.assign(std::size_t(bx_) * by_ * bz_, 0);
     active_.reserve(n);  // no allocation in a step
     active_boundary_.reserve(boundary_nodes_.size());
     mirror_active_.reserve(mirror_all_.size());
@@ -97,13 +98,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
 
 void Grid::activate() {
   if (dense()) return;
-  const int nb = bx_ * by_ * bz_;
-  std::vector<char>& m = marks_[0];
-  for (std::size_t t = 1; t < marks_.size(); ++t)
-    for (int b = 0; b < nb; ++b) {
-      m[b] |= marks_[t][b];
-      marks_[t][b] = 0;
-    }
+  std::vector<char>& m = marks_;
   // Ascending storage order (i, then j, then k): the serial sums over nodes (gravity, faces) run
   // in the same order as on the dense grid, so both give the same bits.
   active_.clear();
@@ -140,62 +135,33 @@ void Grid::activate() {
 }
 
 void Grid::clear() {
-  const int nt = threads();
   const bool stress = has_nodal_stress();
   for_active_entries([&](int i) {
-    for (int t = 0; t < nt; ++t) buffers_[t][i] = NodeData{};
-    if (stress)
-      for (int t = 0; t < nt; ++t) stress_buffers_[t][i] = NodeStress{};
+    nodes_[i] = NodeData{};
+    if (stress) stress_[i] = NodeStress{};
     mass[i] = 0.0;
   });
 }
 
-void Grid::reduce() {
-  const int nt = threads();
-  const bool stress = has_nodal_stress();
-  for_active_entries([&](int i) {
-    NodeData& a = buffers_[0][i];
-    for (int t = 1; t < nt; ++t) {  // fixed order: deterministic sums
-      const NodeData& b = buffers_[t][i];
-      a.mass += b.mass;
-      for (int d = 0; d < 3; ++d) {
-        a.momentum[d] += b.momentum[d];
-        a.force[d] += b.force[d];
-      }
-      if (stress)
-        for (int c = 0; c < 6; ++c) stress_buffers_[0][i].s[c] += stress_buffers_[t][i].s[c];
-    }
-    mass[i] = a.mass;
-  });
+void Grid::collect_mass() {
+  for_active_entries([&](int i) { mass[i] = nodes_[i].mass; });
 }
 
-// The re-map buffers are written at this step's stencil nodes only and read at active nodes:
+// The re-map buffer is written at this step's stencil nodes only and read at active nodes:
 // zeroing the active nodes suffices (stale values elsewhere are never read).
 void Grid::clear_momentum() {
-  const int nt = threads();
-  if (remap_buffers_.empty()) remap_buffers_.assign(nt, std::vector<Vec3>(entry_count()));
-  for_active_entries([&](int i) {
-    for (int t = 0; t < nt; ++t) remap_buffers_[t][i].setZero();
-  });
-}
-
-void Grid::reduce_momentum() {
-  const int nt = threads();
-  if (nt == 1) return;
-  for_active_entries([&](int i) {
-    for (int t = 1; t < nt; ++t) remap_buffers_[0][i] += remap_buffers_[t][i];
-  });
+  if (remap_.empty()) remap_.assign(entry_count(), Vec3::Zero());
+  for_active_entries([&](int i) { remap_[i].setZero(); });
 }
 
 std::size_t Grid::bytes() const {
-  std::size_t b = buffers_.size() * entry_count() * sizeof(NodeData);
-  for (const auto& r : remap_buffers_) b += r.size() * sizeof(Vec3);
-  for (const auto& r : stress_buffers_) b += r.size() * sizeof(NodeStress);
+  std::size_t b = nodes_.size() * sizeof(NodeData) + remap_.size() * sizeof(Vec3) +
+                  stress_.size() * sizeof(NodeStress);
   b +=
       (mass.size() + heat.size()) * sizeof(double) +
       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size()) * sizeof(Vec3);
   b += active_.capacity() * sizeof(int);
-  for (const auto& m : marks_) b += m.size();
+  b += marks_.size();
   b += (boundary_nodes_.capacity() + active_boundary_.capacity()) * sizeof(int) +
        free_increment.capacity() * sizeof(Vec3) +
        (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite) +

@@ -22,8 +22,9 @@
 
 namespace impact::mpm {
 
-/// What particles-to-grid accumulates at a node (64 bytes: one cache line).
-struct NodeData {
+/// What particles-to-grid accumulates at a node (64 bytes, aligned to one cache line: a particle's
+/// scatter adds a whole record with vector instructions, mpm/step/particles_to_grid.cpp).
+struct alignas(64) NodeData {
   double mass = 0.0;        ///< m_I [kg]
   double momentum[3] = {};  ///< p_I [kg m/s]
   double force[3] = {};     ///< f_I = f_int [N]
@@ -76,7 +77,7 @@ class Grid {
   std::array<int, 3> ijk(int index) const {
     return {index / (ny_ * nz_) - 1, (index / nz_) % ny_ - 1, index % nz_ - 1};
   }
-  int threads() const { return static_cast<int>(buffers_.size()); }
+  int threads() const { return threads_; }
   int fields() const { return fields_; }
   /// Entries of every per-node array: fields() * node_count().
   int entry_count() const { return fields_ * node_count(); }
@@ -86,9 +87,9 @@ class Grid {
   /// The nodes the grid loops visit this step, ascending storage indices within one field.
   const std::vector<int>& active_nodes() const { return active_; }
   bool dense() const { return !spec_.active_blocks; }
-  /// Thread t's block marks (active blocks only): mark_stencil() sets them, activate() reads and
-  /// resets them.
-  char* block_marks(int t) { return marks_[t].data(); }
+  /// The block marks (active blocks only): mark_stencil() sets them during the scatter (threads
+  /// mark disjoint blocks, mpm/step/scatter_order.hpp), activate() reads and resets them.
+  char* block_marks() { return marks_.data(); }
   /// Marks the blocks holding nodes base..base+n-1 per axis (a particle's stencil).
   void mark_stencil(char* marks, const std::array<int, 3>& base, int n) const {
     int lo[3], hi[3];
@@ -100,7 +101,7 @@ class Grid {
       for (int b = lo[1]; b <= hi[1]; ++b)
         for (int c = lo[2]; c <= hi[2]; ++c) marks[(a * by_ + b) * bz_ + c] = 1;
   }
-  /// Rebuilds active_nodes() from the marks of every thread (active blocks; no-op when dense).
+  /// Rebuilds active_nodes() from the marks (active blocks; no-op when dense).
   void activate();
   /// body(e) for every entry e = f * node_count() + I of every field f and active node I, in
   /// parallel over the nodes of each field.
@@ -119,38 +120,38 @@ class Grid {
   /// Zeroes the mass-carrying arrays at the nodes active so far (start of particles-to-grid,
   /// before the new blocks are marked): then they are zero everywhere.
   void clear();
-  /// The scatter target of thread t.
-  NodeData* buffer(int t) {
-    return buffers_[t].data();
+  /// The scatter target: one buffer for all threads, which write disjoint nodes at any one time
+  /// (mpm/step/scatter_order.hpp), so the memory does not grow with the thread count.
+  NodeData* node_buffer() {
+    return nodes_.data();
   }
-  /// Sums thread buffers into buffer 0 in thread order (deterministic), at the active nodes.
-  void reduce();
-  /// Nodal stress scatter target of thread t (empty unless constructed with nodal_stress).
-  NodeStress* stress_buffer(int t) {
-    return stress_buffers_[t].data();
+  /// Copies the scattered masses into `mass` at the active nodes (after the scatter).
+  void collect_mass();
+  /// Nodal stress scatter target (empty unless constructed with nodal_stress).
+  NodeStress* stress_buffer() {
+    return stress_.data();
   }
   bool has_nodal_stress() const {
-    return !stress_buffers_.empty();
+    return !stress_.empty();
   }
   const std::vector<NodeStress>& nodal_stress() const {
-    return stress_buffers_[0];
+    return stress_;
   }
-  /// The reduced node data (valid after reduce()).
+  /// The scattered node data.
   std::vector<NodeData>& nodes() {
-    return buffers_[0];
+    return nodes_;
   }
   const std::vector<NodeData>& nodes() const {
-    return buffers_[0];
+    return nodes_;
   }
 
-  /// MUSL re-map: per-thread momentum buffers, zeroed / reduced like the node buffers.
-  Vec3* momentum_buffer(int t) {
-    return remap_buffers_[t].data();
+  /// MUSL re-map: the momentum scatter target, zeroed at the active nodes by clear_momentum.
+  Vec3* momentum_buffer() {
+    return remap_.data();
   }
   void clear_momentum();
-  void reduce_momentum();
   const std::vector<Vec3>& remapped_momentum() const {
-    return remap_buffers_[0];
+    return remap_;
   }
 
   std::vector<double> mass;        ///< m_I (copy of nodes()[I].mass, compact for gathers)
@@ -199,9 +200,10 @@ class Grid {
   Vec3 dx_, inv_dx_;
   int nx_, ny_, nz_;
   int fields_;
-  std::vector<std::vector<NodeData>> buffers_;
-  std::vector<std::vector<NodeStress>> stress_buffers_;
-  std::vector<std::vector<Vec3>> remap_buffers_;
+  int threads_;
+  std::vector<NodeData> nodes_;
+  std::vector<NodeStress> stress_;
+  std::vector<Vec3> remap_;
   std::vector<int> boundary_nodes_;
   std::vector<int> active_boundary_;
   std::vector<MirrorWrite> mirror_all_;     ///< every face node, in the order of the mirror
@@ -209,9 +211,9 @@ class Grid {
   std::vector<WallNode> wall_all_;          ///< face layers of the wall faces
   std::vector<WallNode> wall_active_;       ///< those in an active block
   std::array<bool, 6> constrained_{};
-  int bx_ = 0, by_ = 0, bz_ = 0;          ///< blocks per axis
-  std::vector<int> active_;               ///< active nodes, ascending
-  std::vector<std::vector<char>> marks_;  ///< per thread, per block (active blocks only)
+  int bx_ = 0, by_ = 0, bz_ = 0;  ///< blocks per axis
+  std::vector<int> active_;       ///< active nodes, ascending
+  std::vector<char> marks_;       ///< per block (active blocks only)
 };
 
 }  // namespace impact::mpm

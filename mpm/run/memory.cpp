@@ -53,22 +53,21 @@ double estimated_particle_count(const Scene& scene) {
   return n;
 }
 
-double estimated_grid_bytes(const Scene& scene, int threads) {
+double estimated_grid_bytes(const Scene& scene) {
   const GridSpec& g = scene.grid;
-  const double t = std::max(threads, 1);
   const double nx = g.cells[0] + 3.0, ny = g.cells[1] + 3.0, nz = g.cells[2] + 3.0;
   const double nodes = nx * ny * nz;
   const double fields = scene.field_count();
   const bool friction = fields > 1 && scene.physics.contact.type == ContactType::friction;
   const bool musl = scene.solver.scheme == Scheme::musl;
-  double per_entry = t * 64.0 + 8.0 + 4.0 * 24.0;  // NodeData per thread, mass, 4 velocities
-  if (musl) per_entry += t * 24.0;                 // re-map momentum per thread
-  if (friction) per_entry += t * 48.0 + 8.0;       // nodal stress per thread, heat
+  double per_entry = 64.0 + 8.0 + 4.0 * 24.0;  // NodeData, mass, 4 velocities
+  if (musl) per_entry += 24.0;                 // re-map momentum
+  if (friction) per_entry += 48.0 + 8.0;       // nodal stress, heat
   double bytes = fields * nodes * per_entry;
   bytes += nodes * 4.0;  // active-node list (dense: every node; blocks: reserved for all)
   if (g.active_blocks) {
     const double k = Grid::kBlock;
-    bytes += std::ceil(nx / k) * std::ceil(ny / k) * std::ceil(nz / k) * t;  // marks per thread
+    bytes += std::ceil(nx / k) * std::ceil(ny / k) * std::ceil(nz / k);  // block marks
   }
   // Boundary nodes (constrained faces: face and ghost layers), their free increments, the active
   // subset's positions and the mirror's writes (all and active: Grid::apply_mirror).
@@ -83,8 +82,7 @@ double estimated_grid_bytes(const Scene& scene, int threads) {
   return bytes;
 }
 
-MemoryEstimate estimate_memory(const Scene& scene, int threads,
-                               std::optional<std::size_t> particles) {
+MemoryEstimate estimate_memory(const Scene& scene, std::optional<std::size_t> particles) {
   MemoryEstimate e;
   e.exact_count = particles.has_value();
   e.particles = particles ? double(*particles) : estimated_particle_count(scene);
@@ -94,8 +92,9 @@ MemoryEstimate estimate_memory(const Scene& scene, int threads,
   if (scene.grid.outflow == Outflow::remove) per_particle += 1;
   per_particle +=
       scene.solver.interpolation == Interpolation::gimp ? sizeof(Stencil<3>) : sizeof(Stencil<2>);
+  per_particle += 2 * sizeof(int);  // scatter order: index and tile (mpm/step/scatter_order.hpp)
   e.particle_bytes = e.particles * per_particle;
-  e.grid_bytes = estimated_grid_bytes(scene, threads);
+  e.grid_bytes = estimated_grid_bytes(scene);
   if (scene.output.snapshots) {
     // Every array is kept (with an 8-byte size) until the file is written; the largest is
     // allocated once more while it is copied in.

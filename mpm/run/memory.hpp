@@ -2,11 +2,13 @@
 // available memory; docs/mpm.md#memory-estimate), from the scene alone: nothing is seeded or
 // allocated, so an absurd scene is refused in microseconds.
 //   particles: count x (Particles::bytes_per_particle + q with artificial viscosity + fault
-//              flag with fail_particle + the cached stencil: 112 B linear, 160 B GIMP)
+//              flag with fail_particle + the cached stencil: 112 B linear, 160 B GIMP + 8 B of
+//              scatter order)
 //   grid:      entries = fields x (cells_x + 3)(cells_y + 3)(cells_z + 3) times
-//              threads x (64 B node data + 24 B MUSL re-map + 48 B nodal stress with friction)
+//              (64 B node data + 24 B MUSL re-map + 48 B nodal stress with friction)
 //              + 8 B mass + 4 x 24 B velocities + 8 B friction heat, plus 4 B per node for the
-//              active-node list, the block marks and the boundary-node lists
+//              active-node list, the block marks and the boundary-node lists. One copy whatever
+//              the thread count (mpm/step/scatter_order.hpp).
 //   output:    one VTU snapshot held in memory while it is written (positions, connectivity,
 //              offsets, types and the output.fields arrays) plus its largest array once more
 //   program:   a fixed 16 MB (code, libraries, OpenMP threads; measured ~10 MB)
@@ -31,13 +33,14 @@ struct MemoryEstimate {
   Json json() const;
 };
 
-/// `particles`: the exact count if known (seeded), else the geometric estimate is used.
-MemoryEstimate estimate_memory(const Scene& scene, int threads,
+/// `particles`: the exact count if known (seeded), else the geometric estimate is used. The
+/// estimate does not depend on the thread count.
+MemoryEstimate estimate_memory(const Scene& scene,
                                std::optional<std::size_t> particles = std::nullopt);
 /// The geometric particle count estimate (above).
 double estimated_particle_count(const Scene& scene);
 /// Bytes of the grid as Grid allocates them (the grid term above).
-double estimated_grid_bytes(const Scene& scene, int threads);
+double estimated_grid_bytes(const Scene& scene);
 
 /// What this process may still allocate [bytes]: MemAvailable of /proc/meminfo, or less when a
 /// cgroup (v2) memory.max leaves less; nullopt when neither can be read.

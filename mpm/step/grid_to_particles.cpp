@@ -135,29 +135,24 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 }
 
 template <class Shape>
-void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S,
+void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const ScatterOrder& order,
                         const ContactSpec* contact) {
   constexpr int N = Shape::N;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const int nt = G.threads();
   G.clear_momentum();
-#pragma omp parallel num_threads(nt)
-  {
-    Vec3* const buf = G.momentum_buffer(omp_get_thread_num());
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t p = 0; p < n; ++p) {
-      const Stencil<N>& s = S[p];
-      Vec3* const field = buf + P.field[p] * G.node_count();
-      const Vec3 mv = P.mass[p] * P.v[p];
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j) {
-          Vec3* row = field + G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
-          const Vec3 mvij = (s.w[0][i] * s.w[1][j]) * mv;
-          for (int k = 0; k < N; ++k) row[k] += s.w[2][k] * mvij;
-        }
-    }
-  }
-  G.reduce_momentum();
+  Vec3* const buf = G.momentum_buffer();
+  scatter_by_colour(order, nt, [&](int p) {
+    const Stencil<N>& s = S[p];
+    Vec3* const field = buf + P.field[p] * G.node_count();
+    const Vec3 mv = P.mass[p] * P.v[p];
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        Vec3* row = field + G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+        const Vec3 mvij = (s.w[0][i] * s.w[1][j]) * mv;
+        for (int k = 0; k < N; ++k) row[k] += s.w[2][k] * mvij;
+      }
+  });
   const std::vector<Vec3>& momentum = G.remapped_momentum();
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   G.for_active_entries([&](int i) {
@@ -182,8 +177,8 @@ template ParticleTotals grid_to_particles<GimpShape>(Particles&, const Grid&,
                                                      const std::vector<HeatCapacity>&,
                                                      std::optional<Failure>&);
 template void remap_and_gradient<LinearShape>(Particles&, Grid&, const Stencils<LinearShape>&,
-                                              const ContactSpec*);
+                                              const ScatterOrder&, const ContactSpec*);
 template void remap_and_gradient<GimpShape>(Particles&, Grid&, const Stencils<GimpShape>&,
-                                            const ContactSpec*);
+                                            const ScatterOrder&, const ContactSpec*);
 
 }  // namespace impact::mpm

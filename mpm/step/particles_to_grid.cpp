@@ -1,8 +1,8 @@
 // Stencils once per step, and particles to grid, Sulsky, Chen & Schreyer (1994) eqs. 20-22 (mass,
-// momentum, internal force). Each thread scatters into its own grid buffer; Grid::reduce sums
-// them in thread order (deterministic for a given thread count). With active blocks each thread
-// also marks the blocks its particles' stencils touch; Grid::activate turns the marks into the
-// step's node list before the reduction.
+// momentum, internal force). The threads scatter into one grid buffer, one colour of slabs at a
+// time (step/scatter_order.hpp: the same bits on any thread count). With active blocks the
+// scatter also marks the blocks the stencils touch; Grid::activate turns the marks into the
+// step's node list.
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -16,70 +16,67 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 }
 
 template <class Shape>
-void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S) {
+void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
+                       const ScatterOrder& order) {
   constexpr int N = Shape::N;
   G.clear();  // where the last step put mass: now zero everywhere
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   const bool viscosity = !P.q.empty();
   const bool nodal_stress = G.has_nodal_stress();
-  const bool mark = !G.dense();
-#pragma omp parallel num_threads(G.threads())
-  {
-    NodeData* const buf = G.buffer(omp_get_thread_num());
-    NodeStress* const sbuf = nodal_stress ? G.stress_buffer(omp_get_thread_num()) : nullptr;
-    char* const marks = mark ? G.block_marks(omp_get_thread_num()) : nullptr;
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t p = 0; p < n; ++p) {
-      const Stencil<N>& s = S[p];
-      if (mark) G.mark_stencil(marks, s.base, N);
-      const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
-      NodeData* const field = buf + offset;
-      Mat3 sigma = P.state[p].stress;
-      if (viscosity) sigma.diagonal().array() -= P.q[p];  // sigma - q I (report eq. 12)
-      const Mat3 vs = -P.volume[p] * sigma;               // -V_p (sigma_p - q_p I)
-      const double m = P.mass[p];
-      const Vec3 mv = m * P.v[p];
-      for (int i = 0; i < N; ++i) {
-        for (int j = 0; j < N; ++j) {
-          const int row_index = G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
-          NodeData* row = field + row_index;
-          const double wij = s.w[0][i] * s.w[1][j];
-          const double dxw = s.dw[0][i] * s.w[1][j];
-          const double wdy = s.w[0][i] * s.dw[1][j];
-          // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
-          const Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
-          const Vec3 b = vs.col(2) * wij;
-          for (int k = 0; k < N; ++k) {
-            NodeData& node = row[k];
-            const double w = wij * s.w[2][k];
-            const Vec3 f = a * s.w[2][k] + b * s.dw[2][k];
-            node.mass += w * m;
-            for (int d = 0; d < 3; ++d) {
-              node.momentum[d] += w * mv(d);
-              node.force[d] += f(d);
-            }
+  NodeData* const buf = G.node_buffer();
+  NodeStress* const sbuf = nodal_stress ? G.stress_buffer() : nullptr;
+  char* const marks = G.dense() ? nullptr : G.block_marks();
+  scatter_by_colour(order, G.threads(), [&](int p) {
+    const Stencil<N>& s = S[p];
+    if (marks) G.mark_stencil(marks, s.base, N);
+    const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
+    NodeData* const field = buf + offset;
+    Mat3 sigma = P.state[p].stress;
+    if (viscosity) sigma.diagonal().array() -= P.q[p];  // sigma - q I (report eq. 12)
+    const Mat3 vs = -P.volume[p] * sigma;               // -V_p (sigma_p - q_p I)
+    const double m = P.mass[p];
+    const Vec3 mv = m * P.v[p];
+    for (int i = 0; i < N; ++i) {
+      for (int j = 0; j < N; ++j) {
+        const int row_index = G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+        NodeData* row = field + row_index;
+        const double wij = s.w[0][i] * s.w[1][j];
+        const double dxw = s.dw[0][i] * s.w[1][j];
+        const double wdy = s.w[0][i] * s.dw[1][j];
+        // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
+        const Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
+        const Vec3 b = vs.col(2) * wij;
+        for (int k = 0; k < N; ++k) {
+          NodeData& node = row[k];
+          const double w = wij * s.w[2][k];
+          const Vec3 f = a * s.w[2][k] + b * s.dw[2][k];
+          node.mass += w * m;
+          for (int d = 0; d < 3; ++d) {
+            node.momentum[d] += w * mv(d);
+            node.force[d] += f(d);
           }
-          if (nodal_stress) {  // friction contact's compression test only
-            const Mat3& t = P.state[p].stress;
-            const double c[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
-            NodeStress* srow = sbuf + offset + row_index;
-            for (int k = 0; k < N; ++k)
-              for (int c6 = 0; c6 < 6; ++c6) srow[k].s[c6] += wij * s.w[2][k] * c[c6];
-          }
+        }
+        if (sbuf) {  // friction contact's compression test only
+          const Mat3& t = P.state[p].stress;
+          const double c[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
+          NodeStress* srow = sbuf + offset + row_index;
+          for (int k = 0; k < N; ++k)
+            for (int c6 = 0; c6 < 6; ++c6) srow[k].s[c6] += wij * s.w[2][k] * c[c6];
         }
       }
     }
-  }
+  });
   G.activate();
-  G.reduce();
+  G.collect_mass();
 }
 
 template void compute_stencils<LinearShape>(const Particles&, const LinearShape&,
                                             Stencils<LinearShape>&, int);
 template void compute_stencils<GimpShape>(const Particles&, const GimpShape&, Stencils<GimpShape>&,
                                           int);
-template void particles_to_grid<LinearShape>(const Particles&, Grid&, const Stencils<LinearShape>&);
-template void particles_to_grid<GimpShape>(const Particles&, Grid&, const Stencils<GimpShape>&);
+template void particles_to_grid<LinearShape>(const Particles&, Grid&, const Stencils<LinearShape>&,
+                                             const ScatterOrder&);
+template void particles_to_grid<GimpShape>(const Particles&, Grid&, const Stencils<GimpShape>&,
+                                           const ScatterOrder&);
 
 }  // namespace impact::mpm

@@ -11,6 +11,7 @@
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/shape/shape.hpp"
+#include "mpm/step/scatter_order.hpp"
 
 namespace impact::mpm {
 
@@ -41,9 +42,11 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 
 /// Particles to grid (Sulsky et al. 1994 eqs. 20-22):
 ///   m_I = sum_p S_Ip m_p,  p_I = sum_p S_Ip m_p v_p,
-///   f_I = -sum_p V_p sigma_p . grad S_Ip   (gravity is added as m_I g in grid_update).
+///   f_I = -sum_p V_p sigma_p . grad S_Ip   (gravity is added as m_I g in grid_update),
+/// scattered in `order` (order_for_scatter on S).
 template <class Shape>
-void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S);
+void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
+                       const ScatterOrder& order);
 
 /// USL's velocity gradient limits the acceleration part of v*_I at nodes lighter than this
 /// fraction of the lightest particle mass: v^L_I = v_I + min(1, m_I/m_light) (v*_I - v_I). Why:
@@ -110,9 +113,9 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 /// MUSL (Sulsky et al. 1995; Nairn 2003): re-map the updated particle momentum with the same
 /// weights, v^{n+1}_I = sum_p S_Ip m_p v_p^{n+1} / m_I, correct it by the contact model (if any)
 /// and mirror it at the faces (projections: the particles do not see them), and
-/// L_p = sum_I v^{n+1}_I (x) grad S_Ip.
+/// L_p = sum_I v^{n+1}_I (x) grad S_Ip. The momentum is scattered in `order`, as in P2G.
 template <class Shape>
-void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S,
+void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const ScatterOrder& order,
                         const ContactSpec* contact);
 
 /// What the stress update needs besides the particles: the models per material and the

@@ -1,0 +1,30 @@
+#include "mpm/step/scatter_order.hpp"
+
+namespace impact::mpm {
+
+template <int N>
+void order_for_scatter(const std::vector<Stencil<N>>& S, const Grid& G, ScatterOrder& order) {
+  constexpr int T = ScatterOrder::kSlab;
+  // Storage coordinates run from 0 (the ghost layer, node -1) to cells + 2.
+  const int slabs = (G.cells()[0] + 3 + T - 1) / T;
+  const int n = static_cast<int>(S.size());
+  order.slab_of.resize(n);
+  order.start.assign(slabs + 1, 0);
+  for (int p = 0; p < n; ++p) {
+    const int s = (S[p].base[0] + 1) / T;
+    order.slab_of[p] = s;
+    ++order.start[s + 1];
+  }
+  for (int s = 0; s < slabs; ++s) order.start[s + 1] += order.start[s];
+  order.particles.resize(n);
+  order.next.assign(order.start.begin(), order.start.end() - 1);
+  for (int p = 0; p < n; ++p) order.particles[order.next[order.slab_of[p]]++] = p;
+  for (std::vector<int>& c : order.colours) c.clear();
+  for (int s = 0; s < slabs; ++s)
+    if (order.start[s + 1] > order.start[s]) order.colours[s % 2].push_back(s);
+}
+
+template void order_for_scatter<2>(const std::vector<Stencil<2>>&, const Grid&, ScatterOrder&);
+template void order_for_scatter<3>(const std::vector<Stencil<3>>&, const Grid&, ScatterOrder&);
+
+}  // namespace impact::mpm
