@@ -1,5 +1,6 @@
-// Helpers shared by the particle loops: static partition of [0, n) per thread (so sums and the
-// scatter are deterministic for a given thread count) and the first-failure merge.
+// Helpers shared by the particle loops: the per-thread partial sums' bound (the loops partition
+// [0, n) statically, so their sums are deterministic for a given thread count) and the
+// first-failure merge.
 #pragma once
 
 #include <omp.h>
