@@ -34,16 +34,17 @@ void UpdateBatch::run(double dt) {
   polar_rotation_batch(rotations_);
   // Each lane's R_new (the cold start where the warm one did not converge, as for one point), then
   // the un-rotations of its stress and D on the lanes.
+  Mat3 R_new[capacity];
   for (int k = 0; k < capacity; ++k) {
     const Lane& lane = lanes_[k];
-    Mat3 R_new = Mat3::Identity(), R_old = Mat3::Identity(), stress = Mat3::Zero(),
-         D = Mat3::Zero();
+    Mat3 R_old = Mat3::Identity(), stress = Mat3::Zero(), D = Mat3::Zero();
+    R_new[k] = Mat3::Identity();
     if (polar[k]) {
       if (lane::get(rotations_.out.converged, k) != 0) {
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) R_new(i, j) = lane::get(rotations_.out.R.a[i][j], k);
+          for (int j = 0; j < 3; ++j) R_new[k](i, j) = lane::get(rotations_.out.R.a[i][j], k);
       } else {
-        R_new = polar_rotation(lane.F1, lane.s0->R);
+        R_new[k] = polar_rotation(lane.F1, lane.s0->R);
       }
       R_old = lane.s0->R;
       stress = lane.s0->stress;
@@ -52,7 +53,7 @@ void UpdateBatch::run(double dt) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         lane::set(corotations_.R_old.a[i][j], k, R_old(i, j));
-        lane::set(corotations_.R_new.a[i][j], k, R_new(i, j));
+        lane::set(corotations_.R_new.a[i][j], k, R_new[k](i, j));
         lane::set(corotations_.stress.a[i][j], k, stress(i, j));
         lane::set(corotations_.D.a[i][j], k, D(i, j));
       }
@@ -68,11 +69,10 @@ void UpdateBatch::run(double dt) {
           for (int j = 0; j < 3; ++j) A(i, j) = lane::get(m.a[i][j], k);
         return A;
       };
-      const Mat3 R_new = lane_matrix(corotations_.R_new);
       if (lane::get(corotations_.out.wide, k) != 0)  // beyond ~151 degrees: as for one point
-        c = corotate(lane.s0->R, R_new, lane.s0->stress, sym(lane.L));
+        c = corotate(lane.s0->R, R_new[k], lane.s0->stress, sym(lane.L));
       else
-        c = {R_new, lane_matrix(corotations_.out.R_mid), lane_matrix(corotations_.out.stress),
+        c = {R_new[k], lane_matrix(corotations_.out.R_mid), lane_matrix(corotations_.out.stress),
              lane_matrix(corotations_.out.D)};
     }
     lane.started = lane.model->begin_update(*lane.s0, lane.L, lane.F1, dt, *lane.s1, lane.trial,
