@@ -22,8 +22,9 @@
 
 namespace impact::mpm {
 
-/// What particles-to-grid accumulates at a node (64 bytes, aligned to one cache line: a particle's
-/// scatter adds a whole record with vector instructions, mpm/step/particles_to_grid.cpp).
+/// What particles-to-grid accumulates at a node (64 bytes, aligned to one cache line: in a 16-byte
+/// aligned array three records in four straddle two lines, and the scatter is bound by moving node
+/// lines, docs/performance.md).
 struct alignas(64) NodeData {
   double mass = 0.0;        ///< m_I [kg]
   double momentum[3] = {};  ///< p_I [kg m/s]
