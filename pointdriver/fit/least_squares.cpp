@@ -182,14 +182,16 @@ LeastSquaresResult least_squares(const std::vector<Parameter>& parameters,
 
   gsl_matrix* cu = gsl_matrix_alloc(m, m);
   gsl_multifit_nlinear_covar(J, 0.0, cu);
+  // Upper triangle, mirrored: (v da) db and (v db) da round differently, and the covariance and
+  // correlation must be exactly symmetric.
   for (std::size_t a = 0; a < m; ++a) {
-    for (std::size_t b = 0; b < m; ++b) {
-      const auto ia = static_cast<std::size_t>(pr.free[a]);
-      const auto ib = static_cast<std::size_t>(pr.free[b]);
-      const double da = slope(parameters[ia], gsl_vector_get(u, a));
-      const double db = slope(parameters[ib], gsl_vector_get(u, b));
-      out.covariance(static_cast<long>(ia), static_cast<long>(ib)) =
-          out.variance * da * db * gsl_matrix_get(cu, a, b);
+    for (std::size_t b = a; b < m; ++b) {
+      const auto ia = static_cast<long>(pr.free[a]);
+      const auto ib = static_cast<long>(pr.free[b]);
+      const double da = slope(parameters[static_cast<std::size_t>(ia)], gsl_vector_get(u, a));
+      const double db = slope(parameters[static_cast<std::size_t>(ib)], gsl_vector_get(u, b));
+      out.covariance(ia, ib) = out.variance * da * db * gsl_matrix_get(cu, a, b);
+      out.covariance(ib, ia) = out.covariance(ia, ib);
     }
   }
   for (long i = 0; i < np; ++i)
@@ -198,7 +200,8 @@ LeastSquaresResult least_squares(const std::vector<Parameter>& parameters,
     for (long j = 0; j < np; ++j) {
       const double d =
           out.std_errors[static_cast<std::size_t>(i)] * out.std_errors[static_cast<std::size_t>(j)];
-      if (i != j) out.correlation(i, j) = d > 0 ? out.covariance(i, j) / d : 0.0;
+      if (i < j) out.correlation(i, j) = d > 0 ? out.covariance(i, j) / d : 0.0;
+      if (i > j) out.correlation(i, j) = out.correlation(j, i);
     }
   gsl_matrix_free(cu);
   gsl_vector_free(u0);
