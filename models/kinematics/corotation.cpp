@@ -7,38 +7,20 @@
 
 namespace impact {
 
-namespace {
-
-LaneMat3<double> lanes(const Mat3& A) {
-  LaneMat3<double> L;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) L.a[i][j] = A(i, j);
-  return L;
-}
-
-Mat3 matrix(const LaneMat3<double>& L) {
-  Mat3 A;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) A(i, j) = L.a[i][j];
-  return A;
-}
-
-}  // namespace
-
 Mat3 midpoint_rotation(const Mat3& R_old, const Mat3& R_new) {
   bool wide = false;
-  const Mat3 R_mid = matrix(lane_algebra::midpoint_lanes(lanes(R_old), lanes(R_new), wide));
+  const Mat3 R_mid = to_mat3(lane_algebra::midpoint_lanes(to_lanes(R_old), to_lanes(R_new), wide));
   // Beyond a ~151-degree step w = cos(angle / 2) loses digits: the polar factor of the mean.
   return wide ? nearest_rotation(0.5 * (R_old + R_new)) : R_mid;
 }
 
 Corotated corotate(const Mat3& R_old, const Mat3& R_new, const Mat3& stress, const Mat3& D) {
   const CorotatedLanes<double> c =
-      corotate_lanes(lanes(R_old), lanes(R_new), lanes(stress), lanes(D));
-  if (c.wide == 0) return {R_new, matrix(c.R_mid), matrix(c.stress), matrix(c.D)};
+      corotate_lanes(to_lanes(R_old), to_lanes(R_new), to_lanes(stress), to_lanes(D));
+  if (c.wide == 0) return {R_new, to_mat3(c.R_mid), to_mat3(c.stress), to_mat3(c.D)};
   const Mat3 R_mid = midpoint_rotation(R_old, R_new);
-  return {R_new, R_mid, matrix(c.stress),
-          matrix(lane_algebra::unrotate_symmetric(lanes(D), lanes(R_mid)))};
+  return {R_new, R_mid, to_mat3(c.stress),
+          to_mat3(lane_algebra::unrotate_symmetric(to_lanes(D), to_lanes(R_mid)))};
 }
 
 Corotation corotation(const Mat3& R_old, const Mat3& F_new) {

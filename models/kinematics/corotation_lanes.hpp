@@ -26,20 +26,6 @@ struct alignas(lane::kLaneBytes) CorotatedLanes {
 
 namespace lane_algebra {
 
-/// R^T A R for a symmetric A, upper triangle computed and mirrored.
-template <class V>
-[[gnu::always_inline]] inline LaneMat3<V> unrotate_symmetric(const LaneMat3<V>& A,
-                                                             const LaneMat3<V>& R) {
-  const LaneMat3<V> AR = times(A, R);
-  LaneMat3<V> C;
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) {
-      C.a[i][j] = R.a[0][i] * AR.a[0][j] + R.a[1][i] * AR.a[1][j] + R.a[2][i] * AR.a[2][j];
-      C.a[j][i] = C.a[i][j];
-    }
-  return C;
-}
-
 /// R_old (R_old^T R_new)^{1/2} by the square root of the unit quaternion (w, v) of Q = R_old^T
 /// R_new, (1 + w, v) normalised (midpoint_rotation, corotation.hpp); `wide` where 1 + tr Q < 1/4.
 template <class V>

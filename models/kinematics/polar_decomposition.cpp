@@ -51,17 +51,9 @@ PolarDecomposition polar_decomposition(const Mat3& F) {
 Mat3 polar_rotation(const Mat3& F, const Mat3& guess, int* iterations) {
   // The lanes' algorithm on one point (polar_rotation_lanes.hpp): the batched update's rotation
   // gives the same bits.
-  LaneMat3<double> f, g;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      f.a[i][j] = F(i, j);
-      g.a[i][j] = guess(i, j);
-    }
-  const PolarLanes<double> warm = polar_rotation_lanes(f, g);
+  const PolarLanes<double> warm = polar_rotation_lanes(to_lanes(F), to_lanes(guess));
   if (warm.converged != 0) {
-    Mat3 R;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) R(i, j) = warm.R.a[i][j];
+    const Mat3 R = to_mat3(warm.R);
     if (iterations) *iterations = static_cast<int>(warm.iterations);
     return R;
   }

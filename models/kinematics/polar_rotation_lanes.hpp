@@ -6,42 +6,16 @@
 // 3x3 algebra spelt out: Eigen's fixed-size matrices do not take a vector as scalar.
 #pragma once
 
-#include "models/core/lane_math.hpp"
+#include "models/core/lane_mat3.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace impact {
 
-/// A 3x3 matrix of lanes, row-major.
-template <class V>
-struct alignas(lane::kLaneBytes) LaneMat3 {
-  V a[3][3];
-};
-
 namespace lane_algebra {
 
 #define IMPACT_LANE_INLINE [[gnu::always_inline]] inline
-
-/// A^T B.
-template <class V>
-IMPACT_LANE_INLINE LaneMat3<V> transpose_times(const LaneMat3<V>& A, const LaneMat3<V>& B) {
-  LaneMat3<V> C;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      C.a[i][j] = A.a[0][i] * B.a[0][j] + A.a[1][i] * B.a[1][j] + A.a[2][i] * B.a[2][j];
-  return C;
-}
-
-/// A B.
-template <class V>
-IMPACT_LANE_INLINE LaneMat3<V> times(const LaneMat3<V>& A, const LaneMat3<V>& B) {
-  LaneMat3<V> C;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      C.a[i][j] = A.a[i][0] * B.a[0][j] + A.a[i][1] * B.a[1][j] + A.a[i][2] * B.a[2][j];
-  return C;
-}
 
 /// The Cayley rotation I + 2 ([c]x + [c]x^2) / (1 + |c|^2) (polar_decomposition.hpp).
 template <class V>
