@@ -49,31 +49,30 @@ PointState ElasticPlastic::initial_state(double temperature) const {
 }
 
 double ElasticPlastic::wave_speed(const PointState& s) const {
-  const double rho = p_.density / s.F.determinant();
+  return wave_speed(p_.density / lane_algebra::determinant(to_lanes(s.F)), s.internal_energy);
+}
+
+double ElasticPlastic::wave_speed(double rho, double internal_energy) const {
   double bulk = 0.0;
   if (const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state)) {
     bulk = default_hypo_effective_bulk_modulus(p_.bulk_modulus, p_.shear_modulus, *hypo);
   } else {
     const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
-    bulk = mie_gruneisen_bulk_modulus(mg, p_.density, rho, s.internal_energy);
+    bulk = mie_gruneisen_bulk_modulus(mg, p_.density, rho, internal_energy);
   }
-  const double modulus = bulk + 4.0 * p_.shear_modulus / 3.0;
-  if (!(modulus > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-  return std::sqrt(modulus / rho);
+  if (!(bulk + 4.0 * p_.shear_modulus / 3.0 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return longitudinal_wave_speed(bulk, p_.shear_modulus, rho);
 }
 
 bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
                                   PointState& s1, UpdateTrial& t, StepReport& report,
                                   const Corotated* corotated) const {
   report = StepReport{};
-  const double J1 = F1.determinant();
+  const double J1 = lane_algebra::determinant(to_lanes(F1));
   if (!(J1 > 0.0)) {
     report.status = UpdateStatus::negative_jacobian;
     return false;
   }
-  const double mu = p_.shear_modulus;
-  t.rho0_n = p_.density / s0.F.determinant();
-  t.rho1 = p_.density / J1;
   s1 = s0;
   s1.F = F1;
   s1.melted = false;
@@ -105,11 +104,17 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
     t.D_hat = D;
     t.R_out = Qh;
   }
-  t.p_n = -mean(stress_n);
 
   // 2. Deviatoric trial (eq. 4) at the start-of-step temperature; the radial return (eq. 5-6)
   //    follows, for one point (update) or a batch (UpdateBatch).
-  t.s_trial = deviator(stress_n) + 2.0 * mu * deviator(t.D_hat) * dt;
+  const TrialLanes<double> trial = trial_lanes<double>(to_lanes(stress_n), to_lanes(t.D_hat),
+                                                       lane_algebra::determinant(to_lanes(s0.F)),
+                                                       J1, p_.density, p_.shear_modulus, dt);
+  t.s_trial = to_mat3(trial.s_trial);
+  t.q_trial = trial.q_trial;
+  t.p_n = trial.p_n;
+  t.rho0_n = trial.rho0_n;
+  t.rho1 = trial.rho1;
   t.molten = p_.melting.do_melting && is_melted(s0.temperature, p_.melt_temperature);
   t.thermal = johnson_cook_thermal(p_.flow_stress, s0.temperature);
   t.batched = !t.molten && p_.return_algorithm == ReturnAlgorithm::newton;
@@ -143,40 +148,33 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
 void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
                                    const ReturnResult& r, double dt, PointState& s1,
                                    StepReport& report) const {
-  const double mu = p_.shear_modulus;
   const double rho1 = t.rho1;
-  const double rho0_n = t.rho0_n;
-  const double p_n = t.p_n;
-  const Mat3& D_hat = t.D_hat;
   const double T0 = s0.temperature;
   s1.melted = t.molten;
   report.return_iterations = r.iterations;
   if (!r.converged) report.status = UpdateStatus::return_mapping_not_converged;
-  const Mat3& s_new = r.deviator;
   const double d_ep = r.delta_plastic_strain;
-  const FlowStress& flow = r.flow;
   report.plastic = r.plastic;
   s1.plastic_strain = s0.plastic_strain + d_ep;
   s1.plastic_strain_rate = d_ep / dt;
 
   // 3. Adiabatic heating (eq. 8): the Taylor-Quinney fraction of the plastic work, retained by the
   //    point only when heating is on (off: isothermal, the heat leaves; docs/theory.md sec. 5).
-  report.plastic_work = flow.value * d_ep;
-  double heat_per_mass = 0.0;
-  if (p_.heating.enabled && d_ep > 0.0) {
-    heat_per_mass = p_.heating.taylor_quinney * report.plastic_work / rho1;
-    report.temperature_rise = adiabatic_temperature_rise(p_.heating.taylor_quinney, flow.value,
-                                                         d_ep, rho1, p_.specific_heat);
-    s1.temperature = T0 + report.temperature_rise;
-  }
+  const MaterialLanes<double> m = material_lanes<double>();
+  const HeatingLanes<double> h = heating_lanes<double>(m, r.flow.value, d_ep, rho1, T0);
+  report.plastic_work = h.plastic_work;
+  report.temperature_rise = h.temperature_rise;
+  s1.temperature = h.temperature;
 
   // 4. Pressure from the equation of state; the specific internal energy follows the work
   //    -p dv (trapezoidal) plus the retained heat, so e = e_v + c_p (T - T_0) at every step.
   double p_new = 0.0;
-  const double dv = 1.0 / rho1 - 1.0 / rho0_n;
-  if (const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state)) {
-    p_new = default_hypo_pressure(p_n, D_hat.trace(), dt, p_.bulk_modulus, mu, *hypo);
-    s1.internal_energy = s0.internal_energy - 0.5 * (p_n + p_new) * dv + heat_per_mass;
+  if (std::holds_alternative<DefaultHypoParams>(p_.equation_of_state)) {
+    const PressureLanes<double> pr = hypo_pressure_lanes<double>(
+        m.hypo_bulk_modulus, t.p_n, lane_algebra::trace(to_lanes(t.D_hat)), dt, s0.internal_energy,
+        t.rho0_n, rho1, h.heat_per_mass);
+    p_new = pr.pressure;
+    s1.internal_energy = pr.internal_energy;
   } else {
     const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
     const double eta = 1.0 - p_.density / rho1;
@@ -184,14 +182,30 @@ void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
       report.status = UpdateStatus::eos_out_of_range;
       return;
     }
-    const MieGruneisenStep m =
-        mie_gruneisen_update(mg, p_.density, rho0_n, rho1, p_n, s0.internal_energy, heat_per_mass,
-                             p_.specific_heat, T0, s1.temperature);
-    p_new = m.pressure;
-    s1.internal_energy = m.internal_energy;
+    const MieGruneisenStep step =
+        mie_gruneisen_update(mg, p_.density, t.rho0_n, rho1, t.p_n, s0.internal_energy,
+                             h.heat_per_mass, p_.specific_heat, T0, s1.temperature);
+    p_new = step.pressure;
+    s1.internal_energy = step.internal_energy;
   }
-  Mat3 stress_new = s_new - p_new * Mat3::Identity();
+  Mat3 stress_new = to_mat3(with_pressure(to_lanes(r.deviator), p_new));
 
+  // 5-6. Damage, porosity, failure and erosion.
+  stress_new = damage_and_failure(s0, t.D_hat, r, dt, rho1, stress_new, s1, report);
+
+  // 7. Back to the lab frame.
+  s1.stress = to_mat3(lane_algebra::rotate_symmetric(to_lanes(stress_new), to_lanes(t.R_out)));
+  check_end_state(s1, rho1, wave_speed(rho1, s1.internal_energy), report);
+}
+
+Mat3 ElasticPlastic::damage_and_failure(const PointState& s0, const Mat3& D_hat,
+                                        const ReturnResult& r, double dt, double rho1,
+                                        Mat3 stress_new, PointState& s1, StepReport& report) const {
+  const double mu = p_.shear_modulus;
+  const double d_ep = r.delta_plastic_strain;
+  const FlowStress& flow = r.flow;
+  const Mat3& s_new = r.deviator;
+  const double T0 = s0.temperature;
   // 5. Johnson-Cook damage (eq. 7) and optional porosity growth.
   if (p_.damage && d_ep > 0.0) {
     s1.damage +=
@@ -206,70 +220,68 @@ void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
   }
 
   // 6. Failure detection, only with an erosion algorithm (report sec. 3), then erosion.
-  if (p_.erosion != Erosion::none) {
-    if (!s0.failed) {
-      if (s1.melted) {
-        report.failure = FailureCause::melting;
-      } else if (report.plastic && p_.tepla.enabled &&
-                 tepla_indicator(s1.porosity, p_.tepla.critical_porosity, s1.damage) >= 1.0) {
-        report.failure = FailureCause::tepla;
-      } else if (report.plastic && d_ep > 0.0 && p_.stability.check != StabilityCheck::none) {
-        const double H =
-            effective_hardening(FlowSlopes{flow.d_plastic_strain, flow.d_rate, flow.d_temperature},
-                                flow.value, dt, p_.stability.rate_slope, p_.heating.enabled,
-                                p_.heating.taylor_quinney, rho1, p_.specific_heat);
-        const Mat3 Dp = s1.plastic_strain_rate * 1.5 * s_new / flow.value;
-        const StabilityResult st =
-            check_stability(p_.stability, p_.bulk_modulus, mu, stress_new, H, D_hat, Dp);
-        report.drucker_indicator = st.drucker.indicator;
-        report.becker_indicator = st.becker.indicator;
-        const FailureCause cause = st.drucker.unstable  ? FailureCause::drucker
-                                   : st.becker.unstable ? FailureCause::becker
-                                                        : FailureCause::none;
-        if (p_.stability.outcome == StabilityOutcome::fail) {
-          report.failure = cause;
-        } else {  // "report": a loss of stability is a localisation warning, not a fracture
-          if (st.drucker.unstable) s1.instability |= kDruckerFired;
-          if (st.becker.unstable) s1.instability |= kBeckerFired;
-        }
-      }
-      if (report.failure != FailureCause::none) {
-        s1.failed = true;
-        s1.failure_cause = report.failure;
-        s1.failed_in_tension = mean(stress_new) > 0.0;
+  if (p_.erosion == Erosion::none) return stress_new;
+  if (!s0.failed) {
+    if (s1.melted) {
+      report.failure = FailureCause::melting;
+    } else if (report.plastic && p_.tepla.enabled &&
+               tepla_indicator(s1.porosity, p_.tepla.critical_porosity, s1.damage) >= 1.0) {
+      report.failure = FailureCause::tepla;
+    } else if (report.plastic && d_ep > 0.0 && p_.stability.check != StabilityCheck::none) {
+      const double H =
+          effective_hardening(FlowSlopes{flow.d_plastic_strain, flow.d_rate, flow.d_temperature},
+                              flow.value, dt, p_.stability.rate_slope, p_.heating.enabled,
+                              p_.heating.taylor_quinney, rho1, p_.specific_heat);
+      const Mat3 Dp = s1.plastic_strain_rate * 1.5 * s_new / flow.value;
+      const StabilityResult st =
+          check_stability(p_.stability, p_.bulk_modulus, mu, stress_new, H, D_hat, Dp);
+      report.drucker_indicator = st.drucker.indicator;
+      report.becker_indicator = st.becker.indicator;
+      const FailureCause cause = st.drucker.unstable  ? FailureCause::drucker
+                                 : st.becker.unstable ? FailureCause::becker
+                                                      : FailureCause::none;
+      if (p_.stability.outcome == StabilityOutcome::fail) {
+        report.failure = cause;
+      } else {  // "report": a loss of stability is a localisation warning, not a fracture
+        if (st.drucker.unstable) s1.instability |= kDruckerFired;
+        if (st.becker.unstable) s1.instability |= kBeckerFired;
       }
     }
-    if (s1.failed) {
-      const Mat3 eroded = erode_stress(p_.erosion, stress_new);
-      const auto w = [&](const Mat3& t) {  // complementary elastic energy density
-        const Mat3 dev = deviator(t);
-        const double pr = mean(t);
-        return ddot(dev, dev) / (4.0 * mu) + pr * pr / (2.0 * p_.bulk_modulus);
-      };
-      // Booked on the step of failure only: later steps keep the stress constrained, which the
-      // strain energy (with the eroded stress) already accounts for; a total-form EOS (Mie-
-      // Gruneisen) would otherwise re-book the same tension p(rho)^2/2K every step.
-      if (report.failure != FailureCause::none) report.eroded_energy = w(stress_new) - w(eroded);
-      stress_new = eroded;
+    if (report.failure != FailureCause::none) {
+      s1.failed = true;
+      s1.failure_cause = report.failure;
+      s1.failed_in_tension = mean(stress_new) > 0.0;
     }
   }
+  if (!s1.failed) return stress_new;
+  const Mat3 eroded = erode_stress(p_.erosion, stress_new);
+  const auto w = [&](const Mat3& t) {  // complementary elastic energy density
+    const Mat3 dev = deviator(t);
+    const double pr = mean(t);
+    return ddot(dev, dev) / (4.0 * mu) + pr * pr / (2.0 * p_.bulk_modulus);
+  };
+  // Booked on the step of failure only: later steps keep the stress constrained, which the strain
+  // energy (with the eroded stress) already accounts for; a total-form EOS (Mie-Gruneisen) would
+  // otherwise re-book the same tension p(rho)^2/2K every step.
+  if (report.failure != FailureCause::none) report.eroded_energy = w(stress_new) - w(eroded);
+  return eroded;
+}
 
-  // 7. Back to the lab frame.
-  s1.stress = rotate(stress_new, t.R_out);
+void ElasticPlastic::check_end_state(const PointState& s1, double rho1, double wave,
+                                     StepReport& report) const {
   if (!s1.stress.allFinite()) report.status = UpdateStatus::non_finite_stress;
-  report.wave_speed = wave_speed(s1);
-  if (!std::isfinite(report.wave_speed)) {
-    // A failed point whose erosion drops the tension (AllowNoTension, ZeroStress) no longer
-    // follows the EOS there: its signal speed is the reference one, the stiffest it has when it
-    // closes again. Any other point is outside the EOS's range: a fault, not a silent NaN that
-    // std::max would drop from the time step.
-    const bool tension_eroded = s1.failed && (p_.erosion == Erosion::allow_no_tension ||
-                                              p_.erosion == Erosion::zero_stress);
-    if (tension_eroded) {
-      report.wave_speed = std::sqrt((p_.bulk_modulus + 4.0 * mu / 3.0) / rho1);
-    } else if (report.status == UpdateStatus::ok) {
-      report.status = UpdateStatus::non_finite_wave_speed;
-    }
+  report.wave_speed = wave;
+  if (std::isfinite(wave)) return;
+  // A failed point whose erosion drops the tension (AllowNoTension, ZeroStress) no longer follows
+  // the EOS there: its signal speed is the reference one, the stiffest it has when it closes
+  // again. Any other point is outside the EOS's range: a fault, not a silent NaN that std::max
+  // would drop from the time step.
+  const bool tension_eroded =
+      s1.failed && (p_.erosion == Erosion::allow_no_tension || p_.erosion == Erosion::zero_stress);
+  if (tension_eroded) {
+    report.wave_speed = std::sqrt((p_.bulk_modulus + 4.0 * p_.shear_modulus / 3.0) / rho1);
+  } else if (report.status == UpdateStatus::ok) {
+    report.status = UpdateStatus::non_finite_wave_speed;
   }
 }
 

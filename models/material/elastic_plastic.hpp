@@ -32,6 +32,7 @@
 #include "models/failure/tepla.hpp"
 #include "models/flow_stress/johnson_cook.hpp"
 #include "models/kinematics/corotation.hpp"
+#include "models/material/elastic_plastic_lanes.hpp"
 #include "models/plasticity/johnson_cook_return.hpp"
 #include "models/plasticity/radial_return.hpp"
 #include "models/stability/stability_check.hpp"
@@ -97,6 +98,7 @@ struct UpdateTrial {
   Mat3 D_hat;                  ///< rate of deformation in the working frame [1/s]
   Mat3 R_out;                  ///< rotation back to the lab frame
   Mat3 s_trial;                ///< trial deviator [Pa]
+  double q_trial = 0.0;        ///< its von Mises equivalent sqrt(3/2 s_tr:s_tr) [Pa]
   double p_n = 0.0;            ///< start-of-step pressure [Pa]
   double rho0_n = 0.0;         ///< start-of-step density [kg/m^3]
   double rho1 = 0.0;           ///< end-of-step density [kg/m^3]
@@ -137,7 +139,7 @@ class ElasticPlastic {
   template <class V>
   void to_lane(const PointState& s0, const UpdateTrial& t, double dt, ReturnValues<V>& r,
                int k) const {
-    lane::set(r.q_trial, k, std::sqrt(1.5 * ddot(t.s_trial, t.s_trial)));
+    lane::set(r.q_trial, k, t.q_trial);
     lane::set(r.three_mu, k, 3.0 * p_.shear_modulus);
     lane::set(r.plastic_strain, k, s0.plastic_strain);
     lane::set(r.dt, k, dt);
@@ -150,6 +152,32 @@ class ElasticPlastic {
   /// Longitudinal wave speed sqrt((K_s + 4 mu/3) / rho) of a state (for the time step); NaN when
   /// K_s + 4 mu/3 <= 0.
   double wave_speed(const PointState& s) const;
+  /// The same at density rho [kg/m^3] and specific internal energy e [J/kg].
+  double wave_speed(double rho, double internal_energy) const;
+
+  /// Steps 5-6 of finish_update: damage, porosity, failure detection and erosion of the end-of-step
+  /// stress in the working frame (returned, eroded where the point has failed). A no-op, returning
+  /// stress_new, unless the step was plastic, d_ep > 0, the point was molten or had failed: a batch
+  /// skips it then.
+  Mat3 damage_and_failure(const PointState& s0, const Mat3& D_hat, const ReturnResult& r, double dt,
+                          double rho1, Mat3 stress_new, PointState& s1, StepReport& report) const;
+  /// Step 7's checks: a non-finite stress, and a wave speed (`wave`, at rho1) that is not finite.
+  void check_end_state(const PointState& s1, double rho1, double wave, StepReport& report) const;
+
+  /// This material's constants for elastic_plastic_lanes.hpp.
+  template <class V>
+  MaterialLanes<V> material_lanes() const {
+    MaterialLanes<V> m;
+    m.density = lane::splat<V>(p_.density);
+    m.shear_modulus = lane::splat<V>(p_.shear_modulus);
+    const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state);
+    m.hypo_bulk_modulus = lane::splat<V>(
+        hypo ? default_hypo_effective_bulk_modulus(p_.bulk_modulus, p_.shear_modulus, *hypo) : 0.0);
+    m.heating = lane::splat<V>(p_.heating.enabled ? 1.0 : 0.0);
+    m.taylor_quinney = lane::splat<V>(p_.heating.taylor_quinney);
+    m.specific_heat = lane::splat<V>(p_.specific_heat);
+    return m;
+  }
 
  private:
   ElasticPlasticParams p_;

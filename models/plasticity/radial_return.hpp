@@ -36,6 +36,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "models/core/lane_mat3.hpp"
 #include "models/core/lane_math.hpp"
 #include "models/core/tensor.hpp"
 #include "models/flow_stress/johnson_cook.hpp"
@@ -201,7 +202,8 @@ ReturnResult radial_return(const Mat3& s_trial, double shear_modulus, double pla
                            double deviatoric_rate_norm = 0.0, const ReturnTolerance& tol = {},
                            double guess = 0.0) {
   ReturnResult out;
-  const double q_trial = std::sqrt(1.5 * ddot(s_trial, s_trial));
+  // The batched update's expression (elastic_plastic_lanes.hpp): the same bits.
+  const double q_trial = lane_algebra::equivalent_of_deviator(to_lanes(s_trial));
   if (algorithm == ReturnAlgorithm::report_2004) {
     const FlowStress static_flow = flow(plastic_strain, 0.0);
     if (q_trial <= static_flow.value) {

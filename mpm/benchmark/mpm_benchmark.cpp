@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -378,6 +379,7 @@ int main(int argc, char** argv) {
   try {
     const Json base = load_scene_document(file);
     const Json case01 = load_scene_document(dir_scenes + "case01.json");
+    if (!dir.empty()) std::filesystem::create_directories(dir);  // as mpm run does for --out
     std::printf("mpm_benchmark: %d OpenMP threads available\n", omp_get_max_threads());
     for (const std::string& s : sections) {
       if (s == "scaling") scaling(base, file, quick, dir);

@@ -72,9 +72,10 @@ void run(const Scenario& sc, const std::string& material_file, int points, int s
       for (int i0 = 0; i0 < points; i0 += UpdateBatch::capacity) {
         const int i1 = std::min(points, i0 + UpdateBatch::capacity);
         batch.clear();
+        Mat3 F1[UpdateBatch::capacity];  // in place until finish, as add requires
         for (int i = i0; i < i1; ++i) {
-          const Mat3 F1 = (Mat3::Identity() + L[i] * sc.dt) * state[i].F;
-          batch.add(m.model, state[i], L[i], F1, next[i]);
+          F1[i - i0] = (Mat3::Identity() + L[i] * sc.dt) * state[i].F;
+          batch.add(m.model, state[i], L[i], F1[i - i0], next[i]);
         }
         batch.run(sc.dt);
         for (int i = i0; i < i1; ++i) tally(count, batch.finish(i - i0, sc.dt, next[i]));
