@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "mpm/run/memory.hpp"
+#include "mpm/run/run.hpp"
+#include "mpm/run/summary.hpp"
 #include "mpm/solver.hpp"
 #include "mpm/study/study.hpp"
 

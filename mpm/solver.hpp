@@ -1,6 +1,7 @@
-// The solver loop: a Simulation owns particles, grid and ledger and advances them one explicit
-// step at a time (advance() in solver.cpp is the whole step on one screen); run() wraps it with
-// output, progress and failure handling. No global state: everything hangs off the Scene.
+// The solver: a Simulation owns particles, grid and ledger and advances them one explicit step at
+// a time (advance() in solver.cpp is the whole step on one screen); mpm/run/run.hpp drives it to
+// the end time with outputs, checkpoints and failure handling. No global state: everything hangs
+// off the Scene.
 #pragma once
 
 #include <optional>
@@ -131,45 +132,5 @@ class Simulation {
   long steps_ = 0;
   double max_signal_speed_ = 0.0;
 };
-
-struct RunOptions {
-  std::string out_dir;    ///< empty: the scene's output.directory
-  int threads = 0;        ///< <= 0: OpenMP default (a restart: the checkpoint's)
-  bool progress = false;  ///< a progress line on stderr
-  /// SIGINT/SIGTERM write a checkpoint and stop the run cleanly (mpm run; not mpm study).
-  bool handle_signals = false;
-  std::vector<FaultInjection> faults;  ///< --inject-fault
-};
-
-/// Exit codes of `mpm run` (docs/mpm.md#exit-codes); 1 is a usage error, 2 bad input (also a
-/// restart that is refused), 128 + N a stop by signal N (SIGINT 130, SIGTERM 143).
-inline constexpr int kExitRunFailed = 3;  ///< a numerical fault or another failure
-inline constexpr int kExitMemory = 4;     ///< the memory estimate exceeds what is available
-inline constexpr int kExitSignalBase = 128;
-
-/// Runs a scene to its end time writing history.csv, snapshots, summary.json, the resolved scene
-/// and (output.checkpoint_interval_steps, or on SIGINT/SIGTERM with handle_signals) checkpoints.
-/// Returns 0; kExitRunFailed after a SolverFailure (reported on stderr, final snapshot written,
-/// status.json "failed"); kExitMemory when the memory estimate exceeds the available memory
-/// (nothing is allocated or written); 128 + signal after a checkpoint on SIGINT/SIGTERM
-/// (status.json "interrupted").
-int run(const Scene& scene, const RunOptions& options);
-
-/// Continues the run in `dir` from dir/checkpoint.bin with dir/scene.json (mpm run --restart
-/// DIR), writing into `dir`; options.out_dir is ignored. Throws InputError when the checkpoint is
-/// missing, of another format version, corrupt, or does not belong to dir/scene.json, or when the
-/// thread count it gets differs from the checkpoint's without options.threads asking for it
-/// (then a warning: not bit-identical). Returns as run().
-int restart(const std::string& dir, const RunOptions& options);
-
-/// The thread count a run gets: `requested` if > 0, else OpenMP's default (at most kMaxThreads).
-int run_threads(int requested);
-/// Why `mpm run` must not start this scene (the memory estimate, which does not depend on the
-/// thread count, exceeds the available memory: both in the message), or empty. Allocates nothing.
-std::string memory_refusal(const Scene& scene);
-
-/// What `mpm check` prints after the resolved scene: per-object counts, mass, particle volume
-/// against the exact geometric volume, estimated steps and memory.
-Json check_report(const Scene& scene, int threads);
 
 }  // namespace impact::mpm

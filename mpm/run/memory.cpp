@@ -135,4 +135,22 @@ std::optional<double> peak_resident_memory() {
   return proc_field("/proc/self/status", "VmHWM");
 }
 
+std::string memory_refusal(const Scene& scene) {
+  const MemoryEstimate e = estimate_memory(scene);
+  const std::optional<double> available = available_memory();
+  if (!available || e.total() <= *available) return {};
+  std::ostringstream m;
+  m.precision(4);
+  m << "refusing to start: estimated memory " << e.total() / 1e6 << " MB (particles "
+    << e.particle_bytes / 1e6 << " MB for " << e.particles
+    << " particles estimated from the geometry, grid " << e.grid_bytes / 1e6 << " MB for "
+    << scene.grid.cells[0] << " x " << scene.grid.cells[1] << " x " << scene.grid.cells[2]
+    << " cells and " << scene.field_count() << " velocity field(s), output " << e.output_bytes / 1e6
+    << " MB, program " << e.program_bytes / 1e6 << " MB) exceeds the available memory "
+    << *available / 1e6
+    << " MB (MemAvailable in /proc/meminfo, or the cgroup's memory.max); coarsen grid.cells or "
+       "objects.*.particles_per_cell";
+  return m.str();
+}
+
 }  // namespace impact::mpm

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 
 #include "mpm/scene/scene.hpp"
 
@@ -47,5 +48,9 @@ double estimated_grid_bytes(const Scene& scene);
 std::optional<double> available_memory();
 /// Peak resident set size of this process so far (VmHWM of /proc/self/status) [bytes].
 std::optional<double> peak_resident_memory();
+
+/// Why `mpm run` must not start this scene (the memory estimate, which does not depend on the
+/// thread count, exceeds the available memory: both in the message), or empty. Allocates nothing.
+std::string memory_refusal(const Scene& scene);
 
 }  // namespace impact::mpm

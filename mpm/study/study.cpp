@@ -16,6 +16,8 @@
 #include <iostream>
 #include <set>
 
+#include "mpm/run/run.hpp"
+#include "mpm/run/summary.hpp"
 #include "mpm/solver.hpp"
 
 extern char** environ;

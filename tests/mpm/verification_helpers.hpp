@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "mpm/run/run.hpp"
 #include "mpm/solver.hpp"
 
 namespace impact::mpm::test {

@@ -1,0 +1,41 @@
+// What a run tells the terminal as it goes: a progress line (step, time, dt, energy error, ETA;
+// rewritten in place at most twice a second) and the particles flagged by numerical faults
+// (physics.on_numerical_fault = fail_particle: the first 20 printed, the rest counted).
+#pragma once
+
+#include <chrono>
+
+#include "mpm/solver.hpp"
+
+namespace impact::mpm {
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+  /// Starts the clock of the ETA (when the step loop starts).
+  void start();
+  /// Rewrites the line if half a second has passed since the last one.
+  void update(const Simulation& sim);
+  /// What a message on stderr starts with: a line break while the progress line is shown.
+  const char* break_line() const { return enabled_ ? "\n" : ""; }
+  /// Ends the line (a final line break).
+  void end() const;
+
+ private:
+  bool enabled_;
+  std::chrono::steady_clock::time_point start_, last_;
+};
+
+class FaultReport {
+ public:
+  explicit FaultReport(const ProgressLine& progress) : progress_(progress) {}
+  /// Warns on stderr about the particles the last step flagged.
+  void report(const Simulation& sim);
+
+ private:
+  static constexpr long kLines = 20;  ///< faulted particles printed, then only counted
+  const ProgressLine& progress_;
+  long reported_ = 0;
+};
+
+}  // namespace impact::mpm

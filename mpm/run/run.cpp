@@ -1,0 +1,263 @@
+#include "mpm/run/run.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "models/core/input.hpp"
+#include "mpm/output/atomic_file.hpp"
+#include "mpm/run/checkpoint.hpp"
+#include "mpm/run/interrupt.hpp"
+#include "mpm/run/memory.hpp"
+#include "mpm/run/progress.hpp"
+#include "mpm/run/run_outputs.hpp"
+#include "mpm/run/run_status.hpp"
+#include "mpm/run/summary.hpp"
+#include "mpm/step/parallel.hpp"
+
+namespace impact::mpm {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError({file.string() + ": cannot open"});
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool is_signal(const FaultInjection& f) {
+  return f.kind == FaultInjection::Kind::sigterm || f.kind == FaultInjection::Kind::sigint;
+}
+
+// Wall time of the step loop over every run of a restarted one.
+class WallClock {
+ public:
+  void restart(double before) {
+    before_ = before;
+    start_ = std::chrono::steady_clock::now();
+  }
+  double seconds() const {
+    return before_ +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  double before_ = 0.0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// The run of run() and restart() (`resume`: from dir/checkpoint.bin): set-up, the step loop with
+// its outputs, checkpoints, signals and reports, then the summary.
+int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume) {
+  const int threads = run_threads(options.threads);
+  // Refuse before anything is allocated or written.
+  if (const std::string refusal = memory_refusal(scene); !refusal.empty()) {
+    std::cerr << "mpm: " << refusal << '\n';
+    return kExitMemory;
+  }
+  fs::create_directories(dir);
+  const std::string scene_text = scene.resolved.dump(2) + '\n';
+  const std::uint64_t scene_hash = fnv1a(scene_text.data(), scene_text.size());
+  if (!resume) write_file_atomically(dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
+  WallClock wall;
+  Simulation sim(scene, threads);
+  if (resume && sim.threads() != threads) {
+    throw InputError({(dir / kCheckpointFile).string() + ": needs " + std::to_string(threads) +
+                      " threads, this process gets " + std::to_string(sim.threads())});
+  }
+  for (const FaultInjection& f : options.faults) {
+    if (is_signal(f)) continue;
+    if (f.particle >= sim.particles().size()) {
+      std::cerr << "mpm: --inject-fault: particle " << f.particle << " out of range ("
+                << sim.particles().size() << " particles)\n";
+      return 1;
+    }
+    sim.inject(f);
+  }
+  RunOutputs outputs(scene, sim);  // gauge and crater particle sets from the particles as seeded
+  RunStatus status_file(dir,
+                        scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle);
+  RunState resumed;
+  double paths_start = 0.0;  // after a restart: the paths begin there
+  if (resume) {
+    resumed = read_checkpoint(dir / kCheckpointFile, sim);
+    std::cerr << "mpm: restarting " << dir.string() << " from step " << sim.steps() << ", time "
+              << sim.time() << " s (" << sim.threads() << " threads)\n";
+    paths_start = sim.time();
+    status_file.checkpointed(sim.steps(), sim.time());
+  }
+  outputs.open(scene, dir, sim, resume ? &resumed : nullptr);
+  const auto write_history = [&] {
+    outputs.write_history(sim);
+    status_file.write(sim, wall.seconds(), "running");
+  };
+  const auto write_outputs = [&] {
+    write_history();
+    outputs.write_snapshot(sim, sim.steps());
+  };
+  if (!resume) write_outputs();
+  double next_output = resume ? resumed.next_output : scene.output.interval;
+  const auto checkpoint = [&] {
+    write_checkpoint(dir / kCheckpointFile, sim, outputs.state(next_output, wall.seconds()),
+                     scene_hash);
+    status_file.checkpointed(sim.steps(), sim.time());
+  };
+  const long every = scene.output.checkpoint_interval_steps;
+  const InterruptHandlers handlers(
+      options.handle_signals ||
+      std::any_of(options.faults.begin(), options.faults.end(), is_signal));
+  ProgressLine progress(options.progress);
+  FaultReport faults(progress);
+  wall.restart(resume ? resumed.wall_time : 0.0);
+  progress.start();
+  std::string status = "completed", message;
+  int code = 0;
+  try {
+    while (!sim.finished()) {
+      const double t_before = sim.time();
+      outputs.before_step(sim);
+      sim.step();
+      outputs.after_step(sim, sim.time() - t_before);
+      faults.report(sim);
+      if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
+        write_outputs();
+        while (next_output <= sim.time() * (1.0 + 1e-12)) next_output += scene.output.interval;
+      }
+      if (every > 0 && sim.steps() % every == 0 && !sim.finished()) checkpoint();
+      for (const FaultInjection& f : options.faults) {
+        if (is_signal(f) && f.step == sim.steps()) {
+          raise_signal(f.kind == FaultInjection::Kind::sigint ? sigint_number() : sigterm_number());
+        }
+      }
+      if (const int signal = pending_interrupt(); signal != 0 && !sim.finished()) {
+        if (status_file.checkpoint_step() != sim.steps()) checkpoint();
+        std::ostringstream m;
+        m.precision(9);
+        m << "interrupted by " << signal_name(signal) << " after step " << sim.steps() << ", time "
+          << sim.time() << " s: checkpoint " << (dir / kCheckpointFile).string()
+          << "; continue with: mpm run --restart " << dir.string();
+        status = "interrupted";
+        message = m.str();
+        code = kExitSignalBase + signal;
+        std::cerr << progress.break_line() << "mpm: " << message << '\n';
+        break;
+      }
+      progress.update(sim);
+    }
+  } catch (const SolverFailure& e) {
+    status = "failed";
+    message = e.what();
+    code = kExitRunFailed;
+    std::cerr << progress.break_line() << "mpm: run failed: " << message << '\n';
+    outputs.write_snapshot(sim, sim.steps() + 1);
+    outputs.write_history(sim);
+    status_file.write(sim, wall.seconds(), "running");
+  } catch (const std::exception& e) {  // e.g. an output that cannot be written: say so, re-throw
+    try {
+      status_file.write(sim, wall.seconds(), "failed", e.what());
+    } catch (const std::exception&) {  // keep the original error
+    }
+    throw;
+  }
+  if (status != "interrupted") progress.end();
+  if (sim.faulted_particles() > 0) {
+    std::cerr << "mpm: " << sim.faulted_particles()
+              << " particle(s) flagged failed by numerical faults (physics.on_numerical_fault = "
+                 "fail_particle)\n";
+  }
+  outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
+  const double seconds = wall.seconds();
+  const Json summary =
+      run_summary(sim, status, message, seconds, outputs.observables(), outputs.paths());
+  write_file_atomically(dir / "summary.json",
+                        [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
+  status_file.write(sim, seconds, status, message);  // last: every file is then in place
+  return code;
+}
+
+}  // namespace
+
+int run_threads(int requested) {
+  return std::min(requested > 0 ? requested : omp_get_max_threads(), kMaxThreads);
+}
+
+int run(const Scene& scene, const RunOptions& options) {
+  return run_in(
+      scene, options,
+      options.out_dir.empty() ? fs::path(scene.output.directory) : fs::path(options.out_dir),
+      false);
+}
+
+int restart(const std::string& directory, const RunOptions& options) {
+  const fs::path dir(directory);
+  const fs::path file = dir / kCheckpointFile;
+  if (!fs::exists(file)) {
+    throw InputError({file.string() +
+                      ": no checkpoint (mpm run writes one every "
+                      "output.checkpoint_interval_steps steps and on SIGINT/SIGTERM)"});
+  }
+  CheckpointHeader header;
+  try {
+    header = read_checkpoint_header(file);
+  } catch (const CheckpointError& e) {
+    throw InputError({e.what()});
+  }
+  // The scene is the directory's scene.json, as the checkpointed run wrote it.
+  const fs::path scene_file = dir / "scene.json";
+  const std::string text = read_text(scene_file);
+  if (fnv1a(text.data(), text.size()) != header.scene_hash) {
+    throw InputError({scene_file.string() +
+                      ": changed since the checkpoint was written (it is not "
+                      "the scene of " +
+                      file.string() + ")"});
+  }
+  Json doc;
+  try {
+    doc = Json::parse(text);
+  } catch (const std::exception& e) {
+    throw InputError({scene_file.string() + ": " + e.what()});
+  }
+  // Material paths in scene.json are relative to the working directory of the run.
+  if (doc.contains("materials") && doc["materials"].is_object()) {
+    for (auto& item : doc["materials"].items()) {
+      Json& m = item.value();
+      if (!m.is_object() || !m.contains("file") || !m["file"].is_string()) continue;
+      const fs::path p(m["file"].get<std::string>());
+      if (p.is_relative())
+        m["file"] = (fs::path(header.working_directory) / p).lexically_normal().string();
+    }
+  }
+  const Scene scene = read_scene(doc, scene_file.string());
+  for (const std::string& w : scene.warnings) std::cerr << "mpm: warning: " << w << '\n';
+  RunOptions o = options;
+  if (options.threads <= 0) {
+    o.threads = header.threads;
+  } else if (options.threads != header.threads) {
+    std::cerr << "mpm: warning: --threads " << options.threads << " differs from the checkpoint's "
+              << header.threads
+              << " threads: the continued run is not bit-identical to an "
+                 "uninterrupted one (round-off differences, docs/mpm.md#threads-and-determinism)\n";
+  }
+  if (run_threads(o.threads) != o.threads) {
+    throw InputError(
+        {file.string() + ": written with " + std::to_string(header.threads) +
+         " threads, this process gets " + std::to_string(run_threads(o.threads)) +
+         " (results would not be bit-identical; --threads N overrides with a warning)"});
+  }
+  try {
+    return run_in(scene, o, dir, true);
+  } catch (const CheckpointError& e) {
+    throw InputError({e.what()});
+  }
+}
+
+}  // namespace impact::mpm

@@ -1,0 +1,58 @@
+// What a run writes as it goes: history.csv (the ledger and the gauges, with the observables
+// sampled at every row), the particle snapshots (.vtu and .pvd) and the particle paths; and what
+// of them a checkpoint must keep so that a restart continues every file where it stopped.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include "mpm/output/observables.hpp"
+#include "mpm/output/output.hpp"
+#include "mpm/output/particle_paths.hpp"
+#include "mpm/run/checkpoint.hpp"
+#include "mpm/solver.hpp"
+
+namespace impact::mpm {
+
+class RunOutputs {
+ public:
+  /// The gauge and crater particle sets, from sim as seeded (before a checkpoint is loaded).
+  RunOutputs(const Scene& scene, const Simulation& seeded);
+  /// Opens the files in `dir` for sim as it starts: as seeded, or, with `resumed`, as restored
+  /// from a checkpoint (history.csv is then truncated to the checkpoint's rows and continued, the
+  /// observables and the snapshot collection continue, the particle paths begin here).
+  void open(const Scene& scene, const std::filesystem::path& dir, const Simulation& sim,
+            const RunState* resumed);
+
+  /// Around Simulation::step(): the particle paths record the step.
+  void before_step(const Simulation& sim) { paths_->before_step(sim.particles()); }
+  void after_step(const Simulation& sim, double dt) {
+    paths_->after_step(sim.particles(), sim.time(), dt);
+  }
+
+  /// A history row (the observables are sampled with it).
+  void write_history(const Simulation& sim);
+  /// A particle snapshot numbered `index` (the step, or step + 1 for the state a failure left).
+  void write_snapshot(const Simulation& sim, long index);
+
+  /// The files' positions for a checkpoint, with the next output time and the wall time so far.
+  RunState state(double next_output, double wall) const;
+
+  /// The particle paths' files (also after a failure: the path up to it); `start` is the time
+  /// they begin at (0, or the restart's time).
+  void write_paths(const std::filesystem::path& dir, const Scene& scene, double start) const {
+    paths_->write(dir, scene, scene.file, start);
+  }
+  const Observables& observables() const { return observables_; }
+  const ParticlePaths& paths() const { return *paths_; }
+
+ private:
+  Gauges gauges_;
+  Observables observables_;
+  std::optional<ParticlePaths> paths_;
+  bool faulted_column_;
+  std::optional<HistoryCsv> history_;
+  std::optional<SnapshotWriter> snapshots_;
+};
+
+}  // namespace impact::mpm

@@ -1,0 +1,136 @@
+#include "mpm/run/summary.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "mpm/run/memory.hpp"
+#include "mpm/step/step.hpp"
+
+namespace impact::mpm {
+
+namespace {
+
+Json vec_json(const Vec3& v) {
+  return Json::array({v(0), v(1), v(2)});
+}
+
+Json row_json(const Ledger& ledger) {
+  const LedgerRow r = ledger.row();
+  const auto cols = ledger.columns();
+  const auto vals = ledger.values(r);
+  Json j;
+  for (std::size_t i = 0; i < cols.size(); ++i) j[cols[i]] = vals[i];
+  return j;
+}
+
+// Failed particles per cause (melting, tepla, drucker, becker) and the particles where a stability
+// check fired without failing them (stability_check.outcome = "report").
+Json failure_causes(const Particles& P) {
+  std::array<std::int64_t, 5> by_cause{};
+  std::int64_t drucker = 0, becker = 0, in_tension = 0;
+  for (const PointState& s : P.state) {
+    if (s.failed) ++by_cause[static_cast<std::size_t>(s.failure_cause)];
+    in_tension += s.failed && s.failed_in_tension;
+    drucker += (s.instability & kDruckerFired) != 0;
+    becker += (s.instability & kBeckerFired) != 0;
+  }
+  Json j;
+  for (const FailureCause c :
+       {FailureCause::melting, FailureCause::tepla, FailureCause::drucker, FailureCause::becker})
+    j[std::string(to_string(c))] = by_cause[static_cast<std::size_t>(c)];
+  j["in_tension"] = in_tension;  // of all causes: failed with a tensile mean stress
+  j["drucker_reported"] = drucker;
+  j["becker_reported"] = becker;
+  return j;
+}
+
+// Per object counts, mass and volumes, and the memory estimate with the seeded count: what
+// `mpm check` and summary.json share.
+Json particle_report(const Scene& scene, const Particles& P, int threads) {
+  Json objects = Json::object();
+  double total_mass = 0.0;
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    std::size_t n = 0;
+    double mass = 0.0, vol = 0.0;
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      if (P.object[p] != o) continue;
+      ++n;
+      mass += P.mass[p];
+      vol += P.volume0[p];
+    }
+    const double exact = volume(scene.objects[o].geometry);
+    const double rho = scene.materials[scene.objects[o].material].material.model.params().density;
+    objects[scene.objects[o].name] = {
+        {"particles", n},
+        {"mass [kg]", mass},
+        {"particle_volume [m^3]", vol},
+        {"geometric_volume [m^3]", exact},
+        {"geometric_mass [kg]", rho * exact},
+        {"volume_ratio", exact > 0 ? vol / exact : 0.0},
+        {"kinetic_energy [J]", 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
+    total_mass += mass;
+  }
+  const MemoryEstimate memory = estimate_memory(scene, P.size());
+  Json report = {{"objects", objects},
+                 {"particles", P.size()},
+                 {"mass [kg]", total_mass},
+                 {"memory [MB]", memory.total() / 1e6},
+                 {"memory_estimate", memory.json()},
+                 {"memory_per_particle [B]", Particles::bytes_per_particle()},
+                 {"velocity_fields", scene.field_count()},
+                 {"threads", threads}};
+  if (const auto available = available_memory()) report["available_memory [MB]"] = *available / 1e6;
+  if (!scene.output.gauges.empty()) {
+    Json gauges = Json::object();
+    for (const GaugeSpec& gs : scene.output.gauges) gauges[gs.name] = {{"particles", gs.particles}};
+    report["gauges"] = gauges;
+  }
+  return report;
+}
+
+}  // namespace
+
+Json check_report(const Scene& scene, int threads) {
+  const Particles P = seed_particles(scene);
+  Json report = particle_report(scene, P, threads);
+  const double dt =
+      std::min(stable_time_step(scene.grid.spacing(), max_signal_speed(P), scene.time.multiplier),
+               scene.time.max_dt);
+  report["stable_dt [s]"] = dt;
+  report["estimated_steps"] = std::ceil(scene.time.max_time / dt);
+  return report;
+}
+
+Json run_summary(const Simulation& sim, const std::string& status, const std::string& message,
+                 double wall, const Observables& observables, const ParticlePaths& paths) {
+  const Scene& scene = sim.scene();
+  Json summary = particle_report(scene, sim.particles(), sim.threads());
+  summary["status"] = status;
+  if (!message.empty()) summary["message"] = message;
+  summary["steps"] = sim.steps();
+  summary["time [s]"] = sim.time();
+  summary["wall_time [s]"] = wall;
+  summary["particle_steps_per_second"] =
+      wall > 0 ? double(sim.particles().size()) * double(sim.steps()) / wall : 0.0;
+  if (const auto peak = peak_resident_memory()) summary["peak_resident_memory [MB]"] = *peak / 1e6;
+  summary["initial_energy [J]"] = sim.ledger().initial_energy();
+  summary["velocity_fields"] = sim.grid().fields();
+  summary["failed_particles"] = sim.failed_particles();
+  summary["failed_by_cause"] = failure_causes(sim.particles());
+  for (std::size_t i = 0; i < scene.output.particle_paths.size(); ++i)
+    summary["particle_paths"][scene.output.particle_paths[i].name] = paths.particle(i);
+  summary["converted_particles"] = sim.converted_particles();
+  summary["faulted_particles"] = sim.faulted_particles();
+  summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
+  summary["final"] = row_json(sim.ledger());
+  summary["observables"] = observables.summary(sim.particles());
+  summary["units"] = {{"time", "s"},
+                      {"energy", "J"},
+                      {"momentum", "kg m/s"},
+                      {"boundary_impulse", "N s"},
+                      {"energy_error", "-"}};
+  return summary;
+}
+
+}  // namespace impact::mpm

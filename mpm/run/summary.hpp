@@ -1,0 +1,22 @@
+// summary.json of a run and the report of `mpm check`: per-object counts, mass and volumes, the
+// memory estimate, the ledger's last row, failures by cause, the observables and the run's speed.
+#pragma once
+
+#include <string>
+
+#include "mpm/output/observables.hpp"
+#include "mpm/output/particle_paths.hpp"
+#include "mpm/solver.hpp"
+
+namespace impact::mpm {
+
+/// What `mpm check` prints after the resolved scene: per-object counts, mass, particle volume
+/// against the exact geometric volume, estimated steps and memory.
+Json check_report(const Scene& scene, int threads);
+
+/// summary.json at the end of a run: `status` (completed, failed, interrupted) with its message,
+/// `wall` the step loop's wall time [s] over every run of a restarted one.
+Json run_summary(const Simulation& sim, const std::string& status, const std::string& message,
+                 double wall, const Observables& observables, const ParticlePaths& paths);
+
+}  // namespace impact::mpm
