@@ -26,6 +26,9 @@ PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-de
 FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
 # clang-format-14 checks every C++ file against .clang-format (test `clang_format`).
 STYLE_PACKAGES=(clang-format-14)
+# Open MPI builds the domain decomposition (docs/mpi.md); the test job runs it on 2 and 4 ranks.
+# Optional: without it everything builds and runs on one rank.
+MPI_PACKAGES=(libopenmpi-dev openmpi-bin)
 
 install_missing_packages() {  # install_missing_packages [EXTRA_PACKAGE ...]
   local missing=() p
@@ -58,7 +61,7 @@ case "${1:-}" in
     /usr/bin/python3 mpm/study/study_plot.py build/recommended
     ;;
   test)
-    install_missing_packages "${FUZZ_PACKAGES[@]}" "${STYLE_PACKAGES[@]}"
+    install_missing_packages "${FUZZ_PACKAGES[@]}" "${STYLE_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
     # The test job treats every compiler warning as an error (-Wall -Wextra -Wpedantic are on).
     build release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
     ctest --preset release

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "mpm/parallel/migration.hpp"
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -36,22 +37,22 @@ template <class Shape>
 StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S,
                    ScatterOrder& order, const StressUpdateSettings& settings, const SolverSpec& s,
                    const ContactSpec* contact, const std::vector<HeatCapacity>& heat_capacity,
-                   double dt, std::optional<Failure>& failure) {
+                   double dt, const HaloExchange* halo, std::optional<Failure>& failure) {
   StepTotals t;
   PhaseClock clock(t.seconds);
   const bool usl = s.scheme == Scheme::usl;
   compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n, once per step
   order_for_scatter(S, G, order);  // by slab and colour: race-free scatters, any thread count
-  particles_to_grid<Shape>(P, G, S, order);  // m_I, p_I, f_I per field  (eqs. 20-22)
+  particles_to_grid<Shape>(P, G, S, order, halo);  // m_I, p_I, f_I per field (eqs. 20-22)
   clock.lap(&PhaseTimes::particles_to_grid);
   t.grid = grid_update(G, dt, s.gravity, usl, contact);  // v*_I, contact, faces (eq. 24)
   clock.lap(&PhaseTimes::grid_update);
   // FLIP velocity, x from v*_I; USL: L from v^L_I (= v*_I but at light nodes)   (eqs. 23, 25-26)
   t.particles = grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, heat_capacity, failure);
   clock.lap(&PhaseTimes::grid_to_particles);
-  if (failure) return t;
+  if (halo ? halo->comm().any(failure.has_value()) : failure.has_value()) return t;
   if (!usl) {
-    remap_and_gradient<Shape>(P, G, S, order, contact);  // MUSL: L from the re-mapped v^{n+1}_I
+    remap_and_gradient<Shape>(P, G, S, order, contact, halo);  // MUSL: L from re-mapped v^{n+1}_I
     clock.lap(&PhaseTimes::remap);
   }
   t.stress = update_stress(P, settings, dt, failure);  // sigma, F, V, q; eq. 14
@@ -114,14 +115,28 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene, int threads)
+Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
     : scene_(scene),
       particles_(seed_particles(scene)),
       grid_(scene.grid, thread_count(threads), scene.field_count(),
             scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
-      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove) {
+      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove),
+      slabs_(scene.grid.cells[0]) {
+  if (comm != nullptr && comm->size() > 1) {
+    // Every rank seeds the whole scene, splits it the same way, and keeps its slab.
+    comm_ = comm;
+    std::vector<std::size_t> counts(std::size_t(scene_.grid.cells[0]), 0);
+    for (const Vec3& x : particles_.x) ++counts[std::size_t(cell_column(scene_.grid, x(0)))];
+    slabs_ = SlabDecomposition::balanced(counts, comm->size());
+    const int r = comm->rank();
+    particles_ = keep_slab(std::move(particles_), slabs_, scene_.grid, r);
+    grid_.set_owned_planes(r == 0 ? -1 : slabs_.first_cell(r), r + 1 == comm->size()
+                                                                   ? scene_.grid.cells[0] + 1
+                                                                   : slabs_.first_cell(r + 1) - 1);
+    halo_.emplace(*comm_, slabs_);
+  }
   const PhysicsSpec& ph = scene_.physics;
   StressUpdateSettings& st = stress_settings_;
   bool erosion = false;
@@ -158,10 +173,10 @@ Simulation::Simulation(const Scene& scene, int threads)
       grid_.field_body[scene_.companion_field(m)] = m;
     }
   }
-  if (!particles_.mass.empty()) {
-    grid_.light_mass =
-        kLightNodeMassFraction * *std::min_element(particles_.mass.begin(), particles_.mass.end());
-  }
+  double lightest = std::numeric_limits<double>::infinity();
+  for (const double m : particles_.mass) lightest = std::min(lightest, m);
+  if (comm_) lightest = comm_->min(lightest);
+  if (std::isfinite(lightest)) grid_.light_mass = kLightNodeMassFraction * lightest;
   restart_ledger();
 }
 
@@ -172,8 +187,14 @@ void Simulation::restart_ledger() {
     ke += 0.5 * particles_.mass[i] * particles_.v[i].squaredNorm();
     p += particles_.mass[i] * particles_.v[i];
   }
-  ledger_.start(0.0, ke, p);
   max_signal_speed_ = max_signal_speed(particles_);
+  if (comm_) {
+    const std::vector<double> sum = comm_->sum({ke, p(0), p(1), p(2)});
+    ke = sum[0];
+    p = Vec3(sum[1], sum[2], sum[3]);
+    max_signal_speed_ = comm_->max(max_signal_speed_);
+  }
+  ledger_.start(0.0, ke, p);
 }
 
 double Simulation::next_dt() const {
@@ -188,7 +209,17 @@ double Simulation::next_dt() const {
 
 const StepTotals& Simulation::step() {
   apply_injections();
-  check_particles();
+  if (comm_) {  // a failure on one rank stops all of them
+    std::optional<std::string> bad;
+    try {
+      check_particles();
+    } catch (const SolverFailure& e) {
+      bad = e.what();
+    }
+    agree_on_failure(bad);
+  } else {
+    check_particles();
+  }
   double dt = next_dt();
   if (!(dt >= scene_.time.min_dt) || !std::isfinite(dt) || !(dt > 0.0)) {
     // The step collapses when one particle's signal speed c + |v| runs away: name it.
@@ -206,7 +237,7 @@ const StepTotals& Simulation::step() {
     m.precision(6);
     m << "stable time step " << dt << " s below time.min_dt = " << scene_.time.min_dt
       << " s; this particle has the fastest signal, c + |v| = " << signal << " m/s";
-    throw SolverFailure(
+    agree_on_failure(
         describe(Failure{fastest, "time step", m.str(), std::nullopt}, steps_ + 1, time_));
   }
   dt = std::min(dt, scene_.time.max_time - time_);  // land on max_time
@@ -217,11 +248,17 @@ const StepTotals& Simulation::step() {
         auto& S = std::get<Stencils<Shape>>(stencils_);
         const ContactSpec* contact = grid_.fields() > 1 ? &scene_.physics.contact : nullptr;
         return advance(particles_, grid_, shape, S, scatter_order_, stress_settings_, scene_.solver,
-                       contact, heat_capacity_, dt, failure);
+                       contact, heat_capacity_, dt, halo_ ? &*halo_ : nullptr, failure);
       },
       shape_);
   stress_settings_.inject_nan_stress = -1;
-  if (failure) throw SolverFailure(describe(*failure, steps_ + 1, time_ + dt));
+  if (comm_) {
+    agree_on_failure(failure ? std::optional(describe(*failure, steps_ + 1, time_ + dt))
+                             : std::nullopt);
+    reduce(last_);
+  } else if (failure) {
+    throw SolverFailure(describe(*failure, steps_ + 1, time_ + dt));
+  }
   time_ += dt;
   ++steps_;
   max_signal_speed_ = last_.stress.max_signal_speed;
@@ -241,11 +278,82 @@ const StepTotals& Simulation::step() {
   }
   failed_ += last_.stress.failed;
   converted_ += last_.stress.converted;
-  faulted_ += static_cast<long>(last_.stress.faulted.size());
+  const auto faulted = static_cast<std::int64_t>(last_.stress.faulted.size());
+  faulted_ += static_cast<long>(comm_ ? comm_->sum(faulted) : faulted);
   // The step is complete (time, ledger and particles at t^{n+1}): the failure names this step.
-  if (auto grown = energy_growth(ledger_, particles_, scene_.time))
+  const std::optional<Failure> grown = energy_growth(ledger_, particles_, scene_.time);
+  if (comm_) {
+    agree_on_failure(grown ? std::optional(describe(*grown, steps_, time_)) : std::nullopt);
+    // Particles that left this rank's slab go to their new owner.
+    migrated_ = migrate(particles_, slabs_, scene_.grid, *comm_).sent;
+  } else if (grown) {
     throw SolverFailure(describe(*grown, steps_, time_));
+  }
   return last_;
+}
+
+void Simulation::agree_on_failure(const std::optional<std::string>& message) const {
+  if (!comm_) {
+    if (message) throw SolverFailure(*message);
+    return;
+  }
+  const std::vector<double> failed = comm_->gather_all(message ? 1.0 : 0.0);
+  for (int r = 0; r < comm_->size(); ++r) {
+    if (failed[std::size_t(r)] == 0.0) continue;
+    throw SolverFailure(comm_->broadcast(message.value_or(""), r));
+  }
+}
+
+void Simulation::reduce(StepTotals& t) const {
+  ParticleTotals& p = t.particles;
+  StressTotals& st = t.stress;
+  GridUpdate& g = t.grid;
+  // One reduction of every summed total, in a fixed order.
+  std::vector<double> v = {p.kinetic_energy,
+                           p.momentum(0),
+                           p.momentum(1),
+                           p.momentum(2),
+                           p.friction_heat,
+                           p.outflow_mass,
+                           p.outflow_momentum(0),
+                           p.outflow_momentum(1),
+                           p.outflow_momentum(2),
+                           p.outflow_kinetic_energy,
+                           double(p.removed),
+                           st.strain_energy_increment,
+                           st.viscous_work,
+                           st.eroded_energy,
+                           double(st.failed),
+                           double(st.converted),
+                           g.boundary_impulse(0),
+                           g.boundary_impulse(1),
+                           g.boundary_impulse(2),
+                           g.contact.friction_heat,
+                           double(g.contact.contact_nodes),
+                           g.wall_friction_heat,
+                           g.external_impulse(0),
+                           g.external_impulse(1),
+                           g.external_impulse(2),
+                           g.external_work};
+  v = comm_->sum(v);
+  std::size_t k = 0;
+  for (double* d : {&p.kinetic_energy, &p.momentum(0), &p.momentum(1), &p.momentum(2),
+                    &p.friction_heat, &p.outflow_mass, &p.outflow_momentum(0),
+                    &p.outflow_momentum(1), &p.outflow_momentum(2), &p.outflow_kinetic_energy})
+    *d = v[k++];
+  p.removed = static_cast<long>(v[k++]);
+  for (double* d : {&st.strain_energy_increment, &st.viscous_work, &st.eroded_energy}) *d = v[k++];
+  st.failed = static_cast<long>(v[k++]);
+  st.converted = static_cast<long>(v[k++]);
+  for (double* d : {&g.boundary_impulse(0), &g.boundary_impulse(1), &g.boundary_impulse(2),
+                    &g.contact.friction_heat})
+    *d = v[k++];
+  g.contact.contact_nodes = static_cast<long>(v[k++]);
+  for (double* d : {&g.wall_friction_heat, &g.external_impulse(0), &g.external_impulse(1),
+                    &g.external_impulse(2), &g.external_work})
+    *d = v[k++];
+  p.max_speed = comm_->max(p.max_speed);
+  st.max_signal_speed = comm_->max(st.max_signal_speed);
 }
 
 std::string Simulation::describe(const Failure& f, long step, double time) const {
@@ -253,7 +361,9 @@ std::string Simulation::describe(const Failure& f, long step, double time) const
   const Particles& P = particles_;
   std::ostringstream m;
   m.precision(9);
-  m << "step " << step << ", time " << time << " s: particle " << f.particle;
+  m << "step " << step << ", time " << time << " s: ";
+  if (comm_) m << "rank " << comm_->rank() << ", ";
+  m << "particle " << (f.particle < P.id.size() ? P.id[f.particle] : f.particle);
   if (f.particle < P.size()) {
     const std::size_t p = f.particle;
     const PointState& s = f.state ? *f.state : P.state[p];

@@ -10,6 +10,9 @@
 
 #include "mpm/grid/grid.hpp"
 #include "mpm/ledger/ledger.hpp"
+#include "mpm/parallel/communicator.hpp"
+#include "mpm/parallel/halo_exchange.hpp"
+#include "mpm/parallel/slab_decomposition.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/scene/scene.hpp"
 #include "mpm/shape/shape.hpp"
@@ -60,8 +63,12 @@ struct StepTotals {
 
 class Simulation {
  public:
-  /// Seeds the particles and builds the grid; `threads` <= 0 keeps OpenMP's default.
-  explicit Simulation(const Scene& scene, int threads = 0);
+  /// Seeds the particles and builds the grid; `threads` <= 0 keeps OpenMP's default. With `comm`
+  /// of several ranks (docs/mpi.md) the grid is split into slabs along x balanced by particle
+  /// count: this rank keeps its slab's particles, sums the node planes it shares with its
+  /// neighbours, and every total (ledger, time step, failures) is reduced over the ranks, so the
+  /// ledger and the time step are the same on every rank.
+  explicit Simulation(const Scene& scene, int threads = 0, const Communicator* comm = nullptr);
   Simulation(const Simulation&) = delete;  // models_ points into scene_
   Simulation& operator=(const Simulation&) = delete;
 
@@ -86,6 +93,12 @@ class Simulation {
   long steps() const { return steps_; }
   bool finished() const { return time_ >= scene_.time.max_time * (1.0 - 1e-12); }
   int threads() const { return grid_.threads(); }
+  /// This process's rank and the slabs (one rank: rank 0 and one slab).
+  int rank() const { return comm_ ? comm_->rank() : 0; }
+  int ranks() const { return comm_ ? comm_->size() : 1; }
+  const SlabDecomposition& slabs() const { return slabs_; }
+  /// Particles that moved to another rank in the last step.
+  std::size_t migrated() const { return migrated_; }
   long failed_particles() const { return failed_; }        ///< failures so far
   long converted_particles() const { return converted_; }  ///< moved to a companion field
   /// Particles flagged by physics.on_numerical_fault = fail_particle so far.
@@ -125,6 +138,15 @@ class Simulation {
   std::vector<FaultInjection> injections_;
   /// The particle loops' start-of-step check (positions inside the grid, velocities finite).
   void check_particles() const;
+  /// Throws SolverFailure on every rank when any rank has a failure message: the lowest such
+  /// rank's, which names the rank (one rank: throws `message` if any).
+  void agree_on_failure(const std::optional<std::string>& message) const;
+  /// Sums (and maxima) of a step's totals over the ranks.
+  void reduce(StepTotals& t) const;
+  const Communicator* comm_ = nullptr;
+  SlabDecomposition slabs_;
+  std::optional<HaloExchange> halo_;
+  std::size_t migrated_ = 0;
   /// Applies the injections of the coming step.
   void apply_injections();
   StepTotals last_;

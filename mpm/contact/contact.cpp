@@ -123,6 +123,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       for (int f = 0; f < nf; ++f)
         if (G.mass[f * nn + I] > 0.0) active[na++] = f;
       if (na < 2) continue;
+      const bool owned = G.owns(I);  // booked once in a domain decomposition
       const std::array<int, 3> ijk = G.ijk(I);
       Vec3 grad[kMaxFields];
       for (int a = 0; a < na; ++a)
@@ -183,7 +184,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           v[e] += dv[b];
           if (book && heat[b] > 0.0) {  // shared by the body's fields by mass
             const double h = members[b] == 1 ? heat[b] : heat[b] * G.mass[e] / B.m[b];
-            sum.friction_heat += h;
+            if (owned) sum.friction_heat += h;
             if (write_heat) G.heat[e] += h;
           }
         }
@@ -209,12 +210,12 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         for (int k = 0; k < pair.n; ++k) {
           v[field_of[k]] += dv[k];
           if (book) {
-            sum.friction_heat += heat[k];
+            if (owned) sum.friction_heat += heat[k];
             if (write_heat) G.heat[field_of[k]] += heat[k];
           }
         }
       }
-      if (any) ++sum.contact_nodes;
+      if (any && owned) ++sum.contact_nodes;
     }
     partial[omp_get_thread_num()] = sum;
   }

@@ -80,6 +80,18 @@ class Grid {
   }
   int threads() const { return threads_; }
   int fields() const { return fields_; }
+
+  /// The node planes along x whose ledger terms this grid books (all of them on one rank; a
+  /// rank's own planes in a domain decomposition, mpm/parallel/halo_exchange.hpp, so that a node
+  /// two ranks share is booked once). Storage index within one field.
+  void set_owned_planes(int first, int last) {
+    owned_first_ = first;
+    owned_last_ = last;
+  }
+  bool owns(int node) const {
+    const int i = node / (ny_ * nz_) - 1;
+    return i >= owned_first_ && i <= owned_last_;
+  }
   /// Entries of every per-node array: fields() * node_count().
   int entry_count() const { return fields_ * node_count(); }
 
@@ -215,6 +227,7 @@ class Grid {
   int bx_ = 0, by_ = 0, bz_ = 0;  ///< blocks per axis
   std::vector<int> active_;       ///< active nodes, ascending
   std::vector<char> marks_;       ///< per block (active blocks only)
+  int owned_first_ = -1, owned_last_ = 1 << 30;
 };
 
 }  // namespace impact::mpm

@@ -45,7 +45,7 @@ double Grid::apply_walls(std::vector<Vec3>& end, WallPass pass) {
       const double s = std::min(w.mu * -vn, slip);  // -vn: the normal impulse per unit mass
       v *= (slip - s) / slip;
       const double h = mass[e] * s * (slip - s);
-      total_heat += h;
+      if (owns(w.node)) total_heat += h;  // booked once in a domain decomposition
       if (write_heat) heat[e] += h;
     }
   }

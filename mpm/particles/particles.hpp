@@ -34,6 +34,18 @@ struct Particles {
   /// and velocity, parked inside the grid where it left, and takes no further part in the step;
   /// 0: in play. Empty unless grid.outflow = remove.
   std::vector<std::uint8_t> removed;
+  /// The particle's seed index, the same on any number of ranks (mpm/parallel/migration.hpp: a
+  /// rank holds some particles, in any order); empty on one rank, where it is the array index.
+  std::vector<std::uint64_t> id;
+
+  /// f(array) for every per-particle array, optional ones (q, fault, removed, id) included even
+  /// when empty: what moves a particle whole (migration between ranks) visits this list, so a
+  /// new field is added here and nowhere else.
+  template <class F>
+  void for_each_array(F&& f) {
+    f(x), f(v), f(mass), f(volume0), f(volume), f(L), f(state), f(wave_speed), f(material),
+        f(object), f(field), f(q), f(fault), f(removed), f(id);
+  }
 
   std::size_t size() const { return x.size(); }
   void reserve(std::size_t n);

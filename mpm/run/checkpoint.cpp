@@ -20,7 +20,7 @@ constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // version raised): these fail to compile until then.
 static_assert(sizeof(PointState) == 3 * sizeof(Mat3) + 6 * sizeof(double) + 8,
               "PointState changed: update Simulation::save/load and kCheckpointVersion");
-static_assert(sizeof(Particles) == 14 * sizeof(std::vector<double>),
+static_assert(sizeof(Particles) == 15 * sizeof(std::vector<double>),
               "Particles changed: update Simulation::save/load and kCheckpointVersion");
 // Eigen's fixed-size Vec3 and Mat3 are plain arrays of doubles: written as stored.
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Mat3) == 9 * sizeof(double));
@@ -169,6 +169,7 @@ void Simulation::save(CheckpointWriter& out) const {
   out.array("q", P.q);
   out.array("fault", P.fault);
   out.array("removed", P.removed);
+  out.array("id", P.id);
   out.section("simulation", 1, 3 * sizeof(double) + 4 * sizeof(std::int64_t));
   out.value(time_);
   out.value(static_cast<std::int64_t>(steps_));
@@ -221,6 +222,7 @@ void Simulation::load(CheckpointReader& in) {
   in.array("q", P.q, P.q.size());
   in.array("fault", P.fault, P.fault.size());
   in.array("removed", P.removed, P.removed.size());
+  in.array("id", P.id, P.id.size());
   for (std::size_t p = 0; p < n; ++p) {
     if (P.material[p] >= scene_.materials.size() || P.object[p] >= scene_.objects.size() ||
         P.field[p] >= static_cast<std::size_t>(grid_.fields()))

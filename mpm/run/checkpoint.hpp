@@ -31,7 +31,7 @@ namespace impact::mpm {
 class Simulation;
 
 inline constexpr std::uint32_t kCheckpointVersion =
-    3;  // 2: outflow, no face work; 3: failure cause
+    4;  // 2: outflow, no face work; 3: failure cause; 4: particle ids (ranks)
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 /// 64-bit FNV-1a of a byte string (scene.json fingerprint, checkpoint trailer).

@@ -5,6 +5,7 @@
 
 #include "models/thermal/adiabatic_heating.hpp"
 
+#include "mpm/parallel/halo_exchange.hpp"
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -136,7 +137,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 
 template <class Shape>
 void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const ScatterOrder& order,
-                        const ContactSpec* contact) {
+                        const ContactSpec* contact, const HaloExchange* halo) {
   constexpr int N = Shape::N;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const int nt = G.threads();
@@ -153,6 +154,7 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
         for (int k = 0; k < N; ++k) row[k] += s.w[2][k] * mvij;
       }
   });
+  if (halo) halo->sum_momentum(G);
   const std::vector<Vec3>& momentum = G.remapped_momentum();
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   G.for_active_entries([&](int i) {
@@ -177,8 +179,10 @@ template ParticleTotals grid_to_particles<GimpShape>(Particles&, const Grid&,
                                                      const std::vector<HeatCapacity>&,
                                                      std::optional<Failure>&);
 template void remap_and_gradient<LinearShape>(Particles&, Grid&, const Stencils<LinearShape>&,
-                                              const ScatterOrder&, const ContactSpec*);
+                                              const ScatterOrder&, const ContactSpec*,
+                                              const HaloExchange*);
 template void remap_and_gradient<GimpShape>(Particles&, Grid&, const Stencils<GimpShape>&,
-                                            const ScatterOrder&, const ContactSpec*);
+                                            const ScatterOrder&, const ContactSpec*,
+                                            const HaloExchange*);
 
 }  // namespace impact::mpm

@@ -52,7 +52,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     for (int f = 0; f < G.fields(); ++f)
       for (const int I : active) {
         const int i = f * G.node_count() + I;
-        if (nodes[i].mass <= 0.0) continue;
+        if (nodes[i].mass <= 0.0 || !G.owns(I)) continue;
         const Vec3 J = dt * nodes[i].mass * gravity;
         out.external_impulse += J;
         out.external_work += 0.5 * (G.velocity[i] + G.velocity_new[i]).dot(J);
@@ -83,7 +83,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
   for (int f = 0; f < G.fields(); ++f)
     for (const int k : active_bn) {
       const int e = f * nn + bn[k];
-      if (nodes[e].mass <= 0.0) continue;
+      if (nodes[e].mass <= 0.0 || !G.owns(bn[k])) continue;
       out.boundary_impulse += nodes[e].mass * (G.increment[e] - G.free_increment[f * nb + k]);
     }
 

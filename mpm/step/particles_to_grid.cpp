@@ -3,6 +3,7 @@
 // time (step/scatter_order.hpp: the same bits on any thread count). With active blocks the
 // scatter also marks the blocks the stencils touch; Grid::activate turns the marks into the
 // step's node list.
+#include "mpm/parallel/halo_exchange.hpp"
 #include "mpm/step/parallel.hpp"
 
 namespace impact::mpm {
@@ -17,7 +18,7 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
-                       const ScatterOrder& order) {
+                       const ScatterOrder& order, const HaloExchange* halo) {
   constexpr int N = Shape::N;
   G.clear();  // where the last step put mass: now zero everywhere
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
@@ -66,6 +67,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
       }
     }
   });
+  if (halo) halo->sum_node_data(G, /*contact=*/G.fields() > 1);
   G.activate();
   G.collect_mass();
 }
@@ -75,8 +77,8 @@ template void compute_stencils<LinearShape>(const Particles&, const LinearShape&
 template void compute_stencils<GimpShape>(const Particles&, const GimpShape&, Stencils<GimpShape>&,
                                           int);
 template void particles_to_grid<LinearShape>(const Particles&, Grid&, const Stencils<LinearShape>&,
-                                             const ScatterOrder&);
+                                             const ScatterOrder&, const HaloExchange*);
 template void particles_to_grid<GimpShape>(const Particles&, Grid&, const Stencils<GimpShape>&,
-                                           const ScatterOrder&);
+                                           const ScatterOrder&, const HaloExchange*);
 
 }  // namespace impact::mpm

@@ -15,6 +15,8 @@
 
 namespace impact::mpm {
 
+class HaloExchange;  // mpm/parallel/halo_exchange.hpp: the node sums shared with other ranks
+
 /// The first particle (lowest index) whose update failed, and why.
 struct Failure {
   Failure() = default;
@@ -43,10 +45,11 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 /// Particles to grid (Sulsky et al. 1994 eqs. 20-22):
 ///   m_I = sum_p S_Ip m_p,  p_I = sum_p S_Ip m_p v_p,
 ///   f_I = -sum_p V_p sigma_p . grad S_Ip   (gravity is added as m_I g in grid_update),
-/// scattered in `order` (order_for_scatter on S).
+/// scattered in `order` (order_for_scatter on S); `halo` (several ranks) completes the sums at the
+/// node planes shared with the neighbouring ranks before the step's nodes are activated.
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
-                       const ScatterOrder& order);
+                       const ScatterOrder& order, const HaloExchange* halo = nullptr);
 
 /// USL's velocity gradient limits the acceleration part of v*_I at nodes lighter than this
 /// fraction of the lightest particle mass: v^L_I = v_I + min(1, m_I/m_light) (v*_I - v_I). Why:
@@ -116,7 +119,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 /// L_p = sum_I v^{n+1}_I (x) grad S_Ip. The momentum is scattered in `order`, as in P2G.
 template <class Shape>
 void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const ScatterOrder& order,
-                        const ContactSpec* contact);
+                        const ContactSpec* contact, const HaloExchange* halo = nullptr);
 
 /// What the stress update needs besides the particles: the models per material and the
 /// optional physics of the scene.

@@ -1,0 +1,176 @@
+#include "mpm/parallel/communicator.hpp"
+
+#include <cstdlib>
+
+#ifdef IMPACT_MPI
+#include <mpi.h>
+#endif
+
+namespace impact::mpm {
+
+namespace {
+
+// Environment variables an MPI launcher sets in every process it starts (Open MPI's mpirun,
+// MPICH's Hydra, Slurm's srun with PMI or PMIx).
+bool started_by_launcher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "PMI_RANK"})
+    if (std::getenv(name) != nullptr) return true;
+  return false;
+}
+
+}  // namespace
+
+bool mpi_available() {
+#ifdef IMPACT_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+MpiSession::MpiSession([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv) {
+#ifdef IMPACT_MPI
+  if (!started_by_launcher()) return;
+  // Threads call no MPI function: OpenMP runs inside a rank, the exchanges between its loops.
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  active_ = true;
+#endif
+}
+
+MpiSession::~MpiSession() {
+#ifdef IMPACT_MPI
+  if (active_) MPI_Finalize();
+#endif
+}
+
+Communicator::Communicator([[maybe_unused]] const MpiSession* session) {
+#ifdef IMPACT_MPI
+  if (session == nullptr || !session->active()) return;
+  mpi_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#endif
+}
+
+std::vector<double> Communicator::sum(const std::vector<double>& values) const {
+  if (!mpi_) return values;
+  std::vector<double> all;
+#ifdef IMPACT_MPI
+  const int n = static_cast<int>(values.size());
+  all.resize(values.size() * static_cast<std::size_t>(size_));
+  MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, MPI_COMM_WORLD);
+#endif
+  std::vector<double> total(values.size(), 0.0);
+  for (int r = 0; r < size_; ++r)
+    for (std::size_t i = 0; i < values.size(); ++i)
+      total[i] += all[static_cast<std::size_t>(r) * values.size() + i];
+  return total;
+}
+
+std::int64_t Communicator::sum(std::int64_t value) const {
+  std::int64_t total = value;
+#ifdef IMPACT_MPI
+  if (mpi_) MPI_Allreduce(&value, &total, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+#endif
+  return total;
+}
+
+double Communicator::max(double value) const {
+  double result = value;
+#ifdef IMPACT_MPI
+  if (mpi_) MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+#endif
+  return result;
+}
+
+double Communicator::min(double value) const {
+  double result = value;
+#ifdef IMPACT_MPI
+  if (mpi_) MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+#endif
+  return result;
+}
+
+bool Communicator::any(bool value) const {
+  int result = value ? 1 : 0;
+#ifdef IMPACT_MPI
+  const int mine = result;
+  if (mpi_) MPI_Allreduce(&mine, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+#endif
+  return result != 0;
+}
+
+std::vector<double> Communicator::gather_all(double value) const {
+  std::vector<double> all(static_cast<std::size_t>(size_), value);
+#ifdef IMPACT_MPI
+  if (mpi_) MPI_Allgather(&value, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
+#endif
+  return all;
+}
+
+std::string Communicator::broadcast(const std::string& text, [[maybe_unused]] int from) const {
+  std::string out = text;
+#ifdef IMPACT_MPI
+  if (!mpi_) return out;
+  long long n = static_cast<long long>(text.size());
+  MPI_Bcast(&n, 1, MPI_LONG_LONG, from, MPI_COMM_WORLD);
+  out.resize(static_cast<std::size_t>(n));
+  MPI_Bcast(out.data(), static_cast<int>(n), MPI_CHAR, from, MPI_COMM_WORLD);
+#endif
+  return out;
+}
+
+std::vector<char> Communicator::exchange([[maybe_unused]] int neighbour,
+                                         [[maybe_unused]] const std::vector<char>& to_send,
+                                         [[maybe_unused]] int tag) const {
+  std::vector<char> received;
+#ifdef IMPACT_MPI
+  if (!mpi_ || neighbour < 0 || neighbour >= size_) return received;
+  long long n_send = static_cast<long long>(to_send.size()), n_recv = 0;
+  MPI_Sendrecv(&n_send, 1, MPI_LONG_LONG, neighbour, 2 * tag, &n_recv, 1, MPI_LONG_LONG, neighbour,
+               2 * tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  received.resize(static_cast<std::size_t>(n_recv));
+  MPI_Sendrecv(to_send.data(), static_cast<int>(n_send), MPI_BYTE, neighbour, 2 * tag + 1,
+               received.data(), static_cast<int>(n_recv), MPI_BYTE, neighbour, 2 * tag + 1,
+               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+#endif
+  return received;
+}
+
+std::vector<std::vector<char>> Communicator::all_to_all(
+    const std::vector<std::vector<char>>& to_each) const {
+  if (!mpi_) return to_each;  // one rank: to itself
+  std::vector<std::vector<char>> from(static_cast<std::size_t>(size_));
+#ifdef IMPACT_MPI
+  const std::size_t n = static_cast<std::size_t>(size_);
+  std::vector<int> send_counts(n), recv_counts(n), send_offsets(n), recv_offsets(n);
+  std::vector<char> send;
+  for (std::size_t r = 0; r < n; ++r) {
+    send_counts[r] = static_cast<int>(to_each[r].size());
+    send_offsets[r] = static_cast<int>(send.size());
+    send.insert(send.end(), to_each[r].begin(), to_each[r].end());
+  }
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  int total = 0;
+  for (std::size_t r = 0; r < n; ++r) {
+    recv_offsets[r] = total;
+    total += recv_counts[r];
+  }
+  std::vector<char> received(static_cast<std::size_t>(total));
+  MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, received.data(),
+                recv_counts.data(), recv_offsets.data(), MPI_BYTE, MPI_COMM_WORLD);
+  for (std::size_t r = 0; r < n; ++r)
+    from[r].assign(received.begin() + recv_offsets[r],
+                   received.begin() + recv_offsets[r] + recv_counts[r]);
+#endif
+  return from;
+}
+
+void Communicator::barrier() const {
+#ifdef IMPACT_MPI
+  if (mpi_) MPI_Barrier(MPI_COMM_WORLD);
+#endif
+}
+
+}  // namespace impact::mpm

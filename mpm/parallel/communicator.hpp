@@ -1,0 +1,67 @@
+// The ranks of a run and what they exchange (docs/mpi.md): MPI when the build has it (IMPACT_MPI)
+// and the program was started by an MPI launcher (mpirun, srun), else one rank and no MPI call at
+// all, so a plain `mpm run` costs nothing for it. Every reduction is reproducible: sums are taken
+// in rank order on every rank (the same bits on every rank and in every run with the same rank
+// count), maxima and minima are exact.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace impact::mpm {
+
+/// MPI_Init and MPI_Finalize around a program's life, when a launcher started it; one per
+/// process (main()). Without it, or without MPI in the build, a Communicator has one rank.
+class MpiSession {
+ public:
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  /// Whether MPI was initialised (a launcher started this process and the build has MPI).
+  bool active() const { return active_; }
+
+ private:
+  bool active_ = false;
+};
+
+/// Whether this build can run on several ranks (built with MPI).
+bool mpi_available();
+
+class Communicator {
+ public:
+  /// The world of an active MpiSession, or one rank.
+  explicit Communicator(const MpiSession* session = nullptr);
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool root() const { return rank_ == 0; }
+
+  /// Element-wise sums over the ranks, taken in rank order on every rank.
+  std::vector<double> sum(const std::vector<double>& values) const;
+  double sum(double value) const { return sum(std::vector<double>{value})[0]; }
+  std::int64_t sum(std::int64_t value) const;
+  double max(double value) const;
+  double min(double value) const;
+  /// Whether any rank passes true.
+  bool any(bool value) const;
+  /// Every rank's value, in rank order.
+  std::vector<double> gather_all(double value) const;
+  /// The bytes `text` of rank `from`, on every rank.
+  std::string broadcast(const std::string& text, int from) const;
+  /// Sends `to_send` to rank `neighbour` and returns what it sent back (both call this with each
+  /// other's rank; `tag` tells exchanges in the same step apart). neighbour < 0: nothing.
+  std::vector<char> exchange(int neighbour, const std::vector<char>& to_send, int tag) const;
+  /// to_each[r] goes to rank r; returns what each rank sent here, indexed by sender.
+  std::vector<std::vector<char>> all_to_all(const std::vector<std::vector<char>>& to_each) const;
+  void barrier() const;
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+  bool mpi_ = false;
+};
+
+}  // namespace impact::mpm

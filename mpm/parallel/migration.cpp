@@ -1,0 +1,99 @@
+#include "mpm/parallel/migration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+
+namespace impact::mpm {
+
+namespace {
+
+void pack(Particles& P, std::size_t p, std::vector<char>& out) {
+  const std::size_t n = P.size();
+  P.for_each_array([&](auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    // Plain values: numbers, flags, and Eigen fixed-size matrices and PointState, which are arrays
+    // of doubles and flags without pointers (mpm/run/checkpoint.cpp writes them as stored).
+    static_assert(std::is_standard_layout_v<T>);
+    if (a.size() != n) return;
+    const char* bytes = reinterpret_cast<const char*>(&a[p]);
+    out.insert(out.end(), bytes, bytes + sizeof(T));
+  });
+}
+
+// Appends the particles of `in` (whole records); `in_use` says which arrays the records carry.
+void unpack(Particles& P, const std::vector<char>& in, const std::vector<bool>& in_use) {
+  std::size_t offset = 0;
+  while (offset < in.size()) {
+    std::size_t k = 0;
+    P.for_each_array([&](auto& a) {
+      using T = typename std::decay_t<decltype(a)>::value_type;
+      if (!in_use[k++]) return;
+      T value;
+      std::memcpy(static_cast<void*>(&value), in.data() + offset, sizeof(T));
+      offset += sizeof(T);
+      a.push_back(value);
+    });
+  }
+}
+
+// Keeps the particles with keep[p], in order, in every array in use.
+void compact(Particles& P, const std::vector<char>& keep) {
+  const std::size_t n = P.size();
+  P.for_each_array([&](auto& a) {
+    if (a.size() != n) return;
+    std::size_t out = 0;
+    for (std::size_t p = 0; p < n; ++p)
+      if (keep[p]) a[out++] = a[p];
+    a.resize(out);
+  });
+}
+
+}  // namespace
+
+int cell_column(const GridSpec& grid, double x) {
+  const double c = std::floor((x - grid.lower(0)) / grid.spacing()(0));
+  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid.cells[0] - 1)));
+}
+
+MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const GridSpec& grid,
+                        const Communicator& comm) {
+  MigrationCounts counts;
+  const std::size_t n = P.size();
+  // Which arrays are in use: agreed by every rank (a rank may hold no particle at all).
+  std::vector<double> use;
+  P.for_each_array([&](auto& a) { use.push_back(n > 0 && a.size() == n ? 1.0 : 0.0); });
+  const std::vector<double> users = comm.sum(use);
+  std::vector<bool> in_use;
+  for (double u : users) in_use.push_back(u > 0.0);
+  std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
+  std::vector<char> keep(n, 1);
+  for (std::size_t p = 0; p < n; ++p) {
+    const int owner = slabs.owner_of_cell(cell_column(grid, P.x[p](0)));
+    if (owner == comm.rank()) continue;
+    pack(P, p, to[static_cast<std::size_t>(owner)]);
+    keep[p] = 0;
+    ++counts.sent;
+  }
+  if (!comm.any(counts.sent > 0)) return counts;
+  if (counts.sent > 0) compact(P, keep);
+  const std::size_t before = P.size();
+  const std::vector<std::vector<char>> from = comm.all_to_all(to);
+  for (const std::vector<char>& bytes : from) unpack(P, bytes, in_use);
+  counts.received = P.size() - before;
+  return counts;
+}
+
+Particles keep_slab(Particles P, const SlabDecomposition& slabs, const GridSpec& grid, int rank) {
+  const std::size_t n = P.size();
+  P.id.resize(n);
+  for (std::size_t p = 0; p < n; ++p) P.id[p] = p;
+  std::vector<char> keep(n);
+  for (std::size_t p = 0; p < n; ++p)
+    keep[p] = slabs.owner_of_cell(cell_column(grid, P.x[p](0))) == rank;
+  compact(P, keep);
+  return P;
+}
+
+}  // namespace impact::mpm

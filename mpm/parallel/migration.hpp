@@ -1,0 +1,35 @@
+// Particles moving between ranks (docs/mpi.md): after a step, a particle whose cell column
+// another rank owns (SlabDecomposition) goes to that rank whole, with every per-particle array
+// (Particles::for_each_array: position, velocity, mass, volumes, velocity gradient, the whole
+// PointState, wave speed, material, object, velocity field, viscosity, fault and removal flags,
+// id). The leaving particles are cut out in order and the arriving ones appended in the order of
+// their senders' ranks, so the arrays' order, and with it every sum over them, is the same in
+// every run with the same rank count.
+#pragma once
+
+#include <cstddef>
+
+#include "mpm/parallel/communicator.hpp"
+#include "mpm/parallel/slab_decomposition.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/scene/scene.hpp"
+
+namespace impact::mpm {
+
+struct MigrationCounts {
+  std::size_t sent = 0;
+  std::size_t received = 0;
+};
+
+/// The cell column along x of position x (clamped into the grid).
+int cell_column(const GridSpec& grid, double x);
+
+/// Keeps on this rank the particles of its slab; sends the others to their owners.
+MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const GridSpec& grid,
+                        const Communicator& comm);
+
+/// The particles of `P` whose cell column `rank` owns, in order (the seeding split: every rank
+/// seeds the whole scene and keeps its slab; ids are the seed indices).
+Particles keep_slab(Particles P, const SlabDecomposition& slabs, const GridSpec& grid, int rank);
+
+}  // namespace impact::mpm

@@ -1,0 +1,184 @@
+// The MPI domain decomposition (mpm/parallel/, docs/mpi.md), run under mpirun on 2 and 4 ranks
+// (CTest: mpm_ranks_test_np2, _np4). Every rank also runs the scene alone (one rank, no
+// MPI call) as the reference, so each comparison is made in one process:
+//   - the recommended sphere-cylinder (one velocity field, symmetric faces) and Case 1 (two
+//     materials with friction contact, artificial viscosity, erosion and particle conversion) and
+//     two blocks in friction contact on a slab boundary: the ledger's energies equal the one-rank
+//     run's to 1e-9 of E0 and its momentum to 1e-9 of sqrt(2 M E0) at every step (what differs is
+//     the order of the sums at the shared nodes and of the reductions: round-off), and the
+//     momentum closes as well as on one rank;
+//   - a rigid block flying in +x through every slab boundary: the particle count and the mass
+//     are unchanged, every particle's position (found by its id) is exact to 1e-12 m, and the
+//     kinetic energy and momentum equal the one-rank run's to 1e-12;
+//   - the same scene on the same rank count twice: the same bits.
+// Without the node-plane sums the shared nodes miss the neighbour's mass and force (energies off
+// by percents within a few steps); without the contact plane beyond them Case 1's contact
+// normals differ at the slab boundaries; without migration the block's particles leave their
+// slab and are lost to the sums.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "mpm/parallel/communicator.hpp"
+#include "mpm/solver.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+// MPI_Init from the test module's command line (mpirun passes none of its own).
+struct MpiFixture {
+  MpiFixture()
+      : session(boost::unit_test::framework::master_test_suite().argc,
+                boost::unit_test::framework::master_test_suite().argv) {}
+  MpiSession session;
+};
+MpiFixture* fixture = nullptr;
+struct GlobalSetup {
+  GlobalSetup() { fixture = new MpiFixture; }
+  ~GlobalSetup() { delete fixture; }
+};
+BOOST_TEST_GLOBAL_FIXTURE(GlobalSetup);
+
+Scene scene_from(const std::string& file, const Json& patch) {
+  Json doc = load_scene_document(std::string(IMPACT_SOURCE_DIR) + "/data/scenes/" + file);
+  doc.merge_patch({{"output", {{"snapshots", false}}}});
+  doc.merge_patch(patch);
+  return read_scene(doc, file);
+}
+
+// Steps both runs to the end, comparing the ledgers at every step.
+void compare_with_one_rank(const Scene& scene, double energy_tolerance) {
+  const Communicator comm(&fixture->session);
+  BOOST_TEST_REQUIRE(comm.size() > 1);
+  Simulation ranks(scene, 1, &comm), alone(scene, 1);
+  const double e0 = alone.ledger().initial_energy();
+  // Momentum scale: sqrt(2 M E0), the momentum of the whole mass at the mean speed (|p0| is zero
+  // for two bodies meeting head-on).
+  double mass = 0.0;
+  for (double m : alone.particles().mass) mass += m;
+  const double p0 = std::sqrt(2.0 * mass * e0);
+  BOOST_TEST(std::abs(ranks.ledger().initial_energy() - e0) <= 1e-14 * e0);
+  double worst_energy = 0.0, worst_momentum = 0.0, worst_closure = 0.0, closure_alone = 0.0;
+  long migrated = 0;
+  while (!alone.finished()) {
+    alone.step();
+    ranks.step();
+    // The step follows the fastest signal speed, which round-off can move.
+    BOOST_TEST_REQUIRE(std::abs(ranks.time() - alone.time()) <= 1e-9 * alone.time());
+    const LedgerRow a = alone.ledger().row(), r = ranks.ledger().row();
+    worst_energy = std::max({worst_energy, std::abs(r.kinetic_energy - a.kinetic_energy) / e0,
+                             std::abs(r.strain_energy - a.strain_energy) / e0,
+                             std::abs(r.total_energy - a.total_energy) / e0});
+    worst_momentum = std::max(worst_momentum, (r.momentum - a.momentum).norm() / p0);
+    const Vec3 p_init = ranks.ledger().initial_momentum();
+    worst_closure = std::max(worst_closure, (r.momentum - p_init - r.boundary_impulse).norm() / p0);
+    closure_alone =
+        std::max(closure_alone,
+                 (a.momentum - alone.ledger().initial_momentum() - a.boundary_impulse).norm() / p0);
+    migrated += static_cast<long>(comm.sum(std::int64_t(ranks.migrated())));
+  }
+  BOOST_TEST_MESSAGE(scene.file << " on " << comm.size() << " ranks (slabs "
+                                << ranks.slabs().describe() << "), " << alone.steps()
+                                << " steps: energies within " << worst_energy
+                                << " of E0, momentum within " << worst_momentum
+                                << " of |p0|, closure " << worst_closure << " (one rank "
+                                << closure_alone << "), " << migrated << " migrations");
+  BOOST_TEST(worst_energy < energy_tolerance);
+  BOOST_TEST(worst_momentum < 1e-9);
+  BOOST_TEST(worst_closure < std::max(1e-12, 10.0 * closure_alone));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mpm_parallel_ranks)
+
+BOOST_AUTO_TEST_CASE(the_recommended_sphere_cylinder_on_n_ranks_books_as_on_one) {
+  compare_with_one_rank(
+      scene_from("sphere_cylinder/recommended.json", {{"time", {{"max_time", 2.0e-6}}}}), 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(case01_with_contact_erosion_and_conversion_books_as_on_one_rank) {
+  compare_with_one_rank(
+      scene_from("sphere_cylinder/case01.json", {{"time", {{"max_time", 1.0e-6}}}}), 1e-9);
+}
+
+// Two blocks pressed together at x = 10 mm, the middle of the grid: the balanced slabs' boundary
+// falls on the contact face, so friction contact's normals (mass gradients) and compression test
+// (nodal stress) at the face read the neighbour's planes.
+BOOST_AUTO_TEST_CASE(friction_contact_on_a_slab_boundary_books_as_on_one_rank) {
+  compare_with_one_rank(
+      scene_from("verification/contact_blocks.json",
+                 {{"physics", {{"contact", {{"type", "friction"}, {"mu", 0.3}}}}}}),
+      1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(a_block_crossing_every_slab_boundary_keeps_its_particles_and_motion) {
+  const Communicator comm(&fixture->session);
+  // 40 cells of 5 mm along x; the block (cells 2-9) flies 20 cells in 100 us.
+  const Scene scene =
+      scene_from("verification/rigid_translation.json",
+                 {{"objects",
+                   {{"block",
+                     {{"geometry", {{"lower", {0.01, 0.01, 0.01}}, {"upper", {0.05, 0.03, 0.03}}}},
+                      {"velocity", {1000.0, 0.0, 0.0}}}}}},
+                  {"grid", {{"upper", {0.2, 0.04, 0.04}}, {"cells", {40, 8, 8}}}},
+                  {"time", {{"max_time", 1.0e-4}}}});
+  Simulation ranks(scene, 1, &comm), alone(scene, 1);
+  const std::size_t n = alone.particles().size();
+  const double mass = [&] {
+    double m = 0.0;
+    for (double mp : alone.particles().mass) m += mp;
+    return m;
+  }();
+  // The block starts in cells 2-9, so some of it lies in the first slab (the slabs are balanced
+  // by particle count), and ends in cells 22-29, inside the last: it crossed every boundary.
+  const std::vector<double> held_before = comm.gather_all(double(ranks.particles().size()));
+  long migrated = 0;
+  while (!alone.finished()) {
+    alone.step();
+    ranks.step();
+    migrated += static_cast<long>(comm.sum(std::int64_t(ranks.migrated())));
+  }
+  const std::vector<double> held_after = comm.gather_all(double(ranks.particles().size()));
+  const Particles& P = ranks.particles();
+  BOOST_TEST(comm.sum(std::int64_t(P.size())) == std::int64_t(n));
+  double m = 0.0, worst_x = 0.0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    m += P.mass[p];
+    worst_x = std::max(worst_x, (P.x[p] - alone.particles().x[P.id[p]]).cwiseAbs().maxCoeff());
+  }
+  BOOST_TEST(std::abs(comm.sum(m) - mass) <= 1e-14 * mass);
+  BOOST_TEST(comm.max(worst_x) < 1e-12);
+  const LedgerRow a = alone.ledger().row(), r = ranks.ledger().row();
+  BOOST_TEST(std::abs(r.kinetic_energy - a.kinetic_energy) <= 1e-12 * a.kinetic_energy);
+  BOOST_TEST((r.momentum - a.momentum).norm() <= 1e-12 * a.momentum.norm());
+  BOOST_TEST_MESSAGE("block: " << n << " particles, slabs " << ranks.slabs().describe() << ", "
+                               << migrated << " migrations, position error " << worst_x << " m");
+  BOOST_TEST_REQUIRE(ranks.slabs().first_cell(comm.size() - 1) <= 22);
+  const int last = comm.size() - 1;
+  BOOST_TEST(held_before[0] > 0.0);
+  for (int q = 0; q < comm.size(); ++q) {
+    BOOST_TEST_INFO("rank " << q);
+    BOOST_TEST(held_after[std::size_t(q)] == (q == last ? double(n) : 0.0));
+  }
+  BOOST_TEST(migrated >= long(n - std::size_t(held_before[std::size_t(last)])));
+}
+
+BOOST_AUTO_TEST_CASE(the_same_rank_count_gives_the_same_bits_run_to_run) {
+  const Communicator comm(&fixture->session);
+  const Scene scene =
+      scene_from("sphere_cylinder/recommended.json", {{"time", {{"max_time", 1.0e-6}}}});
+  Simulation first(scene, 1, &comm), second(scene, 1, &comm);
+  while (!first.finished()) {
+    first.step();
+    second.step();
+    const LedgerRow a = first.ledger().row(), b = second.ledger().row();
+    BOOST_TEST_REQUIRE(a.total_energy == b.total_energy);
+    BOOST_TEST_REQUIRE(a.momentum == b.momentum);
+  }
+  BOOST_TEST(first.particles().x == second.particles().x);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
