@@ -20,19 +20,27 @@ SlabDecomposition SlabDecomposition::balanced(const std::vector<std::size_t>& co
   for (std::size_t c : counts) total += static_cast<double>(c);
   std::vector<int> first(static_cast<std::size_t>(ranks) + 1, 0);
   first.back() = cells;
-  // Each boundary where the cumulative count first reaches r / ranks of the total, then kept at
-  // least kMinCells from the previous boundary and from the cells the later slabs need.
+  // Each boundary where the cumulative count reaches r / ranks of the total (before or after the
+  // cell that crosses it, whichever lands nearer), then kept at least kMinCells from the previous
+  // boundary and from the cells the later slabs need.
   double cumulative = 0.0;
   int cell = 0;
   for (int r = 1; r < ranks; ++r) {
     const double target = total * r / ranks;
-    while (cell < cells && cumulative + static_cast<double>(counts[std::size_t(cell)]) <= target) {
+    while (cell < cells && cumulative < target) {
       cumulative += static_cast<double>(counts[std::size_t(cell)]);
       ++cell;
     }
+    const double before =
+        cell > 0 ? cumulative - static_cast<double>(counts[std::size_t(cell - 1)]) : cumulative;
+    const int nearest = cumulative - target > target - before ? cell - 1 : cell;
     const int lowest = first[std::size_t(r) - 1] + kMinCells;
     const int highest = cells - kMinCells * (ranks - r);
-    first[std::size_t(r)] = std::clamp(cell, lowest, highest);
+    first[std::size_t(r)] = std::clamp(nearest, lowest, highest);
+    // Continue from the boundary as placed.
+    cell = first[std::size_t(r)];
+    cumulative = 0.0;
+    for (int c = 0; c < cell; ++c) cumulative += static_cast<double>(counts[std::size_t(c)]);
   }
   return SlabDecomposition(std::move(first));
 }
