@@ -8,6 +8,9 @@
 #   ./run.sh fuzz [SECONDS]  build the libFuzzer targets of the input loaders (build-fuzz/) and run
 #                    each for SECONDS (default 600) from a scratch copy of its seed corpus;
 #                    findings in build-fuzz/findings/ (tests/fuzz/run_fuzz.sh, docs/reliability.md)
+#   ./run.sh mpi [RANKS]  install Open MPI when missing, build with it, and run the recommended
+#                    scene on RANKS (default 2) ranks of one thread (docs/mpi.md; results in
+#                    build/recommended-mpi/recommended/)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
 #   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
@@ -70,6 +73,15 @@ case "${1:-}" in
     # Each loader's fuzz target for a few seconds (about a minute in all); fails on any finding.
     build fuzz -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
     ctest --preset fuzz
+    ;;
+  mpi)
+    install_missing_packages "${MPI_PACKAGES[@]}"
+    build release -DIMPACT_MPI=ON
+    # As root Open MPI needs its allow flags; --oversubscribe lets RANKS exceed the cores.
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
+      mpirun -np "${2:-2}" --oversubscribe build/bin/mpm run \
+      data/scenes/sphere_cylinder/recommended.json --out build/recommended-mpi/recommended --threads 1
+    /usr/bin/python3 mpm/study/study_plot.py build/recommended-mpi
     ;;
   fuzz)
     install_missing_packages "${FUZZ_PACKAGES[@]}"

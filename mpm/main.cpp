@@ -84,6 +84,15 @@ bool parse_list(const std::string& text, std::vector<std::string>& items) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Under mpirun or srun: one rank of a domain decomposition (docs/mpi.md); else no MPI at all.
+  if (impact::mpm::started_by_launcher() && !impact::mpm::mpi_available()) {
+    // Each process would run the whole scene into the same directory.
+    std::cerr << "mpm: started by an MPI launcher, but this mpm was built without MPI (install "
+                 "libopenmpi-dev and rebuild: ./run.sh mpi, docs/mpi.md)\n";
+    return 2;
+  }
+  impact::mpm::MpiSession mpi(argc, argv);
+  const impact::mpm::Communicator comm(&mpi);
   if (argc < 2) return usage_error("missing command");
   const std::string command = argv[1];
   if (command == "--help" || command == "-h" || command == "help") {
@@ -95,6 +104,7 @@ int main(int argc, char** argv) {
   const bool study = command == "study";
   std::string scene_file, restart_dir;
   impact::mpm::RunOptions options;
+  options.comm = &comm;
   impact::mpm::StudyOptions study_options;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];

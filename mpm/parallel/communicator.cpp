@@ -8,8 +8,6 @@
 
 namespace impact::mpm {
 
-namespace {
-
 // Environment variables an MPI launcher sets in every process it starts (Open MPI's mpirun,
 // MPICH's Hydra, Slurm's srun with PMI or PMIx).
 bool started_by_launcher() {
@@ -17,8 +15,6 @@ bool started_by_launcher() {
     if (std::getenv(name) != nullptr) return true;
   return false;
 }
-
-}  // namespace
 
 bool mpi_available() {
 #ifdef IMPACT_MPI

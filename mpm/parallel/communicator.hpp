@@ -29,6 +29,8 @@ class MpiSession {
 
 /// Whether this build can run on several ranks (built with MPI).
 bool mpi_available();
+/// Whether an MPI launcher (mpirun, srun) started this process.
+bool started_by_launcher();
 
 class Communicator {
  public:

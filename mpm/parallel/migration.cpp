@@ -9,7 +9,7 @@ namespace impact::mpm {
 
 namespace {
 
-void pack(Particles& P, std::size_t p, std::vector<char>& out) {
+void pack(const Particles& P, std::size_t p, std::vector<char>& out) {
   const std::size_t n = P.size();
   P.for_each_array([&](auto& a) {
     using T = typename std::decay_t<decltype(a)>::value_type;
@@ -83,6 +83,36 @@ MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const Grid
   for (const std::vector<char>& bytes : from) unpack(P, bytes, in_use);
   counts.received = P.size() - before;
   return counts;
+}
+
+Particles gather_particles(const Particles& local, const Communicator& comm) {
+  if (comm.size() == 1) return local;
+  const std::size_t n = local.size();
+  std::vector<double> use;
+  local.for_each_array([&](const auto& a) { use.push_back(n > 0 && a.size() == n ? 1.0 : 0.0); });
+  const std::vector<double> users = comm.sum(use);
+  std::vector<bool> in_use;
+  for (double u : users) in_use.push_back(u > 0.0);
+  std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
+  for (std::size_t p = 0; p < n; ++p) pack(local, p, to[0]);
+  const std::vector<std::vector<char>> from = comm.all_to_all(to);
+  Particles all;
+  if (!comm.root()) return all;
+  for (const std::vector<char>& bytes : from) unpack(all, bytes, in_use);
+  // Seed order: the permutation that sorts by id, applied to every array.
+  std::vector<std::size_t> order(all.size());
+  for (std::size_t p = 0; p < order.size(); ++p) order[p] = p;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
+  const std::size_t m = all.size();
+  all.for_each_array([&](auto& a) {
+    if (a.size() != m) return;
+    auto sorted = a;
+    for (std::size_t p = 0; p < m; ++p) sorted[p] = a[order[p]];
+    a = std::move(sorted);
+  });
+  all.id.clear();  // the index is the id again
+  return all;
 }
 
 Particles keep_slab(Particles P, const SlabDecomposition& slabs, const GridSpec& grid, int rank) {

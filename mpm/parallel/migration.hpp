@@ -28,6 +28,11 @@ int cell_column(const GridSpec& grid, double x);
 MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const GridSpec& grid,
                         const Communicator& comm);
 
+/// Every rank's particles on rank 0, in seed order (ascending id), as one rank would hold them
+/// (the outputs of a run on several ranks: gauges, observables, snapshots, summary); empty on the
+/// other ranks.
+Particles gather_particles(const Particles& local, const Communicator& comm);
+
 /// The particles of `P` whose cell column `rank` owns, in order (the seeding split: every rank
 /// seeds the whole scene and keeps its slab; ids are the seed indices).
 Particles keep_slab(Particles P, const SlabDecomposition& slabs, const GridSpec& grid, int rank);

@@ -43,11 +43,23 @@ struct Particles {
   /// new field is added here and nowhere else.
   template <class F>
   void for_each_array(F&& f) {
-    f(x), f(v), f(mass), f(volume0), f(volume), f(L), f(state), f(wave_speed), f(material),
-        f(object), f(field), f(q), f(fault), f(removed), f(id);
+    visit_arrays(*this, f);
+  }
+  template <class F>
+  void for_each_array(F&& f) const {
+    visit_arrays(*this, f);
   }
 
   std::size_t size() const { return x.size(); }
+
+ private:
+  template <class Self, class F>
+  static void visit_arrays(Self& P, F& f) {
+    f(P.x), f(P.v), f(P.mass), f(P.volume0), f(P.volume), f(P.L), f(P.state), f(P.wave_speed),
+        f(P.material), f(P.object), f(P.field), f(P.q), f(P.fault), f(P.removed), f(P.id);
+  }
+
+ public:
   void reserve(std::size_t n);
   /// Approximate storage per particle [bytes] without the optional q (for `mpm check` and the
   /// benchmark).

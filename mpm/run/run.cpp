@@ -11,6 +11,7 @@
 
 #include "models/core/input.hpp"
 #include "mpm/output/atomic_file.hpp"
+#include "mpm/parallel/migration.hpp"
 #include "mpm/run/checkpoint.hpp"
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
@@ -55,21 +56,45 @@ class WallClock {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+// What a run on several ranks cannot do yet (docs/mpi.md#not-yet), or empty.
+std::string not_yet_on_ranks(const Scene& scene, const RunOptions& options, bool resume) {
+  if (resume) return "mpm run --restart";
+  if (scene.output.checkpoint_interval_steps > 0) return "output.checkpoint_interval_steps";
+  if (!scene.output.particle_paths.empty()) return "output.particle_paths";
+  if (!options.faults.empty()) return "--inject-fault";
+  return {};
+}
+
 // The run of run() and restart() (`resume`: from dir/checkpoint.bin): set-up, the step loop with
-// its outputs, checkpoints, signals and reports, then the summary.
+// its outputs, checkpoints, signals and reports, then the summary. On several ranks every rank
+// steps its slab, and rank 0 writes every file from the particles gathered at output times.
 int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume) {
+  const Communicator* comm =
+      options.comm != nullptr && options.comm->size() > 1 ? options.comm : nullptr;
+  const bool root = comm == nullptr || comm->root();
   const int threads = run_threads(options.threads);
   // Refuse before anything is allocated or written.
   if (const std::string refusal = memory_refusal(scene); !refusal.empty()) {
-    std::cerr << "mpm: " << refusal << '\n';
+    if (root) std::cerr << "mpm: " << refusal << '\n';
     return kExitMemory;
   }
-  fs::create_directories(dir);
+  if (comm) {
+    if (const std::string what = not_yet_on_ranks(scene, options, resume); !what.empty()) {
+      if (root)
+        std::cerr << "mpm: " << what << " is not available on several ranks yet (docs/mpi.md); run "
+                  << "on one rank (without mpirun) for it\n";
+      return 2;
+    }
+  }
   const std::string scene_text = scene.resolved.dump(2) + '\n';
   const std::uint64_t scene_hash = fnv1a(scene_text.data(), scene_text.size());
-  if (!resume) write_file_atomically(dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
+  if (root) {
+    fs::create_directories(dir);
+    if (!resume)
+      write_file_atomically(dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
+  }
   WallClock wall;
-  Simulation sim(scene, threads);
+  Simulation sim(scene, threads, comm);
   if (resume && sim.threads() != threads) {
     throw InputError({(dir / kCheckpointFile).string() + ": needs " + std::to_string(threads) +
                       " threads, this process gets " + std::to_string(sim.threads())});
@@ -83,7 +108,19 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     }
     sim.inject(f);
   }
-  RunOutputs outputs(scene, sim);  // gauge and crater particle sets from the particles as seeded
+  // What the outputs read: this process's particles, or on several ranks all of them gathered on
+  // rank 0 in seed order (every rank must call it: it is a collective exchange).
+  Particles gathered;
+  const auto particles = [&]() -> const Particles& {
+    if (!comm) return sim.particles();
+    gathered = gather_particles(sim.particles(), *comm);
+    return gathered;
+  };
+  std::optional<RunOutputs> outputs;  // rank 0's
+  {
+    const Particles& seeded = particles();  // gauge and crater particle sets
+    if (root) outputs.emplace(scene, seeded);
+  }
   RunStatus status_file(dir,
                         scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle);
   RunState resumed;
@@ -95,19 +132,21 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     paths_start = sim.time();
     status_file.checkpointed(sim.steps(), sim.time());
   }
-  outputs.open(scene, dir, sim, resume ? &resumed : nullptr);
-  const auto write_history = [&] {
-    outputs.write_history(sim);
+  {
+    const Particles& start = particles();
+    if (root) outputs->open(scene, dir, start, sim.ledger(), resume ? &resumed : nullptr);
+  }
+  const auto write_outputs = [&](bool snapshot, long index) {
+    const Particles& P = particles();
+    if (!root) return;
+    outputs->write_history(sim, P);
     status_file.write(sim, wall.seconds(), "running");
+    if (snapshot) outputs->write_snapshot(P, index, sim.time());
   };
-  const auto write_outputs = [&] {
-    write_history();
-    outputs.write_snapshot(sim, sim.steps());
-  };
-  if (!resume) write_outputs();
+  if (!resume) write_outputs(true, sim.steps());
   double next_output = resume ? resumed.next_output : scene.output.interval;
   const auto checkpoint = [&] {
-    write_checkpoint(dir / kCheckpointFile, sim, outputs.state(next_output, wall.seconds()),
+    write_checkpoint(dir / kCheckpointFile, sim, outputs->state(next_output, wall.seconds()),
                      scene_hash);
     status_file.checkpointed(sim.steps(), sim.time());
   };
@@ -115,7 +154,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   const InterruptHandlers handlers(
       options.handle_signals ||
       std::any_of(options.faults.begin(), options.faults.end(), is_signal));
-  ProgressLine progress(options.progress);
+  ProgressLine progress(options.progress && root);
   FaultReport faults(progress);
   wall.restart(resume ? resumed.wall_time : 0.0);
   progress.start();
@@ -124,12 +163,12 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   try {
     while (!sim.finished()) {
       const double t_before = sim.time();
-      outputs.before_step(sim);
+      if (!comm) outputs->before_step(sim.particles());
       sim.step();
-      outputs.after_step(sim, sim.time() - t_before);
+      if (!comm) outputs->after_step(sim.particles(), sim.time(), sim.time() - t_before);
       faults.report(sim);
       if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
-        write_outputs();
+        write_outputs(true, sim.steps());
         while (next_output <= sim.time() * (1.0 + 1e-12)) next_output += scene.output.interval;
       }
       if (every > 0 && sim.steps() % every == 0 && !sim.finished()) checkpoint();
@@ -138,46 +177,59 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
           raise_signal(f.kind == FaultInjection::Kind::sigint ? sigint_number() : sigterm_number());
         }
       }
-      if (const int signal = pending_interrupt(); signal != 0 && !sim.finished()) {
-        if (status_file.checkpoint_step() != sim.steps()) checkpoint();
+      // A signal reaches every rank (mpirun forwards it); they stop at the same step.
+      int signal = pending_interrupt();
+      if (comm) signal = static_cast<int>(comm->max(double(signal)));
+      if (signal != 0 && !sim.finished()) {
         std::ostringstream m;
         m.precision(9);
         m << "interrupted by " << signal_name(signal) << " after step " << sim.steps() << ", time "
-          << sim.time() << " s: checkpoint " << (dir / kCheckpointFile).string()
-          << "; continue with: mpm run --restart " << dir.string();
+          << sim.time() << " s";
+        if (!comm) {
+          if (status_file.checkpoint_step() != sim.steps()) checkpoint();
+          m << ": checkpoint " << (dir / kCheckpointFile).string()
+            << "; continue with: mpm run --restart " << dir.string();
+        } else {
+          m << " (no checkpoint: not available on several ranks yet, docs/mpi.md)";
+        }
         status = "interrupted";
         message = m.str();
         code = kExitSignalBase + signal;
-        std::cerr << progress.break_line() << "mpm: " << message << '\n';
+        if (root) std::cerr << progress.break_line() << "mpm: " << message << '\n';
         break;
       }
       progress.update(sim);
     }
-  } catch (const SolverFailure& e) {
+  } catch (const SolverFailure& e) {  // on every rank alike: the ranks agree on a failure
     status = "failed";
     message = e.what();
     code = kExitRunFailed;
-    std::cerr << progress.break_line() << "mpm: run failed: " << message << '\n';
-    outputs.write_snapshot(sim, sim.steps() + 1);
-    outputs.write_history(sim);
-    status_file.write(sim, wall.seconds(), "running");
+    if (root) std::cerr << progress.break_line() << "mpm: run failed: " << message << '\n';
+    const Particles& P = particles();
+    if (root) {
+      outputs->write_snapshot(P, sim.steps() + 1, sim.time());
+      outputs->write_history(sim, P);
+      status_file.write(sim, wall.seconds(), "running");
+    }
   } catch (const std::exception& e) {  // e.g. an output that cannot be written: say so, re-throw
     try {
-      status_file.write(sim, wall.seconds(), "failed", e.what());
+      if (root) status_file.write(sim, wall.seconds(), "failed", e.what());
     } catch (const std::exception&) {  // keep the original error
     }
     throw;
   }
   if (status != "interrupted") progress.end();
-  if (sim.faulted_particles() > 0) {
+  if (sim.faulted_particles() > 0 && root) {
     std::cerr << "mpm: " << sim.faulted_particles()
               << " particle(s) flagged failed by numerical faults (physics.on_numerical_fault = "
                  "fail_particle)\n";
   }
-  outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
+  const Particles& P = particles();
+  if (!root) return code;
+  outputs->write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   const double seconds = wall.seconds();
-  const Json summary =
-      run_summary(sim, status, message, seconds, outputs.observables(), outputs.paths());
+  const Json summary = run_summary(sim, P, status, message, seconds, outputs->observables(),
+                                   comm ? nullptr : &outputs->paths());
   write_file_atomically(dir / "summary.json",
                         [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
   status_file.write(sim, seconds, status, message);  // last: every file is then in place

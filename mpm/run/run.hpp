@@ -17,6 +17,8 @@ struct RunOptions {
   /// SIGINT/SIGTERM write a checkpoint and stop the run cleanly (mpm run; not mpm study).
   bool handle_signals = false;
   std::vector<FaultInjection> faults;  ///< --inject-fault
+  /// The ranks (docs/mpi.md); null or one rank: this process alone.
+  const Communicator* comm = nullptr;
 };
 
 /// Exit codes of `mpm run` (docs/mpm.md#exit-codes); 1 is a usage error, 2 bad input (also a

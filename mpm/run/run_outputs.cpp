@@ -2,23 +2,22 @@
 
 namespace impact::mpm {
 
-RunOutputs::RunOutputs(const Scene& scene, const Simulation& seeded)
-    : gauges_(scene, seeded.particles()),
-      observables_(scene, seeded.particles()),
+RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded)
+    : gauges_(scene, seeded),
+      observables_(scene, seeded),
       faulted_column_(scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle) {}
 
-void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, const Simulation& sim,
-                      const RunState* resumed) {
-  paths_.emplace(scene, sim.particles());
+void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, const Particles& P,
+                      const Ledger& ledger, const RunState* resumed) {
+  paths_.emplace(scene, P);
   std::vector<std::string> columns = gauges_.columns();
   if (faulted_column_) columns.push_back("faulted_particles [-]");
   const std::string history_file = (dir / "history.csv").string();
   if (resumed) {
     observables_.restore(resumed->observables);
-    history_.emplace(history_file, sim.ledger(), columns, resumed->history_bytes,
-                     resumed->history_rows);
+    history_.emplace(history_file, ledger, columns, resumed->history_bytes, resumed->history_rows);
   } else {
-    history_.emplace(history_file, sim.ledger(), columns);
+    history_.emplace(history_file, ledger, columns);
   }
   if (scene.output.snapshots) {
     snapshots_.emplace(dir.string(), scene.output.fields);
@@ -26,15 +25,15 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
   }
 }
 
-void RunOutputs::write_history(const Simulation& sim) {
-  observables_.sample(sim.particles(), sim.time());  // max pressure: sampled at history rows
-  std::vector<double> extra = gauges_.read(sim.particles());
+void RunOutputs::write_history(const Simulation& sim, const Particles& P) {
+  observables_.sample(P, sim.time());  // max pressure: sampled at history rows
+  std::vector<double> extra = gauges_.read(P);
   if (faulted_column_) extra.push_back(double(sim.faulted_particles()));
   history_->write(sim.ledger(), extra);
 }
 
-void RunOutputs::write_snapshot(const Simulation& sim, long index) {
-  if (snapshots_) snapshots_->write(sim.particles(), index, sim.time());
+void RunOutputs::write_snapshot(const Particles& P, long index, double time) {
+  if (snapshots_) snapshots_->write(P, index, time);
 }
 
 RunState RunOutputs::state(double next_output, double wall) const {

@@ -16,24 +16,24 @@ namespace impact::mpm {
 
 class RunOutputs {
  public:
-  /// The gauge and crater particle sets, from sim as seeded (before a checkpoint is loaded).
-  RunOutputs(const Scene& scene, const Simulation& seeded);
-  /// Opens the files in `dir` for sim as it starts: as seeded, or, with `resumed`, as restored
-  /// from a checkpoint (history.csv is then truncated to the checkpoint's rows and continued, the
-  /// observables and the snapshot collection continue, the particle paths begin here).
-  void open(const Scene& scene, const std::filesystem::path& dir, const Simulation& sim,
-            const RunState* resumed);
+  /// The gauge and crater particle sets, from the particles as seeded (before a checkpoint is
+  /// loaded; on several ranks, all of them gathered in seed order).
+  RunOutputs(const Scene& scene, const Particles& seeded);
+  /// Opens the files in `dir` for the particles as the run starts: as seeded, or, with `resumed`,
+  /// as restored from a checkpoint (history.csv is then truncated to the checkpoint's rows and
+  /// continued, the observables and the snapshot collection continue, the particle paths begin
+  /// here).
+  void open(const Scene& scene, const std::filesystem::path& dir, const Particles& P,
+            const Ledger& ledger, const RunState* resumed);
 
   /// Around Simulation::step(): the particle paths record the step.
-  void before_step(const Simulation& sim) { paths_->before_step(sim.particles()); }
-  void after_step(const Simulation& sim, double dt) {
-    paths_->after_step(sim.particles(), sim.time(), dt);
-  }
+  void before_step(const Particles& P) { paths_->before_step(P); }
+  void after_step(const Particles& P, double time, double dt) { paths_->after_step(P, time, dt); }
 
-  /// A history row (the observables are sampled with it).
-  void write_history(const Simulation& sim);
-  /// A particle snapshot numbered `index` (the step, or step + 1 for the state a failure left).
-  void write_snapshot(const Simulation& sim, long index);
+  /// A history row of sim's ledger with the gauges of P (the observables are sampled with it).
+  void write_history(const Simulation& sim, const Particles& P);
+  /// A snapshot of P numbered `index` (the step, or step + 1 for the state a failure left).
+  void write_snapshot(const Particles& P, long index, double time);
 
   /// The files' positions for a checkpoint, with the next output time and the wall time so far.
   RunState state(double next_output, double wall) const;

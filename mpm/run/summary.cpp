@@ -102,29 +102,31 @@ Json check_report(const Scene& scene, int threads) {
   return report;
 }
 
-Json run_summary(const Simulation& sim, const std::string& status, const std::string& message,
-                 double wall, const Observables& observables, const ParticlePaths& paths) {
+Json run_summary(const Simulation& sim, const Particles& P, const std::string& status,
+                 const std::string& message, double wall, const Observables& observables,
+                 const ParticlePaths* paths) {
   const Scene& scene = sim.scene();
-  Json summary = particle_report(scene, sim.particles(), sim.threads());
+  Json summary = particle_report(scene, P, sim.threads());
+  summary["ranks"] = sim.ranks();
   summary["status"] = status;
   if (!message.empty()) summary["message"] = message;
   summary["steps"] = sim.steps();
   summary["time [s]"] = sim.time();
   summary["wall_time [s]"] = wall;
   summary["particle_steps_per_second"] =
-      wall > 0 ? double(sim.particles().size()) * double(sim.steps()) / wall : 0.0;
+      wall > 0 ? double(P.size()) * double(sim.steps()) / wall : 0.0;
   if (const auto peak = peak_resident_memory()) summary["peak_resident_memory [MB]"] = *peak / 1e6;
   summary["initial_energy [J]"] = sim.ledger().initial_energy();
   summary["velocity_fields"] = sim.grid().fields();
   summary["failed_particles"] = sim.failed_particles();
-  summary["failed_by_cause"] = failure_causes(sim.particles());
-  for (std::size_t i = 0; i < scene.output.particle_paths.size(); ++i)
-    summary["particle_paths"][scene.output.particle_paths[i].name] = paths.particle(i);
+  summary["failed_by_cause"] = failure_causes(P);
+  for (std::size_t i = 0; paths && i < scene.output.particle_paths.size(); ++i)
+    summary["particle_paths"][scene.output.particle_paths[i].name] = paths->particle(i);
   summary["converted_particles"] = sim.converted_particles();
   summary["faulted_particles"] = sim.faulted_particles();
   summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
   summary["final"] = row_json(sim.ledger());
-  summary["observables"] = observables.summary(sim.particles());
+  summary["observables"] = observables.summary(P);
   summary["units"] = {{"time", "s"},
                       {"energy", "J"},
                       {"momentum", "kg m/s"},
