@@ -1,5 +1,6 @@
 #include "mpm/parallel/communicator.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #ifdef IMPACT_MPI
@@ -73,19 +74,14 @@ std::int64_t Communicator::sum(std::int64_t value) const {
 }
 
 double Communicator::max(double value) const {
-  double result = value;
-#ifdef IMPACT_MPI
-  if (mpi_) MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-#endif
-  return result;
+  // Every rank's value, then the largest: exact, and no MPI_Op to pass around.
+  const std::vector<double> all = gather_all(value);
+  return *std::max_element(all.begin(), all.end());
 }
 
 double Communicator::min(double value) const {
-  double result = value;
-#ifdef IMPACT_MPI
-  if (mpi_) MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
-#endif
-  return result;
+  const std::vector<double> all = gather_all(value);
+  return *std::min_element(all.begin(), all.end());
 }
 
 bool Communicator::any(bool value) const {
