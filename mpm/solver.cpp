@@ -180,6 +180,20 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   restart_ledger();
 }
 
+void Simulation::resize_particles(std::size_t n) {
+  Particles& P = particles_;
+  // Which optional arrays the scene uses (a rank may have held no particle when they were set).
+  const bool q = stress_settings_.viscosity != nullptr;
+  const bool fault = stress_settings_.fail_particle;
+  const bool removed = scene_.grid.outflow == Outflow::remove;
+  const bool id = comm_ != nullptr;
+  P.for_each_array([&](auto& a) { a.resize(n); });
+  if (!q) P.q.clear();
+  if (!fault) P.fault.clear();
+  if (!removed) P.removed.clear();
+  if (!id) P.id.clear();
+}
+
 void Simulation::restart_ledger() {
   double ke = 0.0;
   Vec3 p = Vec3::Zero();

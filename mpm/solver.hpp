@@ -119,6 +119,8 @@ class Simulation {
   /// from the same scene with the same thread count continues bit for bit.
   void save(CheckpointWriter& out) const;
   void load(CheckpointReader& in);
+  /// Makes room for n particles (a checkpoint's count on this rank; every array the scene uses).
+  void resize_particles(std::size_t n);
 
  private:
   Scene scene_;

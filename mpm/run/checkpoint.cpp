@@ -34,6 +34,8 @@ void write_header(CheckpointWriter& w, const CheckpointHeader& h) {
   w.value(kByteOrderMark);
   w.value(static_cast<std::uint32_t>(sizeof(double)));
   w.value(h.threads);
+  w.value(h.ranks);
+  w.value(h.rank);
   w.value(h.particles);
   w.value(h.step);
   w.value(h.time);
@@ -54,6 +56,10 @@ CheckpointHeader read_header(CheckpointReader& r) {
   if (r.value<std::uint32_t>() != kByteOrderMark) r.fail("written with another byte order");
   if (r.value<std::uint32_t>() != sizeof(double)) r.fail("written with another double size");
   h.threads = r.value<std::int32_t>();
+  h.ranks = r.value<std::int32_t>();
+  h.rank = r.value<std::int32_t>();
+  if (h.ranks < 1 || h.rank < 0 || h.rank >= h.ranks)
+    r.fail("rank out of range (corrupt checkpoint)");
   h.particles = r.value<std::uint64_t>();
   h.step = r.value<std::int64_t>();
   h.time = r.value<double>();
@@ -63,6 +69,11 @@ CheckpointHeader read_header(CheckpointReader& r) {
 }
 
 }  // namespace
+
+std::filesystem::path checkpoint_file(const std::filesystem::path& dir, int rank) {
+  return rank == 0 ? dir / kCheckpointFile
+                   : dir / ("checkpoint.rank" + std::to_string(rank) + ".bin");
+}
 
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash) {
   const auto* b = static_cast<const unsigned char*>(data);
@@ -252,6 +263,8 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
                       std::uint64_t scene_hash) {
   CheckpointHeader h;
   h.threads = sim.threads();
+  h.ranks = sim.ranks();
+  h.rank = sim.rank();
   h.particles = sim.particles().size();
   h.step = sim.steps();
   h.time = sim.time();
@@ -307,10 +320,18 @@ RunState read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
   CheckpointReader r(in, file.string());
   const CheckpointHeader h = read_header(r);  // magic and version first: their own messages
   verify_checksum(file);
-  if (h.particles != sim.particles().size()) {
+  if (h.ranks != sim.ranks() || h.rank != sim.rank()) {
+    r.fail("written by rank " + std::to_string(h.rank) + " of " + std::to_string(h.ranks) +
+           ", read by rank " + std::to_string(sim.rank()) + " of " + std::to_string(sim.ranks()) +
+           " (restart on the rank count of the run)");
+  }
+  // One rank holds the seeded particles; on several, particles have moved between the slabs.
+  if (h.ranks == 1 && h.particles != sim.particles().size()) {
     r.fail(std::to_string(h.particles) + " particles, the scene seeds " +
            std::to_string(sim.particles().size()));
   }
+  if (h.particles > (std::uint64_t(1) << 40)) r.fail("corrupt checkpoint (particle count)");
+  sim.resize_particles(h.particles);
   sim.load(r);
   RunState run;
   r.section("run", 2 * sizeof(double) + 2 * sizeof(std::uint64_t), 1);

@@ -33,6 +33,9 @@ class Simulation;
 inline constexpr std::uint32_t kCheckpointVersion =
     4;  // 2: outflow, no face work; 3: failure cause; 4: particle ids (ranks)
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
+/// Rank r's checkpoint in DIR: checkpoint.bin for rank 0 (and a one-rank run),
+/// checkpoint.rank<r>.bin for the others.
+std::filesystem::path checkpoint_file(const std::filesystem::path& dir, int rank);
 
 /// 64-bit FNV-1a of a byte string (scene.json fingerprint, checkpoint trailer).
 inline constexpr std::uint64_t kHashSeed = 0xcbf29ce484222325ULL;  ///< FNV-1a offset basis
@@ -107,6 +110,8 @@ class CheckpointError : public std::runtime_error {
 struct CheckpointHeader {
   std::uint32_t version = kCheckpointVersion;
   std::int32_t threads = 0;
+  std::int32_t ranks = 1;  ///< of the run (docs/mpi.md): one file per rank
+  std::int32_t rank = 0;   ///< whose particles this file holds
   std::uint64_t particles = 0;
   std::int64_t step = 0;
   double time = 0.0;
@@ -129,8 +134,9 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
                       std::uint64_t scene_hash);
 /// Reads the header only (magic, version, byte order first); throws CheckpointError.
 CheckpointHeader read_checkpoint_header(const std::filesystem::path& file);
-/// Loads `file` into `sim` (built from the same scene with the checkpoint's thread count) and
-/// returns the run state; throws CheckpointError (the Simulation is then unusable).
+/// Loads `file` into `sim` (built from the same scene with the checkpoint's thread count, on the
+/// same rank count: each rank its own file) and returns the run state; throws CheckpointError
+/// (the Simulation is then unusable).
 RunState read_checkpoint(const std::filesystem::path& file, Simulation& sim);
 
 }  // namespace impact::mpm

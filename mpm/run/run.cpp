@@ -57,11 +57,10 @@ class WallClock {
 };
 
 // What a run on several ranks cannot do yet (docs/mpi.md#not-yet), or empty.
-std::string not_yet_on_ranks(const Scene& scene, const RunOptions& options, bool resume) {
-  if (resume) return "mpm run --restart";
-  if (scene.output.checkpoint_interval_steps > 0) return "output.checkpoint_interval_steps";
+std::string not_yet_on_ranks(const Scene& scene, const RunOptions& options) {
   if (!scene.output.particle_paths.empty()) return "output.particle_paths";
-  if (!options.faults.empty()) return "--inject-fault";
+  for (const FaultInjection& f : options.faults)
+    if (!is_signal(f)) return "--inject-fault on a particle";
   return {};
 }
 
@@ -79,7 +78,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     return kExitMemory;
   }
   if (comm) {
-    if (const std::string what = not_yet_on_ranks(scene, options, resume); !what.empty()) {
+    if (const std::string what = not_yet_on_ranks(scene, options); !what.empty()) {
       if (root)
         std::cerr << "mpm: " << what << " is not available on several ranks yet (docs/mpi.md); run "
                   << "on one rank (without mpirun) for it\n";
@@ -126,9 +125,18 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   RunState resumed;
   double paths_start = 0.0;  // after a restart: the paths begin there
   if (resume) {
-    resumed = read_checkpoint(dir / kCheckpointFile, sim);
-    std::cerr << "mpm: restarting " << dir.string() << " from step " << sim.steps() << ", time "
-              << sim.time() << " s (" << sim.threads() << " threads)\n";
+    resumed = read_checkpoint(checkpoint_file(dir, sim.rank()), sim);
+    if (comm && comm->min(double(sim.steps())) != comm->max(double(sim.steps()))) {
+      throw InputError({(dir / kCheckpointFile).string() +
+                        ": the ranks' checkpoint files are of different steps (a run stopped "
+                        "while writing them)"});
+    }
+    if (root) {
+      std::cerr << "mpm: restarting " << dir.string() << " from step " << sim.steps() << ", time "
+                << sim.time() << " s (" << sim.threads() << " threads";
+      if (comm) std::cerr << ", " << comm->size() << " ranks";
+      std::cerr << ")\n";
+    }
     paths_start = sim.time();
     status_file.checkpointed(sim.steps(), sim.time());
   }
@@ -145,9 +153,12 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   };
   if (!resume) write_outputs(true, sim.steps());
   double next_output = resume ? resumed.next_output : scene.output.interval;
+  // Every rank writes its own file; rank 0's also holds the outputs' positions.
   const auto checkpoint = [&] {
-    write_checkpoint(dir / kCheckpointFile, sim, outputs->state(next_output, wall.seconds()),
-                     scene_hash);
+    const RunState state = root ? outputs->state(next_output, wall.seconds())
+                                : RunState{next_output, 0, 0, {}, {}, wall.seconds()};
+    write_checkpoint(checkpoint_file(dir, sim.rank()), sim, state, scene_hash);
+    if (comm) comm->barrier();  // every file in place before the status names the checkpoint
     status_file.checkpointed(sim.steps(), sim.time());
   };
   const long every = scene.output.checkpoint_interval_steps;
@@ -185,13 +196,10 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
         m.precision(9);
         m << "interrupted by " << signal_name(signal) << " after step " << sim.steps() << ", time "
           << sim.time() << " s";
-        if (!comm) {
-          if (status_file.checkpoint_step() != sim.steps()) checkpoint();
-          m << ": checkpoint " << (dir / kCheckpointFile).string()
-            << "; continue with: mpm run --restart " << dir.string();
-        } else {
-          m << " (no checkpoint: not available on several ranks yet, docs/mpi.md)";
-        }
+        if (status_file.checkpoint_step() != sim.steps()) checkpoint();
+        m << ": checkpoint " << (dir / kCheckpointFile).string()
+          << "; continue with: " << (comm ? "mpirun -np " + std::to_string(comm->size()) + " " : "")
+          << "mpm run --restart " << dir.string();
         status = "interrupted";
         message = m.str();
         code = kExitSignalBase + signal;

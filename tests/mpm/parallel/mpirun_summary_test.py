@@ -9,8 +9,10 @@ crater, failures, particle and mass counts) agree to 1e-9 relative, or 1e-9 of E
 energies and of sqrt(2 M E0) for momenta and impulses (quantities that start at zero); the
 history has the same rows and columns; the same snapshot files, each with every particle (rank 0
 writes them from the gathered particles). What is left to differ is the order of the sums at the
-shared node planes and in the reductions. A checkpointed scene is refused on several ranks (not
-yet available there): exit code 2, the key named, nothing written.
+shared node planes and in the reductions. The run stopped by SIGTERM after step 40 (one checkpoint
+file per rank) and restarted on as many ranks writes every file bit for bit as the uninterrupted
+run. A scene with particle paths is refused on several ranks (not available there yet): exit code
+2, the key named, nothing written.
 """
 import json
 import math
@@ -90,17 +92,35 @@ def main(mpm, mpiexec, ranks, work):
         with open(os.path.join(many, "particles", name), "rb") as f:
             head = f.read(2000).decode("latin-1")
         assert f'NumberOfPoints="{n}"' in head, f"{name}: not every particle"
+    # Stopped by SIGTERM after step 40 (a checkpoint per rank), then restarted on as many ranks:
+    # every file as in the uninterrupted run, bit for bit.
+    launch = [mpiexec, "-np", str(ranks), "--oversubscribe", mpm, "run"]
+    cut = os.path.join(work, "cut")
+    done = subprocess.run(launch + [scene, "--out", cut, "--threads", "1", "--inject-fault",
+                                    "sigterm:40"], capture_output=True, text=True, env=env)
+    assert done.returncode == 143, (done.returncode, done.stderr)
+    assert os.path.exists(os.path.join(cut, "checkpoint.rank1.bin"))
+    run(launch + ["--restart", cut], env)
+    for name in ["history.csv"] + [os.path.join("particles", n) for n in sb]:
+        with open(os.path.join(many, name), "rb") as f, open(os.path.join(cut, name), "rb") as g:
+            assert f.read() == g.read(), f"{name}: the restarted run differs"
+    c = json.load(open(os.path.join(cut, "summary.json")))
+    for k in ("wall_time [s]", "particle_steps_per_second", "peak_resident_memory [MB]",
+              "available_memory [MB]"):
+        b.pop(k, None)
+        c.pop(k, None)
+    assert b == c, "summary.json of the restarted run differs"
+    print(f"restart on {ranks} ranks: bit-identical")
     # What does not run on several ranks yet is refused by name, exit code 2, nothing written.
     refused = os.path.join(work, "refused.json")
     with open(refused, "w") as f:
-        json.dump({"extends": scene, "output": {"checkpoint_interval_steps": 10}}, f)
+        json.dump({"extends": scene, "output": {"particle_paths": {
+            "p": {"object": "sphere", "position": [0.0097, 0.0114, -0.0038]}}}}, f)
     out = os.path.join(work, "refused")
-    done = subprocess.run([mpiexec, "-np", str(ranks), "--oversubscribe", mpm, "run", refused,
-                           "--out", out, "--threads", "1"], capture_output=True, text=True,
-                          env=env)
+    done = subprocess.run(launch + [refused, "--out", out, "--threads", "1"], capture_output=True,
+                          text=True, env=env)
     assert done.returncode == 2, done.returncode
-    assert "output.checkpoint_interval_steps is not available on several ranks" in done.stderr, \
-        done.stderr
+    assert "output.particle_paths is not available on several ranks" in done.stderr, done.stderr
     assert not os.path.exists(out), "a refused run wrote files"
     print("OK")
 
