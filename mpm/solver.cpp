@@ -132,9 +132,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
     slabs_ = SlabDecomposition::balanced(counts, comm->size());
     const int r = comm->rank();
     particles_ = keep_slab(std::move(particles_), slabs_, scene_.grid, r);
-    grid_.set_owned_planes(r == 0 ? -1 : slabs_.first_cell(r), r + 1 == comm->size()
-                                                                   ? scene_.grid.cells[0] + 1
-                                                                   : slabs_.first_cell(r + 1) - 1);
+    own_slab();
     halo_.emplace(*comm_, slabs_);
   }
   const PhysicsSpec& ph = scene_.physics;
@@ -300,10 +298,40 @@ const StepTotals& Simulation::step() {
     agree_on_failure(grown ? std::optional(describe(*grown, steps_, time_)) : std::nullopt);
     // Particles that left this rank's slab go to their new owner.
     migrated_ = migrate(particles_, slabs_, scene_.grid, *comm_).sent;
+    rebalance_if_needed();
   } else if (grown) {
     throw SolverFailure(describe(*grown, steps_, time_));
   }
   return last_;
+}
+
+void Simulation::own_slab() {
+  const int r = comm_ ? comm_->rank() : 0;
+  grid_.set_owned_planes(r == 0 ? -1 : slabs_.first_cell(r), r + 1 == slabs_.ranks()
+                                                                 ? scene_.grid.cells[0] + 1
+                                                                 : slabs_.first_cell(r + 1) - 1);
+}
+
+void Simulation::rebalance_if_needed() {
+  // Decided from particle counts only, the same on every rank and in every run.
+  const std::vector<double> held = comm_->gather_all(double(particles_.size()));
+  double total = 0.0, largest = 0.0;
+  for (const double n : held) {
+    total += n;
+    largest = std::max(largest, n);
+  }
+  if (!(largest > scene_.solver.rebalance_above * total / comm_->size())) return;
+  std::vector<double> local(std::size_t(scene_.grid.cells[0]), 0.0);
+  for (const Vec3& x : particles_.x) local[std::size_t(cell_column(scene_.grid, x(0)))] += 1.0;
+  const std::vector<double> global = comm_->sum(local);  // integers: exact
+  std::vector<std::size_t> counts(global.size());
+  for (std::size_t c = 0; c < counts.size(); ++c) counts[c] = static_cast<std::size_t>(global[c]);
+  SlabDecomposition next = SlabDecomposition::balanced(counts, comm_->size());
+  if (next == slabs_) return;  // already as balanced as slabs can be
+  slabs_ = std::move(next);
+  own_slab();
+  migrated_ += migrate(particles_, slabs_, scene_.grid, *comm_).sent;
+  ++rebalances_;
 }
 
 void Simulation::agree_on_failure(const std::optional<std::string>& message) const {

@@ -99,6 +99,8 @@ class Simulation {
   const SlabDecomposition& slabs() const { return slabs_; }
   /// Particles that moved to another rank in the last step.
   std::size_t migrated() const { return migrated_; }
+  /// Times the slabs were re-balanced (solver.rebalance_above).
+  long rebalances() const { return rebalances_; }
   long failed_particles() const { return failed_; }        ///< failures so far
   long converted_particles() const { return converted_; }  ///< moved to a companion field
   /// Particles flagged by physics.on_numerical_fault = fail_particle so far.
@@ -149,6 +151,12 @@ class Simulation {
   SlabDecomposition slabs_;
   std::optional<HaloExchange> halo_;
   std::size_t migrated_ = 0;
+  long rebalances_ = 0;
+  /// This rank's node planes for the ledger (Grid::set_owned_planes) from slabs_.
+  void own_slab();
+  /// New slabs balanced by the current particle counts when the largest rank holds more than
+  /// solver.rebalance_above times the mean, and the particles moved to them.
+  void rebalance_if_needed();
   /// Applies the injections of the coming step.
   void apply_injections();
   StepTotals last_;

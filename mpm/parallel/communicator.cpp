@@ -9,6 +9,29 @@
 
 namespace impact::mpm {
 
+namespace {
+
+// Adds the wall time of its scope to a counter (MPI_Wtime: the MPI calls' own clock).
+class MpiTimer {
+ public:
+  explicit MpiTimer([[maybe_unused]] double& seconds) : seconds_(seconds) {
+#ifdef IMPACT_MPI
+    start_ = MPI_Wtime();
+#endif
+  }
+  ~MpiTimer() {
+#ifdef IMPACT_MPI
+    seconds_ += MPI_Wtime() - start_;
+#endif
+  }
+
+ private:
+  double& seconds_;
+  double start_ = 0.0;
+};
+
+}  // namespace
+
 // Environment variables an MPI launcher sets in every process it starts (Open MPI's mpirun,
 // MPICH's Hydra, Slurm's srun with PMI or PMIx).
 bool started_by_launcher() {
@@ -54,6 +77,7 @@ std::vector<double> Communicator::sum(const std::vector<double>& values) const {
   if (!mpi_) return values;
   std::vector<double> all;
 #ifdef IMPACT_MPI
+  const MpiTimer timer(seconds_);
   const int n = static_cast<int>(values.size());
   all.resize(values.size() * static_cast<std::size_t>(size_));
   MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, MPI_COMM_WORLD);
@@ -68,6 +92,7 @@ std::vector<double> Communicator::sum(const std::vector<double>& values) const {
 std::int64_t Communicator::sum(std::int64_t value) const {
   std::int64_t total = value;
 #ifdef IMPACT_MPI
+  const MpiTimer timer(seconds_);
   if (mpi_) MPI_Allreduce(&value, &total, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
 #endif
   return total;
@@ -88,6 +113,7 @@ bool Communicator::any(bool value) const {
   int result = value ? 1 : 0;
 #ifdef IMPACT_MPI
   const int mine = result;
+  const MpiTimer timer(seconds_);
   if (mpi_) MPI_Allreduce(&mine, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 #endif
   return result != 0;
@@ -96,6 +122,7 @@ bool Communicator::any(bool value) const {
 std::vector<double> Communicator::gather_all(double value) const {
   std::vector<double> all(static_cast<std::size_t>(size_), value);
 #ifdef IMPACT_MPI
+  const MpiTimer timer(seconds_);
   if (mpi_) MPI_Allgather(&value, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
 #endif
   return all;
@@ -105,6 +132,7 @@ std::string Communicator::broadcast(const std::string& text, [[maybe_unused]] in
   std::string out = text;
 #ifdef IMPACT_MPI
   if (!mpi_) return out;
+  const MpiTimer timer(seconds_);
   long long n = static_cast<long long>(text.size());
   MPI_Bcast(&n, 1, MPI_LONG_LONG, from, MPI_COMM_WORLD);
   out.resize(static_cast<std::size_t>(n));
@@ -119,6 +147,7 @@ std::vector<char> Communicator::exchange([[maybe_unused]] int neighbour,
   std::vector<char> received;
 #ifdef IMPACT_MPI
   if (!mpi_ || neighbour < 0 || neighbour >= size_) return received;
+  const MpiTimer timer(seconds_);
   long long n_send = static_cast<long long>(to_send.size()), n_recv = 0;
   MPI_Sendrecv(&n_send, 1, MPI_LONG_LONG, neighbour, 2 * tag, &n_recv, 1, MPI_LONG_LONG, neighbour,
                2 * tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
@@ -135,6 +164,7 @@ std::vector<std::vector<char>> Communicator::all_to_all(
   if (!mpi_) return to_each;  // one rank: to itself
   std::vector<std::vector<char>> from(static_cast<std::size_t>(size_));
 #ifdef IMPACT_MPI
+  const MpiTimer timer(seconds_);
   const std::size_t n = static_cast<std::size_t>(size_);
   std::vector<int> send_counts(n), recv_counts(n), send_offsets(n), recv_offsets(n);
   std::vector<char> send;
@@ -161,6 +191,7 @@ std::vector<std::vector<char>> Communicator::all_to_all(
 
 void Communicator::barrier() const {
 #ifdef IMPACT_MPI
+  const MpiTimer timer(seconds_);
   if (mpi_) MPI_Barrier(MPI_COMM_WORLD);
 #endif
 }

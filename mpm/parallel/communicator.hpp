@@ -60,7 +60,12 @@ class Communicator {
   std::vector<std::vector<char>> all_to_all(const std::vector<std::vector<char>>& to_each) const;
   void barrier() const;
 
+  /// Wall time spent in MPI calls so far [s]: waiting for the other ranks plus moving the data
+  /// (the load balance shows in it: docs/mpi.md).
+  double seconds_in_mpi() const { return seconds_; }
+
  private:
+  mutable double seconds_ = 0.0;
   int rank_ = 0;
   int size_ = 1;
   bool mpi_ = false;

@@ -29,6 +29,7 @@ class SlabDecomposition {
   static SlabDecomposition balanced(const std::vector<std::size_t>& counts, int ranks);
 
   int ranks() const { return static_cast<int>(first_.size()) - 1; }
+  const std::vector<int>& first_cells() const { return first_; }
   int cells() const { return first_.back(); }
   int first_cell(int rank) const { return first_[static_cast<std::size_t>(rank)]; }
   /// The rank owning cell column i (cells below 0 belong to rank 0, beyond the grid to the last).

@@ -1,6 +1,7 @@
 // DIR/checkpoint.bin (format in mpm/run/checkpoint.hpp) and the Simulation's part of it.
 #include "mpm/run/checkpoint.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -181,6 +182,8 @@ void Simulation::save(CheckpointWriter& out) const {
   out.array("fault", P.fault);
   out.array("removed", P.removed);
   out.array("id", P.id);
+  out.array("slabs", slabs_.first_cells());
+  out.value(static_cast<std::int64_t>(rebalances_));
   out.section("simulation", 1, 3 * sizeof(double) + 4 * sizeof(std::int64_t));
   out.value(time_);
   out.value(static_cast<std::int64_t>(steps_));
@@ -234,6 +237,14 @@ void Simulation::load(CheckpointReader& in) {
   in.array("fault", P.fault, P.fault.size());
   in.array("removed", P.removed, P.removed.size());
   in.array("id", P.id, P.id.size());
+  std::vector<int> first_cells;
+  in.array("slabs", first_cells, std::uint64_t(slabs_.ranks()) + 1);
+  if (first_cells.front() != 0 || first_cells.back() != scene_.grid.cells[0] ||
+      !std::is_sorted(first_cells.begin(), first_cells.end()))
+    in.fail("slab boundaries out of order (corrupt checkpoint)");
+  slabs_ = SlabDecomposition(std::move(first_cells));
+  own_slab();
+  rebalances_ = static_cast<long>(in.value<std::int64_t>());
   for (std::size_t p = 0; p < n; ++p) {
     if (P.material[p] >= scene_.materials.size() || P.object[p] >= scene_.objects.size() ||
         P.field[p] >= static_cast<std::size_t>(grid_.fields()))

@@ -233,11 +233,24 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
                  "fail_particle)\n";
   }
   const Particles& P = particles();
+  // Per rank: the particles it holds at the end and its time in MPI calls (waiting for the others
+  // and moving data): the load balance (docs/mpi.md).
+  std::vector<double> held, in_mpi;
+  if (comm) {
+    held = comm->gather_all(double(sim.particles().size()));
+    in_mpi = comm->gather_all(comm->seconds_in_mpi());
+  }
   if (!root) return code;
   outputs->write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   const double seconds = wall.seconds();
-  const Json summary = run_summary(sim, P, status, message, seconds, outputs->observables(),
-                                   comm ? nullptr : &outputs->paths());
+  Json summary = run_summary(sim, P, status, message, seconds, outputs->observables(),
+                             comm ? nullptr : &outputs->paths());
+  if (comm) {
+    summary["ranks_load"] = {{"particles_at_end", held},
+                             {"seconds_in_mpi [s]", in_mpi},
+                             {"rebalances", sim.rebalances()},
+                             {"slabs", sim.slabs().first_cells()}};
+  }
   write_file_atomically(dir / "summary.json",
                         [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
   status_file.write(sim, seconds, status, message);  // last: every file is then in place

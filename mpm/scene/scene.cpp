@@ -209,6 +209,10 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
           : FIntegration::forward_euler;
   s.gravity =
       read_vec3(r, at(doc, "solver"), "gravity", "body force per unit mass [m/s^2]", Vec3::Zero());
+  s.rebalance_above = r.number_or(
+      "rebalance_above", 1.2, Range::open(1.0, std::numeric_limits<double>::infinity()),
+      "several ranks: re-balance the slabs when the largest particle count exceeds this multiple "
+      "of the mean [-]");
   r.reject_unknown_keys();
 }
 

@@ -62,6 +62,9 @@ struct SolverSpec {
   Scheme scheme = Scheme::musl;
   FIntegration f_integration = FIntegration::forward_euler;
   Vec3 gravity = Vec3::Zero();  ///< body force per unit mass [m/s^2]
+  /// On several ranks (docs/mpi.md): the slabs are re-balanced by particle count when the largest
+  /// rank's count exceeds this multiple of the mean [-].
+  double rebalance_above = 1.2;
 };
 
 /// How the velocity fields of different materials interact at shared nodes (Bardenhagen et al.
