@@ -425,9 +425,12 @@ std::string Simulation::describe(const Failure& f, long step, double time) const
 void Simulation::inject(const FaultInjection& fault) {
   if (fault.kind == FaultInjection::Kind::sigterm || fault.kind == FaultInjection::Kind::sigint)
     throw std::invalid_argument("a signal is raised by run(), not the Simulation");
-  if (fault.particle >= particles_.size()) {
+  // The particle is its seed index, on any number of ranks (collective on several).
+  const auto total = static_cast<std::size_t>(comm_ ? comm_->sum(std::int64_t(particles_.size()))
+                                                    : std::int64_t(particles_.size()));
+  if (fault.particle >= total) {
     throw std::out_of_range("particle " + std::to_string(fault.particle) + " out of range (" +
-                            std::to_string(particles_.size()) + " particles)");
+                            std::to_string(total) + " particles)");
   }
   injections_.push_back(fault);
 }
@@ -435,7 +438,13 @@ void Simulation::inject(const FaultInjection& fault) {
 void Simulation::apply_injections() {
   for (const FaultInjection& f : injections_) {
     if (f.step != steps_ + 1) continue;
-    const std::size_t p = f.particle;
+    // Its index here: the seed index itself on one rank; on several, the rank holding it.
+    std::size_t p = f.particle;
+    if (!particles_.id.empty()) {
+      const auto it = std::find(particles_.id.begin(), particles_.id.end(), f.particle);
+      if (it == particles_.id.end()) continue;
+      p = static_cast<std::size_t>(it - particles_.id.begin());
+    }
     switch (f.kind) {
       case FaultInjection::Kind::nan:
         stress_settings_.inject_nan_stress = static_cast<std::ptrdiff_t>(p);

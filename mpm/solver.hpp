@@ -113,8 +113,9 @@ class Simulation {
   /// damage): field: message" for a failure in step N ending at time T.
   std::string describe(const Failure& f, long step, double time) const;
 
-  /// Plants a fault (nan, nan_velocity, outside, jacobian) for a later step; throws
-  /// std::invalid_argument for a particle index out of range or a signal kind.
+  /// Plants a fault (nan, nan_velocity, outside, jacobian) for a later step, on the particle of
+  /// that seed index (whichever rank holds it then; collective on several ranks); throws
+  /// std::out_of_range for an index out of range, std::invalid_argument for a signal kind.
   void inject(const FaultInjection& fault);
 
   /// Everything the next steps depend on (mpm/run/checkpoint.cpp): load() on a Simulation built

@@ -57,10 +57,8 @@ class WallClock {
 };
 
 // What a run on several ranks cannot do yet (docs/mpi.md#not-yet), or empty.
-std::string not_yet_on_ranks(const Scene& scene, const RunOptions& options) {
+std::string not_yet_on_ranks(const Scene& scene) {
   if (!scene.output.particle_paths.empty()) return "output.particle_paths";
-  for (const FaultInjection& f : options.faults)
-    if (!is_signal(f)) return "--inject-fault on a particle";
   return {};
 }
 
@@ -78,7 +76,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     return kExitMemory;
   }
   if (comm) {
-    if (const std::string what = not_yet_on_ranks(scene, options); !what.empty()) {
+    if (const std::string what = not_yet_on_ranks(scene); !what.empty()) {
       if (root)
         std::cerr << "mpm: " << what << " is not available on several ranks yet (docs/mpi.md); run "
                   << "on one rank (without mpirun) for it\n";
@@ -100,12 +98,12 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   }
   for (const FaultInjection& f : options.faults) {
     if (is_signal(f)) continue;
-    if (f.particle >= sim.particles().size()) {
-      std::cerr << "mpm: --inject-fault: particle " << f.particle << " out of range ("
-                << sim.particles().size() << " particles)\n";
+    try {
+      sim.inject(f);  // the particle's seed index, on any number of ranks
+    } catch (const std::out_of_range& e) {
+      if (root) std::cerr << "mpm: --inject-fault: " << e.what() << '\n';
       return 1;
     }
-    sim.inject(f);
   }
   // What the outputs read: this process's particles, or on several ranks all of them gathered on
   // rank 0 in seed order (every rank must call it: it is a collective exchange).

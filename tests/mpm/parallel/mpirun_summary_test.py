@@ -11,7 +11,9 @@ history has the same rows and columns; the same snapshot files, each with every 
 writes them from the gathered particles). What is left to differ is the order of the sums at the
 shared node planes and in the reductions. The run stopped by SIGTERM after step 40 (one checkpoint
 file per rank) and restarted on as many ranks writes every file bit for bit as the uninterrupted
-run. A scene with particle paths is refused on several ranks (not available there yet): exit code
+run. A NaN stress injected into the last particle (on the last rank) in step 5 stops every rank
+with exit code 3 and a message naming the step, the rank and the particle. A scene with particle
+paths is refused on several ranks (not available there yet): exit code
 2, the key named, nothing written.
 """
 import json
@@ -113,6 +115,17 @@ def main(mpm, mpiexec, ranks, work):
         d["ranks_load"].pop("seconds_in_mpi [s]")
     assert b == c, "summary.json of the restarted run differs"
     print(f"restart on {ranks} ranks: bit-identical")
+    # A fault on one rank stops every rank: the last particle (seed index n - 1, at the far end
+    # of the cylinder, on the last rank) gets a NaN stress in step 5.
+    bad = os.path.join(work, "fault")
+    done = subprocess.run(launch + [scene, "--out", bad, "--threads", "1", "--inject-fault",
+                                    f"nan:5:{n - 1}"], capture_output=True, text=True, env=env)
+    assert done.returncode == 3, (done.returncode, done.stderr)
+    assert "step 5, time" in done.stderr, done.stderr
+    assert f"rank {ranks - 1}, particle {n - 1} " in done.stderr, done.stderr
+    status = json.load(open(os.path.join(bad, "status.json")))
+    assert status["status"] == "failed" and status["step"] == 4, status
+    print("a fault on one rank: every rank stopped, the message names rank, step and particle")
     # What does not run on several ranks yet is refused by name, exit code 2, nothing written.
     refused = os.path.join(work, "refused.json")
     with open(refused, "w") as f:
