@@ -11,6 +11,8 @@
 #   ./run.sh mpi [RANKS]  install Open MPI when missing, build with it, and run the recommended
 #                    scene on RANKS (default 2) ranks of one thread (docs/mpi.md; results in
 #                    build/recommended-mpi/recommended/)
+#   ./run.sh mpi-bench [RANKS]  ranks against threads on the 2.25x sphere-cylinder grid
+#                    (mpm/benchmark/mpi_scaling.py; figures in docs/mpi.md; about 10 min)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
 #   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
@@ -82,6 +84,11 @@ case "${1:-}" in
       mpirun -np "${2:-2}" --oversubscribe build/bin/mpm run \
       data/scenes/sphere_cylinder/recommended.json --out build/recommended-mpi/recommended --threads 1
     /usr/bin/python3 mpm/study/study_plot.py build/recommended-mpi
+    ;;
+  mpi-bench)
+    install_missing_packages "${MPI_PACKAGES[@]}"
+    build release -DIMPACT_MPI=ON
+    /usr/bin/python3 mpm/benchmark/mpi_scaling.py build/bin/mpm build/mpi-bench --ranks "${2:-2}"
     ;;
   fuzz)
     install_missing_packages "${FUZZ_PACKAGES[@]}"

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Ranks against threads on one machine: the recommended sphere-cylinder on the 2.25x grid
+(112 x 45 x 45 cells, 344 906 particles) to 5 us without snapshots, run as 1 rank of 1 thread,
+RANKS ranks of 1 thread (mpirun) and 1 rank of RANKS threads, REPEATS times in turn (the VM is
+noisy: compare within a repeat). Prints one row per run from each summary.json: wall time of the
+step loop, particle-steps per second, speed-up against the 1-rank run of the same repeat, and each
+rank's time in MPI calls (docs/mpi.md, "Speed").
+
+  mpi_scaling.py MPM OUT_DIR [--ranks 2] [--repeats 2] [--mpirun mpirun]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+
+def run(cmd, env):
+    done = subprocess.run(cmd, capture_output=True, text=True, env=env)
+    if done.returncode != 0:
+        sys.exit(f"mpi_scaling.py: {' '.join(cmd)} exited {done.returncode}\n{done.stderr}")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("mpm")
+    ap.add_argument("out")
+    ap.add_argument("--ranks", type=int, default=2)
+    ap.add_argument("--repeats", type=int, default=2)
+    ap.add_argument("--mpirun", default="mpirun")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    scene = os.path.join(a.out, "scene_2.25x.json")
+    with open(scene, "w") as f:
+        json.dump({"extends": os.path.join(ROOT, "data/scenes/sphere_cylinder/recommended.json"),
+                   "grid": {"cells": [112, 45, 45]}, "time": {"max_time": 5.0e-6},
+                   "output": {"snapshots": False}}, f)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    print("repeat  run                  wall [s]  M p-steps/s  speed-up  seconds in MPI per rank")
+    for rep in range(a.repeats):
+        base = None
+        for label, cmd, threads in [
+                ("1 rank, 1 thread", [a.mpm, "run", scene], 1),
+                (f"{a.ranks} ranks, 1 thread", [a.mpirun, "-np", str(a.ranks), "--oversubscribe",
+                                               a.mpm, "run", scene], 1),
+                (f"1 rank, {a.ranks} threads", [a.mpm, "run", scene], a.ranks)]:
+            out = os.path.join(a.out, f"run_{rep}_{label.replace(' ', '_').replace(',', '')}")
+            run(cmd + ["--out", out, "--threads", str(threads)],
+                dict(env, OMP_NUM_THREADS=str(threads)))
+            s = json.load(open(os.path.join(out, "summary.json")))
+            wall = s["wall_time [s]"]
+            base = base or wall
+            mpi = s.get("ranks_load", {}).get("seconds_in_mpi [s]", [])
+            print(f"{rep:6d}  {label:20s} {wall:8.1f}  {s['particle_steps_per_second'] / 1e6:11.3f}"
+                  f"  {base / wall:8.2f}  {' '.join(f'{x:.1f}' for x in mpi)}")
+
+
+if __name__ == "__main__":
+    main()
