@@ -65,17 +65,18 @@ int UpdateBatch::add(const ElasticPlastic& model, const PointState& s0, const Ma
 
 void UpdateBatch::run(double dt) {
   // Lanes beyond the batch's points: identities, zeros and unit moduli.
-  for (int k = size_; k < capacity; ++k)
+  for (int k = size_; k < capacity; ++k) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         const double identity = i == j ? 1.0 : 0.0;
         rotations_.F.a[i][j][k] = rotations_.guess.a[i][j][k] = identity;
         corotations_.R_old.a[i][j][k] = identity;
         corotations_.stress.a[i][j][k] = corotations_.D.a[i][j][k] = 0.0;
-        steps_.material.density[k] = steps_.material.shear_modulus[k] = 1.0;
-        steps_.material.hypo_bulk_modulus[k] = steps_.material.specific_heat[k] = 1.0;
-        steps_.J_n[k] = steps_.J_1[k] = 1.0;
       }
+    steps_.material.density[k] = steps_.material.shear_modulus[k] = 1.0;
+    steps_.material.hypo_bulk_modulus[k] = steps_.material.specific_heat[k] = 1.0;
+    steps_.J_n[k] = steps_.J_1[k] = 1.0;
+  }
   for (int k = 0; k < capacity; ++k) steps_.dt[k] = dt;
 
   // The polar rotations of F1 (a lane whose warm start did not converge takes the cold

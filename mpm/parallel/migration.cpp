@@ -9,6 +9,17 @@ namespace impact::mpm {
 
 namespace {
 
+// Which of Particles' arrays are in use, agreed by every rank: a rank may hold no particle, and
+// an optional array is in use for the whole scene or not at all.
+std::vector<bool> arrays_in_use(const Particles& P, const Communicator& comm) {
+  const std::size_t n = P.size();
+  std::vector<double> use;
+  P.for_each_array([&](const auto& a) { use.push_back(n > 0 && a.size() == n ? 1.0 : 0.0); });
+  std::vector<bool> in_use;
+  for (const double users : comm.sum(use)) in_use.push_back(users > 0.0);
+  return in_use;
+}
+
 void pack(const Particles& P, std::size_t p, std::vector<char>& out) {
   const std::size_t n = P.size();
   P.for_each_array([&](auto& a) {
@@ -61,12 +72,7 @@ MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const Grid
                         const Communicator& comm) {
   MigrationCounts counts;
   const std::size_t n = P.size();
-  // Which arrays are in use: agreed by every rank (a rank may hold no particle at all).
-  std::vector<double> use;
-  P.for_each_array([&](auto& a) { use.push_back(n > 0 && a.size() == n ? 1.0 : 0.0); });
-  const std::vector<double> users = comm.sum(use);
-  std::vector<bool> in_use;
-  for (double u : users) in_use.push_back(u > 0.0);
+  const std::vector<bool> in_use = arrays_in_use(P, comm);
   std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
   std::vector<char> keep(n, 1);
   for (std::size_t p = 0; p < n; ++p) {
@@ -88,11 +94,7 @@ MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const Grid
 Particles gather_particles(const Particles& local, const Communicator& comm) {
   if (comm.size() == 1) return local;
   const std::size_t n = local.size();
-  std::vector<double> use;
-  local.for_each_array([&](const auto& a) { use.push_back(n > 0 && a.size() == n ? 1.0 : 0.0); });
-  const std::vector<double> users = comm.sum(use);
-  std::vector<bool> in_use;
-  for (double u : users) in_use.push_back(u > 0.0);
+  const std::vector<bool> in_use = arrays_in_use(local, comm);
   std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
   for (std::size_t p = 0; p < n; ++p) pack(local, p, to[0]);
   const std::vector<std::vector<char>> from = comm.all_to_all(to);
