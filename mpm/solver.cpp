@@ -127,9 +127,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   if (comm != nullptr && comm->size() > 1) {
     // Every rank seeds the whole scene, splits it the same way, and keeps its slab.
     comm_ = comm;
-    std::vector<std::size_t> counts(std::size_t(scene_.grid.cells[0]), 0);
-    for (const Vec3& x : particles_.x) ++counts[std::size_t(cell_column(scene_.grid, x(0)))];
-    slabs_ = SlabDecomposition::balanced(counts, comm->size());
+    slabs_ = SlabDecomposition::balanced(column_counts(particles_, scene_.grid), comm->size());
     const int r = comm->rank();
     particles_ = keep_slab(std::move(particles_), slabs_, scene_.grid, r);
     own_slab();
@@ -321,12 +319,8 @@ void Simulation::rebalance_if_needed() {
     largest = std::max(largest, n);
   }
   if (!(largest > scene_.solver.rebalance_above * total / comm_->size())) return;
-  std::vector<double> local(std::size_t(scene_.grid.cells[0]), 0.0);
-  for (const Vec3& x : particles_.x) local[std::size_t(cell_column(scene_.grid, x(0)))] += 1.0;
-  const std::vector<double> global = comm_->sum(local);  // integers: exact
-  std::vector<std::size_t> counts(global.size());
-  for (std::size_t c = 0; c < counts.size(); ++c) counts[c] = static_cast<std::size_t>(global[c]);
-  SlabDecomposition next = SlabDecomposition::balanced(counts, comm_->size());
+  SlabDecomposition next =
+      SlabDecomposition::balanced(column_counts(particles_, scene_.grid, comm_), comm_->size());
   if (next == slabs_) return;  // already as balanced as slabs can be
   slabs_ = std::move(next);
   own_slab();

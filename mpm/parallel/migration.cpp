@@ -68,6 +68,16 @@ int cell_column(const GridSpec& grid, double x) {
   return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid.cells[0] - 1)));
 }
 
+std::vector<std::size_t> column_counts(const Particles& P, const GridSpec& grid,
+                                       const Communicator* comm) {
+  std::vector<double> local(std::size_t(grid.cells[0]), 0.0);
+  for (const Vec3& x : P.x) local[std::size_t(cell_column(grid, x(0)))] += 1.0;
+  const std::vector<double> all = comm ? comm->sum(local) : local;  // integers: exact
+  std::vector<std::size_t> counts(all.size());
+  for (std::size_t c = 0; c < counts.size(); ++c) counts[c] = static_cast<std::size_t>(all[c]);
+  return counts;
+}
+
 MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const GridSpec& grid,
                         const Communicator& comm) {
   MigrationCounts counts;

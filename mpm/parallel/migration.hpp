@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/slab_decomposition.hpp"
@@ -23,6 +24,11 @@ struct MigrationCounts {
 
 /// The cell column along x of position x (clamped into the grid).
 int cell_column(const GridSpec& grid, double x);
+
+/// Particles per cell column along x (what SlabDecomposition::balanced splits): of P alone, or
+/// with `comm` summed over the ranks.
+std::vector<std::size_t> column_counts(const Particles& P, const GridSpec& grid,
+                                       const Communicator* comm = nullptr);
 
 /// Keeps on this rank the particles of its slab; sends the others to their owners.
 MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const GridSpec& grid,
