@@ -96,6 +96,8 @@ class Simulation {
   /// This process's rank and the slabs (one rank: rank 0 and one slab).
   int rank() const { return comm_ ? comm_->rank() : 0; }
   int ranks() const { return comm_ ? comm_->size() : 1; }
+  /// The ranks this run is on: null on one rank.
+  const Communicator* communicator() const { return comm_ && comm_->size() > 1 ? comm_ : nullptr; }
   const SlabDecomposition& slabs() const { return slabs_; }
   /// Particles that moved to another rank in the last step.
   std::size_t migrated() const { return migrated_; }

@@ -2,12 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
 namespace impact::mpm {
 
-Gauges::Gauges(const Scene& scene, const Particles& initial) {
+namespace {
+
+// The seed index of particle p (on one rank the array index).
+std::uint64_t seed_index(const Particles& P, std::size_t p) {
+  return P.id.empty() ? p : P.id[p];
+}
+
+}  // namespace
+
+Gauges::Gauges(const Scene& scene, const Particles& initial, const Communicator* comm)
+    : comm_(comm) {
   for (const GaugeSpec& g : scene.output.gauges) {
     Gauge gauge;
     const char* unit = g.type == GaugeType::velocity ? "m/s"
@@ -16,11 +27,12 @@ Gauges::Gauges(const Scene& scene, const Particles& initial) {
     gauge.column = "gauge_" + g.name + " [" + unit + "]";
     gauge.type = g.type;
     gauge.component = g.component;
+    std::vector<std::uint64_t> local;
     for (std::size_t p = 0; p < initial.size(); ++p) {
       if (initial.object[p] != g.object || !in_box(initial.x[p], g.lower, g.upper)) continue;
-      gauge.members.push_back(p);
+      local.push_back(seed_index(initial, p));
     }
-    if (gauge.members.empty()) {
+    if (members_.ids(members_.add(local, comm)).empty()) {
       throw std::logic_error("gauge " + g.name + ": no particle in its region");
     }
     gauges_.push_back(std::move(gauge));
@@ -34,46 +46,79 @@ std::vector<std::string> Gauges::columns() const {
 }
 
 std::vector<double> Gauges::read(const Particles& P) const {
-  std::vector<double> values;
-  values.reserve(gauges_.size());
-  for (const Gauge& g : gauges_) {
-    // Mass-weighted over the members still in play (a removed particle has zero mass); NaN once
-    // all have left the grid (grid.outflow = remove).
-    double sum = 0.0, mass = 0.0;
-    for (const std::size_t p : g.members) {
+  if (gauges_.empty()) return {};
+  // Mass-weighted over the members still in play (a removed particle has zero mass); NaN once
+  // all have left the grid (grid.outflow = remove). Per gauge: sum of m value, sum of m.
+  const auto found = members_.find(P);
+  std::vector<double> sums(2 * gauges_.size(), 0.0);
+  for (std::size_t k = 0; k < gauges_.size(); ++k) {
+    const Gauge& g = gauges_[k];
+    for (const ParticleSets::Member& m : found[k]) {
+      const std::size_t p = m.p;
       const double value = g.type == GaugeType::velocity ? P.v[p](g.component)
                            : g.type == GaugeType::strain ? log_strain(P.state[p].F, g.component)
                                                          : pressure(P.state[p].stress);
-      sum += P.mass[p] * value;
-      mass += P.mass[p];
+      sums[2 * k] += P.mass[p] * value;
+      sums[2 * k + 1] += P.mass[p];
     }
-    values.push_back(mass > 0.0 ? sum / mass : std::numeric_limits<double>::quiet_NaN());
+  }
+  if (comm_ != nullptr && comm_->size() > 1) sums = comm_->sum(sums);
+  std::vector<double> values;
+  values.reserve(gauges_.size());
+  for (std::size_t k = 0; k < gauges_.size(); ++k) {
+    const double mass = sums[2 * k + 1];
+    values.push_back(mass > 0.0 ? sums[2 * k] / mass : std::numeric_limits<double>::quiet_NaN());
   }
   return values;
 }
 
-Observables::Observables(const Scene& scene, const Particles& initial)
+Observables::Observables(const Scene& scene, const Particles& initial, const Communicator* comm)
     : max_pressure_(scene.objects.size(), -std::numeric_limits<double>::infinity()),
       max_pressure_time_(scene.objects.size(), 0.0),
       crater_(scene.output.crater),
-      dx_(scene.grid.spacing()(0)) {
+      dx_(scene.grid.spacing()(0)),
+      comm_(comm) {
   for (const SceneObject& o : scene.objects) names_.push_back(o.name);
   if (!crater_) return;
   crater_object_ = scene.objects[crater_->object].name;
+  // The face layer: (seed index, initial position) of the particles this rank holds, then of
+  // every rank's, in seed-index order.
+  struct Seed {
+    std::uint64_t id;
+    double x0[3];
+  };
+  std::vector<Seed> layer;
   for (std::size_t p = 0; p < initial.size(); ++p) {
     if (initial.object[p] != crater_->object) continue;
     if (std::abs(initial.x[p](0) - crater_->face) > dx_) continue;
-    face_.push_back(p);
-    face_x0_.push_back(initial.x[p]);
+    layer.push_back({seed_index(initial, p), {initial.x[p](0), initial.x[p](1), initial.x[p](2)}});
   }
+  if (ranks()) {
+    std::vector<char> bytes(layer.size() * sizeof(Seed));
+    if (!bytes.empty()) std::memcpy(bytes.data(), layer.data(), bytes.size());
+    const std::vector<char> all = comm_->concatenate(bytes);
+    layer.resize(all.size() / sizeof(Seed));
+    if (!all.empty()) std::memcpy(layer.data(), all.data(), all.size());
+    std::sort(layer.begin(), layer.end(), [](const Seed& a, const Seed& b) { return a.id < b.id; });
+  }
+  std::vector<std::uint64_t> ids;
+  for (const Seed& s : layer) {
+    ids.push_back(s.id);
+    face_x0_.emplace_back(s.x0[0], s.x0[1], s.x0[2]);
+  }
+  face_.add(ids, nullptr);  // already every rank's
 }
 
 void Observables::sample(const Particles& P, double time) {
+  std::vector<double> largest(max_pressure_.size(), -std::numeric_limits<double>::infinity());
   for (std::size_t p = 0; p < P.size(); ++p) {
-    const double pr = pressure(P.state[p].stress);
     const auto o = P.object[p];
-    if (pr > max_pressure_[o]) {
-      max_pressure_[o] = pr;
+    largest[o] = std::max(largest[o], pressure(P.state[p].stress));
+  }
+  if (ranks()) largest = comm_->max(largest);
+  for (std::size_t o = 0; o < largest.size(); ++o) {
+    if (largest[o] > max_pressure_[o]) {
+      max_pressure_[o] = largest[o];
       max_pressure_time_[o] = time;
     }
   }
@@ -81,51 +126,61 @@ void Observables::sample(const Particles& P, double time) {
 
 Crater Observables::crater(const Particles& P) const {
   Crater c;
-  c.face_particles = face_.size();
-  c.depth = -std::numeric_limits<double>::infinity();
-  double y = 0.0, z = 0.0;
-  for (std::size_t i = 0; i < face_.size(); ++i) {
-    const Vec3& x = P.x[face_[i]];
-    const double u = x(0) - face_x0_[i](0);
-    c.depth = std::max(c.depth, u);
+  const std::vector<ParticleSets::Member> found = face_.find(P)[0];
+  c.face_particles = face_.ids(0).size();
+  // Depth (a maximum), then the displaced particles' count and mean (y, z): sums.
+  double depth = -std::numeric_limits<double>::infinity();
+  std::vector<double> displaced(3, 0.0);  // count, sum y, sum z
+  for (const ParticleSets::Member& m : found) {
+    const Vec3& x = P.x[m.p];
+    const double u = x(0) - face_x0_[m.i](0);
+    depth = std::max(depth, u);
     if (u > 0.5 * dx_) {
-      ++c.displaced_particles;
-      y += x(1);
-      z += x(2);
+      displaced[0] += 1.0;
+      displaced[1] += x(1);
+      displaced[2] += x(2);
     }
   }
-  if (face_.empty()) c.depth = 0.0;
+  if (ranks()) {
+    depth = comm_->max(depth);
+    displaced = comm_->sum(displaced);
+  }
+  c.depth = c.face_particles == 0 ? 0.0 : depth;
+  c.displaced_particles = static_cast<std::size_t>(displaced[0]);
   if (c.displaced_particles == 0) return c;
-  c.axis_y = crater_->axis ? (*crater_->axis)[0] : y / double(c.displaced_particles);
-  c.axis_z = crater_->axis ? (*crater_->axis)[1] : z / double(c.displaced_particles);
+  c.axis_y = crater_->axis ? (*crater_->axis)[0] : displaced[1] / displaced[0];
+  c.axis_z = crater_->axis ? (*crater_->axis)[1] : displaced[2] / displaced[0];
   double r2 = 0.0;
-  for (std::size_t i = 0; i < face_.size(); ++i) {
-    const Vec3& x = P.x[face_[i]];
-    if (x(0) - face_x0_[i](0) <= 0.5 * dx_) continue;
+  for (const ParticleSets::Member& m : found) {
+    const Vec3& x = P.x[m.p];
+    if (x(0) - face_x0_[m.i](0) <= 0.5 * dx_) continue;
     r2 =
         std::max(r2, (x(1) - c.axis_y) * (x(1) - c.axis_y) + (x(2) - c.axis_z) * (x(2) - c.axis_z));
   }
+  if (ranks()) r2 = comm_->max(r2);
   c.diameter = 2.0 * std::sqrt(r2);
   return c;
 }
 
 Json Observables::summary(const Particles& P) const {
   const std::size_t n = names_.size();
-  std::vector<double> mass(n, 0.0), ke(n, 0.0);
-  std::vector<Vec3> momentum(n, Vec3::Zero());
+  // Per object: mass, momentum (3), kinetic energy.
+  std::vector<double> sums(5 * n, 0.0);
   for (std::size_t p = 0; p < P.size(); ++p) {
-    const auto o = P.object[p];
-    mass[o] += P.mass[p];
-    momentum[o] += P.mass[p] * P.v[p];
-    ke[o] += 0.5 * P.mass[p] * P.v[p].squaredNorm();
+    double* s = &sums[5 * P.object[p]];
+    s[0] += P.mass[p];
+    for (int d = 0; d < 3; ++d) s[1 + d] += P.mass[p] * P.v[p](d);
+    s[4] += 0.5 * P.mass[p] * P.v[p].squaredNorm();
   }
+  if (ranks()) sums = comm_->sum(sums);
   Json objects = Json::object();
   for (std::size_t o = 0; o < n; ++o) {
-    const Vec3 v = mass[o] > 0.0 ? Vec3(momentum[o] / mass[o]) : Vec3::Zero();
+    const double* s = &sums[5 * o];
+    const Vec3 v = s[0] > 0.0 ? Vec3(Vec3(s[1], s[2], s[3]) / s[0]) : Vec3::Zero();
     const bool sampled = std::isfinite(max_pressure_[o]);
-    objects[names_[o]] = {{"mass [kg]", mass[o]},
+    objects[names_[o]] = {{"mass [kg]", s[0]},
                           {"mean_velocity [m/s]", Json::array({v(0), v(1), v(2)})},
-                          {"kinetic_energy [J]", ke[o]},
+                          {"kinetic_energy [J]", s[4]},
                           {"max_pressure [Pa]", sampled ? max_pressure_[o] : 0.0},
                           {"max_pressure_time [s]", max_pressure_time_[o]}};
   }

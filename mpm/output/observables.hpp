@@ -4,14 +4,19 @@
 //   component, a log-strain component or the pressure, read at every history row.
 // - Observables: summary.json "observables": per object mass, mean velocity, kinetic energy and
 //   the largest particle pressure seen at the history rows; the crater of output.crater.
-// Both take their particle sets from the particles as seeded (t = 0) and keep only index lists
-// (and, for the crater, the initial positions of its face layer): a scene without gauges or
-// crater stores nothing per particle and does no per-step work.
+// Both take their particle sets from the particles as seeded (t = 0) and keep only seed-index
+// lists (and, for the crater, the initial positions of its face layer): a scene without gauges or
+// crater stores nothing per particle and does no per-step work. On several ranks every rank
+// holds the sets, reads the particles it holds and the partial sums and extrema are reduced
+// (sums in rank order, mpm/parallel/communicator.hpp): every call that reads particles is then
+// collective, and no rank ever needs another's particles.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "mpm/output/particle_sets.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace impact::mpm {
@@ -28,29 +33,30 @@ inline double pressure(const Mat3& stress) {
 
 class Gauges {
  public:
-  /// `initial`: the particles as seeded (t = 0); membership (initial position in the region,
-  /// closed box) is fixed here. Throws std::logic_error for an empty gauge (read_scene rejects
-  /// one).
-  Gauges(const Scene& scene, const Particles& initial);
+  /// `initial`: the particles as seeded (t = 0), those this rank holds; membership (initial
+  /// position in the region, closed box) is fixed here. Throws std::logic_error for an empty
+  /// gauge (read_scene rejects one).
+  Gauges(const Scene& scene, const Particles& initial, const Communicator* comm = nullptr);
 
   bool empty() const { return gauges_.empty(); }
   std::size_t size() const { return gauges_.size(); }
   /// "gauge_<name> [m/s]" (velocity), "[-]" (strain), "[Pa]" (pressure), in scene order (names
   /// sorted).
   std::vector<std::string> columns() const;
-  /// The current readings, columns() order.
+  /// The current readings, columns() order (P: the particles this rank holds).
   std::vector<double> read(const Particles& P) const;
-  /// The particle indices of gauge g.
-  const std::vector<std::size_t>& members(std::size_t g) const { return gauges_[g].members; }
+  /// The seed indices of gauge g's members, ascending.
+  const std::vector<std::uint64_t>& members(std::size_t g) const { return members_.ids(g); }
 
  private:
   struct Gauge {
     std::string column;
     GaugeType type;
     int component;
-    std::vector<std::size_t> members;
   };
   std::vector<Gauge> gauges_;
+  ParticleSets members_;  ///< set g: gauge g's members
+  const Communicator* comm_;
 };
 
 /// Crater in the face x = face of an object, impact along +x (output.crater).
@@ -64,8 +70,8 @@ struct Crater {
 
 class Observables {
  public:
-  /// `initial`: the particles as seeded (t = 0).
-  Observables(const Scene& scene, const Particles& initial);
+  /// `initial`: the particles as seeded (t = 0), those this rank holds.
+  Observables(const Scene& scene, const Particles& initial, const Communicator* comm = nullptr);
 
   /// At every history row: the running maximum pressure per object (sampled there only).
   void sample(const Particles& P, double time);
@@ -85,8 +91,10 @@ class Observables {
   std::optional<CraterSpec> crater_;
   std::string crater_object_;
   double dx_ = 0.0;
-  std::vector<std::size_t> face_;  ///< crater: the face layer's particles
-  std::vector<Vec3> face_x0_;      ///< and their initial positions
+  ParticleSets face_;          ///< crater: the face layer's particles (set 0)
+  std::vector<Vec3> face_x0_;  ///< and their initial positions, in seed-index order
+  const Communicator* comm_;
+  bool ranks() const { return comm_ != nullptr && comm_->size() > 1; }
 };
 
 }  // namespace impact::mpm

@@ -1,5 +1,6 @@
 // Writers: history.csv (the ledger, then the gauges, one row per output interval), binary (raw
-// appended) VTU snapshots of the particles with a .pvd collection (ParaView), and summary.json.
+// appended) VTU snapshots of the particles with a .pvd collection (ParaView), one piece per rank
+// with a .pvtu on several ranks, and summary.json.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "mpm/ledger/ledger.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace impact::mpm {
@@ -38,9 +40,13 @@ class HistoryCsv {
 
 class SnapshotWriter {
  public:
-  /// Writes into DIR/particles/ and DIR/particles.pvd.
-  SnapshotWriter(const std::string& directory, std::vector<std::string> fields);
-  /// Writes particles/step_NNNNNN.vtu and rewrites the .pvd so it is valid after every call.
+  /// Writes into DIR/particles/ and DIR/particles.pvd. With `comm` of several ranks every rank
+  /// constructs one and calls write() at the same steps (collective).
+  SnapshotWriter(const std::string& directory, std::vector<std::string> fields,
+                 const Communicator* comm = nullptr);
+  /// Writes particles/step_NNNNNN.vtu (one rank) or each rank's particles/step_NNNNNN_rankR.vtu
+  /// and rank 0's particles/step_NNNNNN.pvtu naming them (several ranks), and rewrites the .pvd
+  /// so it is valid after every call. P: the particles this rank holds.
   void write(const Particles& P, long step, double time);
   /// The .pvd entries (time, file) so far, and a restart's: the collection continues from them.
   const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
@@ -49,8 +55,12 @@ class SnapshotWriter {
   }
 
  private:
+  bool pieces() const { return comm_ != nullptr && comm_->size() > 1; }
+  bool root() const { return comm_ == nullptr || comm_->root(); }
+
   std::string directory_;
   std::vector<std::string> fields_;
+  const Communicator* comm_;
   std::vector<std::pair<double, std::string>> entries_;
 };
 

@@ -3,7 +3,10 @@
 // point data as the scene's `output.fields` ask. ParaView and VTK read it directly; it is ~10x
 // faster to write than ASCII and about half the size. Fields: velocity [m/s], stress (6
 // components xx yy zz xy yz xz) [Pa], plastic_strain [-], temperature [K], damage [-], mass [kg],
-// volume [m^3], pressure [Pa], von_mises [Pa], material, object (indices).
+// volume [m^3], pressure [Pa], von_mises [Pa], material, object, field (indices), id (the seed
+// index). On several ranks each rank writes its own piece and rank 0 a .pvtu that names them
+// (VTK's parallel unstructured grid): ParaView opens the step as one data set, and no rank ever
+// holds another's particles.
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -17,9 +20,11 @@ namespace impact::mpm {
 
 namespace fs = std::filesystem;
 
-SnapshotWriter::SnapshotWriter(const std::string& directory, std::vector<std::string> fields)
-    : directory_(directory), fields_(std::move(fields)) {
-  fs::create_directories(fs::path(directory_) / "particles");
+SnapshotWriter::SnapshotWriter(const std::string& directory, std::vector<std::string> fields,
+                               const Communicator* comm)
+    : directory_(directory), fields_(std::move(fields)), comm_(comm) {
+  if (root()) fs::create_directories(fs::path(directory_) / "particles");
+  if (pieces()) comm_->barrier();  // the directory exists before any rank writes into it
 }
 
 namespace {
@@ -52,25 +57,71 @@ class Appended {
   std::vector<std::string> blobs_;
 };
 
-std::vector<double> scalar(std::size_t n, const std::function<double(std::size_t)>& f) {
-  std::vector<double> v(n);
-  for (std::size_t p = 0; p < n; ++p) v[p] = f(p);
+// The number of components of an output field (the .pvtu declares them without the data).
+int components(const std::string& field) {
+  return field == "velocity" ? 3 : field == "stress" ? 6 : 1;
+}
+
+// Field `f` of the particles `in_play`, components() values per particle.
+std::vector<double> field_values(const std::string& f, const Particles& P,
+                                 const std::vector<std::size_t>& in_play) {
+  const int c = components(f);
+  std::vector<double> v(c * in_play.size());
+  const auto scalar = [&](const std::function<double(std::size_t)>& value) {
+    for (std::size_t i = 0; i < in_play.size(); ++i) v[i] = value(in_play[i]);
+  };
+  if (f == "velocity") {
+    for (std::size_t i = 0; i < in_play.size(); ++i)
+      for (int d = 0; d < 3; ++d) v[3 * i + d] = P.v[in_play[i]](d);
+  } else if (f == "stress") {
+    for (std::size_t i = 0; i < in_play.size(); ++i) {
+      const Mat3& s = P.state[in_play[i]].stress;
+      const double sc[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
+      for (int d = 0; d < 6; ++d) v[6 * i + d] = sc[d];
+    }
+  } else if (f == "plastic_strain") {
+    scalar([&](std::size_t p) { return P.state[p].plastic_strain; });
+  } else if (f == "temperature") {
+    scalar([&](std::size_t p) { return P.state[p].temperature; });
+  } else if (f == "damage") {
+    scalar([&](std::size_t p) { return P.state[p].damage; });
+  } else if (f == "mass") {
+    scalar([&](std::size_t p) { return P.mass[p]; });
+  } else if (f == "volume") {
+    scalar([&](std::size_t p) { return P.volume[p]; });
+  } else if (f == "pressure") {
+    scalar([&](std::size_t p) { return -mean(P.state[p].stress); });
+  } else if (f == "von_mises") {
+    scalar([&](std::size_t p) { return von_mises(P.state[p].stress); });
+  } else if (f == "material") {
+    scalar([&](std::size_t p) { return double(P.material[p]); });
+  } else if (f == "object") {
+    scalar([&](std::size_t p) { return double(P.object[p]); });
+  } else if (f == "field") {
+    scalar([&](std::size_t p) { return double(P.field[p]); });
+  } else if (f == "id") {
+    scalar([&](std::size_t p) { return double(P.id.empty() ? p : P.id[p]); });
+  } else if (f == "failure_cause") {
+    scalar([&](std::size_t p) { return double(P.state[p].failure_cause); });
+  } else if (f == "failed_in_tension") {
+    scalar([&](std::size_t p) { return P.state[p].failed_in_tension ? 1.0 : 0.0; });
+  } else if (f == "instability") {
+    scalar([&](std::size_t p) { return double(P.state[p].instability); });
+  } else if (f == "failed") {
+    scalar([&](std::size_t p) { return P.state[p].failed ? 1.0 : 0.0; });
+  }
   return v;
 }
 
-}  // namespace
-
-void SnapshotWriter::write(const Particles& P, long step, double time) {
-  char name[64];
-  std::snprintf(name, sizeof name, "step_%06ld.vtu", step);
-  const fs::path rel = fs::path("particles") / name;
-  // The particles in play: those removed at the grid's edge (grid.outflow = remove) are not drawn.
+// One .vtu of the particles P holds that are in play: those removed at the grid's edge
+// (grid.outflow = remove) are not drawn.
+void write_piece(const fs::path& path, const Particles& P, const std::vector<std::string>& fields) {
   std::vector<std::size_t> in_play;
   in_play.reserve(P.size());
   for (std::size_t p = 0; p < P.size(); ++p)
     if (P.removed.empty() || !P.removed[p]) in_play.push_back(p);
   const std::size_t n = in_play.size();
-  write_file_atomically(fs::path(directory_) / rel, [&](std::ostream& o) {
+  write_file_atomically(path, [&](std::ostream& o) {
     Appended data;
     o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
          "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n"
@@ -78,90 +129,76 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
       << n << "\" NumberOfCells=\"" << n << "\">\n<Points>\n";
     {
       std::vector<double> x(3 * n);
-      for (std::size_t p = 0; p < n; ++p)
-        for (int d = 0; d < 3; ++d) x[3 * p + d] = P.x[in_play[p]](d);
+      for (std::size_t i = 0; i < n; ++i)
+        for (int d = 0; d < 3; ++d) x[3 * i + d] = P.x[in_play[i]](d);
       data.add(o, "Float64", nullptr, 3, std::move(x));
     }
     o << "</Points>\n<Cells>\n";
     {
       std::vector<std::int64_t> conn(n), off(n);
       std::vector<std::uint8_t> types(n, 1);  // VTK_VERTEX
-      for (std::size_t p = 0; p < n; ++p) {
-        conn[p] = static_cast<std::int64_t>(p);
-        off[p] = static_cast<std::int64_t>(p + 1);
+      for (std::size_t i = 0; i < n; ++i) {
+        conn[i] = static_cast<std::int64_t>(i);
+        off[i] = static_cast<std::int64_t>(i + 1);
       }
       data.add(o, "Int64", "connectivity", 1, std::move(conn));
       data.add(o, "Int64", "offsets", 1, std::move(off));
       data.add(o, "UInt8", "types", 1, std::move(types));
     }
     o << "</Cells>\n<PointData>\n";
-    for (const std::string& f : fields_) {
-      if (f == "velocity") {
-        std::vector<double> v(3 * n);
-        for (std::size_t p = 0; p < n; ++p)
-          for (int d = 0; d < 3; ++d) v[3 * p + d] = P.v[in_play[p]](d);
-        data.add(o, "Float64", "velocity", 3, std::move(v));
-      } else if (f == "stress") {
-        std::vector<double> v(6 * n);
-        for (std::size_t p = 0; p < n; ++p) {
-          const Mat3& s = P.state[in_play[p]].stress;
-          const double c[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
-          for (int d = 0; d < 6; ++d) v[6 * p + d] = c[d];
-        }
-        data.add(o, "Float64", "stress", 6, std::move(v));
-      } else if (f == "plastic_strain") {
-        data.add(o, "Float64", "plastic_strain", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].plastic_strain; }));
-      } else if (f == "temperature") {
-        data.add(o, "Float64", "temperature", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].temperature; }));
-      } else if (f == "damage") {
-        data.add(o, "Float64", "damage", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].damage; }));
-      } else if (f == "mass") {
-        data.add(o, "Float64", "mass", 1,
-                 scalar(n, [&](std::size_t p) { return P.mass[in_play[p]]; }));
-      } else if (f == "volume") {
-        data.add(o, "Float64", "volume", 1,
-                 scalar(n, [&](std::size_t p) { return P.volume[in_play[p]]; }));
-      } else if (f == "pressure") {
-        data.add(o, "Float64", "pressure", 1,
-                 scalar(n, [&](std::size_t p) { return -mean(P.state[in_play[p]].stress); }));
-      } else if (f == "von_mises") {
-        data.add(o, "Float64", "von_mises", 1,
-                 scalar(n, [&](std::size_t p) { return von_mises(P.state[in_play[p]].stress); }));
-      } else if (f == "material") {
-        data.add(o, "Float64", "material", 1,
-                 scalar(n, [&](std::size_t p) { return double(P.material[in_play[p]]); }));
-      } else if (f == "object") {
-        data.add(o, "Float64", "object", 1,
-                 scalar(n, [&](std::size_t p) { return double(P.object[in_play[p]]); }));
-      } else if (f == "field") {
-        data.add(o, "Float64", "field", 1,
-                 scalar(n, [&](std::size_t p) { return double(P.field[in_play[p]]); }));
-      } else if (f == "failure_cause") {
-        data.add(o, "Float64", "failure_cause", 1, scalar(n, [&](std::size_t p) {
-                   return double(P.state[in_play[p]].failure_cause);
-                 }));
-      } else if (f == "failed_in_tension") {
-        data.add(o, "Float64", "failed_in_tension", 1, scalar(n, [&](std::size_t p) {
-                   return P.state[in_play[p]].failed_in_tension ? 1.0 : 0.0;
-                 }));
-      } else if (f == "instability") {
-        data.add(o, "Float64", "instability", 1,
-                 scalar(n, [&](std::size_t p) { return double(P.state[in_play[p]].instability); }));
-      } else if (f == "failed") {
-        data.add(o, "Float64", "failed", 1,
-                 scalar(n, [&](std::size_t p) { return P.state[in_play[p]].failed ? 1.0 : 0.0; }));
-      }
-    }
+    for (const std::string& f : fields)
+      data.add(o, "Float64", f.c_str(), components(f), field_values(f, P, in_play));
     o << "</PointData>\n</Piece>\n</UnstructuredGrid>\n";
     data.write(o);
     o << "</VTKFile>\n";
   });
+}
 
+// The .pvtu of one step: the fields' names and components, and each rank's piece (paths relative
+// to the .pvtu).
+void write_parallel_index(const fs::path& path, const std::vector<std::string>& pieces,
+                          const std::vector<std::string>& fields) {
+  write_file_atomically(path, [&](std::ostream& o) {
+    o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+         "<PUnstructuredGrid GhostLevel=\"0\">\n<PPoints>\n"
+         "<PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n</PPoints>\n<PPointData>\n";
+    for (const std::string& f : fields) {
+      o << "<PDataArray type=\"Float64\" Name=\"" << f << "\" NumberOfComponents=\""
+        << components(f) << "\"/>\n";
+    }
+    o << "</PPointData>\n";
+    for (const std::string& piece : pieces) o << "<Piece Source=\"" << piece << "\"/>\n";
+    o << "</PUnstructuredGrid>\n</VTKFile>\n";
+  });
+}
+
+}  // namespace
+
+void SnapshotWriter::write(const Particles& P, long step, double time) {
+  char stem[64];
+  std::snprintf(stem, sizeof stem, "step_%06ld", step);
+  const fs::path dir = fs::path(directory_) / "particles";
+  fs::path rel;
+  if (!pieces()) {
+    rel = fs::path("particles") / (std::string(stem) + ".vtu");
+    write_piece(fs::path(directory_) / rel, P, fields_);
+  } else {
+    const auto piece = [&](int rank) {
+      return std::string(stem) + "_rank" + std::to_string(rank) + ".vtu";
+    };
+    write_piece(dir / piece(comm_->rank()), P, fields_);
+    comm_->barrier();  // every piece in place before the index names it
+    rel = fs::path("particles") / (std::string(stem) + ".pvtu");
+    if (root()) {
+      std::vector<std::string> names;
+      for (int r = 0; r < comm_->size(); ++r) names.push_back(piece(r));
+      write_parallel_index(fs::path(directory_) / rel, names, fields_);
+    }
+  }
   // The collection lists only snapshots already renamed into place.
   entries_.emplace_back(time, rel.string());
+  if (!root()) return;
   write_file_atomically(fs::path(directory_) / "particles.pvd", [&](std::ostream& pvd) {
     pvd.precision(17);
     pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";

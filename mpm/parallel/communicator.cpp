@@ -104,6 +104,22 @@ double Communicator::max(double value) const {
   return *std::max_element(all.begin(), all.end());
 }
 
+std::vector<double> Communicator::max(const std::vector<double>& values) const {
+  if (!mpi_) return values;
+  std::vector<double> all;
+#ifdef IMPACT_MPI
+  const MpiTimer timer(seconds_);
+  const int n = static_cast<int>(values.size());
+  all.resize(values.size() * static_cast<std::size_t>(size_));
+  MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, MPI_COMM_WORLD);
+#endif
+  std::vector<double> largest = values;
+  for (int r = 0; r < size_; ++r)
+    for (std::size_t i = 0; i < values.size(); ++i)
+      largest[i] = std::max(largest[i], all[static_cast<std::size_t>(r) * values.size() + i]);
+  return largest;
+}
+
 double Communicator::min(double value) const {
   const std::vector<double> all = gather_all(value);
   return *std::min_element(all.begin(), all.end());
@@ -125,6 +141,14 @@ std::vector<double> Communicator::gather_all(double value) const {
   const MpiTimer timer(seconds_);
   if (mpi_) MPI_Allgather(&value, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
 #endif
+  return all;
+}
+
+std::vector<char> Communicator::concatenate(const std::vector<char>& bytes) const {
+  const std::vector<std::vector<char>> from =
+      all_to_all(std::vector<std::vector<char>>(static_cast<std::size_t>(size_), bytes));
+  std::vector<char> all;
+  for (const std::vector<char>& b : from) all.insert(all.end(), b.begin(), b.end());
   return all;
 }
 

@@ -46,11 +46,15 @@ class Communicator {
   double sum(double value) const { return sum(std::vector<double>{value})[0]; }
   std::int64_t sum(std::int64_t value) const;
   double max(double value) const;
+  /// Element-wise maxima over the ranks (exact).
+  std::vector<double> max(const std::vector<double>& values) const;
   double min(double value) const;
   /// Whether any rank passes true.
   bool any(bool value) const;
   /// Every rank's value, in rank order.
   std::vector<double> gather_all(double value) const;
+  /// Every rank's bytes (any length), concatenated in rank order, on every rank.
+  std::vector<char> concatenate(const std::vector<char>& bytes) const;
   /// The bytes `text` of rank `from`, on every rank.
   std::string broadcast(const std::string& text, int from) const;
   /// Sends `to_send` to rank `neighbour` and returns what it sent back (both call this with each

@@ -11,7 +11,6 @@
 
 #include "models/core/input.hpp"
 #include "mpm/output/atomic_file.hpp"
-#include "mpm/parallel/migration.hpp"
 #include "mpm/run/checkpoint.hpp"
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
@@ -64,7 +63,9 @@ std::string not_yet_on_ranks(const Scene& scene) {
 
 // The run of run() and restart() (`resume`: from dir/checkpoint.bin): set-up, the step loop with
 // its outputs, checkpoints, signals and reports, then the summary. On several ranks every rank
-// steps its slab, and rank 0 writes every file from the particles gathered at output times.
+// steps its slab and writes its snapshot piece and checkpoint; the gauges, observables and the
+// summary are reduced over the ranks, and rank 0 writes history.csv, the .pvtu/.pvd and the
+// summary. No rank ever holds another's particles.
 int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume) {
   const Communicator* comm =
       options.comm != nullptr && options.comm->size() > 1 ? options.comm : nullptr;
@@ -105,19 +106,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
       return 1;
     }
   }
-  // What the outputs read: this process's particles, or on several ranks all of them gathered on
-  // rank 0 in seed order (every rank must call it: it is a collective exchange).
-  Particles gathered;
-  const auto particles = [&]() -> const Particles& {
-    if (!comm) return sim.particles();
-    gathered = gather_particles(sim.particles(), *comm);
-    return gathered;
-  };
-  std::optional<RunOutputs> outputs;  // rank 0's
-  {
-    const Particles& seeded = particles();  // gauge and crater particle sets
-    if (root) outputs.emplace(scene, seeded);
-  }
+  // Every rank keeps its outputs: on several ranks the gauges, observables and snapshots read the
+  // particles each rank holds (collective calls), rank 0 writes history.csv and the .pvd.
+  RunOutputs outputs(scene, sim.particles(), sim.communicator());
   RunStatus status_file(dir,
                         scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle);
   RunState resumed;
@@ -138,23 +129,17 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     paths_start = sim.time();
     status_file.checkpointed(sim.steps(), sim.time());
   }
-  {
-    const Particles& start = particles();
-    if (root) outputs->open(scene, dir, start, sim.ledger(), resume ? &resumed : nullptr);
-  }
+  outputs.open(scene, dir, sim.particles(), sim.ledger(), resume ? &resumed : nullptr);
   const auto write_outputs = [&](bool snapshot, long index) {
-    const Particles& P = particles();
-    if (!root) return;
-    outputs->write_history(sim, P);
-    status_file.write(sim, wall.seconds(), "running");
-    if (snapshot) outputs->write_snapshot(P, index, sim.time());
+    outputs.write_history(sim, sim.particles());
+    if (root) status_file.write(sim, wall.seconds(), "running");
+    if (snapshot) outputs.write_snapshot(sim.particles(), index, sim.time());
   };
   if (!resume) write_outputs(true, sim.steps());
   double next_output = resume ? resumed.next_output : scene.output.interval;
   // Every rank writes its own file; rank 0's also holds the outputs' positions.
   const auto checkpoint = [&] {
-    const RunState state = root ? outputs->state(next_output, wall.seconds())
-                                : RunState{next_output, 0, 0, {}, {}, wall.seconds()};
+    const RunState state = outputs.state(next_output, wall.seconds());
     write_checkpoint(checkpoint_file(dir, sim.rank()), sim, state, scene_hash);
     if (comm) comm->barrier();  // every file in place before the status names the checkpoint
     status_file.checkpointed(sim.steps(), sim.time());
@@ -172,9 +157,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   try {
     while (!sim.finished()) {
       const double t_before = sim.time();
-      if (!comm) outputs->before_step(sim.particles());
+      if (!comm) outputs.before_step(sim.particles());
       sim.step();
-      if (!comm) outputs->after_step(sim.particles(), sim.time(), sim.time() - t_before);
+      if (!comm) outputs.after_step(sim.particles(), sim.time(), sim.time() - t_before);
       faults.report(sim);
       if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
         write_outputs(true, sim.steps());
@@ -211,12 +196,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     message = e.what();
     code = kExitRunFailed;
     if (root) std::cerr << progress.break_line() << "mpm: run failed: " << message << '\n';
-    const Particles& P = particles();
-    if (root) {
-      outputs->write_snapshot(P, sim.steps() + 1, sim.time());
-      outputs->write_history(sim, P);
-      status_file.write(sim, wall.seconds(), "running");
-    }
+    outputs.write_snapshot(sim.particles(), sim.steps() + 1, sim.time());
+    outputs.write_history(sim, sim.particles());
+    if (root) status_file.write(sim, wall.seconds(), "running");
   } catch (const std::exception& e) {  // e.g. an output that cannot be written: say so, re-throw
     try {
       if (root) status_file.write(sim, wall.seconds(), "failed", e.what());
@@ -230,7 +212,6 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
               << " particle(s) flagged failed by numerical faults (physics.on_numerical_fault = "
                  "fail_particle)\n";
   }
-  const Particles& P = particles();
   // Per rank: the particles it holds at the end and its time in MPI calls (waiting for the others
   // and moving data): the load balance (docs/mpi.md).
   std::vector<double> held, in_mpi;
@@ -238,11 +219,11 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     held = comm->gather_all(double(sim.particles().size()));
     in_mpi = comm->gather_all(comm->seconds_in_mpi());
   }
-  if (!root) return code;
-  outputs->write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   const double seconds = wall.seconds();
-  Json summary = run_summary(sim, P, status, message, seconds, outputs->observables(),
-                             comm ? nullptr : &outputs->paths());
+  Json summary = run_summary(sim, sim.particles(), status, message, seconds, outputs.observables(),
+                             comm ? nullptr : &outputs.paths());
+  if (!root) return code;
+  outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   if (comm) {
     summary["ranks_load"] = {{"particles_at_end", held},
                              {"seconds_in_mpi [s]", in_mpi},

@@ -2,10 +2,11 @@
 
 namespace impact::mpm {
 
-RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded)
-    : gauges_(scene, seeded),
-      observables_(scene, seeded),
-      faulted_column_(scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle) {}
+RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Communicator* comm)
+    : gauges_(scene, seeded, comm),
+      observables_(scene, seeded, comm),
+      faulted_column_(scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle),
+      comm_(comm) {}
 
 void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, const Particles& P,
                       const Ledger& ledger, const RunState* resumed) {
@@ -13,14 +14,15 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
   std::vector<std::string> columns = gauges_.columns();
   if (faulted_column_) columns.push_back("faulted_particles [-]");
   const std::string history_file = (dir / "history.csv").string();
-  if (resumed) {
-    observables_.restore(resumed->observables);
+  if (resumed) observables_.restore(resumed->observables);
+  const bool root = comm_ == nullptr || comm_->root();
+  if (root && resumed) {
     history_.emplace(history_file, ledger, columns, resumed->history_bytes, resumed->history_rows);
-  } else {
+  } else if (root) {
     history_.emplace(history_file, ledger, columns);
   }
   if (scene.output.snapshots) {
-    snapshots_.emplace(dir.string(), scene.output.fields);
+    snapshots_.emplace(dir.string(), scene.output.fields, comm_);
     if (resumed) snapshots_->restore(resumed->snapshots);
   }
 }
@@ -29,7 +31,7 @@ void RunOutputs::write_history(const Simulation& sim, const Particles& P) {
   observables_.sample(P, sim.time());  // max pressure: sampled at history rows
   std::vector<double> extra = gauges_.read(P);
   if (faulted_column_) extra.push_back(double(sim.faulted_particles()));
-  history_->write(sim.ledger(), extra);
+  if (history_) history_->write(sim.ledger(), extra);
 }
 
 void RunOutputs::write_snapshot(const Particles& P, long index, double time) {
@@ -38,8 +40,8 @@ void RunOutputs::write_snapshot(const Particles& P, long index, double time) {
 
 RunState RunOutputs::state(double next_output, double wall) const {
   return RunState{next_output,
-                  history_->bytes(),
-                  history_->rows(),
+                  history_ ? history_->bytes() : 0,
+                  history_ ? history_->rows() : 0,
                   observables_.state(),
                   snapshots_ ? snapshots_->entries() : decltype(RunState::snapshots){},
                   wall};

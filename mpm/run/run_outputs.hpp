@@ -17,8 +17,10 @@ namespace impact::mpm {
 class RunOutputs {
  public:
   /// The gauge and crater particle sets, from the particles as seeded (before a checkpoint is
-  /// loaded; on several ranks, all of them gathered in seed order).
-  RunOutputs(const Scene& scene, const Particles& seeded);
+  /// loaded). On several ranks (`comm`) every rank makes one from the particles it holds, and
+  /// every call below that takes particles is collective: the gauges, observables and snapshots
+  /// reduce or write per rank, rank 0 alone writes history.csv and the .pvd.
+  RunOutputs(const Scene& scene, const Particles& seeded, const Communicator* comm = nullptr);
   /// Opens the files in `dir` for the particles as the run starts: as seeded, or, with `resumed`,
   /// as restored from a checkpoint (history.csv is then truncated to the checkpoint's rows and
   /// continued, the observables and the snapshot collection continue, the particle paths begin
@@ -30,7 +32,8 @@ class RunOutputs {
   void before_step(const Particles& P) { paths_->before_step(P); }
   void after_step(const Particles& P, double time, double dt) { paths_->after_step(P, time, dt); }
 
-  /// A history row of sim's ledger with the gauges of P (the observables are sampled with it).
+  /// A history row of sim's ledger with the gauges of P (the observables are sampled with it);
+  /// P: the particles this rank holds.
   void write_history(const Simulation& sim, const Particles& P);
   /// A snapshot of P numbered `index` (the step, or step + 1 for the state a failure left).
   void write_snapshot(const Particles& P, long index, double time);
@@ -51,6 +54,7 @@ class RunOutputs {
   Observables observables_;
   std::optional<ParticlePaths> paths_;
   bool faulted_column_;
+  const Communicator* comm_;
   std::optional<HistoryCsv> history_;
   std::optional<SnapshotWriter> snapshots_;
 };

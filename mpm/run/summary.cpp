@@ -24,41 +24,53 @@ Json row_json(const Ledger& ledger) {
   return j;
 }
 
+// Element-wise sums over the ranks (comm null: one rank, the values themselves).
+std::vector<double> over_ranks(const std::vector<double>& values, const Communicator* comm) {
+  return comm ? comm->sum(values) : values;
+}
+
 // Failed particles per cause (melting, tepla, drucker, becker) and the particles where a stability
 // check fired without failing them (stability_check.outcome = "report").
-Json failure_causes(const Particles& P) {
-  std::array<std::int64_t, 5> by_cause{};
-  std::int64_t drucker = 0, becker = 0, in_tension = 0;
+Json failure_causes(const Particles& P, const Communicator* comm) {
+  // Counts by cause (5), in tension, Drucker and Becker reported: exact as doubles.
+  std::vector<double> n(8, 0.0);
   for (const PointState& s : P.state) {
-    if (s.failed) ++by_cause[static_cast<std::size_t>(s.failure_cause)];
-    in_tension += s.failed && s.failed_in_tension;
-    drucker += (s.instability & kDruckerFired) != 0;
-    becker += (s.instability & kBeckerFired) != 0;
+    if (s.failed) n[static_cast<std::size_t>(s.failure_cause)] += 1.0;
+    n[5] += s.failed && s.failed_in_tension;
+    n[6] += (s.instability & kDruckerFired) != 0;
+    n[7] += (s.instability & kBeckerFired) != 0;
   }
+  n = over_ranks(n, comm);
+  const auto count = [&](std::size_t i) { return static_cast<std::int64_t>(n[i]); };
   Json j;
   for (const FailureCause c :
        {FailureCause::melting, FailureCause::tepla, FailureCause::drucker, FailureCause::becker})
-    j[std::string(to_string(c))] = by_cause[static_cast<std::size_t>(c)];
-  j["in_tension"] = in_tension;  // of all causes: failed with a tensile mean stress
-  j["drucker_reported"] = drucker;
-  j["becker_reported"] = becker;
+    j[std::string(to_string(c))] = count(static_cast<std::size_t>(c));
+  j["in_tension"] = count(5);  // of all causes: failed with a tensile mean stress
+  j["drucker_reported"] = count(6);
+  j["becker_reported"] = count(7);
   return j;
 }
 
 // Per object counts, mass and volumes, and the memory estimate with the seeded count: what
-// `mpm check` and summary.json share.
-Json particle_report(const Scene& scene, const Particles& P, int threads) {
+// `mpm check` and summary.json share. P: the particles this rank holds.
+Json particle_report(const Scene& scene, const Particles& P, int threads,
+                     const Communicator* comm = nullptr) {
+  // Per object: count, mass, particle volume.
+  std::vector<double> sums(3 * scene.objects.size(), 0.0);
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    double* s = &sums[3 * P.object[p]];
+    s[0] += 1.0;
+    s[1] += P.mass[p];
+    s[2] += P.volume0[p];
+  }
+  sums = over_ranks(sums, comm);
   Json objects = Json::object();
   double total_mass = 0.0;
+  std::size_t total = 0;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-    std::size_t n = 0;
-    double mass = 0.0, vol = 0.0;
-    for (std::size_t p = 0; p < P.size(); ++p) {
-      if (P.object[p] != o) continue;
-      ++n;
-      mass += P.mass[p];
-      vol += P.volume0[p];
-    }
+    const auto n = static_cast<std::size_t>(sums[3 * o]);
+    const double mass = sums[3 * o + 1], vol = sums[3 * o + 2];
     const double exact = volume(scene.objects[o].geometry);
     const double rho = scene.materials[scene.objects[o].material].material.model.params().density;
     objects[scene.objects[o].name] = {
@@ -70,10 +82,11 @@ Json particle_report(const Scene& scene, const Particles& P, int threads) {
         {"volume_ratio", exact > 0 ? vol / exact : 0.0},
         {"kinetic_energy [J]", 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
     total_mass += mass;
+    total += n;
   }
-  const MemoryEstimate memory = estimate_memory(scene, P.size());
+  const MemoryEstimate memory = estimate_memory(scene, total);
   Json report = {{"objects", objects},
-                 {"particles", P.size()},
+                 {"particles", total},
                  {"mass [kg]", total_mass},
                  {"memory [MB]", memory.total() / 1e6},
                  {"memory_estimate", memory.json()},
@@ -106,7 +119,9 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
                  const std::string& message, double wall, const Observables& observables,
                  const ParticlePaths* paths) {
   const Scene& scene = sim.scene();
-  Json summary = particle_report(scene, P, sim.threads());
+  const Communicator* comm = sim.communicator();
+  Json summary = particle_report(scene, P, sim.threads(), comm);
+  const auto particles = summary["particles"].get<std::size_t>();
   summary["ranks"] = sim.ranks();
   summary["status"] = status;
   if (!message.empty()) summary["message"] = message;
@@ -114,12 +129,12 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
   summary["time [s]"] = sim.time();
   summary["wall_time [s]"] = wall;
   summary["particle_steps_per_second"] =
-      wall > 0 ? double(P.size()) * double(sim.steps()) / wall : 0.0;
+      wall > 0 ? double(particles) * double(sim.steps()) / wall : 0.0;
   if (const auto peak = peak_resident_memory()) summary["peak_resident_memory [MB]"] = *peak / 1e6;
   summary["initial_energy [J]"] = sim.ledger().initial_energy();
   summary["velocity_fields"] = sim.grid().fields();
   summary["failed_particles"] = sim.failed_particles();
-  summary["failed_by_cause"] = failure_causes(P);
+  summary["failed_by_cause"] = failure_causes(P, comm);
   for (std::size_t i = 0; paths && i < scene.output.particle_paths.size(); ++i)
     summary["particle_paths"][scene.output.particle_paths[i].name] = paths->particle(i);
   summary["converted_particles"] = sim.converted_particles();

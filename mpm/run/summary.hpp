@@ -14,9 +14,10 @@ namespace impact::mpm {
 /// against the exact geometric volume, estimated steps and memory.
 Json check_report(const Scene& scene, int threads);
 
-/// summary.json at the end of a run of sim, whose particles are P (on several ranks, all of them
-/// gathered): `status` (completed, failed, interrupted) with its message, `wall` the step loop's
-/// wall time [s] over every run of a restarted one; `paths`: null when the run has none.
+/// summary.json at the end of a run of sim, whose particles are P (on several ranks, those this
+/// rank holds: a collective call, every rank gets the whole summary): `status` (completed, failed,
+/// interrupted) with its message, `wall` the step loop's wall time [s] over every run of a
+/// restarted one; `paths`: null when the run has none.
 Json run_summary(const Simulation& sim, const Particles& P, const std::string& status,
                  const std::string& message, double wall, const Observables& observables,
                  const ParticlePaths* paths);

@@ -197,7 +197,7 @@ inline const std::vector<std::string>& known_output_fields() {
   static const std::vector<std::string> f = {
       "velocity", "stress",        "plastic_strain",    "temperature", "damage", "mass",
       "volume",   "pressure",      "von_mises",         "material",    "object", "field",
-      "failed",   "failure_cause", "failed_in_tension", "instability"};
+      "failed",   "failure_cause", "failed_in_tension", "instability", "id"};
   return f;
 }
 
