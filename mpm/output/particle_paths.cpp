@@ -1,7 +1,9 @@
 #include "mpm/output/particle_paths.hpp"
 
 #include <array>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "models/material/material.hpp"
 #include "mpm/output/atomic_file.hpp"
@@ -11,6 +13,23 @@ namespace impact::mpm {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Records as bytes for an all-gather: plain values, doubles and flags without pointers (Eigen's
+// fixed-size matrices and PointState included, as migration.cpp and checkpoint.cpp move them).
+template <class T>
+std::vector<char> as_bytes(const std::vector<T>& v) {
+  static_assert(std::is_standard_layout_v<T>);
+  std::vector<char> b(v.size() * sizeof(T));
+  if (!b.empty()) std::memcpy(b.data(), v.data(), b.size());
+  return b;
+}
+
+template <class T>
+std::vector<T> from_bytes(const std::vector<char>& b) {
+  std::vector<T> v(b.size() / sizeof(T));
+  if (!v.empty()) std::memcpy(static_cast<void*>(v.data()), b.data(), v.size() * sizeof(T));
+  return v;
+}
 
 constexpr std::array<const char*, 9> kTensor{"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"};
 
@@ -27,37 +46,104 @@ Json symmetric(const Mat3& a) {
 
 }  // namespace
 
-ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial) {
+ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial, const Communicator* comm)
+    : comm_(comm != nullptr && comm->size() > 1 ? comm : nullptr) {
+  // Each rank's nearest candidate per path; on several ranks every rank's, then the nearest.
+  struct Candidate {
+    double distance;
+    std::uint64_t id;
+    PointState state;
+  };
+  std::vector<Candidate> best;
   for (const ParticlePathSpec& spec : scene.output.particle_paths) {
-    Track t;
-    t.name = spec.name;
-    double best = std::numeric_limits<double>::infinity();
+    Candidate c{std::numeric_limits<double>::infinity(), 0, PointState{}};
     for (std::size_t p = 0; p < initial.size(); ++p) {
       if (initial.object[p] != spec.object) continue;
       const double d = (initial.x[p] - spec.position).squaredNorm();
-      if (d < best) {
-        best = d;
-        t.particle = p;
+      if (d < c.distance) c = {d, initial.id.empty() ? p : initial.id[p], initial.state[p]};
+    }
+    best.push_back(c);
+  }
+  if (comm_) {
+    const std::vector<char> all = comm_->concatenate(as_bytes(best));
+    const std::vector<Candidate> every = from_bytes<Candidate>(all);
+    for (std::size_t i = 0; i < best.size(); ++i) {
+      for (std::size_t r = 0; r < every.size() / best.size(); ++r) {
+        const Candidate& c = every[r * best.size() + i];
+        if (c.distance < best[i].distance || (c.distance == best[i].distance && c.id < best[i].id))
+          best[i] = c;
       }
     }
-    t.start = initial.state[t.particle];
+  }
+  for (std::size_t i = 0; i < best.size(); ++i) {
+    Track t;
+    t.name = scene.output.particle_paths[i].name;
+    t.id = best[i].id;
+    t.start = best[i].state;
     tracks_.push_back(std::move(t));
   }
 }
 
+std::size_t ParticlePaths::find(Track& t, const Particles& P) const {
+  if (P.id.empty()) return t.id < P.size() ? t.id : P.size();  // one rank: the seed index
+  if (t.held < P.size() && P.id[t.held] == t.id) return t.held;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.id[p] == t.id) return t.held = p;
+  }
+  return P.size();
+}
+
 void ParticlePaths::before_step(const Particles& P) {
-  for (Track& t : tracks_) t.pending_temperature = P.state[t.particle].temperature;
+  for (Track& t : tracks_) {
+    const std::size_t p = find(t, P);
+    t.pending = p < P.size();
+    if (t.pending) t.pending_temperature = P.state[p].temperature;
+  }
 }
 
 void ParticlePaths::after_step(const Particles& P, double time, double dt) {
-  for (Track& t : tracks_) {
-    t.steps.push_back({time, dt, t.pending_temperature, P.L[t.particle], P.state[t.particle]});
+  if (!comm_) {
+    for (Track& t : tracks_) {
+      const std::size_t p = find(t, P);
+      t.steps.push_back({time, dt, t.pending_temperature, P.L[p], P.state[p]});
+    }
+    return;
   }
+  // What this rank knows of the step: the start temperature (held before it), the rest (held
+  // after it); every rank's pieces, then each track's step put together.
+  struct Piece {
+    std::uint32_t track;
+    bool temperature, rest;
+    Step step;
+  };
+  std::vector<Piece> mine;
+  for (std::uint32_t i = 0; i < tracks_.size(); ++i) {
+    Track& t = tracks_[i];
+    const std::size_t p = find(t, P);
+    const bool rest = p < P.size();
+    if (!t.pending && !rest) continue;
+    Piece piece{i, t.pending, rest, {time, dt, t.pending_temperature, Mat3::Zero(), PointState{}}};
+    if (rest) {
+      piece.step.L = P.L[p];
+      piece.step.end = P.state[p];
+    }
+    mine.push_back(piece);
+  }
+  std::vector<Step> steps(tracks_.size(), Step{time, dt, 0.0, Mat3::Zero(), PointState{}});
+  for (const Piece& piece : from_bytes<Piece>(comm_->concatenate(as_bytes(mine)))) {
+    Step& s = steps[piece.track];
+    if (piece.temperature) s.start_temperature = piece.step.start_temperature;
+    if (piece.rest) {
+      s.L = piece.step.L;
+      s.end = piece.step.end;
+    }
+  }
+  for (std::size_t i = 0; i < tracks_.size(); ++i) tracks_[i].steps.push_back(steps[i]);
 }
 
 void ParticlePaths::write(const fs::path& dir, const Scene& scene, const std::string& scene_file,
                           double start_time) const {
-  if (tracks_.empty()) return;
+  if (tracks_.empty() || (comm_ && !comm_->root())) return;  // rank 0 writes
   const fs::path out = dir / "paths";
   fs::create_directories(out);
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
@@ -68,7 +154,7 @@ void ParticlePaths::write(const fs::path& dir, const Scene& scene, const std::st
     write_file_atomically(out / material_file,
                           [&](std::ostream& o) { o << to_json(material).dump(2) << '\n'; });
     Json doc;
-    doc["description"] = "Path of particle " + std::to_string(t.particle) + " (object " +
+    doc["description"] = "Path of particle " + std::to_string(t.id) + " (object " +
                          scene.objects[spec.object].name + ") of " + scene_file +
                          " from t = " + std::to_string(start_time) + " s, written by mpm run " +
                          "(output.particle_paths." + t.name + ")";

@@ -55,12 +55,6 @@ class WallClock {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// What a run on several ranks cannot do yet (docs/mpi.md#not-yet), or empty.
-std::string not_yet_on_ranks(const Scene& scene) {
-  if (!scene.output.particle_paths.empty()) return "output.particle_paths";
-  return {};
-}
-
 // The run of run() and restart() (`resume`: from dir/checkpoint.bin): set-up, the step loop with
 // its outputs, checkpoints, signals and reports, then the summary. On several ranks every rank
 // steps its slab and writes its snapshot piece and checkpoint; the gauges, observables and the
@@ -75,14 +69,6 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   if (const std::string refusal = memory_refusal(scene); !refusal.empty()) {
     if (root) std::cerr << "mpm: " << refusal << '\n';
     return kExitMemory;
-  }
-  if (comm) {
-    if (const std::string what = not_yet_on_ranks(scene); !what.empty()) {
-      if (root)
-        std::cerr << "mpm: " << what << " is not available on several ranks yet (docs/mpi.md); run "
-                  << "on one rank (without mpirun) for it\n";
-      return 2;
-    }
   }
   const std::string scene_text = scene.resolved.dump(2) + '\n';
   const std::uint64_t scene_hash = fnv1a(scene_text.data(), scene_text.size());
@@ -157,9 +143,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   try {
     while (!sim.finished()) {
       const double t_before = sim.time();
-      if (!comm) outputs.before_step(sim.particles());
+      outputs.before_step(sim.particles());
       sim.step();
-      if (!comm) outputs.after_step(sim.particles(), sim.time(), sim.time() - t_before);
+      outputs.after_step(sim.particles(), sim.time(), sim.time() - t_before);
       faults.report(sim);
       if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
         write_outputs(true, sim.steps());
@@ -221,7 +207,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   }
   const double seconds = wall.seconds();
   Json summary = run_summary(sim, sim.particles(), status, message, seconds, outputs.observables(),
-                             comm ? nullptr : &outputs.paths());
+                             &outputs.paths());
   if (!root) return code;
   outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   if (comm) {

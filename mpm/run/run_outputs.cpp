@@ -10,7 +10,7 @@ RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Commun
 
 void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, const Particles& P,
                       const Ledger& ledger, const RunState* resumed) {
-  paths_.emplace(scene, P);
+  paths_.emplace(scene, P, comm_);
   std::vector<std::string> columns = gauges_.columns();
   if (faulted_column_) columns.push_back("faulted_particles [-]");
   const std::string history_file = (dir / "history.csv").string();
