@@ -117,7 +117,8 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
     : scene_(scene),
-      particles_(seed_particles(scene)),
+      // On several ranks each seeds only its slab, below.
+      particles_(comm != nullptr && comm->size() > 1 ? Particles{} : seed_particles(scene)),
       grid_(scene.grid, thread_count(threads), scene.field_count(),
             scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction),
       shape_(make_shape(scene)),
@@ -125,11 +126,16 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
       ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove),
       slabs_(scene.grid.cells[0]) {
   if (comm != nullptr && comm->size() > 1) {
-    // Every rank seeds the whole scene, splits it the same way, and keeps its slab.
+    // Every rank counts the seed points per cell column, splits the columns the same way, and
+    // seeds only its slab: no rank ever holds the whole scene.
     comm_ = comm;
-    slabs_ = SlabDecomposition::balanced(column_counts(particles_, scene_.grid), comm->size());
+    const std::vector<std::vector<std::size_t>> counts = seed_counts_per_column(scene_);
+    std::vector<std::size_t> columns(std::size_t(scene_.grid.cells[0]), 0);
+    for (const auto& object : counts)
+      for (std::size_t i = 0; i < columns.size(); ++i) columns[i] += object[i];
+    slabs_ = SlabDecomposition::balanced(columns, comm->size());
     const int r = comm->rank();
-    particles_ = keep_slab(std::move(particles_), slabs_, scene_.grid, r);
+    particles_ = seed_columns(scene_, slabs_.first_cell(r), slabs_.first_cell(r + 1), counts);
     own_slab();
     halo_.emplace(*comm_, slabs_);
   }

@@ -127,15 +127,4 @@ Particles gather_particles(const Particles& local, const Communicator& comm) {
   return all;
 }
 
-Particles keep_slab(Particles P, const SlabDecomposition& slabs, const GridSpec& grid, int rank) {
-  const std::size_t n = P.size();
-  P.id.resize(n);
-  for (std::size_t p = 0; p < n; ++p) P.id[p] = p;
-  std::vector<char> keep(n);
-  for (std::size_t p = 0; p < n; ++p)
-    keep[p] = slabs.owner_of_cell(cell_column(grid, P.x[p](0))) == rank;
-  compact(P, keep);
-  return P;
-}
-
 }  // namespace impact::mpm

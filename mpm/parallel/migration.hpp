@@ -39,8 +39,4 @@ MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const Grid
 /// other ranks.
 Particles gather_particles(const Particles& local, const Communicator& comm);
 
-/// The particles of `P` whose cell column `rank` owns, in order (the seeding split: every rank
-/// seeds the whole scene and keeps its slab; ids are the seed indices).
-Particles keep_slab(Particles P, const SlabDecomposition& slabs, const GridSpec& grid, int rank);
-
 }  // namespace impact::mpm

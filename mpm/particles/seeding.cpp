@@ -35,10 +35,10 @@ std::vector<Vec3> half_widths(const Scene& scene) {
 
 namespace {
 
-// Calls add(x) for every seed point of object `oi` in the grid cells that the box [lo, hi]
-// overlaps: the ppc^3 sub-cell centres inside the object's geometry and not inside an earlier
-// object. The points of a cell do not depend on the box, so a smaller box gives a subset of the
-// same doubles.
+// Calls add(x, i) for every seed point x of object `oi` in the grid cells that the box [lo, hi]
+// overlaps, i its cell column along x: the ppc^3 sub-cell centres inside the object's geometry and
+// not inside an earlier object, columns outermost. The points of a cell do not depend on the box,
+// so a smaller box gives a subset of the same doubles in the same order.
 template <class Add>
 void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3& hi,
                          Add&& add) {
@@ -75,44 +75,84 @@ void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, con
                   scene.objects.begin(), scene.objects.begin() + oi,
                   [&](const SceneObject& earlier) { return inside(earlier.geometry, x); });
               if (claimed) continue;
-              add(x);
+              add(x, i);
             }
+}
+
+// Appends object oi's seed points in the cells the box [lo, hi] overlaps to p, at rest in their
+// initial state.
+void seed_object(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3& hi, Particles& p) {
+  const SceneObject& o = scene.objects[oi];
+  const ElasticPlastic& model = scene.materials[o.material].material.model;
+  const auto& ppc = o.particles_per_cell;
+  const double v0 = scene.grid.spacing().prod() / (ppc[0] * ppc[1] * ppc[2]);
+  const PointState s0 = model.initial_state(o.temperature);
+  const double c = model.wave_speed(s0);
+  for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int) {
+    p.x.push_back(x);
+    p.v.push_back(o.velocity);
+    p.mass.push_back(model.params().density * v0);
+    p.volume0.push_back(v0);
+    p.volume.push_back(v0);
+    p.L.push_back(Mat3::Zero());
+    p.state.push_back(s0);
+    p.wave_speed.push_back(c);
+    p.material.push_back(static_cast<std::uint16_t>(o.material));
+    p.object.push_back(static_cast<std::uint16_t>(oi));
+    p.field.push_back(static_cast<std::uint16_t>(scene.parent_field(o.material)));
+  });
 }
 
 }  // namespace
 
 Particles seed_particles(const Scene& scene) {
   Particles p;
-  const Vec3 h = scene.grid.spacing();
   // Count first and reserve exactly: push_back growth would leave up to twice the storage in
   // place for the whole run (and the memory estimate of mpm check assumes exact sizes).
   std::size_t count = 0;
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const auto [lo, hi] = bounds(scene.objects[oi].geometry);
-    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3&) { ++count; });
+    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3&, int) { ++count; });
   }
   p.reserve(count);
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
-    const SceneObject& o = scene.objects[oi];
-    const ElasticPlastic& model = scene.materials[o.material].material.model;
-    const auto [lo, hi] = bounds(o.geometry);
-    const auto& ppc = o.particles_per_cell;
-    const double v0 = h.prod() / (ppc[0] * ppc[1] * ppc[2]);
-    const PointState s0 = model.initial_state(o.temperature);
-    const double c = model.wave_speed(s0);
-    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x) {
-      p.x.push_back(x);
-      p.v.push_back(o.velocity);
-      p.mass.push_back(model.params().density * v0);
-      p.volume0.push_back(v0);
-      p.volume.push_back(v0);
-      p.L.push_back(Mat3::Zero());
-      p.state.push_back(s0);
-      p.wave_speed.push_back(c);
-      p.material.push_back(static_cast<std::uint16_t>(o.material));
-      p.object.push_back(static_cast<std::uint16_t>(oi));
-      p.field.push_back(static_cast<std::uint16_t>(scene.parent_field(o.material)));
-    });
+    const auto [lo, hi] = bounds(scene.objects[oi].geometry);
+    seed_object(scene, oi, lo, hi, p);
+  }
+  return p;
+}
+
+std::vector<std::vector<std::size_t>> seed_counts_per_column(const Scene& scene) {
+  std::vector<std::vector<std::size_t>> counts(scene.objects.size(),
+                                               std::vector<std::size_t>(scene.grid.cells[0], 0));
+  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+    const auto [lo, hi] = bounds(scene.objects[oi].geometry);
+    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3&, int i) { ++counts[oi][i]; });
+  }
+  return counts;
+}
+
+Particles seed_columns(const Scene& scene, int first, int end,
+                       const std::vector<std::vector<std::size_t>>& counts) {
+  Particles p;
+  std::size_t n = 0;
+  for (const auto& object : counts)
+    for (int i = first; i < end; ++i) n += object[i];
+  p.reserve(n);
+  p.id.reserve(n);
+  const GridSpec& g = scene.grid;
+  const double h = g.spacing()(0);
+  std::size_t before = 0;  // seed points of the earlier objects and earlier columns
+  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+    for (int i = 0; i < first; ++i) before += counts[oi][i];
+    // The columns' x range, each bound half a cell inside so that rounding cannot add a column.
+    auto [lo, hi] = bounds(scene.objects[oi].geometry);
+    lo(0) = std::max(lo(0), g.lower(0) + (first + 0.5) * h);
+    hi(0) = std::min(hi(0), g.lower(0) + (end - 0.5) * h);
+    const std::size_t start = p.size();
+    if (lo(0) <= hi(0)) seed_object(scene, oi, lo, hi, p);
+    for (std::size_t k = start; k < p.size(); ++k) p.id.push_back(before + (k - start));
+    for (int i = first; i < static_cast<int>(counts[oi].size()); ++i) before += counts[oi][i];
   }
   return p;
 }
@@ -121,7 +161,7 @@ std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3
                               const Vec3& upper) {
   std::size_t n = 0;
   for_each_seed_point(scene, object, lower, upper,
-                      [&](const Vec3& x) { n += in_box(x, lower, upper) ? 1 : 0; });
+                      [&](const Vec3& x, int) { n += in_box(x, lower, upper) ? 1 : 0; });
   return n;
 }
 

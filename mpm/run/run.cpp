@@ -200,10 +200,11 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   }
   // Per rank: the particles it holds at the end and its time in MPI calls (waiting for the others
   // and moving data): the load balance (docs/mpi.md).
-  std::vector<double> held, in_mpi;
+  std::vector<double> held, in_mpi, peak;
   if (comm) {
     held = comm->gather_all(double(sim.particles().size()));
     in_mpi = comm->gather_all(comm->seconds_in_mpi());
+    peak = comm->gather_all(peak_resident_memory().value_or(0.0) / 1e6);
   }
   const double seconds = wall.seconds();
   Json summary = run_summary(sim, sim.particles(), status, message, seconds, outputs.observables(),
@@ -213,6 +214,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   if (comm) {
     summary["ranks_load"] = {{"particles_at_end", held},
                              {"seconds_in_mpi [s]", in_mpi},
+                             {"peak_resident_memory [MB]", peak},
                              {"rebalances", sim.rebalances()},
                              {"slabs", sim.slabs().first_cells()}};
   }

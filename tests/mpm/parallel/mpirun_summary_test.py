@@ -244,8 +244,9 @@ def main(mpm, mpiexec, ranks, work):
               "available_memory [MB]"):
         b.pop(k, None)
         c.pop(k, None)
-    for d in (b, c):  # timings
+    for d in (b, c):  # timings and memory
         d["ranks_load"].pop("seconds_in_mpi [s]")
+        d["ranks_load"].pop("peak_resident_memory [MB]")
     assert b == c, "summary.json of the restarted run differs"
     print(f"restart on {ranks} ranks: bit-identical")
     # A fault on one rank stops every rank: the last particle (seed index n - 1, at the far end

@@ -1,0 +1,81 @@
+// seed_columns (mpm/particles/seeding.cpp): a rank on several seeds only its slab's cell columns.
+// Checked against seed_particles(), the whole scene seeded at once: every column range gives the
+// same particles, in the same order, with the same doubles, each with its index in the whole
+// seeding as its id; the ranges of a split together give every particle once. The recommended
+// sphere-cylinder: two objects (the later one's points inside the earlier one are skipped) and a
+// sphere that lies in some columns only. The counts per column add up to the whole seeding.
+#include <boost/test/unit_test.hpp>
+#include <string>
+
+#include "mpm/particles/particles.hpp"
+#include "mpm/scene/scene.hpp"
+
+using namespace impact::mpm;
+
+namespace {
+
+Scene recommended() {
+  const std::string file =
+      std::string(IMPACT_SOURCE_DIR) + "/data/scenes/sphere_cylinder/recommended.json";
+  return read_scene(load_scene_document(file), file);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mpm_seed_columns)
+
+BOOST_AUTO_TEST_CASE(the_counts_per_column_add_up_to_the_whole_seeding) {
+  const Scene scene = recommended();
+  const Particles all = seed_particles(scene);
+  const auto counts = seed_counts_per_column(scene);
+  BOOST_REQUIRE(counts.size() == scene.objects.size());
+  std::size_t total = 0;
+  for (std::size_t o = 0; o < counts.size(); ++o) {
+    std::size_t of_object = 0;
+    for (const std::size_t n : counts[o]) of_object += n;
+    std::size_t seeded = 0;
+    for (std::size_t p = 0; p < all.size(); ++p) seeded += all.object[p] == o;
+    BOOST_TEST(of_object == seeded);
+    total += of_object;
+  }
+  BOOST_TEST(total == all.size());
+}
+
+BOOST_AUTO_TEST_CASE(column_ranges_seed_the_same_particles_with_their_seed_indices) {
+  const Scene scene = recommended();
+  const Particles all = seed_particles(scene);
+  const auto counts = seed_counts_per_column(scene);
+  const int cells = scene.grid.cells[0];
+  // Splits at the sphere's columns, inside the plate and in the cylinder, and one empty range.
+  const std::vector<int> cuts = {0, 3, 5, 6, 7, 13, 29, 29, cells};
+  std::vector<int> seen(all.size(), 0);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const Particles slab = seed_columns(scene, cuts[k], cuts[k + 1], counts);
+    BOOST_REQUIRE(slab.id.size() == slab.size());
+    std::size_t expected = 0;
+    for (const auto& object : counts)
+      for (int i = cuts[k]; i < cuts[k + 1]; ++i) expected += object[std::size_t(i)];
+    BOOST_TEST(slab.size() == expected);
+    for (std::size_t p = 0; p < slab.size(); ++p) {
+      const std::size_t q = slab.id[p];
+      BOOST_REQUIRE(q < all.size());
+      ++seen[q];
+      BOOST_TEST((slab.x[p] == all.x[q]));  // the same doubles
+      BOOST_TEST((slab.v[p] == all.v[q]));
+      BOOST_TEST(slab.mass[p] == all.mass[q]);
+      BOOST_TEST(slab.volume0[p] == all.volume0[q]);
+      BOOST_TEST(slab.object[p] == all.object[q]);
+      BOOST_TEST(slab.material[p] == all.material[q]);
+      BOOST_TEST(slab.field[p] == all.field[q]);
+      BOOST_TEST(slab.state[p].temperature == all.state[q].temperature);
+      BOOST_TEST(slab.wave_speed[p] == all.wave_speed[q]);
+      if (p > 0) BOOST_TEST(slab.id[p] > slab.id[p - 1]);  // seed order kept
+      const int column =
+          static_cast<int>((slab.x[p](0) - scene.grid.lower(0)) / scene.grid.spacing()(0));
+      BOOST_TEST((column >= cuts[k] && column < cuts[k + 1]));
+    }
+  }
+  for (std::size_t q = 0; q < all.size(); ++q) BOOST_TEST_REQUIRE(seen[q] == 1);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
