@@ -226,6 +226,11 @@ std::string JsonReader::string_or(std::string_view key, std::string_view fallbac
 
 std::string JsonReader::choice(std::string_view key, std::initializer_list<std::string_view> known,
                                std::string_view meaning, std::optional<std::string_view> fallback) {
+  return choice(key, std::vector<std::string_view>(known), meaning, fallback);
+}
+
+std::string JsonReader::choice(std::string_view key, const std::vector<std::string_view>& known,
+                               std::string_view meaning, std::optional<std::string_view> fallback) {
   std::string known_list;
   std::vector<std::string> candidates;
   for (auto k : known) {

@@ -103,6 +103,9 @@ class JsonReader {
   /// A string that must be one of `known`; the error lists the known names.
   std::string choice(std::string_view key, std::initializer_list<std::string_view> known,
                      std::string_view meaning, std::optional<std::string_view> fallback = {});
+  /// The same with the names in a vector (a catalogue's).
+  std::string choice(std::string_view key, const std::vector<std::string_view>& known,
+                     std::string_view meaning, std::optional<std::string_view> fallback = {});
   /// The object at `key`; a missing or non-object value is a problem and yields an empty object.
   JsonReader child(std::string_view key, std::string_view meaning);
   /// The object at `key` if present (a present non-object is a problem).

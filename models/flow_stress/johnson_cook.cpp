@@ -46,4 +46,15 @@ JohnsonCookParams read_johnson_cook(JsonReader& r, double room_temperature,
   return p;
 }
 
+Json to_json(const JohnsonCookParams& f) {
+  return {{"type", JohnsonCookParams::kType},
+          {"A", f.A},
+          {"B", f.B},
+          {"n", f.n},
+          {"C", f.C},
+          {"m", f.m},
+          {"reference_strain_rate", f.reference_strain_rate},
+          {"rate_form", f.rate_form == JohnsonCookRateForm::clamped ? "clamped" : "report_2004"}};
+}
+
 }  // namespace impact

@@ -15,6 +15,7 @@
 
 #include "models/core/input.hpp"
 #include "models/core/lane_math.hpp"
+#include "models/flow_stress/flow_stress.hpp"
 
 // Vectors pass between always-inlined templates only (models/core/lane_math.hpp).
 #pragma GCC diagnostic push
@@ -34,18 +35,16 @@ struct JohnsonCookParams {
   double room_temperature = 294.0;     ///< [K]
   double melt_temperature = 925.0;     ///< [K]
   JohnsonCookRateForm rate_form = JohnsonCookRateForm::clamped;
-};
 
-/// Flow stress with its partial derivatives, as the return mapping and the stability tangent need;
-/// for one point (FlowStress) or a vector of points (BasicFlowStress<lane::Vec>).
-template <class V>
-struct BasicFlowStress {
-  V value{};             ///< sigma_y [Pa]
-  V d_plastic_strain{};  ///< d sigma_y / d ep [Pa]; +inf at ep = 0 when n < 1
-  V d_rate{};            ///< d sigma_y / d rate [Pa s]
-  V d_temperature{};     ///< d sigma_y / d T [Pa/K]
+  static constexpr std::string_view kType = "johnson_cook";
+  static constexpr LawParameter<JohnsonCookParams> kParameters[] = {
+      {"A", "Pa", &JohnsonCookParams::A},
+      {"B", "Pa", &JohnsonCookParams::B},
+      {"n", "-", &JohnsonCookParams::n},
+      {"C", "-", &JohnsonCookParams::C},
+      {"m", "-", &JohnsonCookParams::m},
+      {"reference_strain_rate", "1/s", &JohnsonCookParams::reference_strain_rate}};
 };
-using FlowStress = BasicFlowStress<double>;
 
 /// The temperature factor 1 - T*^m and its slope d/dT [1/K]. A return mapping at fixed
 /// temperature evaluates it once instead of once per Newton step (it holds a pow).
@@ -197,6 +196,18 @@ inline double homologous_temperature(double temperature, double room, double mel
 /// material's.
 JohnsonCookParams read_johnson_cook(JsonReader& r, double room_temperature,
                                     double melt_temperature);
+
+/// The catalogue's interface (flow_stress_law.hpp): the law at (ep, rate, conditions), its reader
+/// and its writer (with "type").
+inline FlowStress flow_stress(const JohnsonCookParams& p, double plastic_strain,
+                              double plastic_strain_rate, const FlowConditions& c) {
+  return johnson_cook(p, plastic_strain, plastic_strain_rate, c.temperature);
+}
+inline JohnsonCookParams read_law(JsonReader& r, const JohnsonCookParams*, double room_temperature,
+                                  double melt_temperature) {
+  return read_johnson_cook(r, room_temperature, melt_temperature);
+}
+Json to_json(const JohnsonCookParams& p);
 
 }  // namespace impact
 

@@ -116,8 +116,10 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   t.rho0_n = trial.rho0_n;
   t.rho1 = trial.rho1;
   t.molten = p_.melting.do_melting && is_melted(s0.temperature, p_.melt_temperature);
-  t.thermal = johnson_cook_thermal(p_.flow_stress, s0.temperature);
-  t.batched = !t.molten && p_.return_algorithm == ReturnAlgorithm::newton;
+  const auto* jc = std::get_if<JohnsonCookParams>(&p_.flow_stress);
+  if (jc) t.thermal = johnson_cook_thermal(*jc, s0.temperature);
+  t.conditions = {s0.temperature, t.p_n, t.rho1 / p_.density, t.rho1};
+  t.batched = jc && !t.molten && p_.return_algorithm == ReturnAlgorithm::newton;
   return true;
 }
 
@@ -128,12 +130,23 @@ ReturnResult ElasticPlastic::unbatched_return(const PointState& s0, const Update
     r.deviator = Mat3::Zero();
     return r;
   }
-  // Newton's return here is return_values on one double: the arithmetic of a batch's lane.
-  const JohnsonCookAtTemperature flow_at{p_.flow_stress, t.thermal};
   const Mat3 eta = deviator(t.D_hat);
+  const double eta_norm = std::sqrt(2.0 / 3.0 * ddot(eta, eta));
+  if (const auto* jc = std::get_if<JohnsonCookParams>(&p_.flow_stress)) {
+    // Newton's return here is return_values on one double: the arithmetic of a batch's lane.
+    const JohnsonCookAtTemperature flow_at{*jc, t.thermal};
+    return radial_return(t.s_trial, p_.shear_modulus, s0.plastic_strain, dt, flow_at,
+                         p_.return_algorithm, eta_norm, p_.return_tolerance,
+                         s0.plastic_strain_rate * dt);
+  }
+  // Any other law at the step's conditions (no increment bound: Newton starts from the elastic
+  // one).
+  const auto flow_at = [&](double ep, double rate) {
+    return flow_stress(p_.flow_stress, ep, rate, t.conditions);
+  };
   return radial_return(t.s_trial, p_.shear_modulus, s0.plastic_strain, dt, flow_at,
-                       p_.return_algorithm, std::sqrt(2.0 / 3.0 * ddot(eta, eta)),
-                       p_.return_tolerance, s0.plastic_strain_rate * dt);
+                       p_.return_algorithm, eta_norm, p_.return_tolerance,
+                       s0.plastic_strain_rate * dt);
 }
 
 StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,

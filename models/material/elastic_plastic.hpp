@@ -30,7 +30,7 @@
 #include "models/eos/mie_gruneisen.hpp"
 #include "models/failure/erosion.hpp"
 #include "models/failure/tepla.hpp"
-#include "models/flow_stress/johnson_cook.hpp"
+#include "models/flow_stress/flow_stress_law.hpp"
 #include "models/kinematics/corotation.hpp"
 #include "models/material/elastic_plastic_lanes.hpp"
 #include "models/plasticity/johnson_cook_return.hpp"
@@ -54,7 +54,7 @@ struct ElasticPlasticParams {
   ReturnAlgorithm return_algorithm = ReturnAlgorithm::newton;
   ReturnTolerance return_tolerance;
   EquationOfState equation_of_state = DefaultHypoParams{};
-  JohnsonCookParams flow_stress;
+  FlowStressLaw flow_stress;                      ///< models/flow_stress/flow_stress_law.hpp
   std::optional<JohnsonCookDamageParams> damage;  ///< absent: no damage evolution
   TeplaParams tepla;
   MeltingParams melting;
@@ -102,9 +102,12 @@ struct UpdateTrial {
   double p_n = 0.0;            ///< start-of-step pressure [Pa]
   double rho0_n = 0.0;         ///< start-of-step density [kg/m^3]
   double rho1 = 0.0;           ///< end-of-step density [kg/m^3]
-  JohnsonCookThermal thermal;  ///< flow stress's temperature factor at the start-of-step T
+  JohnsonCookThermal thermal;  ///< Johnson-Cook's temperature factor at the start-of-step T
+  FlowConditions conditions;   ///< what any other law reads: T_n, p_n, rho1 / rho0, rho1
   bool molten = false;         ///< no return: the deviator is zero
-  bool batched = false;        ///< Newton's return, which a batch can do (johnson_cook_return)
+  /// Newton's return of a Johnson-Cook point, which a batch can do (johnson_cook_return); other
+  /// laws take the one-point return with the same Newton iteration.
+  bool batched = false;
 };
 
 std::string_view to_string(UpdateStatus);

@@ -91,8 +91,7 @@ Material read_material(const Json& document, const std::string& file) {
   p.equation_of_state = read_equation_of_state(cm);
 
   JsonReader flow = cm.child("flow_stress", "flow stress model");
-  flow.choice("type", {"johnson_cook"}, "flow stress model");
-  p.flow_stress = read_johnson_cook(flow, p.room_temperature, p.melt_temperature);
+  p.flow_stress = read_flow_stress(flow, p.room_temperature, p.melt_temperature);
 
   if (auto yield = cm.optional_child("yield_condition", "yield condition")) {
     yield->choice("type", {"von_mises"}, "yield condition", "von_mises");
@@ -178,16 +177,7 @@ Json to_json(const Material& material) {
           {"S_alpha", mg.S_alpha},
           {"energy", mg.energy == MieGruneisenEnergy::evolved ? "evolved" : "cp_temperature"}}}};
   }
-  const auto& f = p.flow_stress;
-  cm["flow_stress"] = {
-      {"type", "johnson_cook"},
-      {"A", f.A},
-      {"B", f.B},
-      {"n", f.n},
-      {"C", f.C},
-      {"m", f.m},
-      {"reference_strain_rate", f.reference_strain_rate},
-      {"rate_form", f.rate_form == JohnsonCookRateForm::clamped ? "clamped" : "report_2004"}};
+  cm["flow_stress"] = to_json(p.flow_stress);
   cm["yield_condition"] = {{"type", "von_mises"}};
   if (p.damage) {
     const auto& d = *p.damage;

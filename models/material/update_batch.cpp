@@ -37,7 +37,8 @@ int UpdateBatch::add(const ElasticPlastic& model, const PointState& s0, const Ma
   lane.polar = p.objective_rate == ObjectiveRate::green_naghdi && J1 > 0.0;
   const bool molten = p.melting.do_melting && is_melted(s0.temperature, p.melt_temperature);
   lane.lanes = lane.polar && p.return_algorithm == ReturnAlgorithm::newton && !molten &&
-               std::holds_alternative<DefaultHypoParams>(p.equation_of_state);
+               std::holds_alternative<DefaultHypoParams>(p.equation_of_state) &&
+               std::holds_alternative<JohnsonCookParams>(p.flow_stress);
   // The rotations' inputs; a lane without them gets the identity and zeros, harmless inputs.
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
@@ -59,7 +60,9 @@ int UpdateBatch::add(const ElasticPlastic& model, const PointState& s0, const Ma
   steps_.J_1[k] = lane.lanes ? J1 : 1.0;
   steps_.T_n[k] = s0.temperature;
   steps_.e_n[k] = s0.internal_energy;
-  if (lane.lanes) lane.trial.thermal = johnson_cook_thermal(p.flow_stress, s0.temperature);
+  if (lane.lanes)
+    lane.trial.thermal =
+        johnson_cook_thermal(std::get<JohnsonCookParams>(p.flow_stress), s0.temperature);
   return k;
 }
 
@@ -143,7 +146,8 @@ void UpdateBatch::return_by_material(double dt) {
       returns_.thermal_factor[k] = lanes_[k].trial.thermal.factor;
       returns_.thermal_d_factor[k] = lanes_[k].trial.thermal.d_factor;
     }
-    johnson_cook_return(model.params().flow_stress, model.params().return_tolerance, returns_);
+    johnson_cook_return(std::get<JohnsonCookParams>(model.params().flow_stress),
+                        model.params().return_tolerance, returns_);
     const ReturnValues<lane::Vec>& b = returns_.lanes;
     for (int k = 0; k < size_; ++k) {
       Lane& lane = lanes_[k];

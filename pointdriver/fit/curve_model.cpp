@@ -7,8 +7,10 @@
 
 namespace impact::pointdriver::fit {
 
-JcValues jc_values(const JohnsonCookParams& p) {
-  return {p.A, p.B, p.n, p.C, p.m};
+JcValues jc_values(const FlowStressLaw& law) {
+  JcValues v{};
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = parameter(law, jc_names[i]);
+  return v;
 }
 
 double interpolate_stress(const Curve& curve, double x) {
@@ -41,6 +43,11 @@ CurveModel::CurveModel(const std::string& material_file, const Json& overrides,
   patch["constitutive_model"]["erosion"] = {{"algorithm", "none"}};
   const Material material = load_material(material_file, patch);
   base_ = material.model.params();
+  if (!std::holds_alternative<JohnsonCookParams>(base_.flow_stress)) {
+    throw InputError({material_file + ": /constitutive_model/flow_stress/type: expected " +
+                      std::string(JohnsonCookParams::kType) + " (pointdriver fit and check fit " +
+                      "the Johnson-Cook law), got " + std::string(law_type(base_.flow_stress))});
+  }
   for (std::size_t i = 0; i < experiments_.size(); ++i) {
     const Experiment& x = experiments_[i];
     const double ep_max = x.plastic_strain.back();
@@ -76,11 +83,7 @@ double CurveModel::youngs_modulus() const {
 
 ElasticPlastic CurveModel::model(const JcValues& v) const {
   ElasticPlasticParams p = base_;
-  p.flow_stress.A = v[0];
-  p.flow_stress.B = v[1];
-  p.flow_stress.n = v[2];
-  p.flow_stress.C = v[3];
-  p.flow_stress.m = v[4];
+  for (std::size_t i = 0; i < v.size(); ++i) set_parameter(p.flow_stress, jc_names[i], v[i]);
   return ElasticPlastic(p);
 }
 

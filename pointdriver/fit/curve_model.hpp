@@ -24,7 +24,8 @@ namespace impact::pointdriver::fit {
 using JcValues = std::array<double, 5>;
 inline constexpr std::array<const char*, 5> jc_names{"A", "B", "n", "C", "m"};
 
-JcValues jc_values(const JohnsonCookParams& p);
+/// The law's values of jc_names, by name (models/flow_stress/flow_stress_law.hpp).
+JcValues jc_values(const FlowStressLaw& law);
 
 struct CurveSettings {
   int steps = 60;                      ///< driver steps per test (log-spaced, see first_step)

@@ -73,7 +73,8 @@ StagedGuess staged_guess(const std::vector<Experiment>& experiments,
                          const std::vector<bool>& adiabatic, const ElasticPlasticParams& material,
                          const JcValues& start, const std::array<bool, 5>& free,
                          double room_tolerance) {
-  const JohnsonCookParams& jc = material.flow_stress;
+  // The staged guess is Johnson-Cook's (CurveModel accepts no other law).
+  const JohnsonCookParams& jc = std::get<JohnsonCookParams>(material.flow_stress);
   const double room = material.room_temperature, melt = material.melt_temperature;
   const double heat = material.heating.taylor_quinney / (material.density * material.specific_heat);
   JcValues v = start;

@@ -217,7 +217,7 @@ std::vector<Check> perfectly_plastic_uniaxial_strain(const SuiteContext& ctx) {
                                        {"steps", 2000}}),
                     "perfectly plastic uniaxial strain");
   const auto& p = r.params();
-  const double K = p.bulk_modulus, mu = p.shear_modulus, Y = p.flow_stress.A;
+  const double K = p.bulk_modulus, mu = p.shear_modulus, Y = parameter(p.flow_stress, "A");
   const cf::UniaxialStrainYield y = cf::uniaxial_strain_yield(K, mu, Y);
   const double M = cf::constrained_modulus(K, mu);
 
@@ -289,9 +289,12 @@ std::vector<Check> johnson_cook_uniaxial_stress(const SuiteContext& ctx) {
                         "JC uniaxial stress " + label);
       const auto& p = r.params();
       const double E = cf::young_modulus(p.bulk_modulus, p.shear_modulus);
-      const cf::JohnsonCook jc{p.flow_stress.A,    p.flow_stress.B,
-                               p.flow_stress.n,    p.flow_stress.C,
-                               p.flow_stress.m,    p.flow_stress.reference_strain_rate,
+      // The suite's material is Johnson-Cook (the patch above keeps it so); by name, through the
+      // law (models/flow_stress/flow_stress_law.hpp).
+      const auto jc_parameter = [&](const char* name) { return parameter(p.flow_stress, name); };
+      const cf::JohnsonCook jc{jc_parameter("A"),  jc_parameter("B"),
+                               jc_parameter("n"),  jc_parameter("C"),
+                               jc_parameter("m"),  jc_parameter("reference_strain_rate"),
                                p.room_temperature, p.melt_temperature};
       Worst flow;
       std::vector<double> dcol, jcol;

@@ -186,11 +186,12 @@ void run_parts(int points, int repeats) {
   const Material m =
       load_material(std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json");
   const auto& p = m.model.params();
+  const auto& jc_law = std::get<JohnsonCookParams>(p.flow_stress);
   line("Johnson-Cook flow stress + slopes", time_per_call(points, repeats, [&](int i) {
-         sink += johnson_cook(p.flow_stress, 0.01 + 1e-6 * i, 1e4 + i, 400.0).value;
+         sink += johnson_cook(jc_law, 0.01 + 1e-6 * i, 1e4 + i, 400.0).value;
        }));
   // The law as the material calls it: temperature factor once, the increment bound for the start.
-  const JohnsonCookAtTemperature flow{p.flow_stress, johnson_cook_thermal(p.flow_stress, 400.0)};
+  const JohnsonCookAtTemperature flow{jc_law, johnson_cook_thermal(jc_law, 400.0)};
   line("radial return (Newton, JC at 400 K)", time_per_call(points, repeats, [&](int i) {
          Mat3 s = Mat3::Zero();
          s(0, 0) = 2.0 * (3.6e8 + 1e3 * i) / 3.0;
@@ -200,7 +201,7 @@ void run_parts(int points, int repeats) {
        }));
   // The same returns eight at a time (johnson_cook_return, the batch's kernel), per point.
   std::vector<JohnsonCookReturnBatch> batches((points + kReturnLanes - 1) / kReturnLanes);
-  const JohnsonCookThermal th = johnson_cook_thermal(p.flow_stress, 400.0);
+  const JohnsonCookThermal th = johnson_cook_thermal(jc_law, 400.0);
   for (int i = 0; i < int(batches.size()) * kReturnLanes; ++i) {
     auto& b = batches[i / kReturnLanes];
     const int k = i % kReturnLanes;
@@ -213,7 +214,7 @@ void run_parts(int points, int repeats) {
     lane::set(b.thermal_d_factor, k, th.d_factor);
   }
   const double per_batch = time_per_call(int(batches.size()), repeats, [&](int i) {
-    johnson_cook_return(p.flow_stress, p.return_tolerance, batches[i]);
+    johnson_cook_return(jc_law, p.return_tolerance, batches[i]);
     sink += lane::get(batches[i].lanes.increment, 0);
   });
   line("radial return, 8 lanes at once (per point)", per_batch / kReturnLanes);

@@ -195,8 +195,8 @@ void batch(int steps, int repeats) {
   for (int i = 0; i < 4; ++i) {
     for (int j = 0; j < 4; ++j) {
       ElasticPlasticParams p = base.model.params();
-      p.flow_stress.A *= 0.85 + 0.1 * i;
-      p.flow_stress.B *= 0.85 + 0.1 * j;
+      set_parameter(p.flow_stress, "A", parameter(p.flow_stress, "A") * (0.85 + 0.1 * i));
+      set_parameter(p.flow_stress, "B", parameter(p.flow_stress, "B") * (0.85 + 0.1 * j));
       models.emplace_back(p);
     }
   }

@@ -254,7 +254,7 @@ Measured impact_run(const Json& patch) {
   for (std::size_t i = 0; i < sim.ledger().sink_names().size(); ++i) {
     if (sim.ledger().sink_names()[i] == "viscous_work") r.viscous_work = row.sinks[i];
   }
-  const auto& jc = params.flow_stress;
+  const auto& jc = std::get<JohnsonCookParams>(params.flow_stress);
   r.yield_at_ep = jc.A + jc.B * std::pow(r.ep.mean, jc.n);
   r.steps = sim.steps();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

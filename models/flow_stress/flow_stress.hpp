@@ -1,0 +1,41 @@
+// What every flow-stress law shares: the result (the flow stress and its partial derivatives, as
+// the radial return and the stability tangent need them), the conditions a law may read besides
+// the plastic strain and its rate, and the description of a law's parameters by name (what the
+// fitter and the checker reach them by; models/flow_stress/flow_stress_law.hpp).
+#pragma once
+
+#include <string_view>
+
+namespace impact {
+
+/// Flow stress with its partial derivatives, for one point (FlowStress) or a vector of points
+/// (BasicFlowStress<lane::Vec>, the batched Johnson-Cook return).
+template <class V>
+struct BasicFlowStress {
+  V value{};             ///< sigma_y [Pa]
+  V d_plastic_strain{};  ///< d sigma_y / d ep [Pa]; +inf at ep = 0 when the hardening's slope is
+  V d_rate{};            ///< d sigma_y / d rate [Pa s]
+  V d_temperature{};     ///< d sigma_y / d T [Pa/K]
+};
+using FlowStress = BasicFlowStress<double>;
+
+/// What a law may read besides the plastic strain and its rate, fixed over one step's return:
+/// the start-of-step temperature and pressure, and the compression rho / rho0 at the end of the
+/// step (Steinberg-Cochran-Guinan's pressure-dependent modulus, Preston-Tonks-Wallace's density).
+struct FlowConditions {
+  double temperature = 294.0;  ///< T [K]
+  double pressure = 0.0;       ///< p [Pa], positive in compression
+  double compression = 1.0;    ///< rho / rho0 [-]
+  double density = 0.0;        ///< rho [kg/m^3]
+};
+
+/// One named parameter of a law: the JSON key, its unit (SI) and the member it lives in. A law
+/// lists them in `kParameters`; the fitter varies them by name.
+template <class Law>
+struct LawParameter {
+  std::string_view name;
+  std::string_view unit;
+  double Law::*member;
+};
+
+}  // namespace impact

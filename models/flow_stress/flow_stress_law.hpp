@@ -1,0 +1,53 @@
+// The catalogue of flow-stress laws: a material names one in constitutive_model.flow_stress
+// {"type": ...}. Each law lives in its own files with
+//   - its parameters struct, with kType (the JSON "type") and kParameters (name, unit, member),
+//   - flow_stress(law, ep, rate, FlowConditions) -> FlowStress (value and derivatives),
+//   - read_law(JsonReader&, const Law*, room_temperature, melt_temperature) and to_json(law),
+// and one line in FlowStressLaw below. Everything else (the material reader and writer, the
+// radial return, the point driver's fitter and checker, the MPM solver) reaches a law through the
+// functions here, by type name and parameter name. docs/extending.md walks through adding one.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "models/flow_stress/flow_stress.hpp"
+#include "models/flow_stress/johnson_cook.hpp"
+#include "models/flow_stress/preston_tonks_wallace.hpp"
+#include "models/flow_stress/steinberg_cochran_guinan.hpp"
+#include "models/flow_stress/zerilli_armstrong.hpp"
+
+namespace impact {
+
+/// Every flow-stress law, one line each (the first is the default of an empty material).
+using FlowStressLaw = std::variant<JohnsonCookParams, ZerilliArmstrongParams,
+                                   SteinbergCochranGuinanParams, PrestonTonksWallaceParams>;
+
+/// sigma_y(ep, rate, conditions) and its derivatives, whichever law.
+inline FlowStress flow_stress(const FlowStressLaw& law, double plastic_strain,
+                              double plastic_strain_rate, const FlowConditions& c) {
+  return std::visit(
+      [&](const auto& l) { return flow_stress(l, plastic_strain, plastic_strain_rate, c); }, law);
+}
+
+/// The law's JSON "type".
+std::string_view law_type(const FlowStressLaw& law);
+/// Every law's "type", catalogue order.
+std::vector<std::string_view> law_types();
+/// Reads the object at `r` by its "type" (a problem names the known types);
+/// the temperatures are the material's.
+FlowStressLaw read_flow_stress(JsonReader& r, double room_temperature, double melt_temperature);
+/// The object read_flow_stress reads back, "type" first.
+Json to_json(const FlowStressLaw& law);
+
+/// The law's parameter names (kParameters order) and units.
+std::vector<std::string> parameter_names(const FlowStressLaw& law);
+std::string_view parameter_unit(const FlowStressLaw& law, std::string_view name);
+bool has_parameter(const FlowStressLaw& law, std::string_view name);
+/// A parameter by name; std::invalid_argument naming the law's parameters when it has none such.
+double parameter(const FlowStressLaw& law, std::string_view name);
+void set_parameter(FlowStressLaw& law, std::string_view name, double value);
+
+}  // namespace impact
