@@ -60,19 +60,9 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   return t;
 }
 
-std::variant<LinearShape, GimpShape> make_shape(const Scene& scene) {
-  const GridSpec& g = scene.grid;
-  const Vec3 inv_dx = g.spacing().cwiseInverse();
-  if (scene.solver.interpolation == Interpolation::linear) {
-    return LinearShape{g.lower, inv_dx, g.cells};
-  }
-  return GimpShape{g.lower, inv_dx, g.cells, half_widths(scene)};
-}
-
-std::variant<Stencils<LinearShape>, Stencils<GimpShape>> make_stencils(
-    const std::variant<LinearShape, GimpShape>& shape) {
-  if (std::holds_alternative<LinearShape>(shape)) return Stencils<LinearShape>{};
-  return Stencils<GimpShape>{};
+AnyStencils make_stencils(const AnyShape& shape) {
+  return std::visit(
+      [](const auto& s) -> AnyStencils { return Stencils<std::decay_t<decltype(s)>>{}; }, shape);
 }
 
 int thread_count(int requested) {

@@ -131,8 +131,8 @@ class Simulation {
   Scene scene_;
   Particles particles_;
   Grid grid_;
-  std::variant<LinearShape, GimpShape> shape_;
-  std::variant<Stencils<LinearShape>, Stencils<GimpShape>> stencils_;  ///< reused every step
+  AnyShape shape_;
+  AnyStencils stencils_;        ///< reused every step
   ScatterOrder scatter_order_;  ///< rebuilt every step from the stencils
   StressUpdateSettings stress_settings_;
   std::vector<HeatCapacity> heat_capacity_;  ///< per material, for friction heating

@@ -90,8 +90,7 @@ MemoryEstimate estimate_memory(const Scene& scene, std::optional<std::size_t> pa
   if (scene.physics.artificial_viscosity.enabled) per_particle += sizeof(double);
   if (scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle) per_particle += 1;
   if (scene.grid.outflow == Outflow::remove) per_particle += 1;
-  per_particle +=
-      scene.solver.interpolation == Interpolation::gimp ? sizeof(Stencil<3>) : sizeof(Stencil<2>);
+  per_particle += stencil_bytes(scene.solver.interpolation);
   per_particle += 2 * sizeof(int);  // scatter order: index and tile (mpm/step/scatter_order.hpp)
   e.particle_bytes = e.particles * per_particle;
   e.grid_bytes = estimated_grid_bytes(scene);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "mpm/particles/particles.hpp"
+#include "mpm/shape/shape.hpp"
 
 namespace impact::mpm {
 
@@ -195,11 +196,8 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
   // Every solver and output key has a default, so the blocks themselves are optional.
   JsonReader r = root.optional_child("solver", "algorithm choices")
                      .value_or(JsonReader(empty_json_object(), "/solver", root.problems()));
-  s.interpolation =
-      r.choice("interpolation", {"linear", "gimp"},
-               "shape functions: linear (8 nodes) or gimp (27-node uGIMP)", "gimp") == "linear"
-          ? Interpolation::linear
-          : Interpolation::gimp;
+  s.interpolation = r.choice("interpolation", shape_names(),
+                             "shape functions (mpm/shape/shape.hpp)", shape_names().front());
   s.scheme = r.choice("scheme", {"usl", "musl"}, "update scheme", "musl") == "usl" ? Scheme::usl
                                                                                    : Scheme::musl;
   s.f_integration =

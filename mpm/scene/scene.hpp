@@ -15,8 +15,7 @@
 
 namespace impact::mpm {
 
-enum class Interpolation { linear, gimp };  ///< 8-node trilinear or 27-node uGIMP
-enum class Scheme { usl, musl };            ///< update stress last / modified USL
+enum class Scheme { usl, musl };  ///< update stress last / modified USL
 /// symmetric: mirror plane (rigid frictionless wall that also holds in tension); fixed: no-slip;
 /// free: nothing; wall: rigid stationary wall that pushes and never pulls, with Coulomb friction
 /// (grid/wall.cpp).
@@ -58,7 +57,9 @@ struct TimeSpec {
 };
 
 struct SolverSpec {
-  Interpolation interpolation = Interpolation::gimp;
+  /// The shape functions' kName (mpm/shape/shape.hpp): gimp (27-node uGIMP) or linear (8-node
+  /// trilinear).
+  std::string interpolation = "gimp";
   Scheme scheme = Scheme::musl;
   FIntegration f_integration = FIntegration::forward_euler;
   Vec3 gravity = Vec3::Zero();  ///< body force per unit mass [m/s^2]

@@ -2,6 +2,7 @@
 // updated grid velocity, velocity gradient; and MUSL's re-map (Sulsky et al. 1995, Nairn 2003).
 // The weights are the cached start-of-step stencils throughout.
 #include <cmath>
+#include <tuple>
 
 #include "models/thermal/adiabatic_heating.hpp"
 
@@ -170,19 +171,15 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
     P.L[p] = gradient(G, S[p], G.velocity_L, P.v[p], P.field[p] * nn);
 }
 
-template ParticleTotals grid_to_particles<LinearShape>(Particles&, const Grid&,
-                                                       const Stencils<LinearShape>&, double, bool,
-                                                       const std::vector<HeatCapacity>&,
-                                                       std::optional<Failure>&);
-template ParticleTotals grid_to_particles<GimpShape>(Particles&, const Grid&,
-                                                     const Stencils<GimpShape>&, double, bool,
-                                                     const std::vector<HeatCapacity>&,
-                                                     std::optional<Failure>&);
-template void remap_and_gradient<LinearShape>(Particles&, Grid&, const Stencils<LinearShape>&,
-                                              const ScatterOrder&, const ContactSpec*,
-                                              const HaloExchange*);
-template void remap_and_gradient<GimpShape>(Particles&, Grid&, const Stencils<GimpShape>&,
-                                            const ScatterOrder&, const ContactSpec*,
-                                            const HaloExchange*);
+// Both phases for every shape of the catalogue (mpm/shape/shape.hpp): taking their addresses
+// instantiates them here, for advance() to call.
+namespace {
+template <class... Shapes>
+struct Phases {
+  static constexpr auto functions =
+      std::make_tuple(&grid_to_particles<Shapes>..., &remap_and_gradient<Shapes>...);
+};
+[[gnu::used]] const auto kEveryShape = WithEveryShape<Phases>::functions;
+}  // namespace
 
 }  // namespace impact::mpm

@@ -3,6 +3,8 @@
 // time (step/scatter_order.hpp: the same bits on any thread count). With active blocks the
 // scatter also marks the blocks the stencils touch; Grid::activate turns the marks into the
 // step's node list.
+#include <tuple>
+
 #include "mpm/parallel/halo_exchange.hpp"
 #include "mpm/step/parallel.hpp"
 
@@ -72,13 +74,15 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
   G.collect_mass();
 }
 
-template void compute_stencils<LinearShape>(const Particles&, const LinearShape&,
-                                            Stencils<LinearShape>&, int);
-template void compute_stencils<GimpShape>(const Particles&, const GimpShape&, Stencils<GimpShape>&,
-                                          int);
-template void particles_to_grid<LinearShape>(const Particles&, Grid&, const Stencils<LinearShape>&,
-                                             const ScatterOrder&, const HaloExchange*);
-template void particles_to_grid<GimpShape>(const Particles&, Grid&, const Stencils<GimpShape>&,
-                                           const ScatterOrder&, const HaloExchange*);
+// Both phases for every shape of the catalogue (mpm/shape/shape.hpp): taking their addresses
+// instantiates them here, for advance() to call.
+namespace {
+template <class... Shapes>
+struct Phases {
+  static constexpr auto functions =
+      std::make_tuple(&compute_stencils<Shapes>..., &particles_to_grid<Shapes>...);
+};
+[[gnu::used]] const auto kEveryShape = WithEveryShape<Phases>::functions;
+}  // namespace
 
 }  // namespace impact::mpm

@@ -1,10 +1,12 @@
-// The phases of one explicit MPM step, each a free function templated on the shape (LinearShape
-// or GimpShape); advance() in mpm/solver.cpp strings them together on one screen.
+// The phases of one explicit MPM step, each a free function templated on the shape (a shape of
+// the catalogue, mpm/shape/shape.hpp); advance() in mpm/solver.cpp strings them together on one
+// screen.
 // Notation: p particles, I nodes, S_Ip weights, grad S_Ip gradients (at the start-of-step x_p).
 #pragma once
 
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "mpm/contact/contact.hpp"
@@ -39,6 +41,10 @@ struct Failure {
 /// position: computed once per step and reused by P2G, G2P and the MUSL re-map.
 template <class Shape>
 using Stencils = std::vector<Stencil<Shape::N>>;
+template <class... Shapes>
+using StencilsOf = std::variant<Stencils<Shapes>...>;
+/// The stencils of the run's shape.
+using AnyStencils = WithEveryShape<StencilsOf>;
 template <class Shape>
 void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S, int threads);
 

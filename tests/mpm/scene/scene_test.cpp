@@ -58,7 +58,7 @@ BOOST_AUTO_TEST_CASE(absent_keys_take_their_documented_defaults) {
   BOOST_TEST(s.output.interval == s.time.max_time / 100.0);
   BOOST_TEST(s.objects[0].particles_per_cell[0] == 2);
   BOOST_TEST(s.objects[0].temperature == 294.0);
-  BOOST_TEST((s.solver.interpolation == Interpolation::gimp));
+  BOOST_TEST(s.solver.interpolation == "gimp");
   BOOST_TEST((s.solver.scheme == Scheme::musl));
   BOOST_TEST(s.solver.gravity.isZero());
 }
