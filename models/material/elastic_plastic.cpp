@@ -115,7 +115,13 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   t.p_n = trial.p_n;
   t.rho0_n = trial.rho0_n;
   t.rho1 = trial.rho1;
-  t.molten = p_.melting.do_melting && is_melted(s0.temperature, p_.melt_temperature);
+  // T_m at the start-of-step density rho0 / det F_n (the same expression as UpdateBatch's).
+  t.molten = p_.melting.do_melting &&
+             is_melted(s0.temperature,
+                       melting_temperature(p_.melting, p_.melt_temperature,
+                                           p_.melting.curve == MeltingCurve::constant
+                                               ? 1.0
+                                               : 1.0 / lane_algebra::determinant(to_lanes(s0.F))));
   const auto* jc = std::get_if<JohnsonCookParams>(&p_.flow_stress);
   if (jc) t.thermal = johnson_cook_thermal(*jc, s0.temperature);
   t.conditions = {s0.temperature, t.p_n, t.rho1 / p_.density, t.rho1};

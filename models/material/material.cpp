@@ -203,6 +203,11 @@ Json to_json(const Material& material) {
       {"nucleation_std", p.tepla.nucleation_std},
       {"porosity_growth", p.tepla.growth == PorosityGrowth::tension ? "tension" : "dilatation"}};
   cm["melting"] = {{"do_melting", p.melting.do_melting}};
+  if (p.melting.curve == MeltingCurve::steinberg_cochran_guinan) {
+    cm["melting"]["curve"] = "steinberg_cochran_guinan";
+    cm["melting"]["gamma0"] = p.melting.gamma0;
+    cm["melting"]["a"] = p.melting.a;
+  }
   cm["adiabatic_heating"] = {{"enabled", p.heating.enabled},
                              {"taylor_quinney", p.heating.taylor_quinney}};
   static constexpr const char* kChecks[] = {"none", "drucker", "becker", "drucker_becker"};

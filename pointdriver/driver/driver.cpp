@@ -137,7 +137,8 @@ Row make_row(double time, int step, int leg, const PointState& s, const Mat3& Q,
   r.state = s;
   r.stress_path = Q.transpose() * s.stress * Q;
   r.tepla_indicator = tepla_indicator(s.porosity, p.tepla.critical_porosity, s.damage);
-  r.melting_indicator = s.temperature / p.melt_temperature;
+  r.melting_indicator =
+      s.temperature / melting_temperature(p.melting, p.melt_temperature, 1.0 / s.F.determinant());
   return r;
 }
 

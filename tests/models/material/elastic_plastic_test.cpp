@@ -480,4 +480,44 @@ BOOST_AUTO_TEST_CASE(resolved_parameters_read_back_to_the_same_material) {
   BOOST_TEST(first["constitutive_model"]["stability_check"]["drucker_steps"] == "loading");
 }
 
+// The SCG melting curve in the update: a point at 1300 K compressed to rho / rho0 = 1.1 is
+// molten with the constant T_m = 1220 K (no deviator after the step) and solid on the curve
+// (T_m = 1645 K: the deviator of an elastic step remains). The flow stress is Zerilli-Armstrong's
+// (copper constants), which has no melting of its own (Johnson-Cook's strength would vanish at
+// T* >= 1 whatever the curve).
+BOOST_AUTO_TEST_CASE(compression_raises_the_melting_point_on_the_scg_curve) {
+  const auto deviator_after_a_step = [](const Json& melting) {
+    const Json za = {{"type", "zerilli_armstrong"},
+                     {"form", "fcc"},
+                     {"C0", 46.5e6},
+                     {"C2", 890e6},
+                     {"C3", 0.0028},
+                     {"C4", 0.000115},
+                     {"A", nullptr},
+                     {"B", nullptr},
+                     {"n", nullptr},
+                     {"C", nullptr},
+                     {"m", nullptr},
+                     {"reference_strain_rate", nullptr},
+                     {"rate_form", nullptr}};
+    const Json patch = {{"melt_temperature", 1220.0},
+                        {"constitutive_model", {{"melting", melting}, {"flow_stress", za}}}};
+    const Material m = al6061(patch);
+    BOOST_REQUIRE(law_type(m.model.params().flow_stress) == "zerilli_armstrong");
+    PointState s0 = m.model.initial_state(1300.0);
+    s0.F = std::cbrt(1.0 / 1.1) * Mat3::Identity();
+    Mat3 L = Mat3::Zero();
+    L(0, 1) = 1e3;  // a small shear step
+    const double dt = 1e-8;
+    const Mat3 F1 = (Mat3::Identity() + L * dt) * s0.F;
+    PointState s1;
+    const StepReport r = m.model.update(s0, L, F1, dt, s1);
+    BOOST_REQUIRE(r.status == UpdateStatus::ok);
+    return std::abs(deviator(s1.stress)(0, 1));
+  };
+  BOOST_TEST(deviator_after_a_step(Json::object()) == 0.0);
+  BOOST_TEST(deviator_after_a_step(
+                 {{"curve", "steinberg_cochran_guinan"}, {"gamma0", 1.97}, {"a", 1.5}}) > 1e5);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

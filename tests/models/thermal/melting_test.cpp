@@ -44,6 +44,37 @@ BOOST_AUTO_TEST_CASE(a_point_is_melted_from_the_melting_temperature_on) {
   BOOST_TEST(!is_melted(294.0, 925.0));
 }
 
+// Steinberg (1996), UCRL-MA-106439, 6061-T6: T_m0 = 1220 K, Gamma0 = 1.97, a = 1.5. Python:
+// T_m0 exp(2 a (1 - 1/eta)) eta^(2 (Gamma0 - a - 1/3)).
+BOOST_AUTO_TEST_CASE(the_scg_melting_curve_rises_with_compression_as_lindemanns_law) {
+  MeltingParams p;
+  BOOST_TEST(melting_temperature(p, 1220.0, 1.3) == 1220.0);  // constant: the material's T_m
+  p.curve = MeltingCurve::steinberg_cochran_guinan;
+  p.gamma0 = 1.97;
+  p.a = 1.5;
+  const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-12 * b; };
+  BOOST_TEST(close(melting_temperature(p, 1220.0, 1.0), 1220.0));
+  BOOST_TEST(close(melting_temperature(p, 1220.0, 1.1), 1644.817738178481));
+  BOOST_TEST(close(melting_temperature(p, 1220.0, 1.3), 2619.2066066065727));
+  BOOST_TEST(close(melting_temperature(p, 1220.0, 0.95), 1027.3020068637215));
+}
+
+BOOST_AUTO_TEST_CASE(reader_reads_the_scg_curve_and_requires_its_constants) {
+  const Json j = Json::parse(R"({"curve": "steinberg_cochran_guinan", "gamma0": 1.97})");
+  InputProblems problems("mat.json");
+  JsonReader r(j, "/constitutive_model/melting", problems);
+  const MeltingParams p = read_melting(r);
+  BOOST_TEST((p.curve == MeltingCurve::steinberg_cochran_guinan));
+  BOOST_TEST(p.gamma0 == 1.97);
+  BOOST_REQUIRE(problems.count() == 1u);
+  try {
+    problems.throw_if_any();
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("mat.json: /constitutive_model/melting/a: missing "
+                                          "required number") != std::string::npos);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(reader_defaults_to_melting_on) {
   const Json j = Json::object();
   InputProblems problems("mat.json");
