@@ -49,10 +49,23 @@ PointState ElasticPlastic::initial_state(double temperature) const {
 }
 
 double ElasticPlastic::wave_speed(const PointState& s) const {
-  return wave_speed(p_.density / lane_algebra::determinant(to_lanes(s.F)), s.internal_energy);
+  return wave_speed(p_.density / lane_algebra::determinant(to_lanes(s.F)), s.internal_energy,
+                    shear_modulus_of(s));
+}
+
+double ElasticPlastic::shear_modulus_of(const PointState& s) const {
+  if (is_constant(p_.shear_modulus_model)) return p_.shear_modulus;
+  const double J = lane_algebra::determinant(to_lanes(s.F));
+  return shear_modulus(p_.shear_modulus_model, p_.shear_modulus,
+                       {s.temperature, -s.stress.trace() / 3.0, 1.0 / J, p_.density / J,
+                        melting_temperature(p_.melting, p_.melt_temperature, 1.0 / J)});
 }
 
 double ElasticPlastic::wave_speed(double rho, double internal_energy) const {
+  return wave_speed(rho, internal_energy, p_.shear_modulus);
+}
+
+double ElasticPlastic::wave_speed(double rho, double internal_energy, double mu) const {
   double bulk = 0.0;
   if (const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state)) {
     bulk = default_hypo_effective_bulk_modulus(p_.bulk_modulus, p_.shear_modulus, *hypo);
@@ -60,8 +73,8 @@ double ElasticPlastic::wave_speed(double rho, double internal_energy) const {
     const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
     bulk = mie_gruneisen_bulk_modulus(mg, p_.density, rho, internal_energy);
   }
-  if (!(bulk + 4.0 * p_.shear_modulus / 3.0 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-  return longitudinal_wave_speed(bulk, p_.shear_modulus, rho);
+  if (!(bulk + 4.0 * mu / 3.0 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return longitudinal_wave_speed(bulk, mu, rho);
 }
 
 bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat3& F1, double dt,
@@ -107,9 +120,16 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
 
   // 2. Deviatoric trial (eq. 4) at the start-of-step temperature; the radial return (eq. 5-6)
   //    follows, for one point (update) or a batch (UpdateBatch).
-  const TrialLanes<double> trial = trial_lanes<double>(to_lanes(stress_n), to_lanes(t.D_hat),
-                                                       lane_algebra::determinant(to_lanes(s0.F)),
-                                                       J1, p_.density, p_.shear_modulus, dt);
+  //    The shear modulus at the start-of-step temperature, pressure and density.
+  const double J_n = lane_algebra::determinant(to_lanes(s0.F));
+  t.shear_modulus =
+      is_constant(p_.shear_modulus_model)
+          ? p_.shear_modulus
+          : shear_modulus(p_.shear_modulus_model, p_.shear_modulus,
+                          {s0.temperature, -stress_n.trace() / 3.0, 1.0 / J_n, p_.density / J_n,
+                           melting_temperature(p_.melting, p_.melt_temperature, 1.0 / J_n)});
+  const TrialLanes<double> trial = trial_lanes<double>(to_lanes(stress_n), to_lanes(t.D_hat), J_n,
+                                                       J1, p_.density, t.shear_modulus, dt);
   t.s_trial = to_mat3(trial.s_trial);
   t.q_trial = trial.q_trial;
   t.p_n = trial.p_n;
@@ -141,7 +161,7 @@ ReturnResult ElasticPlastic::unbatched_return(const PointState& s0, const Update
   if (const auto* jc = std::get_if<JohnsonCookParams>(&p_.flow_stress)) {
     // Newton's return here is return_values on one double: the arithmetic of a batch's lane.
     const JohnsonCookAtTemperature flow_at{*jc, t.thermal};
-    return radial_return(t.s_trial, p_.shear_modulus, s0.plastic_strain, dt, flow_at,
+    return radial_return(t.s_trial, t.shear_modulus, s0.plastic_strain, dt, flow_at,
                          p_.return_algorithm, eta_norm, p_.return_tolerance,
                          s0.plastic_strain_rate * dt);
   }
@@ -150,7 +170,7 @@ ReturnResult ElasticPlastic::unbatched_return(const PointState& s0, const Update
   const auto flow_at = [&](double ep, double rate) {
     return flow_stress(p_.flow_stress, ep, rate, t.conditions);
   };
-  return radial_return(t.s_trial, p_.shear_modulus, s0.plastic_strain, dt, flow_at,
+  return radial_return(t.s_trial, t.shear_modulus, s0.plastic_strain, dt, flow_at,
                        p_.return_algorithm, eta_norm, p_.return_tolerance,
                        s0.plastic_strain_rate * dt);
 }
@@ -210,17 +230,17 @@ void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
   Mat3 stress_new = to_mat3(with_pressure(to_lanes(r.deviator), p_new));
 
   // 5-6. Damage, porosity, failure and erosion.
-  stress_new = damage_and_failure(s0, t.D_hat, r, dt, rho1, stress_new, s1, report);
+  stress_new =
+      damage_and_failure(s0, t.D_hat, r, dt, rho1, t.shear_modulus, stress_new, s1, report);
 
   // 7. Back to the lab frame.
   s1.stress = to_mat3(lane_algebra::rotate_symmetric(to_lanes(stress_new), to_lanes(t.R_out)));
-  check_end_state(s1, rho1, wave_speed(rho1, s1.internal_energy), report);
+  check_end_state(s1, rho1, wave_speed(rho1, s1.internal_energy, t.shear_modulus), report);
 }
 
 Mat3 ElasticPlastic::damage_and_failure(const PointState& s0, const Mat3& D_hat,
-                                        const ReturnResult& r, double dt, double rho1,
+                                        const ReturnResult& r, double dt, double rho1, double mu,
                                         Mat3 stress_new, PointState& s1, StepReport& report) const {
-  const double mu = p_.shear_modulus;
   const double d_ep = r.delta_plastic_strain;
   const FlowStress& flow = r.flow;
   const Mat3& s_new = r.deviator;

@@ -26,6 +26,7 @@
 #include "models/core/input.hpp"
 #include "models/core/point_state.hpp"
 #include "models/damage/johnson_cook_damage.hpp"
+#include "models/elasticity/shear_modulus.hpp"
 #include "models/eos/default_hypo.hpp"
 #include "models/eos/mie_gruneisen.hpp"
 #include "models/failure/erosion.hpp"
@@ -44,12 +45,13 @@ namespace impact {
 using EquationOfState = std::variant<DefaultHypoParams, MieGruneisenParams>;
 
 struct ElasticPlasticParams {
-  double density = 0.0;             ///< reference density rho0 [kg/m^3]
-  double bulk_modulus = 0.0;        ///< K [Pa]
-  double shear_modulus = 0.0;       ///< mu [Pa]
-  double specific_heat = 0.0;       ///< cp [J/(kg K)]
-  double room_temperature = 294.0;  ///< [K]
-  double melt_temperature = 925.0;  ///< [K]
+  double density = 0.0;                 ///< reference density rho0 [kg/m^3]
+  double bulk_modulus = 0.0;            ///< K [Pa]
+  double shear_modulus = 0.0;           ///< mu0 [Pa]
+  ShearModulusLaw shear_modulus_model;  ///< mu(T, p, rho) from mu0 (constant by default)
+  double specific_heat = 0.0;           ///< cp [J/(kg K)]
+  double room_temperature = 294.0;      ///< [K]
+  double melt_temperature = 925.0;      ///< [K]
   ObjectiveRate objective_rate = ObjectiveRate::green_naghdi;
   ReturnAlgorithm return_algorithm = ReturnAlgorithm::newton;
   ReturnTolerance return_tolerance;
@@ -104,6 +106,7 @@ struct UpdateTrial {
   double rho1 = 0.0;           ///< end-of-step density [kg/m^3]
   JohnsonCookThermal thermal;  ///< Johnson-Cook's temperature factor at the start-of-step T
   FlowConditions conditions;   ///< what any other law reads: T_n, p_n, rho1 / rho0, rho1
+  double shear_modulus = 0.0;  ///< mu at the start-of-step T, p and rho (shear_modulus_model)
   bool molten = false;         ///< no return: the deviator is zero
   /// Newton's return of a Johnson-Cook point, which a batch can do (johnson_cook_return); other
   /// laws take the one-point return with the same Newton iteration.
@@ -143,7 +146,7 @@ class ElasticPlastic {
   void to_lane(const PointState& s0, const UpdateTrial& t, double dt, ReturnValues<V>& r,
                int k) const {
     lane::set(r.q_trial, k, t.q_trial);
-    lane::set(r.three_mu, k, 3.0 * p_.shear_modulus);
+    lane::set(r.three_mu, k, 3.0 * t.shear_modulus);
     lane::set(r.plastic_strain, k, s0.plastic_strain);
     lane::set(r.dt, k, dt);
     // The previous step's plastic rate is a close first guess under steady loading.
@@ -155,15 +158,21 @@ class ElasticPlastic {
   /// Longitudinal wave speed sqrt((K_s + 4 mu/3) / rho) of a state (for the time step); NaN when
   /// K_s + 4 mu/3 <= 0.
   double wave_speed(const PointState& s) const;
-  /// The same at density rho [kg/m^3] and specific internal energy e [J/kg].
+  /// The same at density rho [kg/m^3] and specific internal energy e [J/kg], with mu0 or with
+  /// the shear modulus `mu` [Pa] of the step.
   double wave_speed(double rho, double internal_energy) const;
+  double wave_speed(double rho, double internal_energy, double mu) const;
+  /// mu [Pa] of a state (shear_modulus_model at its T, pressure and density).
+  double shear_modulus_of(const PointState& s) const;
 
   /// Steps 5-6 of finish_update: damage, porosity, failure detection and erosion of the end-of-step
   /// stress in the working frame (returned, eroded where the point has failed). A no-op, returning
   /// stress_new, unless the step was plastic, d_ep > 0, the point was molten or had failed: a batch
   /// skips it then.
+  /// `mu`: the step's shear modulus.
   Mat3 damage_and_failure(const PointState& s0, const Mat3& D_hat, const ReturnResult& r, double dt,
-                          double rho1, Mat3 stress_new, PointState& s1, StepReport& report) const;
+                          double rho1, double mu, Mat3 stress_new, PointState& s1,
+                          StepReport& report) const;
   /// Step 7's checks: a non-finite stress, and a wave speed (`wave`, at rho1) that is not finite.
   void check_end_state(const PointState& s1, double rho1, double wave, StepReport& report) const;
 

@@ -89,6 +89,8 @@ Material read_material(const Json& document, const std::string& file) {
   p.return_tolerance.relative_residual = cm.number_or(
       "return_tolerance", 1e-12, Range::open(0.0, 1e-3), "relative residual of the radial return");
   p.equation_of_state = read_equation_of_state(cm);
+  if (auto modulus = cm.optional_child("shear_modulus", "shear modulus model"))
+    p.shear_modulus_model = read_shear_modulus(*modulus);
 
   JsonReader flow = cm.child("flow_stress", "flow stress model");
   p.flow_stress = read_flow_stress(flow, p.room_temperature, p.melt_temperature);
@@ -177,6 +179,7 @@ Json to_json(const Material& material) {
           {"S_alpha", mg.S_alpha},
           {"energy", mg.energy == MieGruneisenEnergy::evolved ? "evolved" : "cp_temperature"}}}};
   }
+  if (!is_constant(p.shear_modulus_model)) cm["shear_modulus"] = to_json(p.shear_modulus_model);
   cm["flow_stress"] = to_json(p.flow_stress);
   cm["yield_condition"] = {{"type", "von_mises"}};
   if (p.damage) {

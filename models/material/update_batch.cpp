@@ -45,7 +45,8 @@ int UpdateBatch::add(const ElasticPlastic& model, const PointState& s0, const Ma
                                         : 1.0 / lane_algebra::determinant(to_lanes(s0.F))));
   lane.lanes = lane.polar && p.return_algorithm == ReturnAlgorithm::newton && !molten &&
                std::holds_alternative<DefaultHypoParams>(p.equation_of_state) &&
-               std::holds_alternative<JohnsonCookParams>(p.flow_stress);
+               std::holds_alternative<JohnsonCookParams>(p.flow_stress) &&
+               is_constant(p.shear_modulus_model);
   // The rotations' inputs; a lane without them gets the identity and zeros, harmless inputs.
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
@@ -120,6 +121,7 @@ void UpdateBatch::start_one_point_lanes(double dt) {
     if (lane.lanes) {
       lane.started = true;
       lane.trial.q_trial = steps_.trial.q_trial[k];
+      lane.trial.shear_modulus = steps_.material.shear_modulus[k];  // mu0: constant on the lanes
       lane.trial.batched = true;
       continue;
     }
@@ -215,9 +217,9 @@ void UpdateBatch::finish_on_lanes(double dt) {
     s1.temperature = steps_.heating.temperature[k];
     s1.internal_energy = steps_.pressure.internal_energy[k];
     if (r.plastic || r.delta_plastic_strain > 0.0 || s0.failed) {
-      const Mat3 stress = lane.model->damage_and_failure(s0, lane_matrix(corotations_.out.D, k), r,
-                                                         dt, steps_.trial.rho1[k],
-                                                         lane_matrix(steps_.stress, k), s1, report);
+      const Mat3 stress = lane.model->damage_and_failure(
+          s0, lane_matrix(corotations_.out.D, k), r, dt, steps_.trial.rho1[k],
+          steps_.material.shear_modulus[k], lane_matrix(steps_.stress, k), s1, report);
       set_lane(steps_.stress, k, stress);
     }
   }

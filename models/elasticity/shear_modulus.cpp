@@ -1,0 +1,83 @@
+#include "models/elasticity/shear_modulus.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impact {
+
+namespace {
+
+constexpr double kBoltzmann = 1.380649e-23;  // [J/K]
+constexpr double kAvogadro = 6.02214076e23;  // [1/mol]
+
+double modulus(const ConstantShearModulus&, double mu0, const ModulusConditions&) {
+  return mu0;
+}
+double modulus(const VarshniShearModulus& v, double mu0, const ModulusConditions& c) {
+  return mu0 - v.D / std::expm1(v.T0 / c.temperature);
+}
+double modulus(const SteinbergShearModulus& s, double mu0, const ModulusConditions& c) {
+  return mu0 + s.dG_dp * c.pressure / std::cbrt(c.compression) + s.dG_dT * (c.temperature - 300.0);
+}
+double modulus(const NadalLePoacShearModulus& n, double mu0, const ModulusConditions& c) {
+  const double t = c.temperature / c.melt_temperature;
+  if (t >= 1.0 + n.zeta) return 0.0;
+  const double J = 1.0 + std::exp(-(1.0 + 1.0 / n.zeta) / (1.0 + n.zeta / (1.0 - t)));
+  const double atom = n.molar_mass / kAvogadro;
+  return ((mu0 + n.dG_dp * c.pressure / std::cbrt(c.compression)) * (1.0 - t) +
+          c.density * kBoltzmann * c.temperature / (n.C * atom)) /
+         J;
+}
+
+}  // namespace
+
+double shear_modulus(const ShearModulusLaw& law, double mu0, const ModulusConditions& c) {
+  return std::max(std::visit([&](const auto& l) { return modulus(l, mu0, c); }, law), 0.0);
+}
+
+bool is_constant(const ShearModulusLaw& law) {
+  return std::holds_alternative<ConstantShearModulus>(law);
+}
+
+ShearModulusLaw read_shear_modulus(JsonReader& r) {
+  const std::string type =
+      r.choice("type", {"constant", "varshni", "steinberg_cochran_guinan", "nadal_le_poac"},
+               "shear modulus model", "constant");
+  ShearModulusLaw law;
+  if (type == "varshni") {
+    VarshniShearModulus v;
+    v.D = r.quantity("D", Quantity::elastic_modulus, Range::non_negative(), "Varshni D [Pa]");
+    v.T0 = r.quantity("T0", Quantity::temperature, Range::positive(), "Varshni T0 [K]");
+    law = v;
+  } else if (type == "steinberg_cochran_guinan") {
+    SteinbergShearModulus s;
+    s.dG_dp = r.number("dG_dp", Range::closed(0.0, 10.0), "SCG G'_p = dG/dp [-]");
+    s.dG_dT = r.number("dG_dT", Range::closed(-1e9, 0.0), "SCG G'_T = dG/dT [Pa/K]");
+    law = s;
+  } else if (type == "nadal_le_poac") {
+    NadalLePoacShearModulus n;
+    n.dG_dp = r.number("dG_dp", Range::closed(0.0, 10.0), "Nadal-Le Poac dG/dp [-]");
+    n.zeta = r.number("zeta", Range::open(0.0, 1.0), "Nadal-Le Poac zeta [-]");
+    n.C = r.number("C", Range::positive(), "Nadal-Le Poac C [-]");
+    n.molar_mass = r.number("molar_mass", Range::open(1e-3, 1.0), "molar mass [kg/mol]");
+    law = n;
+  }
+  r.reject_unknown_keys();
+  return law;
+}
+
+Json to_json(const ShearModulusLaw& law) {
+  if (const auto* v = std::get_if<VarshniShearModulus>(&law))
+    return {{"type", v->kType}, {"D", v->D}, {"T0", v->T0}};
+  if (const auto* s = std::get_if<SteinbergShearModulus>(&law))
+    return {{"type", s->kType}, {"dG_dp", s->dG_dp}, {"dG_dT", s->dG_dT}};
+  if (const auto* n = std::get_if<NadalLePoacShearModulus>(&law))
+    return {{"type", n->kType},
+            {"dG_dp", n->dG_dp},
+            {"zeta", n->zeta},
+            {"C", n->C},
+            {"molar_mass", n->molar_mass}};
+  return {{"type", ConstantShearModulus::kType}};
+}
+
+}  // namespace impact
