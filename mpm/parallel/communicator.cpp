@@ -73,8 +73,7 @@ Communicator::Communicator([[maybe_unused]] const MpiSession* session) {
 #endif
 }
 
-std::vector<double> Communicator::sum(const std::vector<double>& values) const {
-  if (!mpi_) return values;
+std::vector<double> Communicator::every_ranks(const std::vector<double>& values) const {
   std::vector<double> all;
 #ifdef IMPACT_MPI
   const MpiTimer timer(seconds_);
@@ -82,6 +81,12 @@ std::vector<double> Communicator::sum(const std::vector<double>& values) const {
   all.resize(values.size() * static_cast<std::size_t>(size_));
   MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, MPI_COMM_WORLD);
 #endif
+  return all;
+}
+
+std::vector<double> Communicator::sum(const std::vector<double>& values) const {
+  if (!mpi_) return values;
+  const std::vector<double> all = every_ranks(values);
   std::vector<double> total(values.size(), 0.0);
   for (int r = 0; r < size_; ++r)
     for (std::size_t i = 0; i < values.size(); ++i)
@@ -106,13 +111,7 @@ double Communicator::max(double value) const {
 
 std::vector<double> Communicator::max(const std::vector<double>& values) const {
   if (!mpi_) return values;
-  std::vector<double> all;
-#ifdef IMPACT_MPI
-  const MpiTimer timer(seconds_);
-  const int n = static_cast<int>(values.size());
-  all.resize(values.size() * static_cast<std::size_t>(size_));
-  MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, MPI_COMM_WORLD);
-#endif
+  const std::vector<double> all = every_ranks(values);
   std::vector<double> largest = values;
   for (int r = 0; r < size_; ++r)
     for (std::size_t i = 0; i < values.size(); ++i)

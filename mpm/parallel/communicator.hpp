@@ -69,6 +69,9 @@ class Communicator {
   double seconds_in_mpi() const { return seconds_; }
 
  private:
+  /// Every rank's `values` (all the same length), concatenated in rank order.
+  std::vector<double> every_ranks(const std::vector<double>& values) const;
+
   mutable double seconds_ = 0.0;
   int rank_ = 0;
   int size_ = 1;
