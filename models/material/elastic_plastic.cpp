@@ -53,12 +53,22 @@ double ElasticPlastic::wave_speed(const PointState& s) const {
                     shear_modulus_of(s));
 }
 
+double ElasticPlastic::melting_temperature_of(const PointState& s) const {
+  if (p_.melting.curve == MeltingCurve::constant) return p_.melt_temperature;
+  return melting_temperature(p_.melting, p_.melt_temperature,
+                             1.0 / lane_algebra::determinant(to_lanes(s.F)));
+}
+
+bool ElasticPlastic::molten(const PointState& s) const {
+  return p_.melting.do_melting && is_melted(s.temperature, melting_temperature_of(s));
+}
+
 double ElasticPlastic::shear_modulus_of(const PointState& s) const {
   if (is_constant(p_.shear_modulus_model)) return p_.shear_modulus;
   const double J = lane_algebra::determinant(to_lanes(s.F));
-  return shear_modulus(p_.shear_modulus_model, p_.shear_modulus,
-                       {s.temperature, -s.stress.trace() / 3.0, 1.0 / J, p_.density / J,
-                        melting_temperature(p_.melting, p_.melt_temperature, 1.0 / J)});
+  return shear_modulus(
+      p_.shear_modulus_model, p_.shear_modulus,
+      {s.temperature, -s.stress.trace() / 3.0, 1.0 / J, p_.density / J, melting_temperature_of(s)});
 }
 
 double ElasticPlastic::wave_speed(double rho, double internal_energy) const {
@@ -122,12 +132,7 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   //    follows, for one point (update) or a batch (UpdateBatch).
   //    The shear modulus at the start-of-step temperature, pressure and density.
   const double J_n = lane_algebra::determinant(to_lanes(s0.F));
-  t.shear_modulus =
-      is_constant(p_.shear_modulus_model)
-          ? p_.shear_modulus
-          : shear_modulus(p_.shear_modulus_model, p_.shear_modulus,
-                          {s0.temperature, -stress_n.trace() / 3.0, 1.0 / J_n, p_.density / J_n,
-                           melting_temperature(p_.melting, p_.melt_temperature, 1.0 / J_n)});
+  t.shear_modulus = shear_modulus_of(s0);
   const TrialLanes<double> trial = trial_lanes<double>(to_lanes(stress_n), to_lanes(t.D_hat), J_n,
                                                        J1, p_.density, t.shear_modulus, dt);
   t.s_trial = to_mat3(trial.s_trial);
@@ -135,13 +140,7 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   t.p_n = trial.p_n;
   t.rho0_n = trial.rho0_n;
   t.rho1 = trial.rho1;
-  // T_m at the start-of-step density rho0 / det F_n (the same expression as UpdateBatch's).
-  t.molten = p_.melting.do_melting &&
-             is_melted(s0.temperature,
-                       melting_temperature(p_.melting, p_.melt_temperature,
-                                           p_.melting.curve == MeltingCurve::constant
-                                               ? 1.0
-                                               : 1.0 / lane_algebra::determinant(to_lanes(s0.F))));
+  t.molten = molten(s0);
   const auto* jc = std::get_if<JohnsonCookParams>(&p_.flow_stress);
   if (jc) t.thermal = johnson_cook_thermal(*jc, s0.temperature);
   t.conditions = {s0.temperature, t.p_n, t.rho1 / p_.density, t.rho1};

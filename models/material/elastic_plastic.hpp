@@ -164,6 +164,11 @@ class ElasticPlastic {
   double wave_speed(double rho, double internal_energy, double mu) const;
   /// mu [Pa] of a state (shear_modulus_model at its T, pressure and density).
   double shear_modulus_of(const PointState& s) const;
+  /// T_m [K] of a state (the melting curve at its density rho0 / det F).
+  double melting_temperature_of(const PointState& s) const;
+  /// Whether a state is molten: melting on and T >= T_m of the state (a step starting there has
+  /// no deviatoric strength).
+  bool molten(const PointState& s) const;
 
   /// Steps 5-6 of finish_update: damage, porosity, failure detection and erosion of the end-of-step
   /// stress in the working frame (returned, eroded where the point has failed). A no-op, returning

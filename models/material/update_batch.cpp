@@ -35,15 +35,7 @@ int UpdateBatch::add(const ElasticPlastic& model, const PointState& s0, const Ma
   const ElasticPlasticParams& p = model.params();
   const double J1 = lane_algebra::determinant(to_lanes(F1));
   lane.polar = p.objective_rate == ObjectiveRate::green_naghdi && J1 > 0.0;
-  // As begin_update: T_m at the start-of-step density rho0 / det F_n.
-  const bool molten =
-      p.melting.do_melting &&
-      is_melted(s0.temperature,
-                melting_temperature(p.melting, p.melt_temperature,
-                                    p.melting.curve == MeltingCurve::constant
-                                        ? 1.0
-                                        : 1.0 / lane_algebra::determinant(to_lanes(s0.F))));
-  lane.lanes = lane.polar && p.return_algorithm == ReturnAlgorithm::newton && !molten &&
+  lane.lanes = lane.polar && p.return_algorithm == ReturnAlgorithm::newton && !model.molten(s0) &&
                std::holds_alternative<DefaultHypoParams>(p.equation_of_state) &&
                std::holds_alternative<JohnsonCookParams>(p.flow_stress) &&
                is_constant(p.shear_modulus_model);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -94,11 +93,7 @@ Observables::Observables(const Scene& scene, const Particles& initial, const Com
     layer.push_back({seed_index(initial, p), {initial.x[p](0), initial.x[p](1), initial.x[p](2)}});
   }
   if (ranks()) {
-    std::vector<char> bytes(layer.size() * sizeof(Seed));
-    if (!bytes.empty()) std::memcpy(bytes.data(), layer.data(), bytes.size());
-    const std::vector<char> all = comm_->concatenate(bytes);
-    layer.resize(all.size() / sizeof(Seed));
-    if (!all.empty()) std::memcpy(layer.data(), all.data(), all.size());
+    layer = comm_->concatenate(layer);
     std::sort(layer.begin(), layer.end(), [](const Seed& a, const Seed& b) { return a.id < b.id; });
   }
   std::vector<std::uint64_t> ids;

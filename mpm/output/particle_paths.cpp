@@ -1,7 +1,6 @@
 #include "mpm/output/particle_paths.hpp"
 
 #include <array>
-#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -13,23 +12,6 @@ namespace impact::mpm {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Records as bytes for an all-gather: plain values, doubles and flags without pointers (Eigen's
-// fixed-size matrices and PointState included, as migration.cpp and checkpoint.cpp move them).
-template <class T>
-std::vector<char> as_bytes(const std::vector<T>& v) {
-  static_assert(std::is_standard_layout_v<T>);
-  std::vector<char> b(v.size() * sizeof(T));
-  if (!b.empty()) std::memcpy(b.data(), v.data(), b.size());
-  return b;
-}
-
-template <class T>
-std::vector<T> from_bytes(const std::vector<char>& b) {
-  std::vector<T> v(b.size() / sizeof(T));
-  if (!v.empty()) std::memcpy(static_cast<void*>(v.data()), b.data(), v.size() * sizeof(T));
-  return v;
-}
 
 constexpr std::array<const char*, 9> kTensor{"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"};
 
@@ -65,8 +47,7 @@ ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial, const
     best.push_back(c);
   }
   if (comm_) {
-    const std::vector<char> all = comm_->concatenate(as_bytes(best));
-    const std::vector<Candidate> every = from_bytes<Candidate>(all);
+    const std::vector<Candidate> every = comm_->concatenate(best);
     for (std::size_t i = 0; i < best.size(); ++i) {
       for (std::size_t r = 0; r < every.size() / best.size(); ++r) {
         const Candidate& c = every[r * best.size() + i];
@@ -130,7 +111,7 @@ void ParticlePaths::after_step(const Particles& P, double time, double dt) {
     mine.push_back(piece);
   }
   std::vector<Step> steps(tracks_.size(), Step{time, dt, 0.0, Mat3::Zero(), PointState{}});
-  for (const Piece& piece : from_bytes<Piece>(comm_->concatenate(as_bytes(mine)))) {
+  for (const Piece& piece : comm_->concatenate(mine)) {
     Step& s = steps[piece.track];
     if (piece.temperature) s.start_temperature = piece.step.start_temperature;
     if (piece.rest) {

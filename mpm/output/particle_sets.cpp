@@ -1,20 +1,13 @@
 #include "mpm/output/particle_sets.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 
 namespace impact::mpm {
 
 std::size_t ParticleSets::add(const std::vector<std::uint64_t>& local, const Communicator* comm) {
-  std::vector<std::uint64_t> ids = local;
-  if (comm != nullptr && comm->size() > 1) {
-    std::vector<char> bytes(local.size() * sizeof(std::uint64_t));
-    if (!bytes.empty()) std::memcpy(bytes.data(), local.data(), bytes.size());
-    const std::vector<char> all = comm->concatenate(bytes);
-    ids.resize(all.size() / sizeof(std::uint64_t));
-    if (!all.empty()) std::memcpy(ids.data(), all.data(), all.size());
-  }
+  std::vector<std::uint64_t> ids =
+      comm != nullptr && comm->size() > 1 ? comm->concatenate(local) : local;
   std::sort(ids.begin(), ids.end());
   sets_.push_back(std::move(ids));
   // The union with its owners, rebuilt (sets are added once, at the start).

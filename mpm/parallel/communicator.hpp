@@ -7,7 +7,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace impact::mpm {
@@ -55,6 +57,18 @@ class Communicator {
   std::vector<double> gather_all(double value) const;
   /// Every rank's bytes (any length), concatenated in rank order, on every rank.
   std::vector<char> concatenate(const std::vector<char>& bytes) const;
+  /// The same for records of plain values (numbers, flags, Eigen fixed-size matrices, PointState:
+  /// no pointers), moved as their bytes.
+  template <class T>
+  std::vector<T> concatenate(const std::vector<T>& records) const {
+    static_assert(std::is_standard_layout_v<T>);
+    std::vector<char> bytes(records.size() * sizeof(T));
+    if (!bytes.empty()) std::memcpy(static_cast<void*>(bytes.data()), records.data(), bytes.size());
+    const std::vector<char> all = concatenate(bytes);
+    std::vector<T> out(all.size() / sizeof(T));
+    if (!out.empty()) std::memcpy(static_cast<void*>(out.data()), all.data(), all.size());
+    return out;
+  }
   /// The bytes `text` of rank `from`, on every rank.
   std::string broadcast(const std::string& text, int from) const;
   /// Sends `to_send` to rank `neighbour` and returns what it sent back (both call this with each
