@@ -103,29 +103,40 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   return Failure{fastest, "energy", m.str()};
 }
 
+// Seed points per cell column along x, all objects together.
+std::vector<std::size_t> column_totals(const SeedCounts& counts) {
+  std::vector<std::size_t> columns(counts.empty() ? 0 : counts.front().size(), 0);
+  for (const auto& object : counts)
+    for (std::size_t i = 0; i < columns.size(); ++i) columns[i] += object[i];
+  return columns;
+}
+
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
+    : Simulation(
+          scene, threads, comm != nullptr && comm->size() > 1 ? comm : nullptr,
+          comm != nullptr && comm->size() > 1 ? seed_counts_per_column(scene) : SeedCounts{}) {}
+
+Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm,
+                       const SeedCounts& counts)
     : scene_(scene),
-      // On several ranks each seeds only its slab, below.
-      particles_(comm != nullptr && comm->size() > 1 ? Particles{} : seed_particles(scene)),
+      comm_(comm),
+      // On several ranks every rank counts the seed points per cell column (`counts`), splits
+      // the columns the same way, and seeds and stores only its slab: no rank ever holds the
+      // whole scene or the whole grid.
+      slabs_(comm_ ? SlabDecomposition::balanced(column_totals(counts), comm_->size())
+                   : SlabDecomposition(scene.grid.cells[0])),
+      particles_(comm_ ? seed_columns(scene, slabs_.first_cell(comm_->rank()),
+                                      slabs_.first_cell(comm_->rank() + 1), counts)
+                       : seed_particles(scene)),
       grid_(scene.grid, thread_count(threads), scene.field_count(),
-            scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction),
+            scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction,
+            stored_planes()),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
-      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove),
-      slabs_(scene.grid.cells[0]) {
-  if (comm != nullptr && comm->size() > 1) {
-    // Every rank counts the seed points per cell column, splits the columns the same way, and
-    // seeds only its slab: no rank ever holds the whole scene.
-    comm_ = comm;
-    const std::vector<std::vector<std::size_t>> counts = seed_counts_per_column(scene_);
-    std::vector<std::size_t> columns(std::size_t(scene_.grid.cells[0]), 0);
-    for (const auto& object : counts)
-      for (std::size_t i = 0; i < columns.size(); ++i) columns[i] += object[i];
-    slabs_ = SlabDecomposition::balanced(columns, comm->size());
-    const int r = comm->rank();
-    particles_ = seed_columns(scene_, slabs_.first_cell(r), slabs_.first_cell(r + 1), counts);
+      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove) {
+  if (comm_) {
     own_slab();
     halo_.emplace(*comm_, slabs_);
   }
@@ -299,6 +310,21 @@ const StepTotals& Simulation::step() {
   return last_;
 }
 
+std::optional<NodePlanes> Simulation::stored_planes() const {
+  if (!comm_) return std::nullopt;
+  const int r = comm_->rank();
+  return NodePlanes{slabs_.first_cell(r) - kHaloPlanes, slabs_.first_cell(r + 1) + kHaloPlanes};
+}
+
+void Simulation::rebuild_grid() {
+  Grid next(scene_.grid, grid_.threads(), grid_.fields(), grid_.has_nodal_stress(),
+            stored_planes());
+  next.field_body = grid_.field_body;
+  next.light_mass = grid_.light_mass;
+  grid_ = std::move(next);
+  own_slab();
+}
+
 void Simulation::own_slab() {
   const int r = comm_ ? comm_->rank() : 0;
   grid_.set_owned_planes(r == 0 ? -1 : slabs_.first_cell(r), r + 1 == slabs_.ranks()
@@ -319,7 +345,7 @@ void Simulation::rebalance_if_needed() {
       SlabDecomposition::balanced(column_counts(particles_, scene_.grid, comm_), comm_->size());
   if (next == slabs_) return;  // already as balanced as slabs can be
   slabs_ = std::move(next);
-  own_slab();
+  rebuild_grid();
   migrated_ += migrate(particles_, slabs_, scene_.grid, *comm_).sent;
   ++rebalances_;
 }

@@ -128,7 +128,12 @@ class Simulation {
   void resize_particles(std::size_t n);
 
  private:
+  /// `comm`: null on one rank; `counts`: seed_counts_per_column(scene) on several.
+  Simulation(const Scene& scene, int threads, const Communicator* comm, const SeedCounts& counts);
+
   Scene scene_;
+  const Communicator* comm_ = nullptr;  ///< null on one rank
+  SlabDecomposition slabs_;             ///< before the particles and the grid: both follow it
   Particles particles_;
   Grid grid_;
   AnyShape shape_;
@@ -150,11 +155,16 @@ class Simulation {
   void agree_on_failure(const std::optional<std::string>& message) const;
   /// Sums (and maxima) of a step's totals over the ranks.
   void reduce(StepTotals& t) const;
-  const Communicator* comm_ = nullptr;
-  SlabDecomposition slabs_;
   std::optional<HaloExchange> halo_;
   std::size_t migrated_ = 0;
   long rebalances_ = 0;
+  /// The node planes along x this rank's grid stores: its slab's cells [c0, c1) and the halo
+  /// its particles' stencils, the shared-plane sums and the contact gradients reach,
+  /// [c0 - kHaloPlanes, c1 + kHaloPlanes] (the whole grid on one rank).
+  std::optional<NodePlanes> stored_planes() const;
+  /// Builds this rank's grid for the current slabs (after a re-balance or a restart), keeping
+  /// the settings the constructor gave it; sets the owned planes (own_slab).
+  void rebuild_grid();
   /// This rank's node planes for the ledger (Grid::set_owned_planes) from slabs_.
   void own_slab();
   /// New slabs balanced by the current particle counts when the largest rank holds more than

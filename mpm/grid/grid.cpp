@@ -6,11 +6,14 @@
 
 namespace impact::mpm {
 
-Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
+Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
+           std::optional<NodePlanes> planes)
     : spec_(spec),
       dx_(spec.spacing()),
       inv_dx_(dx_.cwiseInverse()),
-      nx_(spec.cells[0] + 3),
+      first_plane_(planes ? std::max(planes->first, -1) : -1),
+      nx_((planes ? std::min(planes->last, spec.cells[0] + 1) : spec.cells[0] + 1) - first_plane_ +
+          1),
       ny_(spec.cells[1] + 3),
       nz_(spec.cells[2] + 3),
       fields_(std::max(fields, 1)),
@@ -25,6 +28,11 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
   velocity_L.assign(e, Vec3::Zero());
   if (nodal_stress || spec.has_wall_friction()) heat.assign(e, 0.0);
   const int n = node_count();
+  // The stored node range per axis: the faces' layers and rows are visited only where stored.
+  const NodePlanes x = this->planes();
+  const int lowest[3] = {x.first, -1, -1};
+  const int highest[3] = {x.last, spec_.cells[1] + 1, spec_.cells[2] + 1};
+  const auto stored = [&](int axis, int i) { return i >= lowest[axis] && i <= highest[axis]; };
   std::vector<char> mark(n, 0);
   for (int face = 0; face < 6; ++face) {
     constrained_[face] = spec_.faces[face] != FaceCondition::free;
@@ -34,8 +42,9 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
     const int layers[2] = {face % 2 == 0 ? 0 : c[axis], face % 2 == 0 ? -1 : c[axis] + 1};
     const int a = (axis + 1) % 3, b = (axis + 2) % 3;
     for (int layer : layers)
-      for (int u = -1; u <= c[a] + 1; ++u)
-        for (int w = -1; w <= c[b] + 1; ++w) {
+      for (int u = lowest[a]; u <= highest[a]; ++u)
+        for (int w = lowest[b]; w <= highest[b]; ++w) {
+          if (!stored(axis, layer)) continue;
           int ijk[3];
           ijk[axis] = layer;
           ijk[a] = u;
@@ -58,10 +67,12 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress)
       const int layer = face % 2 == 0 ? 0 : c[axis];
       const int ghost = face % 2 == 0 ? -1 : c[axis] + 1;
       const int inner = face % 2 == 0 ? 1 : c[axis] - 1;
+      // A face whose layers this grid does not store is another rank's (x faces only).
+      if (!stored(axis, layer) || !stored(axis, ghost) || !stored(axis, inner)) continue;
       // A wall's face layer is its own condition (apply_walls); its ghost layer is the mirror.
       const bool wall = spec_.faces[face] == FaceCondition::wall;
-      for (int u = -1; u <= c[a] + 1; ++u)
-        for (int w = -1; w <= c[b] + 1; ++w) {
+      for (int u = lowest[a]; u <= highest[a]; ++u)
+        for (int w = lowest[b]; w <= highest[b]; ++w) {
           int ijk[3];
           ijk[a] = u;
           ijk[b] = w;

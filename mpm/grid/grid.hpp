@@ -1,7 +1,8 @@
 // The background grid: cells_d + 1 nodes per axis plus one ghost layer on each side (node index
-// -1 and cells_d + 1), which uGIMP reaches from a particle next to a face. Node data are stored
-// once; the scatters write them race-free by coloured slabs (mpm/step/scatter_order.hpp), in an
-// order that does not depend on the thread count. All per-node arrays are allocated once (no
+// -1 and cells_d + 1), which uGIMP reaches from a particle next to a face; on a rank of a domain
+// decomposition, only the node planes along x of its slab and halo (NodePlanes). Node data are
+// stored once; the scatters write them race-free by coloured slabs (mpm/step/scatter_order.hpp), in
+// an order that does not depend on the thread count. All per-node arrays are allocated once (no
 // allocation in a step).
 // Velocity fields (multi-material contact): every per-node array holds `fields` consecutive
 // copies of the node set; field f of node I is entry f * node_count() + I. With one field (the
@@ -16,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "mpm/scene/scene.hpp"
@@ -61,23 +63,43 @@ struct WallNode {
 /// heat), `projection` on the MUSL re-map (normal contact only).
 enum class WallPass { step, projection };
 
+/// The node planes along x a grid stores, first to last inclusive (node indices, -1 being the
+/// ghost layer): the whole grid [-1, cells_0 + 1] on one rank, a rank's slab and its halo in a
+/// domain decomposition (mpm/parallel/halo_exchange.hpp), so that no rank allocates the whole
+/// grid.
+struct NodePlanes {
+  int first;
+  int last;
+  bool operator==(const NodePlanes&) const = default;
+};
+
 class Grid {
  public:
-  /// `fields` velocity fields; `nodal_stress`: also scatter the stress (friction contact).
-  Grid(const GridSpec& spec, int threads, int fields = 1, bool nodal_stress = false);
+  /// `fields` velocity fields; `nodal_stress`: also scatter the stress (friction contact);
+  /// `planes`: the node planes along x to store (all of them when absent). Node indices stay
+  /// those of the whole grid; a face condition applies where its layer is stored.
+  Grid(const GridSpec& spec, int threads, int fields = 1, bool nodal_stress = false,
+       std::optional<NodePlanes> planes = std::nullopt);
 
   const GridSpec& spec() const { return spec_; }
   const Vec3& lower() const { return spec_.lower; }
   const Vec3& spacing() const { return dx_; }
   const Vec3& inverse_spacing() const { return inv_dx_; }
   const std::array<int, 3>& cells() const { return spec_.cells; }
-  /// Storage index of node (i, j, k), i in [-1, cells_0 + 1] etc.; k runs fastest.
-  int index(int i, int j, int k) const { return ((i + 1) * ny_ + (j + 1)) * nz_ + (k + 1); }
+  /// Storage index of node (i, j, k), i in planes() and j, k in [-1, cells_d + 1]; k runs
+  /// fastest.
+  int index(int i, int j, int k) const {
+    return ((i - first_plane_) * ny_ + (j + 1)) * nz_ + (k + 1);
+  }
   int node_count() const { return nx_ * ny_ * nz_; }
   /// (i, j, k) of a storage index (inverse of index()).
   std::array<int, 3> ijk(int index) const {
-    return {index / (ny_ * nz_) - 1, (index / nz_) % ny_ - 1, index % nz_ - 1};
+    return {index / (ny_ * nz_) + first_plane_, (index / nz_) % ny_ - 1, index % nz_ - 1};
   }
+  /// The node planes along x stored.
+  NodePlanes planes() const { return {first_plane_, first_plane_ + nx_ - 1}; }
+  /// Storage coordinate along x of node plane i (0 for the first stored plane).
+  int storage_x(int i) const { return i - first_plane_; }
   int threads() const { return threads_; }
   int fields() const { return fields_; }
 
@@ -89,7 +111,7 @@ class Grid {
     owned_last_ = last;
   }
   bool owns(int node) const {
-    const int i = node / (ny_ * nz_) - 1;
+    const int i = node / (ny_ * nz_) + first_plane_;
     return i >= owned_first_ && i <= owned_last_;
   }
   /// Entries of every per-node array: fields() * node_count().
@@ -106,9 +128,10 @@ class Grid {
   /// Marks the blocks holding nodes base..base+n-1 per axis (a particle's stencil).
   void mark_stencil(char* marks, const std::array<int, 3>& base, int n) const {
     int lo[3], hi[3];
-    for (int d = 0; d < 3; ++d) {  // storage coordinate = node index + 1 (ghost layer)
-      lo[d] = (base[d] + 1) / kBlock;
-      hi[d] = (base[d] + n) / kBlock;
+    const int first[3] = {first_plane_, -1, -1};  // storage coordinate = node index - first
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = (base[d] - first[d]) / kBlock;
+      hi[d] = (base[d] - first[d] + n - 1) / kBlock;
     }
     for (int a = lo[0]; a <= hi[0]; ++a)
       for (int b = lo[1]; b <= hi[1]; ++b)
@@ -211,6 +234,7 @@ class Grid {
  private:
   GridSpec spec_;
   Vec3 dx_, inv_dx_;
+  int first_plane_;  ///< node index of the first stored plane along x
   int nx_, ny_, nz_;
   int fields_;
   int threads_;

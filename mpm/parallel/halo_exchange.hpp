@@ -15,6 +15,11 @@
 
 namespace impact::mpm {
 
+/// Node planes beyond its slab's cells [c0, c1) that a rank's grid stores on each side: its
+/// particles' uGIMP stencils reach c0 - 1 and c1 + 1, contact copies the plane c0 - 2 (c1 + 2)
+/// from the neighbour, and the mass gradient there reads one plane further (Grid's NodePlanes).
+constexpr int kHaloPlanes = 3;
+
 class HaloExchange {
  public:
   HaloExchange(const Communicator& comm, const SlabDecomposition& slabs)

@@ -72,13 +72,13 @@ Particles seed_particles(const Scene& scene);
 
 /// Seed points per object and grid cell column along x: counts[object][i] is how many of
 /// seed_particles()' points of that object lie in cells i (nothing is stored).
-std::vector<std::vector<std::size_t>> seed_counts_per_column(const Scene& scene);
+using SeedCounts = std::vector<std::vector<std::size_t>>;
+SeedCounts seed_counts_per_column(const Scene& scene);
 
 /// What seed_particles() creates in the cell columns [first, end) only, in the same order, with
 /// the same doubles, and each with its seed index (Particles::id: its index in seed_particles());
 /// `counts`: seed_counts_per_column(scene). One rank's slab, seeded without the rest.
-Particles seed_columns(const Scene& scene, int first, int end,
-                       const std::vector<std::vector<std::size_t>>& counts);
+Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts& counts);
 
 /// The number of seed points of object `object` (what seed_particles() would create) inside the
 /// closed box [lower, upper]: seeds only the cells the box overlaps (scene validation of the

@@ -122,7 +122,7 @@ Particles seed_particles(const Scene& scene) {
   return p;
 }
 
-std::vector<std::vector<std::size_t>> seed_counts_per_column(const Scene& scene) {
+SeedCounts seed_counts_per_column(const Scene& scene) {
   std::vector<std::vector<std::size_t>> counts(scene.objects.size(),
                                                std::vector<std::size_t>(scene.grid.cells[0], 0));
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
@@ -132,8 +132,7 @@ std::vector<std::vector<std::size_t>> seed_counts_per_column(const Scene& scene)
   return counts;
 }
 
-Particles seed_columns(const Scene& scene, int first, int end,
-                       const std::vector<std::vector<std::size_t>>& counts) {
+Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts& counts) {
   Particles p;
   std::size_t n = 0;
   for (const auto& object : counts)

@@ -243,7 +243,7 @@ void Simulation::load(CheckpointReader& in) {
       !std::is_sorted(first_cells.begin(), first_cells.end()))
     in.fail("slab boundaries out of order (corrupt checkpoint)");
   slabs_ = SlabDecomposition(std::move(first_cells));
-  own_slab();
+  if (comm_) rebuild_grid();  // the node planes of the restored slab
   rebalances_ = static_cast<long>(in.value<std::int64_t>());
   for (std::size_t p = 0; p < n; ++p) {
     if (P.material[p] >= scene_.materials.size() || P.object[p] >= scene_.objects.size() ||

@@ -5,13 +5,14 @@ namespace impact::mpm {
 template <int N>
 void order_for_scatter(const std::vector<Stencil<N>>& S, const Grid& G, ScatterOrder& order) {
   constexpr int T = ScatterOrder::kSlab;
-  // Storage coordinates run from 0 (the ghost layer, node -1) to cells + 2.
-  const int slabs = (G.cells()[0] + 3 + T - 1) / T;
+  // Storage coordinates along x run from 0 (the first stored plane: the ghost layer, node -1,
+  // on one rank) to the last stored plane.
+  const int slabs = (G.storage_x(G.planes().last) + 1 + T - 1) / T;
   const int n = static_cast<int>(S.size());
   order.slab_of.resize(n);
   order.start.assign(slabs + 1, 0);
   for (int p = 0; p < n; ++p) {
-    const int s = (S[p].base[0] + 1) / T;
+    const int s = G.storage_x(S[p].base[0]) / T;
     order.slab_of[p] = s;
     ++order.start[s + 1];
   }

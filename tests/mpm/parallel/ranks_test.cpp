@@ -13,7 +13,8 @@
 //   - a rigid block flying in +x through every slab boundary: the particle count and the mass
 //     are unchanged, every particle's position (found by its id) is exact to 1e-12 m, and the
 //     kinetic energy and momentum equal the one-rank run's to 1e-12;
-//   - the same scene on the same rank count twice: the same bits.
+//   - the same scene on the same rank count twice: the same bits;
+//   - each rank's grid stores only its slab's node planes and the halo, also after re-balancing.
 // Without the node-plane sums the shared nodes miss the neighbour's mass and force (energies off
 // by percents within a few steps); without the contact plane beyond them Case 1's contact
 // normals differ at the slab boundaries; without migration the block's particles leave their
@@ -23,6 +24,7 @@
 #include <cmath>
 
 #include "mpm/parallel/communicator.hpp"
+#include "mpm/parallel/halo_exchange.hpp"
 #include "mpm/solver.hpp"
 
 using namespace impact;
@@ -49,6 +51,20 @@ Scene scene_from(const std::string& file, const Json& patch) {
   doc.merge_patch({{"output", {{"snapshots", false}}}});
   doc.merge_patch(patch);
   return read_scene(doc, file);
+}
+
+// Each rank's grid stores its slab's node planes and the halo only (never the whole grid): the
+// planes [c0 - kHaloPlanes, c1 + kHaloPlanes] within [-1, cells + 1], for the current slabs.
+void expect_slab_grid(const Simulation& ranks) {
+  const int r = ranks.rank(), cells = ranks.scene().grid.cells[0];
+  const NodePlanes expected{std::max(ranks.slabs().first_cell(r) - kHaloPlanes, -1),
+                            std::min(ranks.slabs().first_cell(r + 1) + kHaloPlanes, cells + 1)};
+  const NodePlanes stored = ranks.grid().planes();
+  BOOST_TEST(stored.first == expected.first);
+  BOOST_TEST(stored.last == expected.last);
+  const auto& c = ranks.grid().cells();
+  BOOST_TEST(ranks.grid().node_count() ==
+             (expected.last - expected.first + 1) * (c[1] + 3) * (c[2] + 3));
 }
 
 // Steps both runs to the end (or `max_steps`), comparing the ledgers at every step. Energies are
@@ -94,6 +110,7 @@ void compare_with_one_rank(const Scene& scene, double tolerance, long max_steps 
   // velocity field their own tests prescribe) has E = 0 and must then agree exactly.
   BOOST_TEST(d_energy <= tolerance * energy);
   BOOST_TEST(d_momentum <= tolerance * p_scale);
+  expect_slab_grid(ranks);
   BOOST_TEST(closure <= std::max(1e-12 * p_scale, 10.0 * closure_alone));
 }
 
@@ -154,6 +171,7 @@ BOOST_AUTO_TEST_CASE(the_slabs_are_rebalanced_as_the_block_moves) {
                                    << " -> " << ranks.slabs().describe());
   BOOST_TEST(ranks.rebalances() > 0);
   BOOST_TEST(!(ranks.slabs() == first));
+  expect_slab_grid(ranks);  // the grid followed the slabs
   // As balanced as slabs of whole cell columns, at least 4 wide, allow: each column of the block
   // holds n / 8 particles.
   BOOST_TEST(largest <= std::max(1.2 * n / comm.size(), n / 8.0 * SlabDecomposition::kMinCells));
