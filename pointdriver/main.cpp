@@ -4,7 +4,7 @@
 //   pointdriver batch --paths P1.json ... [--materials M.json ...] [--out DIR]
 //   pointdriver convergence [--out DIR]                     accuracy versus cost study
 //   pointdriver plot out.csv --x COL --y COL [--y COL ...] -o fig.png
-//   pointdriver fit FIT.json [--out DIR]                   Johnson-Cook fit through the driver
+//   pointdriver fit FIT.json [--out DIR]                   flow-stress fit through the driver
 //   pointdriver check CHECK.json [--out DIR]               a parameter set against data
 // Exit codes: 0 success, 1 usage error, 2 input error, 3 a step could not be solved or a
 // verification case failed.
@@ -26,7 +26,7 @@ const char* usage =
     "                                            every material on every path in one process\n"
     "  convergence [--out DIR] [--quick]         accuracy versus cost of three paths\n"
     "  plot OUT.csv --x COL --y COL... -o FIG.png   quick figure (python3-matplotlib)\n"
-    "  fit FIT.json [--out DIR]                  fit Johnson-Cook parameters to measured curves\n"
+    "  fit FIT.json [--out DIR]                  fit a flow-stress law to measured curves\n"
     "  check CHECK.json [--out DIR]              check a parameter set against measured curves\n"
     "exit codes: 0 success, 1 usage, 2 input error, 3 unsolved step or failed verification\n";
 

@@ -29,13 +29,24 @@ struct FlowConditions {
   double density = 0.0;        ///< rho [kg/m^3]
 };
 
-/// One named parameter of a law: the JSON key, its unit (SI) and the member it lives in. A law
-/// lists them in `kParameters`; the fitter varies them by name.
+/// The range a fitter searches for a parameter by default [SI]. Empty (lower == upper, the
+/// default): not a strength parameter to fit (a reference rate, a molar mass, a modulus the law
+/// shares with elasticity); a fit configuration may still free it with bounds of its own.
+struct FitBounds {
+  double lower = 0.0;
+  double upper = 0.0;
+  bool empty() const { return !(upper > lower); }
+};
+
+/// One named parameter of a law: the JSON key, its unit (SI), the member it lives in and the
+/// fitter's default bounds. A law lists them in `kParameters`; `pointdriver fit` varies them by
+/// name.
 template <class Law>
 struct LawParameter {
   std::string_view name;
   std::string_view unit;
   double Law::*member;
+  FitBounds fit{};
 };
 
 }  // namespace impact

@@ -77,6 +77,16 @@ std::string_view parameter_unit(const FlowStressLaw& law, std::string_view name)
       law);
 }
 
+FitBounds fit_bounds(const FlowStressLaw& law, std::string_view name) {
+  return std::visit(
+      [&](const auto& l) -> FitBounds {
+        for (const auto& p : std::decay_t<decltype(l)>::kParameters)
+          if (p.name == name) return p.fit;
+        no_such_parameter(law, name);
+      },
+      law);
+}
+
 bool has_parameter(const FlowStressLaw& law, std::string_view name) {
   return std::visit(
       [&](const auto& l) { return member<std::decay_t<decltype(l)>>(name) != nullptr; }, law);

@@ -46,6 +46,8 @@ Json to_json(const FlowStressLaw& law);
 std::vector<std::string> parameter_names(const FlowStressLaw& law);
 std::string_view parameter_unit(const FlowStressLaw& law, std::string_view name);
 bool has_parameter(const FlowStressLaw& law, std::string_view name);
+/// The fitter's default bounds of a parameter (empty: not fitted by default).
+FitBounds fit_bounds(const FlowStressLaw& law, std::string_view name);
 /// A parameter by name; std::invalid_argument naming the law's parameters when it has none such.
 double parameter(const FlowStressLaw& law, std::string_view name);
 void set_parameter(FlowStressLaw& law, std::string_view name, double value);

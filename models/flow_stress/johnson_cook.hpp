@@ -38,11 +38,11 @@ struct JohnsonCookParams {
 
   static constexpr std::string_view kType = "johnson_cook";
   static constexpr LawParameter<JohnsonCookParams> kParameters[] = {
-      {"A", "Pa", &JohnsonCookParams::A},
-      {"B", "Pa", &JohnsonCookParams::B},
-      {"n", "-", &JohnsonCookParams::n},
-      {"C", "-", &JohnsonCookParams::C},
-      {"m", "-", &JohnsonCookParams::m},
+      {"A", "Pa", &JohnsonCookParams::A, {1e6, 5e9}},
+      {"B", "Pa", &JohnsonCookParams::B, {0.0, 5e9}},
+      {"n", "-", &JohnsonCookParams::n, {0.01, 2.0}},
+      {"C", "-", &JohnsonCookParams::C, {0.0, 0.5}},
+      {"m", "-", &JohnsonCookParams::m, {0.05, 10.0}},
       {"reference_strain_rate", "1/s", &JohnsonCookParams::reference_strain_rate}};
 };
 

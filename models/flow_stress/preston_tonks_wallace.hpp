@@ -42,14 +42,14 @@ struct PrestonTonksWallaceParams {
   static constexpr std::string_view kType = "preston_tonks_wallace";
   using P = PrestonTonksWallaceParams;
   static constexpr LawParameter<P> kParameters[] = {
-      {"theta", "-", &P::theta},
-      {"p", "-", &P::p},
-      {"s0", "-", &P::s0},
-      {"s_inf", "-", &P::s_inf},
-      {"kappa", "-", &P::kappa},
-      {"gamma", "-", &P::gamma},
-      {"y0", "-", &P::y0},
-      {"y_inf", "-", &P::y_inf},
+      {"theta", "-", &P::theta, {1e-4, 1.0}},
+      {"p", "-", &P::p, {0.0, 20.0}},
+      {"s0", "-", &P::s0, {1e-5, 0.2}},
+      {"s_inf", "-", &P::s_inf, {1e-6, 0.2}},
+      {"kappa", "-", &P::kappa, {0.01, 2.0}},
+      {"gamma", "-", &P::gamma, {1e-10, 1e-2}},
+      {"y0", "-", &P::y0, {1e-6, 0.2}},
+      {"y_inf", "-", &P::y_inf, {1e-7, 0.2}},
       {"y1", "-", &P::y1},
       {"y2", "-", &P::y2},
       {"beta", "-", &P::beta},

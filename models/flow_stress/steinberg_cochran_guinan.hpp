@@ -42,10 +42,10 @@ struct SteinbergCochranGuinanParams {
 
   static constexpr std::string_view kType = "steinberg_cochran_guinan";
   static constexpr LawParameter<SteinbergCochranGuinanParams> kParameters[] = {
-      {"Y0", "Pa", &SteinbergCochranGuinanParams::Y0},
-      {"Y_max", "Pa", &SteinbergCochranGuinanParams::Y_max},
-      {"beta", "-", &SteinbergCochranGuinanParams::beta},
-      {"n", "-", &SteinbergCochranGuinanParams::n},
+      {"Y0", "Pa", &SteinbergCochranGuinanParams::Y0, {1e6, 5e9}},
+      {"Y_max", "Pa", &SteinbergCochranGuinanParams::Y_max, {1e6, 2e10}},
+      {"beta", "-", &SteinbergCochranGuinanParams::beta, {0.0, 1e4}},
+      {"n", "-", &SteinbergCochranGuinanParams::n, {0.01, 2.0}},
       {"initial_plastic_strain", "-", &SteinbergCochranGuinanParams::initial_plastic_strain},
       {"G0", "Pa", &SteinbergCochranGuinanParams::G0},
       {"dG_dp", "-", &SteinbergCochranGuinanParams::dG_dp},

@@ -26,19 +26,19 @@ struct ZerilliArmstrongParams {
   double C3 = 0.0;                     ///< [1/K]
   double C4 = 0.0;                     ///< [1/K]
   double C5 = 0.0;                     ///< bcc: athermal hardening coefficient [Pa]
-  double n = 0.5;                      ///< bcc: hardening exponent [-]
+  double n = 0.0;                      ///< bcc: hardening exponent [-] (fcc: unused, 0)
   double reference_strain_rate = 1.0;  ///< [1/s]
   double minimum_strain_rate = 1e-6;   ///< [1/s]
 
   static constexpr std::string_view kType = "zerilli_armstrong";
   static constexpr LawParameter<ZerilliArmstrongParams> kParameters[] = {
-      {"C0", "Pa", &ZerilliArmstrongParams::C0},
-      {"C1", "Pa", &ZerilliArmstrongParams::C1},
-      {"C2", "Pa", &ZerilliArmstrongParams::C2},
-      {"C3", "1/K", &ZerilliArmstrongParams::C3},
-      {"C4", "1/K", &ZerilliArmstrongParams::C4},
-      {"C5", "Pa", &ZerilliArmstrongParams::C5},
-      {"n", "-", &ZerilliArmstrongParams::n},
+      {"C0", "Pa", &ZerilliArmstrongParams::C0, {0.0, 5e9}},
+      {"C1", "Pa", &ZerilliArmstrongParams::C1, {0.0, 2e10}},
+      {"C2", "Pa", &ZerilliArmstrongParams::C2, {0.0, 2e10}},
+      {"C3", "1/K", &ZerilliArmstrongParams::C3, {0.0, 0.05}},
+      {"C4", "1/K", &ZerilliArmstrongParams::C4, {0.0, 0.01}},
+      {"C5", "Pa", &ZerilliArmstrongParams::C5, {0.0, 5e9}},
+      {"n", "-", &ZerilliArmstrongParams::n, {0.01, 2.0}},
       {"reference_strain_rate", "1/s", &ZerilliArmstrongParams::reference_strain_rate},
       {"minimum_strain_rate", "1/s", &ZerilliArmstrongParams::minimum_strain_rate}};
 };

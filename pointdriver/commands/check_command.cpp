@@ -50,7 +50,7 @@ int command_check(const std::vector<std::string>& args) {
     for (const auto& e : model.experiments()) {
       for (const auto& w : e.warnings) std::cerr << "pointdriver check: warning: " << w << '\n';
     }
-    const auto curves = model.curves({fit::jc_values(model.base().flow_stress)});
+    const auto curves = model.curves({fit::law_values(model.base().flow_stress)});
     std::vector<fit::CurveErrors> errors;
     for (std::size_t e = 0; e < model.experiments().size(); ++e) {
       std::vector<double> v;

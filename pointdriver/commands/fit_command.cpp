@@ -1,5 +1,5 @@
-// pointdriver fit FIT.json: Johnson-Cook strength parameters from measured curves, through the
-// driver (pointdriver/fit/, docs/fitting.md).
+// pointdriver fit FIT.json: flow-stress parameters (any law, by name) from measured curves, through
+// the driver (pointdriver/fit/, docs/fitting.md).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -19,8 +19,9 @@ namespace fs = std::filesystem;
 
 const char* fit_help =
     "usage: pointdriver fit FIT.json [--out DIR] [--no-figures]\n"
-    "Fits Johnson-Cook parameters to measured curves (docs/fitting.md).\n"
-    "mode \"strength\": staged initial guess (A, B, n; C; m), then GSL multifit_nlinear (LM with\n"
+    "Fits the material's flow-stress law to measured curves (docs/fitting.md).\n"
+    "mode \"strength\": the law's free parameters by name (Johnson-Cook: staged initial guess\n"
+    "A, B, n; C; m; other laws start from the file), then GSL multifit_nlinear (LM with\n"
     "geodesic acceleration) whose residuals are the stress errors of the driver's uniaxial-stress\n"
     "path for each test (elasticity; adiabatic heating at and above adiabatic_above_rate).\n"
     "mode \"damage\": D1..D5 from fracture strains (eq. 7, constant triaxiality).\n"

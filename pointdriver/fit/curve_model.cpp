@@ -7,6 +7,12 @@
 
 namespace impact::pointdriver::fit {
 
+ParameterValues law_values(const FlowStressLaw& law) {
+  ParameterValues v;
+  for (const std::string& name : parameter_names(law)) v.push_back(parameter(law, name));
+  return v;
+}
+
 JcValues jc_values(const FlowStressLaw& law) {
   JcValues v{};
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = parameter(law, jc_names[i]);
@@ -43,11 +49,7 @@ CurveModel::CurveModel(const std::string& material_file, const Json& overrides,
   patch["constitutive_model"]["erosion"] = {{"algorithm", "none"}};
   const Material material = load_material(material_file, patch);
   base_ = material.model.params();
-  if (!std::holds_alternative<JohnsonCookParams>(base_.flow_stress)) {
-    throw InputError({material_file + ": /constitutive_model/flow_stress/type: expected " +
-                      std::string(JohnsonCookParams::kType) + " (pointdriver fit and check fit " +
-                      "the Johnson-Cook law), got " + std::string(law_type(base_.flow_stress))});
-  }
+  names_ = impact::parameter_names(base_.flow_stress);
   for (std::size_t i = 0; i < experiments_.size(); ++i) {
     const Experiment& x = experiments_[i];
     const double ep_max = x.plastic_strain.back();
@@ -81,13 +83,13 @@ double CurveModel::youngs_modulus() const {
   return 9.0 * K * G / (3.0 * K + G);
 }
 
-ElasticPlastic CurveModel::model(const JcValues& v) const {
+ElasticPlastic CurveModel::model(const ParameterValues& v) const {
   ElasticPlasticParams p = base_;
-  for (std::size_t i = 0; i < v.size(); ++i) set_parameter(p.flow_stress, jc_names[i], v[i]);
+  for (std::size_t i = 0; i < v.size(); ++i) set_parameter(p.flow_stress, names_[i], v[i]);
   return ElasticPlastic(p);
 }
 
-std::vector<std::vector<Curve>> CurveModel::curves(const std::vector<JcValues>& sets) const {
+std::vector<std::vector<Curve>> CurveModel::curves(const std::vector<ParameterValues>& sets) const {
   std::vector<ElasticPlastic> models;
   models.reserve(sets.size());
   for (const auto& s : sets) models.push_back(model(s));
@@ -116,7 +118,7 @@ std::vector<std::vector<Curve>> CurveModel::curves(const std::vector<JcValues>& 
 }
 
 std::vector<std::vector<std::vector<double>>> CurveModel::predict(
-    const std::vector<JcValues>& sets) const {
+    const std::vector<ParameterValues>& sets) const {
   const auto grid = curves(sets);
   std::vector<std::vector<std::vector<double>>> out(sets.size());
   for (std::size_t s = 0; s < sets.size(); ++s) {

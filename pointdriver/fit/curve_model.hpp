@@ -4,8 +4,9 @@
 // the computed true stress is read at the data's plastic strains by linear interpolation in
 // eps_p. So the model that is fitted is the model users run.
 //
-// Every parameter set is one ElasticPlastic built from the material with its Johnson-Cook block
-// replaced; N parameter sets x M experiments are run in one run_batch call (threads).
+// Every parameter set is one ElasticPlastic built from the material with its flow-stress law's
+// parameters replaced by name (any law of models/flow_stress/flow_stress_law.hpp); N parameter
+// sets x M experiments are run in one run_batch call (threads).
 #pragma once
 
 #include <array>
@@ -20,11 +21,16 @@
 
 namespace impact::pointdriver::fit {
 
-/// Johnson-Cook strength parameters in the order A [Pa], B [Pa], n, C, m.
+/// Every parameter of a flow-stress law, in parameter_names(law) order
+/// (models/flow_stress/flow_stress_law.hpp).
+using ParameterValues = std::vector<double>;
+ParameterValues law_values(const FlowStressLaw& law);
+
+/// Johnson-Cook strength parameters in the order A [Pa], B [Pa], n, C, m (the staged guess's).
 using JcValues = std::array<double, 5>;
 inline constexpr std::array<const char*, 5> jc_names{"A", "B", "n", "C", "m"};
 
-/// The law's values of jc_names, by name (models/flow_stress/flow_stress_law.hpp).
+/// The law's values of jc_names, by name.
 JcValues jc_values(const FlowStressLaw& law);
 
 struct CurveSettings {
@@ -61,19 +67,23 @@ class CurveModel {
   bool adiabatic(std::size_t experiment) const;
   double youngs_modulus() const;
 
-  /// The material with the given Johnson-Cook values.
-  ElasticPlastic model(const JcValues& values) const;
+  /// The material's law's parameter names (the order of ParameterValues).
+  const std::vector<std::string>& parameter_names() const { return names_; }
+  /// The material with the given values of every parameter of its law.
+  ElasticPlastic model(const ParameterValues& values) const;
 
   /// Curves of every experiment for every parameter set: [set][experiment].
-  std::vector<std::vector<Curve>> curves(const std::vector<JcValues>& sets) const;
+  std::vector<std::vector<Curve>> curves(const std::vector<ParameterValues>& sets) const;
 
   /// The model stress at each experiment's data points: [set][experiment][point] [Pa].
-  std::vector<std::vector<std::vector<double>>> predict(const std::vector<JcValues>& sets) const;
+  std::vector<std::vector<std::vector<double>>> predict(
+      const std::vector<ParameterValues>& sets) const;
 
  private:
   std::vector<Experiment> experiments_;
   CurveSettings settings_;
   ElasticPlasticParams base_;
+  std::vector<std::string> names_;
   std::vector<Path> paths_;
 };
 

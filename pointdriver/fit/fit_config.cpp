@@ -28,9 +28,7 @@ bool wildcard(const std::string& p, const std::string& s, std::size_t i = 0, std
   return j == s.size();
 }
 
-/// Default bounds of the strength parameters (A, B [Pa], n, C, m) and of the damage ones.
-constexpr std::array<std::array<double, 2>, 5> kStrengthBounds{
-    {{1e6, 5e9}, {0.0, 5e9}, {0.01, 2.0}, {0.0, 0.5}, {0.05, 10.0}}};
+/// Default bounds of the damage parameters (the strength ones are the law's: FitBounds).
 constexpr std::array<std::array<double, 2>, 5> kDamageBounds{
     {{-3.0, 3.0}, {-10.0, 10.0}, {-10.0, 10.0}, {-1.0, 1.0}, {-10.0, 10.0}}};
 constexpr std::array<const char*, 5> kDamageNames{"D1", "D2", "D3", "D4", "D5"};
@@ -140,9 +138,13 @@ constexpr std::array<const char*, 2> kTemperatureShortcuts = {"room_temperature"
 
 /// The material the configuration starts from, with its overrides: read now, so that a missing
 /// or bad material is reported against the configuration's key path before anything runs.
-std::vector<std::string> check_material(InputProblems& problems, const std::string& name,
-                                        const std::string& resolved, const Json& overrides,
-                                        const Json& shortcuts) {
+struct CheckedMaterial {
+  std::vector<std::string> warnings;
+  std::optional<FlowStressLaw> law;  ///< when the material loaded
+};
+CheckedMaterial check_material(InputProblems& problems, const std::string& name,
+                               const std::string& resolved, const Json& overrides,
+                               const Json& shortcuts) {
   std::error_code ec;
   if (name.empty()) return {};
   if (!fs::is_regular_file(resolved, ec)) {
@@ -150,7 +152,8 @@ std::vector<std::string> check_material(InputProblems& problems, const std::stri
     return {};
   }
   try {
-    std::vector<std::string> warnings = load_material(resolved, overrides).warnings;
+    const Material material = load_material(resolved, overrides);
+    std::vector<std::string> warnings = material.warnings;
     // A temperature shortcut (room_temperature, melt_temperature) is the material's value now:
     // its units warning was given at the configuration's own key, so the material's is a repeat.
     std::erase_if(warnings, [&](const std::string& w) {
@@ -160,7 +163,7 @@ std::vector<std::string> check_material(InputProblems& problems, const std::stri
                                   w.find(": /" + std::string(key) + ": ") != std::string::npos;
                          });
     });
-    return warnings;
+    return {warnings, material.model.params().flow_stress};
   } catch (const InputError& e) {
     problems.add_nested("/material", "in material ", e);
   }
@@ -168,6 +171,12 @@ std::vector<std::string> check_material(InputProblems& problems, const std::stri
 }
 
 }  // namespace
+
+const ParameterSpec* find_parameter(const FitConfig& config, std::string_view name) {
+  for (const ParameterSpec& s : config.parameters)
+    if (s.name == name) return &s;
+  return nullptr;
+}
 
 std::string resolve_file(const std::string& name, const std::string& relative_to) {
   const fs::path p(name);
@@ -222,38 +231,51 @@ FitConfig read_fit_config(const Json& doc, const std::string& file) {
   c.room_tolerance = r.number_or("room_temperature_tolerance", 10.0, Range::positive(),
                                  "tests within this of room temperature are 'room' [K]");
   const bool damage = c.mode == "damage";
-  const auto& names = damage ? kDamageNames : jc_names;
-  const auto& bounds = damage ? kDamageBounds : kStrengthBounds;
-  for (std::size_t i = 0; i < 5; ++i) {
-    c.parameters[i].lower = bounds[i][0];
-    c.parameters[i].upper = bounds[i][1];
+  // The material now: strength mode fits its law's parameters, by name.
+  const CheckedMaterial material =
+      check_material(problems, material_name, c.material_file, c.overrides, doc);
+  if (damage) {
+    for (std::size_t i = 0; i < 5; ++i)
+      c.parameters.push_back(
+          {kDamageNames[i], "-", true, std::nullopt, kDamageBounds[i][0], kDamageBounds[i][1]});
+  } else if (material.law) {
+    const FlowStressLaw& law = *material.law;
+    for (const std::string& name : parameter_names(law)) {
+      const FitBounds b = fit_bounds(law, name);
+      c.parameters.push_back({name, std::string(parameter_unit(law, name)),
+                              !b.empty() && parameter(law, name) != 0.0, std::nullopt, b.lower,
+                              b.upper});
+    }
   }
   if (auto ps = r.optional_child("parameters", "free/fixed parameters, start values, bounds")) {
-    for (std::size_t i = 0; i < 5; ++i) {
-      auto q = ps->optional_child(names[i], std::string("parameter ") + names[i]);
+    for (ParameterSpec& s : c.parameters) {
+      auto q = ps->optional_child(s.name, "parameter " + s.name);
       if (!q) continue;
-      ParameterSpec& s = c.parameters[i];
-      s.free = q->boolean_or("free", true, "fitted (true) or held at its start value (false)");
+      s.free = q->boolean_or("free", s.free, "fitted (true) or held at its start value (false)");
       if (q->has("start")) s.start = q->number("start", Range::any(), "start value (SI)");
       const double inf = std::numeric_limits<double>::infinity();
       const Range finite{-inf, inf, true, true};  // bounds enter the logistic transform
       const bool has_lower = q->has("lower"), has_upper = q->has("upper");
       s.lower = q->number_or("lower", s.lower, finite, "lower bound (SI)");
       s.upper = q->number_or("upper", s.upper, finite, "upper bound (SI)");
-      if (!damage && i < 2) {  // A and B are stresses [Pa]: a value in MPa is warned about
+      if (s.unit == "Pa") {  // a stress given in MPa is warned about
         if (s.start) problems.check_units(q->key_path("start"), Quantity::stress, *s.start);
         if (has_lower) problems.check_units(q->key_path("lower"), Quantity::stress, s.lower);
         if (has_upper) problems.check_units(q->key_path("upper"), Quantity::stress, s.upper);
       }
       const bool bounds_ok = std::isfinite(s.lower) && std::isfinite(s.upper);
-      if (bounds_ok && !(s.lower < s.upper))
-        problems.add(q->key_path("upper"), "upper bound must exceed the lower bound");
+      if (bounds_ok && s.free && !(s.lower < s.upper))
+        problems.add(q->key_path(has_lower || has_upper ? "upper" : "lower"),
+                     has_lower || has_upper
+                         ? "upper bound must exceed the lower bound"
+                         : "a free parameter with no default range: give \"lower\" and \"upper\"");
       else if (bounds_ok && s.start && std::isfinite(*s.start) && s.free &&
                !(s.lower < *s.start && *s.start < s.upper))
         problems.add(q->key_path("start"), "start value must lie strictly inside the bounds");
       q->reject_unknown_keys();
     }
-    ps->reject_unknown_keys();
+    // Not one of the law's parameters: the reader names the ones it has.
+    if (damage || material.law) ps->reject_unknown_keys();
   }
   if (auto s = r.optional_child("solver", "least-squares settings")) {
     c.solver.max_iterations = clamped_int(s->number_or("max_iterations", c.solver.max_iterations,
@@ -273,8 +295,7 @@ FitConfig read_fit_config(const Json& doc, const std::string& file) {
     o->reject_unknown_keys();
   }
   r.reject_unknown_keys();
-  problems.warn_nested("/material", "in material ",
-                       check_material(problems, material_name, c.material_file, c.overrides, doc));
+  problems.warn_nested("/material", "in material ", material.warnings);
   problems.throw_if_any();
   c.warnings = problems.warnings();
   if (c.output_material.empty())
@@ -323,8 +344,9 @@ CheckConfig read_check_config(const Json& doc, const std::string& file) {
     o->reject_unknown_keys();
   }
   r.reject_unknown_keys();
-  problems.warn_nested("/material", "in material ",
-                       check_material(problems, material_name, c.material_file, c.overrides, doc));
+  problems.warn_nested(
+      "/material", "in material ",
+      check_material(problems, material_name, c.material_file, c.overrides, doc).warnings);
   problems.throw_if_any();
   c.warnings = problems.warnings();
   return c;

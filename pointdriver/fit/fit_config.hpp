@@ -22,7 +22,14 @@ struct DataEntry {
   double weight = 1.0;
 };
 
+/// One parameter the fit may vary: in strength mode every parameter of the material's law
+/// (models/flow_stress/flow_stress_law.hpp, in its order) with the law's default bounds, free by
+/// default when the law gives bounds and the material's value is not 0 (a term the material
+/// switches off stays off); in damage mode D1..D5. The configuration's "parameters" block
+/// overrides any of it.
 struct ParameterSpec {
+  std::string name;
+  std::string unit = "-";  ///< SI
   bool free = true;
   std::optional<double> start;  ///< given start value (else staged guess or the material's)
   double lower = 0.0;
@@ -35,9 +42,9 @@ struct FitConfig {
   std::string material_file;        ///< resolved
   Json overrides = Json::object();  ///< merge patch over the material (includes the keys below)
   std::vector<DataEntry> data;
-  std::array<ParameterSpec, 5> parameters;  ///< A, B, n, C, m (strength); D1..D5 (damage)
-  std::string initial_guess = "staged";     ///< staged | start
-  double room_tolerance = 10.0;             ///< [K] for the staged guess
+  std::vector<ParameterSpec> parameters;  ///< the law's (strength); D1..D5 (damage)
+  std::string initial_guess = "staged";   ///< staged | start
+  double room_tolerance = 10.0;           ///< [K] for the staged guess
   CurveSettings curves;
   LeastSquaresOptions solver;
   std::string output_directory = "fit";
@@ -65,6 +72,9 @@ struct CheckConfig {
   bool figures = true;
   std::vector<std::string> warnings;  ///< "file: /key/path: why", the material's included
 };
+
+/// The spec of parameter `name`; null when the configuration has none such.
+const ParameterSpec* find_parameter(const FitConfig& config, std::string_view name);
 
 FitConfig read_fit_config(const std::string& file);
 FitConfig read_fit_config(const Json& document, const std::string& file);

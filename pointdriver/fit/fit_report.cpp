@@ -25,12 +25,16 @@ std::string num(double v, int precision = 4) {
   return o.str();
 }
 
-/// A parameter in a readable unit: A and B in MPa.
-double shown(std::size_t i, double v) {
-  return i < 2 ? v / 1e6 : v;
+/// A parameter in a readable unit: stresses in MPa.
+double shown(const std::string& unit, double v) {
+  return unit == "Pa" ? v / 1e6 : v;
 }
-const char* unit(std::size_t i) {
-  return i < 2 ? "MPa" : "-";
+std::string shown_unit(const std::string& unit) {
+  return unit == "Pa" ? "MPa" : unit;
+}
+/// The Johnson-Cook parameter k (jc_names) of a staged stage, shown.
+double shown_jc(std::size_t k, double v) {
+  return k < 2 ? v / 1e6 : v;
 }
 
 }  // namespace
@@ -56,16 +60,22 @@ void print_errors(std::ostream& out, const std::vector<CurveErrors>& errors) {
 }
 
 void print_fit_report(std::ostream& out, const FitConfig& config, const StrengthFit& fit) {
-  out << "Johnson-Cook strength fit: " << fit.experiments.size() << " curves, material "
-      << config.material_file << "\n\nStaged initial guess:\n";
-  for (const auto& s : fit.staged.stages) {
-    out << "  stage " << s.name << ": " << s.curves << " curves, " << s.points << " points, RMS "
-        << num(s.rms / 1e6) << " MPa";
-    out << "  ->";
-    for (std::size_t i = 0; i < 5; ++i)
-      out << ' ' << jc_names[i] << '=' << num(shown(i, s.values[i]));
-    out << '\n';
-    if (!s.note.empty()) out << "    " << s.note << '\n';
+  out << fit.law << " strength fit: " << fit.experiments.size() << " curves, material "
+      << config.material_file << "\n\n";
+  if (fit.staged_run) {
+    out << "Staged initial guess:\n";
+    for (const auto& s : fit.staged.stages) {
+      out << "  stage " << s.name << ": " << s.curves << " curves, " << s.points << " points, RMS "
+          << num(s.rms / 1e6) << " MPa";
+      out << "  ->";
+      for (std::size_t k = 0; k < 5; ++k)
+        out << ' ' << jc_names[k] << '=' << num(shown_jc(k, s.values[k]));
+      out << '\n';
+      if (!s.note.empty()) out << "    " << s.note << '\n';
+    }
+  } else {
+    out << "Start: the configuration's start values, else the material's (the staged guess is "
+           "Johnson-Cook's)\n";
   }
   out << "\nGlobal refinement (GSL multifit_nlinear, LM with geodesic acceleration, through the "
          "driver):\n  "
@@ -73,27 +83,37 @@ void print_fit_report(std::ostream& out, const FitConfig& config, const Strength
       << " parameter sets run (" << fit.lsq.batch_calls << " batches), "
       << num(fit.lsq.wall_time, 3) << " s; " << fit.lsq.stop_reason << "; residual s.d. "
       << num(std::sqrt(fit.lsq.variance)) << " MPa\n\n";
-  out << std::left << std::setw(5) << "par" << std::setw(6) << "unit" << std::right << std::setw(12)
-      << "material" << std::setw(12) << "staged" << std::setw(12) << "start" << std::setw(12)
-      << "fitted" << std::setw(12) << "std err" << std::setw(9) << "rel %"
+  // The free parameters, then the fixed ones (as used).
+  std::vector<std::size_t> free, fixed;
+  for (std::size_t i = 0; i < fit.parameters.size(); ++i)
+    (fit.parameters[i].free ? free : fixed).push_back(i);
+  out << std::left << std::setw(22) << "par" << std::setw(8) << "unit" << std::right
+      << std::setw(12) << "material" << std::setw(12) << "start" << std::setw(12) << "fitted"
+      << std::setw(12) << "std err" << std::setw(9) << "rel %"
       << "  status [bounds]\n";
-  for (std::size_t i = 0; i < 5; ++i) {
-    const Parameter& p = fit.parameters[i];
-    out << std::left << std::setw(5) << jc_names[i] << std::setw(6) << unit(i) << std::right
-        << std::setw(12) << num(shown(i, fit.material_values[i]), 5) << std::setw(12)
-        << num(shown(i, fit.staged.values[i]), 5) << std::setw(12) << num(shown(i, fit.start[i]), 5)
-        << std::setw(12) << num(shown(i, fit.fitted[i]), 6) << std::setw(12)
-        << num(shown(i, fit.lsq.std_errors[i]), 3) << std::setw(9)
-        << num(100 * fit.lsq.std_errors[i] / std::abs(fit.fitted[i]), 3) << "  "
-        << (p.free ? "free" : "fixed") << " [" << num(shown(i, p.lower)) << ", "
-        << num(shown(i, p.upper)) << "]\n";
+  for (const std::vector<std::size_t>* group : {&free, &fixed}) {
+    for (const std::size_t i : *group) {
+      const Parameter& p = fit.parameters[i];
+      const std::string& u = fit.units[i];
+      out << std::left << std::setw(22) << p.name << std::setw(8) << shown_unit(u) << std::right
+          << std::setw(12) << num(shown(u, fit.material_values[i]), 5) << std::setw(12)
+          << num(shown(u, fit.start[i]), 5) << std::setw(12) << num(shown(u, fit.fitted[i]), 6);
+      if (p.free) {
+        out << std::setw(12) << num(shown(u, fit.lsq.std_errors[i]), 3) << std::setw(9)
+            << num(100 * fit.lsq.std_errors[i] / std::abs(fit.fitted[i]), 3) << "  free ["
+            << num(shown(u, p.lower)) << ", " << num(shown(u, p.upper)) << "]\n";
+      } else {
+        out << std::setw(12) << "" << std::setw(9) << ""
+            << "  fixed\n";
+      }
+    }
   }
-  out << "\nCorrelation matrix (free parameters; from J at the optimum):\n     ";
-  for (std::size_t j = 0; j < 5; ++j) out << std::setw(8) << jc_names[j];
+  out << "\nCorrelation matrix (free parameters; from J at the optimum):\n" << std::setw(22) << "";
+  for (const std::size_t j : free) out << std::setw(8) << fit.parameters[j].name.substr(0, 7);
   out << '\n';
-  for (std::size_t i = 0; i < 5; ++i) {
-    out << std::left << std::setw(5) << jc_names[i] << std::right;
-    for (std::size_t j = 0; j < 5; ++j)
+  for (const std::size_t i : free) {
+    out << std::left << std::setw(22) << fit.parameters[i].name << std::right;
+    for (const std::size_t j : free)
       out << std::setw(8) << std::fixed << std::setprecision(3)
           << fit.lsq.correlation(static_cast<long>(i), static_cast<long>(j));
     out << '\n';
@@ -140,10 +160,11 @@ Json fit_report_json(const FitConfig& config, const StrengthFit& fit) {
   j["material"] = config.material_file;
   j["residual"] =
       "vertical stress error at the data's plastic strains, sqrt(weight) (model - data)";
+  j["law"] = fit.law;
   Json stages = Json::array();
   for (const auto& s : fit.staged.stages) {
     Json v;
-    for (std::size_t i = 0; i < 5; ++i) v[jc_names[i]] = s.values[i];
+    for (std::size_t k = 0; k < 5; ++k) v[jc_names[k]] = s.values[k];
     stages.push_back({{"stage", s.name},
                       {"method", s.method},
                       {"curves", s.curves},
@@ -154,25 +175,32 @@ Json fit_report_json(const FitConfig& config, const StrengthFit& fit) {
   }
   j["staged_guess"] = stages;
   Json params = Json::object();
-  for (std::size_t i = 0; i < 5; ++i) {
+  std::vector<std::string> order;
+  for (std::size_t i = 0; i < fit.parameters.size(); ++i) {
     const Parameter& p = fit.parameters[i];
-    params[jc_names[i]] = {{"material", fit.material_values[i]},
-                           {"staged", fit.staged.values[i]},
-                           {"start", fit.start[i]},
-                           {"fitted", fit.fitted[i]},
-                           {"std_error", fit.lsq.std_errors[i]},
-                           {"free", p.free},
-                           {"lower", p.lower},
-                           {"upper", p.upper}};
+    order.push_back(p.name);
+    params[p.name] = {{"unit", fit.units[i]},
+                      {"material", fit.material_values[i]},
+                      {"start", fit.start[i]},
+                      {"fitted", fit.fitted[i]},
+                      {"std_error", fit.lsq.std_errors[i]},
+                      {"free", p.free},
+                      {"lower", p.lower},
+                      {"upper", p.upper}};
+    if (fit.staged_run) {
+      const auto k = std::find(jc_names.begin(), jc_names.end(), p.name) - jc_names.begin();
+      if (k < 5) params[p.name]["staged"] = fit.staged.values[std::size_t(k)];
+    }
   }
   j["parameters"] = params;
   Json corr = Json::array();
-  for (long i = 0; i < 5; ++i) {
+  const long np = static_cast<long>(fit.parameters.size());
+  for (long i = 0; i < np; ++i) {
     Json row = Json::array();
-    for (long k = 0; k < 5; ++k) row.push_back(fit.lsq.correlation(i, k));
+    for (long k = 0; k < np; ++k) row.push_back(fit.lsq.correlation(i, k));
     corr.push_back(row);
   }
-  j["correlation"] = {{"order", jc_names}, {"matrix", corr}};
+  j["correlation"] = {{"order", order}, {"matrix", corr}};
   j["solver"] = {{"iterations", fit.lsq.iterations},
                  {"parameter_sets_run", fit.lsq.residual_evaluations},
                  {"batches", fit.lsq.batch_calls},
@@ -200,19 +228,25 @@ Json fitted_material(const FitConfig& config, const StrengthFit& fit) {
   // The configuration's overrides (reference rate, temperatures, chi, ...) were part of the fitted
   // model, so they go into the fitted material too (the fit's own erosion switch does not).
   doc.merge_patch(config.overrides);
-  for (std::size_t i = 0; i < 5; ++i)
-    doc["constitutive_model"]["flow_stress"][jc_names[i]] = fit.fitted[i];
+  std::string fitted_names;
+  for (std::size_t i = 0; i < fit.parameters.size(); ++i) {
+    // The fitted ones, and a fixed one the configuration set to another value than the file's.
+    if (!fit.parameters[i].free && fit.fitted[i] == fit.material_values[i]) continue;
+    doc["constitutive_model"]["flow_stress"][fit.parameters[i].name] = fit.fitted[i];
+    if (fit.parameters[i].free)
+      fitted_names += (fitted_names.empty() ? "" : ", ") + fit.parameters[i].name;
+  }
   if (!doc.contains("sources") || !doc["sources"].is_object()) doc["sources"] = Json::object();
   std::ostringstream note;
-  note << "Johnson-Cook A, B, n, C, m fitted by `pointdriver fit " << config.file << "` to "
+  note << fit.law << " " << fitted_names << " fitted by `pointdriver fit " << config.file << "` to "
        << fit.experiments.size() << " curves (overall RMS " << num(fit.overall_fitted.rms / 1e6)
        << " MPa; the input set gave " << num(fit.overall_material.rms / 1e6)
        << " MPa); the rest of the file is " << config.material_file;
   doc["sources"]["flow_stress"] = note.str();
-  doc["description"] =
-      "Johnson-Cook strength fitted by pointdriver fit (sources.flow_stress); "
-      "everything else from " +
-      config.material_file + ": " + doc.value("description", std::string());
+  doc["description"] = fit.law +
+                       " strength fitted by pointdriver fit (sources.flow_stress); "
+                       "everything else from " +
+                       config.material_file + ": " + doc.value("description", std::string());
   read_material(doc, "fitted material");  // throws if the result is not a valid material
   return doc;
 }

@@ -65,40 +65,59 @@ StrengthFit fit_strength(const CurveModel& model, const FitConfig& config) {
   out.experiments = model.experiments();
   for (std::size_t i = 0; i < out.experiments.size(); ++i)
     out.adiabatic.push_back(model.adiabatic(i));
-  out.material_values = jc_values(model.base().flow_stress);
+  const FlowStressLaw& law = model.base().flow_stress;
+  const std::vector<std::string>& names = model.parameter_names();
+  out.law = std::string(law_type(law));
+  out.material_values = law_values(law);
 
-  // Start: given values, else the material's; the staged guess replaces the free ones.
-  JcValues start = out.material_values;
-  std::array<bool, 5> free{};
-  for (std::size_t i = 0; i < 5; ++i) {
-    free[i] = config.parameters[i].free;
-    if (config.parameters[i].start) start[i] = *config.parameters[i].start;
+  // Start: given values, else the material's; a parameter the configuration does not list (a
+  // forward model built by a caller) keeps the law's defaults.
+  ParameterValues start = out.material_values;
+  out.parameters.resize(names.size());
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    Parameter& p = out.parameters[i];
+    const FitBounds b = fit_bounds(law, names[i]);
+    p = {names[i], start[i], !b.empty() && start[i] != 0.0, b.lower, b.upper};
+    if (const ParameterSpec* s = find_parameter(config, names[i])) {
+      p = {names[i], s->start.value_or(start[i]), s->free, s->lower, s->upper};
+    }
+    start[i] = p.value;
+    out.units.emplace_back(parameter_unit(law, names[i]));
   }
-  out.staged = staged_guess(out.experiments, out.adiabatic, model.base(), start, free,
-                            config.room_tolerance);
-  if (config.initial_guess == "staged") {
-    for (std::size_t i = 0; i < 5; ++i)
-      if (free[i] && !config.parameters[i].start) start[i] = out.staged.values[i];
+  // Johnson-Cook: the staged guess replaces the free values not given a start.
+  if (std::holds_alternative<JohnsonCookParams>(law) && config.initial_guess == "staged") {
+    JcValues jc{};
+    std::array<bool, 5> free{};
+    std::array<std::size_t, 5> at{};
+    for (std::size_t k = 0; k < 5; ++k) {
+      at[k] = static_cast<std::size_t>(std::find(names.begin(), names.end(), jc_names[k]) -
+                                       names.begin());
+      jc[k] = start[at[k]];
+      free[k] = out.parameters[at[k]].free;
+    }
+    out.staged =
+        staged_guess(out.experiments, out.adiabatic, model.base(), jc, free, config.room_tolerance);
+    out.staged_run = true;
+    for (std::size_t k = 0; k < 5; ++k) {
+      const ParameterSpec* s = find_parameter(config, jc_names[k]);
+      if (free[k] && !(s && s->start)) start[at[k]] = out.staged.values[k];
+    }
   }
-  std::vector<Parameter> parameters;
-  for (std::size_t i = 0; i < 5; ++i) {
-    Parameter p{jc_names[i], start[i], free[i], config.parameters[i].lower,
-                config.parameters[i].upper};
-    // A staged value on or outside a bound is moved just inside it.
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    Parameter& p = out.parameters[i];
+    p.value = start[i];
+    // A start on or outside a bound is moved just inside it.
     const double margin = 1e-3 * (p.upper - p.lower);
     if (p.free) p.value = std::clamp(p.value, p.lower + margin, p.upper - margin);
     start[i] = p.value;
-    parameters.push_back(p);
-    out.parameters[i] = p;
   }
   out.start = start;
+  const std::vector<Parameter>& parameters = out.parameters;
 
   std::vector<double> weights;
   for (const auto& e : out.experiments) weights.push_back(std::sqrt(e.weight));
   const BatchResidual residual = [&](const std::vector<std::vector<double>>& sets) {
-    std::vector<JcValues> jc;
-    for (const auto& s : sets) jc.push_back({s[0], s[1], s[2], s[3], s[4]});
-    const auto pred = model.predict(jc);
+    const auto pred = model.predict(sets);
     std::vector<Eigen::VectorXd> r;
     for (const auto& per_set : pred) {
       std::vector<double> v;
@@ -110,7 +129,7 @@ StrengthFit fit_strength(const CurveModel& model, const FitConfig& config) {
     return r;
   };
   out.lsq = least_squares(parameters, residual, config.solver);
-  for (std::size_t i = 0; i < 5; ++i) out.fitted[i] = out.lsq.values[i];
+  out.fitted = out.lsq.values;
 
   out.curves = model.curves({out.fitted, out.material_values});
   for (std::size_t s = 0; s < 2; ++s) {

@@ -1,6 +1,8 @@
-// `pointdriver fit` in strength mode: read the curves, staged guess, global least squares through
-// the driver (curve_model.hpp, least_squares.hpp), errors per curve for the fitted set and for the
-// material's own set (e.g. the published one).
+// `pointdriver fit` in strength mode: read the curves, start values (Johnson-Cook: the staged
+// guess; any other law: the material's values or the configuration's starts), global least
+// squares over the law's free parameters, by name, through the driver (curve_model.hpp,
+// least_squares.hpp), errors per curve for the fitted set and for the material's own set (e.g.
+// the published one).
 //
 // Residual: the vertical stress error at the data's plastic strains, sqrt(weight) (sigma_model -
 // sigma_data) in MPa (the MPa scaling only conditions the solver; reports are in Pa and MPa).
@@ -48,12 +50,16 @@ OverallErrors overall(const std::vector<CurveErrors>& errors);
 struct StrengthFit {
   std::vector<Experiment> experiments;
   std::vector<bool> adiabatic;
-  std::array<Parameter, 5> parameters;  ///< as started (bounds, free/fixed)
-  JcValues material_values{};           ///< the input material's own set
+  std::string law;                    ///< the law's JSON type
+  std::vector<Parameter> parameters;  ///< every parameter of the law as started (bounds, free)
+  std::vector<std::string> units;     ///< SI unit of each parameter
+  ParameterValues material_values;    ///< the input material's own set
+  /// The staged guess (Johnson-Cook with initial_guess "staged"; otherwise not run: empty).
   StagedGuess staged;
-  JcValues start{};
+  bool staged_run = false;
+  ParameterValues start;
   LeastSquaresResult lsq;
-  JcValues fitted{};
+  ParameterValues fitted;
   std::vector<CurveErrors> errors_fitted, errors_material;
   OverallErrors overall_fitted, overall_material;
   std::vector<std::vector<Curve>> curves;  ///< [0] fitted, [1] material: full driver curves

@@ -38,7 +38,10 @@ int main(int argc, char** argv) {
       }
       shells.push_back(e);
     }
-  const auto pred = CurveModel(material, Json::object(), shells, settings).predict({truth});
+  const CurveModel shell_model(material, Json::object(), shells, settings);
+  ParameterValues values = law_values(shell_model.base().flow_stress);
+  std::copy(truth.begin(), truth.end(), values.begin());  // A, B, n, C, m come first
+  const auto pred = shell_model.predict({values});
   std::mt19937 rng(7);
   std::normal_distribution<double> normal(0.0, 0.01);
   for (std::size_t e = 0; e < shells.size(); ++e)
@@ -48,11 +51,9 @@ int main(int argc, char** argv) {
   const JcValues start{truth[0] * 1.3, truth[1] * 0.7, truth[2] * 1.3, truth[3] * 0.7,
                        truth[4] * 1.3};
   const double bounds[5][2] = {{1e6, 5e9}, {0.0, 5e9}, {0.01, 2.0}, {0.0, 0.5}, {0.05, 10.0}};
-  for (std::size_t i = 0; i < 5; ++i) {
-    config.parameters[i].start = start[i];
-    config.parameters[i].lower = bounds[i][0];
-    config.parameters[i].upper = bounds[i][1];
-  }
+  for (std::size_t i = 0; i < 5; ++i)
+    config.parameters.push_back(
+        {jc_names[i], i < 2 ? "Pa" : "-", true, start[i], bounds[i][0], bounds[i][1]});
   config.initial_guess = "start";
   double best = 1e300;
   StrengthFit fit;

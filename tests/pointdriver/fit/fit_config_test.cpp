@@ -69,6 +69,43 @@ BOOST_AUTO_TEST_CASE(problems_name_the_key_path) {
   BOOST_TEST(contains(error_of(steps), "test.json"));
 }
 
+// Strength mode fits the parameters of the material's law by name: every parameter listed in
+// the law's order with its default bounds, free when the law gives bounds and the material's
+// value is not 0; a name the law lacks is named with its key path; a parameter with no default
+// range can be freed only with bounds.
+BOOST_AUTO_TEST_CASE(parameters_are_the_laws_by_name) {
+  const Json za = {{"material", "data/materials/ofhc_copper_za.json"},
+                   {"data", {{{"glob", "data/experiments/al6061_t6/lee_*.csv"}}}}};
+  const FitConfig c = read_fit_config(za, fits + "test.json");
+  std::vector<std::string> names, free;
+  for (const ParameterSpec& s : c.parameters) {
+    names.push_back(s.name);
+    if (s.free) free.push_back(s.name);
+  }
+  const std::vector<std::string> all{
+      "C0", "C1", "C2", "C3", "C4", "C5", "n", "reference_strain_rate", "minimum_strain_rate"};
+  const std::vector<std::string> fcc{"C0", "C2", "C3", "C4"};  // C1, C5 are 0 in an fcc set
+  BOOST_TEST(names == all, boost::test_tools::per_element());
+  BOOST_TEST(free == fcc, boost::test_tools::per_element());
+  BOOST_TEST(find_parameter(c, "C3")->lower == 0.0);
+  BOOST_TEST(find_parameter(c, "C3")->upper == 0.05);
+  BOOST_TEST(find_parameter(c, "C0")->unit == "Pa");
+  Json jc_name = za;  // Johnson-Cook's A is not a Zerilli-Armstrong parameter
+  jc_name["parameters"] = {{"A", {{"free", false}}}};
+  BOOST_TEST(contains(error_of(jc_name), "/parameters/A"));
+  Json no_range = za;
+  no_range["parameters"] = {{"reference_strain_rate", {{"free", true}}}};
+  BOOST_TEST(contains(error_of(no_range), "/parameters/reference_strain_rate/lower"));
+  BOOST_TEST(contains(error_of(no_range), "no default range"));
+  Json freed = za;
+  freed["parameters"] = {
+      {"reference_strain_rate", {{"free", true}, {"lower", 0.1}, {"upper", 10.0}}},
+      {"C4", {{"free", false}}}};
+  const FitConfig f = read_fit_config(freed, fits + "test.json");
+  BOOST_TEST(find_parameter(f, "reference_strain_rate")->free);
+  BOOST_TEST(!find_parameter(f, "C4")->free);
+}
+
 // A glob without a folder matches beside the configuration file, whatever the working directory
 // (before: the working directory, where "lee_*.csv" matched nothing or the wrong files).
 BOOST_AUTO_TEST_CASE(a_bare_glob_matches_beside_the_configuration) {

@@ -51,7 +51,9 @@ CurveModel synthetic(double noise) {
     }
   }
   const CurveModel shell_model(material, Json::object(), shells, settings());
-  const auto pred = shell_model.predict({truth});
+  ParameterValues values = law_values(shell_model.base().flow_stress);
+  std::copy(truth.begin(), truth.end(), values.begin());  // A, B, n, C, m come first
+  const auto pred = shell_model.predict({values});
   std::mt19937 rng(20261123);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (std::size_t e = 0; e < shells.size(); ++e)
@@ -66,11 +68,9 @@ FitConfig start_30_percent_off() {
                        truth[4] * 1.3};
   const std::array<std::array<double, 2>, 5> bounds{
       {{1e6, 5e9}, {0.0, 5e9}, {0.01, 2.0}, {0.0, 0.5}, {0.05, 10.0}}};
-  for (std::size_t i = 0; i < 5; ++i) {
-    c.parameters[i].start = start[i];
-    c.parameters[i].lower = bounds[i][0];
-    c.parameters[i].upper = bounds[i][1];
-  }
+  for (std::size_t i = 0; i < 5; ++i)
+    c.parameters.push_back(
+        {jc_names[i], i < 2 ? "Pa" : "-", true, start[i], bounds[i][0], bounds[i][1]});
   c.initial_guess = "start";
   return c;
 }
