@@ -19,6 +19,8 @@
 #   ./run.sh stability  build and run the sphere-cylinder stability map (docs/figures/stability/)
 #   ./run.sh accuracy   build and run the speed-versus-accuracy study (docs/figures/accuracy/)
 #   ./run.sh quarter    build and run the quarter model against the full model (docs/figures/quarter_model/)
+#   ./run.sh laws    build and plot the flow-stress laws of each shipped material
+#                    (docs/figures/materials_*.png, docs/models.md)
 #   ./run.sh taylor [OUT] [OPTIONS]  build and run the House et al. Taylor shots against the
 #                    experiments (docs/taylor.md; OUT defaults to docs/figures/taylor/)
 set -euo pipefail
@@ -149,6 +151,13 @@ case "${1:-}" in
     /usr/bin/python3 mpm/taylor/taylor.py "${2:-docs/figures/taylor}" --runs build/taylor \
       --sets table1,fit_all --cells-per-radius 6 --jobs "$(nproc)" --threads 1 "${@:3}"
     ;;
+  laws)
+    install_missing_packages
+    build release
+    # Every flow-stress law of each shipped material at 1e-3 and 1e3 /s, 294 and 600 K
+    # (docs/models.md; figures and CSV in docs/figures/; a few seconds).
+    /usr/bin/python3 pointdriver/plot/material_laws.py build/bin/pointdriver docs/figures
+    ;;
   stability)
     install_missing_packages
     build release
@@ -158,7 +167,7 @@ case "${1:-}" in
       --threads 2 "${@:2}"
     ;;
   *)
-    sed -n '2,16p' "$0"
+    sed -n '2,25p' "$0"
     exit 1
     ;;
 esac

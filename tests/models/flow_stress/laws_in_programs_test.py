@@ -72,6 +72,8 @@ def flow_stress(law, ep, rate, T, p, rho, material):
         ty = max(law["y0"] - (law["y0"] - law["y_inf"]) * e,
                  min(law["y1"] * r ** law["y2"], s0 * r ** law["beta"]))
         a, pp = s0 - ty, law["p"]
+        if pp == 0:  # the Voce limit of eq. (14) as p -> 0
+            return 2 * G * (ts - (ts - ty) * math.exp(-law["theta"] * ep / (ts - ty)))
         x = pp * (ts - ty) / a
         tau = ts + a / pp * math.log(1 - (1 - math.exp(-x)) * math.exp(
             -pp * law["theta"] * ep / (a * (math.exp(x) - 1))))
