@@ -13,6 +13,7 @@ int command_batch(const std::vector<std::string>& args);
 int command_convergence(const std::vector<std::string>& args);
 int command_fit(const std::vector<std::string>& args);
 int command_check(const std::vector<std::string>& args);
+int command_cards(const std::vector<std::string>& args);
 int command_plot(const std::vector<std::string>& args, const char* argv0);
 
 }  // namespace impact::pointdriver

@@ -6,6 +6,7 @@
 //   pointdriver plot out.csv --x COL --y COL [--y COL ...] -o fig.png
 //   pointdriver fit FIT.json [--out DIR]                   flow-stress fit through the driver
 //   pointdriver check CHECK.json [--out DIR]               a parameter set against data
+//   pointdriver cards MATERIAL.json [--units U] [--out DIR] LS-DYNA and Abaqus cards
 // Exit codes: 0 success, 1 usage error, 2 input error, 3 a step could not be solved or a
 // verification case failed.
 #include <cstring>
@@ -28,6 +29,7 @@ const char* usage =
     "  plot OUT.csv --x COL --y COL... -o FIG.png   quick figure (python3-matplotlib)\n"
     "  fit FIT.json [--out DIR]                  fit a flow-stress law to measured curves\n"
     "  check CHECK.json [--out DIR]              check a parameter set against measured curves\n"
+    "  cards MATERIAL.json [--units U] [--out DIR]   LS-DYNA and Abaqus Johnson-Cook cards\n"
     "exit codes: 0 success, 1 usage, 2 input error, 3 unsolved step or failed verification\n";
 
 }  // namespace
@@ -46,6 +48,7 @@ int main(int argc, char** argv) {
   if (command == "convergence") return command_convergence(args);
   if (command == "fit") return command_fit(args);
   if (command == "check") return command_check(args);
+  if (command == "cards") return command_cards(args);
   if (command == "plot") return command_plot(args, argv[0]);
   std::cerr << "pointdriver: unknown command '" << command << "'\n" << usage;
   return 1;
