@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <span>
 #include <sstream>
 
 namespace impact::pointdriver::fit {
@@ -83,6 +84,42 @@ constexpr KeySpec kKeys[] = {{"test_type", ""},      {"strain_rate", "1/s"},   {
                              {"converted_from", ""}, {"conversion", ""},       {"thermal", ""},
                              {"weight", ""},         {"youngs_modulus", "Pa"}, {"description", ""}};
 
+/// A declared unit the reader converts to SI: value_SI = scale * value + offset.
+struct UnitConversion {
+  const char* unit;
+  double scale;
+  double offset = 0.0;
+};
+/// The units labs write, per quantity; the first is the SI unit (no conversion).
+constexpr UnitConversion kStressUnits[] = {{"Pa", 1.0},
+                                           {"kPa", 1e3},
+                                           {"MPa", 1e6},
+                                           {"GPa", 1e9},
+                                           {"psi", 6894.757293168361},
+                                           {"ksi", 6894757.293168361}};
+constexpr UnitConversion kStrainUnits[] = {{"-", 1.0}, {"%", 0.01}};
+constexpr UnitConversion kTemperatureUnits[] = {
+    {"K", 1.0}, {"degC", 1.0, 273.15}, {"C", 1.0, 273.15}};
+
+/// The units a header key may be declared in (SI first); empty for a key without a unit.
+std::span<const UnitConversion> units_of(std::string_view key) {
+  if (key == "temperature") return kTemperatureUnits;
+  if (key == "youngs_modulus") return {kStressUnits, 4};  // Pa .. GPa
+  return {};
+}
+
+const UnitConversion* find_unit(std::span<const UnitConversion> units, std::string_view unit) {
+  for (const UnitConversion& u : units)
+    if (unit == u.unit) return &u;
+  return nullptr;
+}
+
+std::string unit_list(std::span<const UnitConversion> units) {
+  std::string out;
+  for (const UnitConversion& u : units) out += (out.empty() ? "" : ", ") + std::string(u.unit);
+  return out;
+}
+
 bool parse_number(const std::string& text, double& value) {
   const std::string t = trim(text);
   if (t.empty()) return false;
@@ -122,6 +159,7 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
   e.name = std::filesystem::path(file).stem().string();
 
   std::map<std::string, std::pair<std::string, int>> header;  // key -> (value, line)
+  std::map<std::string, const UnitConversion*> declared;      // key -> its converted unit
   static const std::regex key_re(R"(^([a-z_]+)\s*(?:\[([^\]]*)\])?\s*:(.*)$)");
   std::string line;
   int number = 0;
@@ -165,10 +203,14 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
                                  (near ? " (did you mean " + *near + "?)" : ""));
         continue;
       }
-      if (unit != spec->unit) {
-        const std::string want = std::string(spec->unit).empty()
-                                     ? "without a unit"
-                                     : "'" + key + " [" + spec->unit + "]' (SI)";
+      if (const UnitConversion* u = find_unit(units_of(key), unit); u && unit != spec->unit) {
+        declared[key] = u;  // a unit labs use: converted to SI below
+      } else if (unit != spec->unit) {
+        const std::string want =
+            std::string(spec->unit).empty()
+                ? "without a unit"
+                : "'" + key + " [" + spec->unit + "]' (SI" +
+                      (units_of(key).empty() ? "" : "; or " + unit_list(units_of(key))) + ")";
         problems.add(number, unit.empty() ? "header key '" + key + "' has no unit: write it " + want
                                           : "header key '" + key + "' must be written " + want +
                                                 ", got [" + unit + "]");
@@ -264,6 +306,13 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
       problems.add(line_of(key), key + ": expected a number, got '" + *v + "'");
       return std::nullopt;
     }
+    if (const auto d = declared.find(key); d != declared.end()) {
+      const UnitConversion& u = *d->second;
+      const double si = u.scale * x + u.offset;
+      e.conversions.push_back(key + " " + fmt(x) + " " + u.unit + " -> " + fmt(si) + " " +
+                              units_of(key).front().unit);
+      return si;
+    }
     return x;
   };
 
@@ -313,6 +362,8 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
   // Columns.
   const char* strain_column[] = {"true_plastic_strain", "true_strain", "engineering_strain"};
   const char* stress_column[] = {"true_stress", "engineering_stress"};
+  const UnitConversion* strain_unit = nullptr;
+  const UnitConversion* stress_unit = nullptr;
   if (!column_line) {
     problems.add(0, "no column header line (e.g. 'true_plastic_strain [-],true_stress [Pa]')");
   } else if (column_cells.size() != 2) {
@@ -330,10 +381,9 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
     else if (sunit.empty())
       problems.add(column_line, "column 1 '" + sname + "' has no unit: write '" + want_strain +
                                     " [-]' (a fraction)");
-    else if (sunit != "-")
-      problems.add(column_line, "strain must be a fraction, written '" + want_strain +
-                                    " [-]', got [" + sunit + "]" +
-                                    (sunit == "%" ? " (divide percentages by 100)" : ""));
+    else if (!(strain_unit = find_unit(kStrainUnits, sunit)))
+      problems.add(column_line, "strain must be a fraction '" + want_strain + " [-]' or in " +
+                                    "percent '" + want_strain + " [%]', got [" + sunit + "]");
     if (tname != want_stress)
       problems.add(column_line, "second column must be '" + want_stress +
                                     " [Pa]' (stress_measure " + to_string(e.stress_measure) +
@@ -341,9 +391,20 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
     else if (tunit.empty())
       problems.add(column_line,
                    "column 2 '" + tname + "' has no unit: write '" + want_stress + " [Pa]' (SI)");
-    else if (tunit != "Pa")
-      problems.add(column_line, "stress must be in Pa, written '" + want_stress + " [Pa]', got [" +
-                                    tunit + "]" + (tunit == "MPa" ? " (multiply by 1e6)" : ""));
+    else if (!(stress_unit = find_unit(kStressUnits, tunit)))
+      problems.add(column_line, "stress unit [" + tunit + "] unknown: write '" + want_stress +
+                                    " [Pa]' (SI) or one of " + unit_list(kStressUnits));
+  }
+  // Declared units other than SI: the values converted as read, and reported.
+  if (strain_unit && strain_unit->scale != 1.0) {
+    for (Point& p : points) p.strain *= strain_unit->scale;
+    e.conversions.push_back(std::string("strain column in ") + strain_unit->unit +
+                            " -> fraction (x " + fmt(strain_unit->scale) + ")");
+  }
+  if (stress_unit && stress_unit->scale != 1.0) {
+    for (Point& p : points) p.stress *= stress_unit->scale;
+    e.conversions.push_back(std::string("stress column in ") + stress_unit->unit + " -> Pa (x " +
+                            fmt(stress_unit->scale) + ")");
   }
 
   // Data rows.

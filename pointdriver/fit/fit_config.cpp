@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <sstream>
 
 #include "models/material/material.hpp"
 
@@ -65,6 +66,13 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
     }
     JsonReader e(d, at, r.problems());
     const double w = e.number_or("weight", 1.0, Range::positive(), "weight of these curves");
+    std::optional<double> rate, temperature;
+    if (e.has("strain_rate"))
+      rate = e.number("strain_rate", Range::positive(), "replaces the files' strain rate [1/s]");
+    if (e.has("temperature"))
+      temperature = e.quantity("temperature", Quantity::temperature, Range::positive(),
+                               "replaces the files' initial temperature [K]");
+    const std::size_t first = out.size();
     if (e.has("file") == e.has("glob")) {
       r.problems().add(at, "give exactly one of \"file\" and \"glob\"");
     } else if (e.has("file")) {
@@ -83,6 +91,10 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
           glob_files((fs::path(resolved_dir) / fs::path(pattern).filename()).string());
       if (files.empty()) r.problems().add(at + "/glob", "no file matches '" + pattern + "'");
       for (const auto& f : files) out.push_back({f, w});
+    }
+    for (std::size_t k = first; k < out.size(); ++k) {
+      out[k].strain_rate = rate;
+      out[k].temperature = temperature;
     }
     e.reject_unknown_keys();
   }
@@ -359,7 +371,16 @@ std::vector<Experiment> read_experiments(const std::vector<DataEntry>& data,
   for (const auto& d : data) {
     try {
       out.push_back(read_experiment(d.file, youngs_modulus));
-      out.back().weight *= d.weight;
+      Experiment& x = out.back();
+      x.weight *= d.weight;
+      const auto replaced = [&](const char* what, double& value, double by, const char* unit) {
+        std::ostringstream note;
+        note << what << ' ' << value << " -> " << by << ' ' << unit << " (the configuration's)";
+        x.conversions.push_back(note.str());
+        value = by;
+      };
+      if (d.strain_rate) replaced("strain_rate", x.strain_rate, *d.strain_rate, "1/s");
+      if (d.temperature) replaced("temperature", x.temperature, *d.temperature, "K");
     } catch (const InputError& e) {
       problems.insert(problems.end(), e.problems().begin(), e.problems().end());
     }

@@ -20,6 +20,9 @@ namespace impact::pointdriver::fit {
 struct DataEntry {
   std::string file;  ///< resolved
   double weight = 1.0;
+  /// Replace the file's header values (a test whose file states them wrongly or not in SI).
+  std::optional<double> strain_rate;  ///< [1/s]
+  std::optional<double> temperature;  ///< [K]
 };
 
 /// One parameter the fit may vary: in strength mode every parameter of the material's law

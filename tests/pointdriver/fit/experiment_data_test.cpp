@@ -4,6 +4,8 @@
 #include "pointdriver/fit/experiment_data.hpp"
 
 #include <boost/test/unit_test.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -91,11 +93,49 @@ BOOST_AUTO_TEST_CASE(stress_in_mpa_is_recognised_from_its_magnitude) {
                                  "0.02,345\n");
   BOOST_TEST(contains(m, "curve.csv:9:"));  // the line of the largest stress
   BOOST_TEST(contains(m, "look like MPa"));
-  // A column labelled MPa is rejected at the header line.
+  // An unknown stress unit is named at the header line with the units the reader converts.
   const std::string m2 =
-      error_of(header + "true_plastic_strain [-],true_stress [MPa]\n0.01,330\n0.02,345\n");
+      error_of(header + "true_plastic_strain [-],true_stress [bar]\n0.01,3300\n0.02,3450\n");
   BOOST_TEST(contains(m2, "curve.csv:7:"));
-  BOOST_TEST(contains(m2, "stress must be in Pa"));
+  BOOST_TEST(contains(m2, "stress unit [bar] unknown"));
+  BOOST_TEST(contains(m2, "Pa, kPa, MPa, GPa, psi, ksi"));
+}
+
+// The units labs write are converted on read and reported: a stress column in MPa (x 1e6), in
+// ksi (x 6.894757293168361e6), a strain column in percent (x 0.01), the temperature in degC
+// (+ 273.15) and Young's modulus in GPa (x 1e9). The same curve in SI reads to the same numbers.
+BOOST_AUTO_TEST_CASE(declared_lab_units_are_converted_and_reported) {
+  const Experiment si =
+      parse(header + "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n0.02,3.45e8\n");
+  const Experiment mpa =
+      parse(header + "true_plastic_strain [%],true_stress [MPa]\n1,330\n2,345\n");
+  BOOST_TEST_REQUIRE(mpa.stress.size() == si.stress.size());
+  for (std::size_t k = 0; k < si.stress.size(); ++k) {
+    BOOST_TEST(mpa.stress[k] == si.stress[k], boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(mpa.plastic_strain[k] == si.plastic_strain[k], boost::test_tools::tolerance(1e-15));
+  }
+  const auto reported = [](const Experiment& e, const std::string& part) {
+    return std::any_of(e.conversions.begin(), e.conversions.end(),
+                       [&](const std::string& c) { return contains(c, part); });
+  };
+  BOOST_TEST(reported(mpa, "stress column in MPa -> Pa (x 1e+06)"));
+  BOOST_TEST(reported(mpa, "strain column in % -> fraction (x 0.01)"));
+  const Experiment ksi =
+      parse(header + "true_plastic_strain [-],true_stress [ksi]\n0.01,50\n0.02,52\n");
+  BOOST_TEST(ksi.stress.front() == 50 * 6894757.293168361, boost::test_tools::tolerance(1e-15));
+  std::string celsius = header;
+  celsius.replace(celsius.find("temperature [K]: 294"), 20, "temperature [degC]: 20.85");
+  const Experiment c =
+      parse(celsius + "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n0.02,3.5e8\n");
+  BOOST_TEST(c.temperature == 294.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(c.warnings.empty());
+  BOOST_TEST(reported(c, "temperature 20.85 degC -> 294 K"));
+  // A unit the reader does not convert is refused, naming the ones it does.
+  std::string rankine = header;
+  rankine.replace(rankine.find("temperature [K]: 294"), 20, "temperature [R]: 529");
+  const std::string m =
+      error_of(rankine + "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n0.02,3.5e8\n");
+  BOOST_TEST(contains(m, "or K, degC, C"));
 }
 
 BOOST_AUTO_TEST_CASE(strain_in_percent_and_temperature_in_celsius) {
@@ -103,7 +143,7 @@ BOOST_AUTO_TEST_CASE(strain_in_percent_and_temperature_in_celsius) {
                                  "true_plastic_strain [-],true_stress [Pa]\n1,3.3e8\n"
                                  "20,3.5e8\n");
   BOOST_TEST(contains(m, "curve.csv:9:"));
-  BOOST_TEST(contains(m, "percent"));
+  BOOST_TEST(contains(m, "percent"));  // declared [-]: a magnitude check, not a conversion
   // A temperature that looks like degC is possible (a cryogenic test): read, with a warning.
   std::string celsius = header;
   celsius.replace(celsius.find("294"), 3, "25");

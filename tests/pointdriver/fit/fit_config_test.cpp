@@ -106,6 +106,30 @@ BOOST_AUTO_TEST_CASE(parameters_are_the_laws_by_name) {
   BOOST_TEST(!find_parameter(f, "C4")->free);
 }
 
+// A data entry may replace its files' strain rate and temperature; the replacement is reported
+// with the experiment's conversions.
+BOOST_AUTO_TEST_CASE(a_data_entry_replaces_rate_and_temperature) {
+  const Json doc = {{"material", "data/materials/al6061_t6.json"},
+                    {"data",
+                     {{{"file", "data/experiments/al6061_t6/lee_298K_1000per_s.csv"},
+                       {"strain_rate", 1200.0},
+                       {"temperature", 300.0}}}}};
+  const FitConfig c = read_fit_config(doc, fits + "test.json");
+  BOOST_TEST_REQUIRE(c.data.size() == 1u);
+  BOOST_TEST(*c.data[0].strain_rate == 1200.0);
+  const std::vector<Experiment> e = read_experiments(c.data, 69e9);
+  BOOST_TEST(e[0].strain_rate == 1200.0);
+  BOOST_TEST(e[0].temperature == 300.0);
+  const auto& notes = e[0].conversions;
+  BOOST_TEST(std::count(notes.begin(), notes.end(),
+                        "strain_rate 1000 -> 1200 1/s (the configuration's)") == 1);
+  BOOST_TEST(std::count(notes.begin(), notes.end(),
+                        "temperature 298 -> 300 K (the configuration's)") == 1);
+  Json bad = doc;
+  bad["data"][0]["strain_rate"] = -1.0;
+  BOOST_TEST(contains(error_of(bad), "/data/0/strain_rate"));
+}
+
 // A glob without a folder matches beside the configuration file, whatever the working directory
 // (before: the working directory, where "lee_*.csv" matched nothing or the wrong files).
 BOOST_AUTO_TEST_CASE(a_bare_glob_matches_beside_the_configuration) {
