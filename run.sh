@@ -71,12 +71,13 @@ case "${1:-}" in
     install_missing_packages "${FUZZ_PACKAGES[@]}" "${STYLE_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
     # The test job treats every compiler warning as an error (-Wall -Wextra -Wpedantic are on).
     build release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
-    ctest --preset release
+    # JUnit XML of each run for CI servers, in its build directory (build/junit.xml, ...).
+    ctest --preset release --output-junit junit.xml
     build asan -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
-    ctest --preset asan
+    ctest --preset asan --output-junit junit.xml
     # Each loader's fuzz target for a few seconds (about a minute in all); fails on any finding.
     build fuzz -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
-    ctest --preset fuzz
+    ctest --preset fuzz --output-junit junit.xml
     ;;
   mpi)
     install_missing_packages "${MPI_PACKAGES[@]}"

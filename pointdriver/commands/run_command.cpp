@@ -7,21 +7,24 @@
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/driver/driver.hpp"
 #include "pointdriver/output/csv_writer.hpp"
+#include "pointdriver/output/junit.hpp"
 
 namespace impact::pointdriver {
 
 namespace {
 
 const char* run_help =
-    "usage: pointdriver run PATH.json [-o OUT.csv] [--set JSON_MERGE_PATCH]...\n"
+    "usage: pointdriver run PATH.json [-o OUT.csv] [--set JSON_MERGE_PATCH]... [--junit FILE]\n"
     "Runs the path and writes one CSV row per step (header `name [unit]`, SI units; columns in\n"
     "docs/pointdriver.md), OUT.summary.json (resolved path, how the run ended) and, when a step\n"
     "cannot be solved after the cut-backs, OUT.replay.json: the state at the start of that step "
     "as\n"
     "a path file that reproduces it. Default OUT: the path file's name with .csv, in the current\n"
     "directory. --set applies a JSON merge patch to the path before validation (repeatable).\n"
+    "The path's \"checks\" (a column against a value or a reference CSV, docs/pointdriver.md)\n"
+    "are evaluated after the run and printed; --junit FILE writes them as JUnit XML.\n"
     "Exit codes: 0 done (including a failure stopped by the failure policy), 1 usage, 2 input\n"
-    "error, 3 a step could not be solved.\n";
+    "error, 3 a step could not be solved or a check failed.\n";
 
 const char* cause_name(FailureCause c) {
   return to_string(c).data();
@@ -31,8 +34,8 @@ const char* cause_name(FailureCause c) {
 
 int command_run(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code =
-          parse_command("run", run_help, o, args, {{"-o|--output", 1}, {"--set", 1}}, 1)) {
+  if (const auto exit_code = parse_command("run", run_help, o, args,
+                                           {{"-o|--output", 1}, {"--set", 1}, {"--junit", 1}}, 1)) {
     return *exit_code;
   }
   if (o.positional.empty()) {
@@ -82,6 +85,26 @@ int command_run(const std::vector<std::string>& args) {
                   {"resolved_path", path.resolved}};
   const std::string summary_file = stem.string() + ".summary.json";
   std::ofstream(summary_file) << summary.dump(2) << '\n';
+  // The path's checks, on what the run wrote (also after a failure: its rows up to it).
+  const std::vector<CheckOutcome> checks = evaluate_checks(path.checks, out.string());
+  bool checks_passed = true;
+  std::vector<JunitCase> cases;
+  for (const CheckOutcome& c : checks) {
+    checks_passed = checks_passed && c.passed;
+    std::cout << (c.passed ? "check passed: " : "CHECK FAILED: ") << c.name << ": " << c.message
+              << '\n';
+    cases.push_back(
+        {c.name, file, 0.0, c.passed ? std::nullopt : std::optional(c.message), c.message});
+  }
+  if (o.has("--junit")) {
+    if (!r.completed) cases.push_back({"run", file, 0.0, r.error, "the path did not complete"});
+    try {
+      write_junit(o.get("--junit", ""), "pointdriver run " + file, cases);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "pointdriver run: " << e.what() << '\n';
+      return 2;
+    }
+  }
   if (!r.completed) {
     const std::string replay_file = stem.string() + ".replay.json";
     std::ofstream(replay_file) << r.replay->dump(2) << '\n';
@@ -96,6 +119,10 @@ int command_run(const std::vector<std::string>& args) {
     std::cout << "; failed (" << cause_name(r.failure) << ") at t = " << r.failure_time << " s";
   }
   std::cout << " -> " << out.string() << '\n';
+  if (!checks_passed) {
+    std::cerr << "pointdriver run: " << file << ": a check failed\n";
+    return 3;
+  }
   return 0;
 }
 

@@ -10,6 +10,7 @@
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/commands/plot_script.hpp"
+#include "pointdriver/output/junit.hpp"
 #include "pointdriver/output/text_format.hpp"
 #include "pointdriver/verify/verification_suite.hpp"
 
@@ -20,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const char* verify_help =
-    "usage: pointdriver verify [--out DIR] [--case NAME]... [--list]\n"
+    "usage: pointdriver verify [--out DIR] [--case NAME]... [--list] [--junit FILE]\n"
     "Runs the point driver's verification suite: each case drives the material along paths\n"
     "built in code and compares with references derived independently (closed forms, integrals\n"
     "of the driver's own rows), with a stated tolerance. Prints the table (case, quantity,\n"
@@ -137,8 +138,9 @@ void draw_figures(const fs::path& out) {
 
 int command_verify(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code = parse_command("verify", verify_help, o, args,
-                                           {{"--out", 1}, {"--case", 1}, {"--list", 0}}, 0)) {
+  if (const auto exit_code =
+          parse_command("verify", verify_help, o, args,
+                        {{"--out", 1}, {"--case", 1}, {"--list", 0}, {"--junit", 1}}, 0)) {
     return *exit_code;
   }
   const auto& cases = verification_cases();
@@ -199,6 +201,22 @@ int command_verify(const std::vector<std::string>& args) {
   if (!csv) {
     std::cerr << "pointdriver verify: cannot write " << table.string() << '\n';
     return 1;
+  }
+  if (o.has("--junit")) {
+    std::vector<JunitCase> junit;
+    for (const Check& k : all) {
+      const std::string compared = "expected " + fmt(k.expected, "%.10g") + ", got " +
+                                   fmt(k.got, "%.10g") + ", error " + fmt(k.error, "%.3g") +
+                                   ", tolerance " + fmt(k.tolerance, "%.3g");
+      junit.push_back({k.quantity, "verify." + k.case_name, 0.0,
+                       k.pass ? std::nullopt : std::optional(compared), compared});
+    }
+    try {
+      write_junit(o.get("--junit", ""), "pointdriver verify", junit);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "pointdriver verify: " << e.what() << '\n';
+      return 1;
+    }
   }
   draw_figures(out);
   std::cout << all.size() - static_cast<std::size_t>(failed) << " of " << all.size()

@@ -44,6 +44,13 @@ void check_exists(InputProblems& problems, const std::string& key_path, const st
                              "and in its parent directories)");
 }
 
+DataEntry data_entry(std::string file, double weight) {
+  DataEntry e;
+  e.file = std::move(file);
+  e.weight = weight;
+  return e;
+}
+
 std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::string& file) {
   std::vector<DataEntry> out;
   const Json* data = doc.contains("data") ? &doc["data"] : nullptr;
@@ -56,7 +63,7 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
     const std::string at = "/data/" + std::to_string(i);
     const Json& d = (*data)[i];
     if (d.is_string()) {
-      out.push_back({resolve_file(d.get<std::string>(), file), 1.0});
+      out.push_back(data_entry(resolve_file(d.get<std::string>(), file), 1.0));
       check_exists(r.problems(), at, "experiment file", d.get<std::string>(), out.back().file);
       continue;
     }
@@ -77,7 +84,7 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
       r.problems().add(at, "give exactly one of \"file\" and \"glob\"");
     } else if (e.has("file")) {
       const std::string name = e.string("file", "experiment file");
-      out.push_back({resolve_file(name, file), w});
+      out.push_back(data_entry(resolve_file(name, file), w));
       check_exists(r.problems(), e.key_path("file"), "experiment file", name, out.back().file);
     } else {
       const std::string pattern = e.string("glob", "experiment files ('*' and '?')");
@@ -90,7 +97,7 @@ std::vector<DataEntry> read_data(JsonReader& r, const Json& doc, const std::stri
       const auto files =
           glob_files((fs::path(resolved_dir) / fs::path(pattern).filename()).string());
       if (files.empty()) r.problems().add(at + "/glob", "no file matches '" + pattern + "'");
-      for (const auto& f : files) out.push_back({f, w});
+      for (const auto& f : files) out.push_back(data_entry(f, w));
     }
     for (std::size_t k = first; k < out.size(); ++k) {
       out[k].strain_rate = rate;

@@ -381,6 +381,8 @@ Path read_path(const Json& document, const std::string& file) {
       path.legs.push_back(read_leg(lr, resolved_legs[i], default_thermal));
     }
   }
+  root.ignore("checks");
+  path.checks = read_checks(document, file, problems);
   root.reject_unknown_keys();
   const std::string material_path = locate_material(material_file, file);
   const std::string material_key = document.contains("material") && document["material"].is_string()

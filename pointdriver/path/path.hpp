@@ -20,6 +20,7 @@
 #include "models/core/point_state.hpp"
 #include "models/core/tensor.hpp"
 #include "models/material/material.hpp"
+#include "pointdriver/path/checks.hpp"
 
 namespace impact::pointdriver {
 
@@ -79,6 +80,7 @@ struct Path {
   SolverSettings solver;
   std::vector<Leg> legs;
   Json resolved;  ///< the path with named legs expanded (written beside the output)
+  std::vector<ColumnCheck> checks;  ///< regression checks on the run's CSV (checks.hpp)
   /// Admissible but suspicious values, "file: /key/path: why" (e.g. a temperature that looks
   /// like degC); its material's warnings are included. The command line prints them.
   std::vector<std::string> warnings;
