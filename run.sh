@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine (root, or a user with sudo):
 #   ./run.sh main    install missing packages, build into build/, run the main job: the report's
-#                    recommended sphere-cylinder impact (history, figure, VTK in build/recommended/)
+#                    recommended sphere-cylinder impact (history, figure, VTK in out/recommended/)
 #   ./run.sh test    install missing packages, build, run the whole test suite (release, then the
 #                    unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer, then a
 #                    one-minute libFuzzer run of the input loaders, clang, build-fuzz/)
@@ -10,7 +10,7 @@
 #                    findings in build-fuzz/findings/ (tests/fuzz/run_fuzz.sh, docs/reliability.md)
 #   ./run.sh mpi [RANKS]  install Open MPI when missing, build with it, and run the recommended
 #                    scene on RANKS (default 2) ranks of one thread (docs/mpi.md; results in
-#                    build/recommended-mpi/recommended/)
+#                    out/recommended-mpi/recommended/)
 #   ./run.sh mpi-bench [RANKS]  ranks against threads on the 2.25x sphere-cylinder grid
 #                    (mpm/benchmark/mpi_scaling.py; figures in docs/mpi.md; about 10 min)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
@@ -61,11 +61,11 @@ case "${1:-}" in
     build release
     build/bin/material_check data/materials/al6061_t6.json >/dev/null
     # The report's conclusion (KeepStress, single_velocity, multiplier 0.1): writes
-    # build/recommended/recommended/{history.csv, summary.json, particles.pvd, particles/*.vtu},
+    # out/recommended/recommended/{history.csv, summary.json, particles.pvd, particles/*.vtu},
     # then the energy/momentum figure and the summary table beside it.
     build/bin/mpm run data/scenes/sphere_cylinder/recommended.json \
-      --out build/recommended/recommended --threads "$(nproc)"
-    /usr/bin/python3 mpm/study/study_plot.py build/recommended
+      --out out/recommended/recommended --threads "$(nproc)"
+    /usr/bin/python3 mpm/study/study_plot.py out/recommended
     ;;
   test)
     install_missing_packages "${FUZZ_PACKAGES[@]}" "${STYLE_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
@@ -85,8 +85,8 @@ case "${1:-}" in
     # As root Open MPI needs its allow flags; --oversubscribe lets RANKS exceed the cores.
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
       mpirun -np "${2:-2}" --oversubscribe build/bin/mpm run \
-      data/scenes/sphere_cylinder/recommended.json --out build/recommended-mpi/recommended --threads 1
-    /usr/bin/python3 mpm/study/study_plot.py build/recommended-mpi
+      data/scenes/sphere_cylinder/recommended.json --out out/recommended-mpi/recommended --threads 1
+    /usr/bin/python3 mpm/study/study_plot.py out/recommended-mpi
     ;;
   mpi-bench)
     install_missing_packages "${MPI_PACKAGES[@]}"

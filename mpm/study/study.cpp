@@ -19,6 +19,7 @@
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/solver.hpp"
+#include "support/shipped_file.hpp"
 
 extern char** environ;
 
@@ -28,14 +29,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// study_plot.py: $MPM_STUDY_PLOT_SCRIPT when set, else beside this file in the source tree.
+/// study_plot.py: $MPM_STUDY_PLOT_SCRIPT when set, else the shipped copy
+/// (support/shipped_file.hpp).
 std::string plot_script_path() {
   if (const char* env = std::getenv("MPM_STUDY_PLOT_SCRIPT"); env && *env) return env;
-#ifdef IMPACT_SOURCE_DIR
-  return std::string(IMPACT_SOURCE_DIR) + "/mpm/study/study_plot.py";
-#else
-  return "mpm/study/study_plot.py";
-#endif
+  return shipped_file("mpm/study/study_plot.py").string();
 }
 
 /// Runs `argv` (argv[0] looked up on PATH) without a shell; returns its exit status, 127 when it

@@ -10,6 +10,7 @@
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/commands/plot_script.hpp"
+#include "support/shipped_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -57,7 +58,7 @@ int spawn(const std::vector<std::string>& argv, bool quiet) {
 
 std::string plot_script_path() {
   if (const char* env = std::getenv("POINTDRIVER_PLOT_SCRIPT"); env && *env) return env;
-  return std::string(IMPACT_SOURCE_DIR) + "/pointdriver/plot/plot.py";
+  return shipped_file("pointdriver/plot/plot.py").string();
 }
 
 PlotRun run_plot_script(const std::vector<std::string>& args) {

@@ -12,6 +12,7 @@
 
 #include "models/material/material.hpp"
 #include "pointdriver/commands/plot_script.hpp"
+#include "support/shipped_file.hpp"
 
 namespace impact::pointdriver::fit {
 
@@ -313,10 +314,10 @@ std::vector<std::string> write_figures(const std::string& directory, const std::
   }
   const fs::path spec_file = fs::path(directory) / (prefix + "_figures.json");
   std::ofstream(spec_file) << spec.dump(1) << '\n';
-  // The plotting helper runs fit_plot.py (beside this file in the source tree).
+  // The plotting helper runs fit_plot.py (shipped beside the binary, or in the source tree).
   const char* old = std::getenv("POINTDRIVER_PLOT_SCRIPT");
   const std::string saved = old ? old : "";
-  const std::string script = std::string(IMPACT_SOURCE_DIR) + "/pointdriver/fit/fit_plot.py";
+  const std::string script = shipped_file("pointdriver/fit/fit_plot.py").string();
   setenv("POINTDRIVER_PLOT_SCRIPT", script.c_str(), 1);
   const PlotRun run = run_plot_script({spec_file.string()});
   if (old)

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "pointdriver/driver/driver.hpp"
+#include "support/shipped_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -199,9 +200,9 @@ ConvergenceResult run_convergence_study(const ConvergenceSettings& settings) {
       throw std::invalid_argument("convergence: step counts must be positive multiples of 10");
     }
   }
-  const std::string material = settings.material_file.empty() ? std::string(IMPACT_SOURCE_DIR) +
-                                                                    "/data/materials/al6061_t6.json"
-                                                              : settings.material_file;
+  const std::string material = settings.material_file.empty()
+                                   ? shipped_file("data/materials/al6061_t6.json").string()
+                                   : settings.material_file;
 
   ConvergenceResult result;
   for (const StudyPath& sp : study_paths()) {

@@ -17,6 +17,7 @@
 #include "models/stability/elastic_plastic_tangent.hpp"
 #include "pointdriver/driver/driver.hpp"
 #include "pointdriver/verify/closed_forms.hpp"
+#include "support/shipped_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -1005,14 +1006,10 @@ const std::vector<VerificationCase>& verification_cases() {
 SuiteContext default_suite_context(const std::string& out_dir) {
   SuiteContext c;
   c.out_dir = out_dir;
-  const fs::path source = IMPACT_SOURCE_DIR;
-  const fs::path material = "data/materials/al6061_t6.json";
-  c.material_file = fs::exists(source / material) ? (source / material).string()
-                                                  : fs::absolute(material).string();
-  const fs::path hugoniot = "data/experiments/al6061_t6_hugoniot/hugoniot.csv";
-  c.hugoniot_file = fs::exists(source / hugoniot) ? (source / hugoniot).string()
-                    : fs::exists(hugoniot)        ? fs::absolute(hugoniot).string()
-                                                  : "";
+  const fs::path material = shipped_file("data/materials/al6061_t6.json");
+  c.material_file = fs::absolute(material).string();
+  const fs::path hugoniot = shipped_file("data/experiments/al6061_t6_hugoniot/hugoniot.csv");
+  c.hugoniot_file = fs::exists(hugoniot) ? fs::absolute(hugoniot).string() : "";
   return c;
 }
 

@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+"""A relocatable install: `cmake --install` into a scratch prefix, the prefix moved elsewhere,
+then the three programs run from the moved prefix, with the shipped files (data, plot scripts)
+found beside the binaries (support/shipped_file.hpp) and the source tree ruled out
+(IMPACT_NO_SOURCE_TREE=1), from a working directory outside both trees.
+
+  relocation_test.py BUILD_DIR WORK_DIR
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+
+def run(cmd, cwd, env, code=0):
+    done = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True)
+    if done.returncode != code:
+        sys.exit(f"FAIL: {' '.join(cmd)} exited {done.returncode}, expected {code}\n"
+                 f"{done.stdout}\n{done.stderr}")
+    return done
+
+
+def main(build, work):
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    first, moved = os.path.join(work, "prefix"), os.path.join(work, "moved", "elsewhere")
+    run(["cmake", "--install", build, "--prefix", first], work, os.environ)
+    os.makedirs(os.path.dirname(moved))
+    shutil.move(first, moved)
+    env = dict(os.environ, IMPACT_NO_SOURCE_TREE="1")
+    bin_dir, share = os.path.join(moved, "bin"), os.path.join(moved, "share", "impact")
+    cwd = os.path.join(work, "cwd")
+    os.makedirs(cwd)
+    for program in ("material_check", "pointdriver", "mpm"):
+        assert os.access(os.path.join(bin_dir, program), os.X_OK), program
+    material = os.path.join(share, "data", "materials", "al6061_t6.json")
+    run([os.path.join(bin_dir, "material_check"), material], cwd, env)
+    # A shipped path: its material found from the path file's folders upwards in share/.
+    path = os.path.join(share, "data", "paths", "uniaxial_stress_1000.json")
+    run([os.path.join(bin_dir, "pointdriver"), "run", path, "-o", "u.csv"], cwd, env)
+    # The verification suite finds the shipped material and Hugoniot data.
+    done = run([os.path.join(bin_dir, "pointdriver"), "verify", "--case", "elastic_uniaxial",
+                "--out", "verify"], cwd, env)
+    assert "checks pass" in done.stdout, done.stdout
+    # The plot script is the installed one (matplotlib present: a PNG).
+    run([os.path.join(bin_dir, "pointdriver"), "plot", "u.csv", "--x", "time [s]", "--y",
+         "stress_xx [Pa]", "-o", "u.png"], cwd, env)
+    assert os.path.getsize(os.path.join(cwd, "u.png")) > 1000
+    # mpm: a shipped verification scene, 2 us.
+    scene = os.path.join(share, "data", "scenes", "verification", "taylor_rod.json")
+    run([os.path.join(bin_dir, "mpm"), "check", scene], cwd, env)
+    short = os.path.join(cwd, "rod.json")
+    with open(short, "w") as f:
+        f.write('{"extends": "%s", "time": {"max_time": 2e-6}, "output": {"snapshots": false}}'
+                % scene)
+    run([os.path.join(bin_dir, "mpm"), "run", short, "--out", "rod", "--threads", "1"], cwd, env)
+    assert os.path.exists(os.path.join(cwd, "rod", "summary.json"))
+    print(f"OK: installed, moved to {moved}, material_check, pointdriver run/verify/plot and "
+          "mpm check/run work from there")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
