@@ -78,8 +78,8 @@ class Ledger {
   double initial_energy() const { return initial_energy_; }
   const Vec3& initial_momentum() const { return p0_; }
 
-  /// CSV header: "time [s]", "kinetic_energy [J]", ..., "energy_error [-]" (issue 4's names with
-  /// their units).
+  /// CSV header: "time [s]", "kinetic_energy [J]", ..., "energy_error [-]" (the solver's original
+  /// names with their units).
   std::vector<std::string> columns() const;
   std::vector<double> values(const LedgerRow& r) const;
   bool with_external() const { return with_external_; }

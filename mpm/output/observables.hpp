@@ -1,4 +1,4 @@
-// Observables for accuracy-versus-cost studies (issue 7), definitions in docs/mpm.md#output:
+// Observables for accuracy-versus-cost studies, definitions in docs/mpm.md#output:
 // - Gauges (output.gauges): history.csv columns `gauge_<name> [unit]`, each the mass-weighted
 //   mean over a fixed set of particles (one object's, initial position in a box) of a velocity
 //   component, a log-strain component or the pressure, read at every history row.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Speed versus accuracy on the recommended sphere-cylinder scene (issue 7; docs/accuracy.md).
+"""Speed versus accuracy on the recommended sphere-cylinder scene (docs/accuracy.md).
 
   accuracy_study.py OUT [--mpm build/bin/mpm] [--max-time 40e-6] [--levels 1,1.5,2.25,3]
                         [--max-level-others 2.25] [--threads 2] [--jobs 1] [--analyse-only]

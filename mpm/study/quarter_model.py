@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Quarter model against the full model of a centred sphere-cylinder impact (issue 7;
+"""Quarter model against the full model of a centred sphere-cylinder impact (
 docs/performance.md#quarter-model).
 
   quarter_model.py OUT [--mpm build/bin/mpm] [--threads 2] [--max-time 40e-6]

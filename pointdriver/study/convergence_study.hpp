@@ -1,4 +1,4 @@
-// Accuracy versus cost of the point driver (issue 3, "Accuracy versus cost"): three paths run with
+// Accuracy versus cost of the point driver ("Accuracy versus cost"): three paths run with
 // N = 10 ... 100000 uniform steps; each run is timed and compared with the most refined run of its
 // series, the observed order of convergence is fitted, and runs that cannot be solved or give
 // non-finite output are marked. Comparison series use the 2004 return algorithm and the Jaumann

@@ -1,4 +1,4 @@
-// The point driver's verification suite (`pointdriver verify`, issue 3): named cases, each of
+// The point driver's verification suite (`pointdriver verify`): named cases, each of
 // which runs the driver on paths built in code and compares what it computes with a reference
 // derived independently (closed_forms.hpp, or an integral of the driver's own rows computed here),
 // with a stated tolerance. A case returns its checks and may write figure data (CSV) into an
@@ -38,7 +38,7 @@ struct VerificationCase {
   std::function<std::vector<Check>(const SuiteContext&)> run;
 };
 
-/// The cases, in the order of issue 3.
+/// The cases, in the order docs/verification.md lists them.
 const std::vector<VerificationCase>& verification_cases();
 
 /// The default context: the material and the Hugoniot data found from the source tree or the

@@ -1,5 +1,5 @@
 // The composed elastic_plastic model along strain paths, against closed forms and independently
-// derived numbers (issue 2's list): elastic uniaxial strain, uniaxial stress to 20 % against the
+// derived numbers: elastic uniaxial strain, uniaxial stress to 20 % against the
 // Johnson-Cook curve, objectivity under rigid rotation, heating, damage, melting, failure.
 #include "models/material/elastic_plastic.hpp"
 
@@ -391,9 +391,9 @@ BOOST_AUTO_TEST_CASE(mie_gruneisen_pressure_in_uniaxial_compression_matches_the_
 }
 
 // TEPLA's growth term (1 - f) max(tr D, 0) counts only the opening half of a cycle: updated on
-// elastic steps it ratcheted the porosity of a ringing point upward (the audit of issue 19). The
-// report's code updated it on plastic steps only: 1000 elastic volumetric cycles (+-1e-3, no
-// deviator, never plastic) must leave f exactly at f_0.
+// elastic steps it ratcheted the porosity of a ringing point upward (found by the energy-ledger
+// audit). The report's code updated it on plastic steps only: 1000 elastic volumetric cycles
+// (+-1e-3, no deviator, never plastic) must leave f exactly at f_0.
 BOOST_AUTO_TEST_CASE(porosity_is_unchanged_by_1000_elastic_cycles) {
   const Material m = al6061(Json::parse(R"({"constitutive_model": {
       "erosion": {"algorithm": "none"},

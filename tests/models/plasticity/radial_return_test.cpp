@@ -119,7 +119,7 @@ BOOST_AUTO_TEST_CASE(unconverged_return_is_reported_not_accepted) {
   BOOST_TEST(!r.converged);
 }
 
-// The sweep the ledger audit asked for (issue 19): with a low hardening exponent at zero plastic
+// The sweep the ledger audit asked for: with a low hardening exponent at zero plastic
 // strain the root is tiny and the slope infinite at d = 0; Newton in d from the elastic bound
 // needed more than 60 iterations (n = 0.05 and 0.1 failed at 1000/s, dt 1e-8, for every overshoot).
 // 5184 cases; every case must converge within 8 iterations onto the yield surface at the step's

@@ -1,4 +1,4 @@
-// Outputs survive a crash or kill (issue 8; docs/mpm.md#output): run() writes every whole file
+// Outputs survive a crash or kill (docs/mpm.md#output): run() writes every whole file
 // (scene.json, summary.json, status.json, particles.pvd, the VTU snapshots) to `<name>.tmp` and
 // renames it into place, and status.json says where the run is or how it ended.
 // - A completed run of data/scenes/verification/two_spheres.json (2 us, snapshots on, 2 threads)

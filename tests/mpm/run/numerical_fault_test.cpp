@@ -1,4 +1,4 @@
-// Numerical faults (issue 8; docs/mpm.md#failure-handling) on tests/data/mpm_runs/faults.json
+// Numerical faults (docs/mpm.md#failure-handling) on tests/data/mpm_runs/faults.json
 // (the oblique contact blocks, 3072 particles, 3 us), 2 threads:
 // - each injected fault (FaultInjection: NaN stress from the update, NaN velocity, a particle
 //   outside the grid, det F < 0) stops the run at the step it was planted in, before that step
@@ -9,7 +9,7 @@
 // - a stable step below time.min_dt stops it at step 1 and names the fastest particle;
 // - a particle whose Mie-Gruneisen modulus has no wave speed (K_s + 4 mu/3 <= 0: J = 1.6 at e = 0,
 //   set by hand) stops the run at step 1 and is named; before, its NaN speed was dropped from the
-//   time step by std::max (issue 19, item 6);
+//   time step by std::max (item 6);
 // - physics.on_numerical_fault = fail_particle: a NaN stress and a negative Jacobian flag their
 //   particles (zero stress, state.failed, no further update) and the run completes with 2
 //   faulted particles; a particle outside the grid still stops it.

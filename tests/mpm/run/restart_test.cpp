@@ -1,4 +1,4 @@
-// Checkpoint and restart (issue 8; docs/mpm.md#checkpoint-and-restart) on
+// Checkpoint and restart (docs/mpm.md#checkpoint-and-restart) on
 // tests/data/mpm_runs/contact_friction_av.json: two blocks in oblique contact with friction
 // (two velocity fields, nodal stress, friction heat into the temperatures), artificial viscosity
 // (q per particle) and physics.on_numerical_fault = fail_particle (one particle's stress is made

@@ -1,4 +1,4 @@
-// Active-block grid (issue 7; grid/grid.hpp, docs/performance.md#active-blocks): the grid loops
+// Active-block grid (grid/grid.hpp, docs/performance.md#active-blocks): the grid loops
 // visit only the 2x2x2-node blocks the particles' stencils touch. Skipping nodes without mass
 // must not change a single bit of what the particles see:
 // (a) the report's Case 1 deck (data/scenes/sphere_cylinder/case01.json: four velocity fields,

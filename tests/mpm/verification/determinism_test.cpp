@@ -1,4 +1,4 @@
-// Threads and determinism (issue 8; docs/mpm.md#threads-and-determinism) on
+// Threads and determinism (docs/mpm.md#threads-and-determinism) on
 // data/scenes/verification/two_spheres.json (two elastic spheres, 4304 particles, head-on at
 // 2 x 10 m/s in one velocity field), 50 steps of the default gimp/MUSL.
 // (a) The same scene and thread count (2) give bit-identical results: every particle's position,

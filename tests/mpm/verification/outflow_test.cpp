@@ -1,4 +1,4 @@
-// grid.outflow (issue 19, item 8): a stress-free block flying out through a free face of the grid
+// grid.outflow (item 8): a stress-free block flying out through a free face of the grid
 // at 400 m/s. With "remove" each particle that crosses the edge leaves the simulation and its
 // mass, momentum and kinetic energy go to the ledger's outflow columns, so at every step
 //   momentum + outflow_momentum = p0 to 1e-12 |p0| (nothing else acts: free faces, no stress),

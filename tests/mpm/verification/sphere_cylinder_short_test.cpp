@@ -14,7 +14,7 @@
 // (viscous_work, friction_heat, eroded_energy) non-decreasing; particles fail and every failed one
 // is converted; |energy_error| < 0.04 at the end (measured -0.030: the contact projection between
 // the converted particles' field and their parent field, docs/sphere_cylinder.md).
-// case01 to 10 us at multiplier 0.2, friction contact against single_velocity (issue 19): the
+// case01 to 10 us at multiplier 0.2, friction contact against single_velocity: the
 // energy_error at the end differs by less than 1.5 points. Measured -0.91 % against -0.26 %;
 // before the contact treated a material's parent and companion fields as one body against the
 // other material, friction with particle conversion ended at -5.09 % (contact/contact.hpp).

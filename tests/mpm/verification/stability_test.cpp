@@ -1,4 +1,4 @@
-// Stability where methods fail (issue 7): the energy-growth check (time.max_energy_growth,
+// Stability where methods fail: the energy-growth check (time.max_energy_growth,
 // docs/mpm.md#failure-handling) on data/scenes/verification/two_spheres.json (two elastic spheres,
 // 4304 particles, head-on at 2 x 10 m/s in one velocity field, 30 us) and contact_blocks.json.
 // (a) Stable: at multiplier 0.5 the run completes and |energy_error| stays below 3 % of E0 at every
