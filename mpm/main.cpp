@@ -1,7 +1,8 @@
 // mpm: the explicit MPM solver's command line.
-//   mpm run SCENE.json [--out DIR] [--threads N] [--inject-fault KIND:STEP[:PARTICLE]]...
+//   mpm run SCENE.json [--out DIR] [--threads N] [--set JSON]... [--progress]
+//           [--inject-fault KIND:STEP[:PARTICLE]]...
 //   mpm run --restart DIR [--threads N]
-//   mpm check SCENE.json [--threads N]
+//   mpm check SCENE.json [--threads N] [--set JSON]...
 //   mpm study SCENE_DIR --out DIR [--threads N] [--cases LIST] [--no-plot]
 // Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path; a refused restart),
 // 3 run failure (numerical fault), 4 memory estimate above the available memory, 128 + signal
@@ -22,9 +23,10 @@
 namespace {
 
 const char* kUsage =
-    "usage: mpm run SCENE.json [--out DIR] [--threads N] [--inject-fault KIND:STEP[:PARTICLE]]\n"
-    "       mpm run --restart DIR [--threads N]\n"
-    "       mpm check SCENE.json [--threads N]\n"
+    "usage: mpm run SCENE.json [--out DIR] [--threads N] [--set JSON]... [--progress]\n"
+    "               [--inject-fault KIND:STEP[:PARTICLE]]...\n"
+    "       mpm run --restart DIR [--threads N] [--progress]\n"
+    "       mpm check SCENE.json [--threads N] [--set JSON]...\n"
     "       mpm study SCENE_DIR --out DIR [--threads N] [--cases case01,case04] [--no-plot]\n"
     "       mpm --help\n"
     "run:   runs the scene; writes DIR/history.csv (energy and momentum ledger), DIR/particles/\n"
@@ -34,6 +36,9 @@ const char* kUsage =
     "       on SIGINT/SIGTERM, after which the run stops with 128 + the signal number).\n"
     "       DIR defaults to the scene's output.directory. Refuses to start (exit 4) when the\n"
     "       memory estimate exceeds the available memory.\n"
+    "       --set JSON (run, check; repeatable): a JSON merge patch over the scene (after its\n"
+    "       extends) before validation. --progress: the progress line also when stderr is not\n"
+    "       a terminal (a batch job's log).\n"
     "       --restart DIR continues DIR's run from DIR/checkpoint.bin with DIR/scene.json and\n"
     "       the checkpoint's thread count: bit-identical to an uninterrupted run (--threads N\n"
     "       overrides, with a warning that it no longer is).\n"
@@ -106,6 +111,8 @@ int main(int argc, char** argv) {
     return usage_error("unknown command '" + command + "'");
   const bool study = command == "study";
   std::string scene_file, restart_dir;
+  std::vector<impact::Json> patches;
+  bool progress = isatty(STDERR_FILENO) != 0;
   impact::mpm::RunOptions options;
   options.comm = &comm;
   impact::mpm::StudyOptions study_options;
@@ -140,6 +147,15 @@ int main(int argc, char** argv) {
             std::string(argv[i]) + "'");
       }
       options.faults.push_back(*fault);
+    } else if (a == "--set" && !study) {
+      if (i + 1 >= argc) return usage_error("--set needs a JSON merge patch");
+      try {
+        patches.push_back(impact::Json::parse(argv[++i]));
+      } catch (const impact::Json::parse_error& e) {
+        return usage_error("--set: invalid JSON: " + std::string(e.what()));
+      }
+    } else if (a == "--progress") {
+      progress = true;
     } else if (a == "--no-plot" && study) {
       study_options.plot = false;
     } else if (!a.empty() && a[0] == '-') {
@@ -154,6 +170,8 @@ int main(int argc, char** argv) {
     if (!scene_file.empty())
       return usage_error("--restart takes the scene from DIR/scene.json: no SCENE.json");
     if (!options.out_dir.empty()) return usage_error("--restart writes into DIR: no --out");
+    if (!patches.empty())
+      return usage_error("--restart continues DIR/scene.json as it is: no --set");
   } else if (scene_file.empty()) {
     return usage_error(study ? "missing SCENE_DIR" : "missing SCENE.json");
   }
@@ -162,13 +180,15 @@ int main(int argc, char** argv) {
     if (study) {
       study_options.scene_dir = scene_file;
       study_options.out_dir = options.out_dir;
-      study_options.progress = isatty(STDERR_FILENO) != 0;
+      study_options.progress = progress;
       return impact::mpm::run_study(study_options);
     }
-    options.progress = isatty(STDERR_FILENO) != 0;
+    options.progress = progress;
     options.handle_signals = true;
     if (!restart_dir.empty()) return impact::mpm::restart(restart_dir, options);
-    const impact::mpm::Scene scene = impact::mpm::load_scene(scene_file);
+    impact::Json document = impact::mpm::load_scene_document(scene_file);
+    for (const impact::Json& patch : patches) document.merge_patch(patch);
+    const impact::mpm::Scene scene = impact::mpm::read_scene(document, scene_file);
     for (const std::string& w : scene.warnings) std::cerr << "mpm: warning: " << w << '\n';
     if (command == "check") {
       std::cout << scene.resolved.dump(2) << '\n';

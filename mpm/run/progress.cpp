@@ -1,9 +1,14 @@
 #include "mpm/run/progress.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <iostream>
 
 namespace impact::mpm {
+
+ProgressLine::ProgressLine(bool enabled)
+    : enabled_(enabled), in_place_(isatty(STDERR_FILENO) != 0) {}
 
 void ProgressLine::start() {
   start_ = last_ = std::chrono::steady_clock::now();
@@ -11,16 +16,21 @@ void ProgressLine::start() {
 
 void ProgressLine::update(const Simulation& sim) {
   const auto now = std::chrono::steady_clock::now();
-  if (!enabled_ || now - last_ <= std::chrono::milliseconds(500)) return;
+  if (!enabled_) return;
+  const auto interval = in_place_ ? std::chrono::milliseconds(500) : std::chrono::seconds(10);
+  if (shown_ && now - last_ <= interval) return;
+  if (in_place_ && !shown_ && now - last_ <= interval) return;
   last_ = now;
+  shown_ = true;
   const double wall = std::chrono::duration<double>(now - start_).count();
   const double eta = wall * (sim.scene().time.max_time - sim.time()) / sim.time();
-  std::fprintf(stderr, "\rstep %ld  t %.4e s  dt %.3e s  energy_error %+.3e  ETA %.0f s   ",
-               sim.steps(), sim.time(), sim.next_dt(), sim.ledger().row().energy_error, eta);
+  std::fprintf(stderr, "%sstep %ld  t %.4e s  dt %.3e s  energy_error %+.3e  ETA %.0f s%s",
+               in_place_ ? "\r" : "", sim.steps(), sim.time(), sim.next_dt(),
+               sim.ledger().row().energy_error, eta, in_place_ ? "   " : "\n");
 }
 
 void ProgressLine::end() const {
-  if (enabled_) std::fprintf(stderr, "\n");
+  if (enabled_ && in_place_) std::fprintf(stderr, "\n");
 }
 
 void FaultReport::report(const Simulation& sim) {

@@ -1,6 +1,8 @@
 // What a run tells the terminal as it goes: a progress line (step, time, dt, energy error, ETA;
-// rewritten in place at most twice a second) and the particles flagged by numerical faults
-// (physics.on_numerical_fault = fail_particle: the first 20 printed, the rest counted).
+// on a terminal rewritten in place at most twice a second; in a log (stderr not a terminal, the
+// line asked for with --progress) one whole line after the first step and then every 10 s) and the
+// particles flagged by numerical faults (physics.on_numerical_fault = fail_particle: the first 20
+// printed, the rest counted).
 #pragma once
 
 #include <chrono>
@@ -11,18 +13,20 @@ namespace impact::mpm {
 
 class ProgressLine {
  public:
-  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+  explicit ProgressLine(bool enabled);
   /// Starts the clock of the ETA (when the step loop starts).
   void start();
   /// Rewrites the line if half a second has passed since the last one.
   void update(const Simulation& sim);
   /// What a message on stderr starts with: a line break while the progress line is shown.
-  const char* break_line() const { return enabled_ ? "\n" : ""; }
+  const char* break_line() const { return enabled_ && in_place_ ? "\n" : ""; }
   /// Ends the line (a final line break).
   void end() const;
 
  private:
   bool enabled_;
+  bool in_place_;       ///< stderr is a terminal: the line is rewritten with '\r'
+  bool shown_ = false;  ///< a line was written
   std::chrono::steady_clock::time_point start_, last_;
 };
 
