@@ -18,8 +18,8 @@ void ProgressLine::update(const Simulation& sim) {
   const auto now = std::chrono::steady_clock::now();
   if (!enabled_) return;
   const auto interval = in_place_ ? std::chrono::milliseconds(500) : std::chrono::seconds(10);
-  if (shown_ && now - last_ <= interval) return;
-  if (in_place_ && !shown_ && now - last_ <= interval) return;
+  // A log gets its first line at once (the run has started); a terminal after half a second.
+  if ((shown_ || in_place_) && now - last_ <= interval) return;
   last_ = now;
   shown_ = true;
   const double wall = std::chrono::duration<double>(now - start_).count();
