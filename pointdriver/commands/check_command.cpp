@@ -1,17 +1,15 @@
 // pointdriver check CHECK.json: a parameter set against measured curves, with tolerances (for
 // users' CI): per-curve RMS, max and mean signed errors, overlay figures, exit 3 when a tolerance
 // is exceeded.
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
+#include "pointdriver/fit/curve_check.hpp"
 #include "pointdriver/fit/fit_config.hpp"
 #include "pointdriver/fit/fit_report.hpp"
-#include "pointdriver/fit/strength_fit.hpp"
 #include "pointdriver/output/junit.hpp"
 
 namespace impact::pointdriver {
@@ -48,91 +46,30 @@ int command_check(const std::vector<std::string>& args) {
     if (o.has("--out")) config.output_directory = o.get("--out", "check");
     if (o.has("--no-figures")) config.figures = false;
     fs::create_directories(config.output_directory);
-    const fit::CurveModel model =
-        fit::make_curve_model(config.material_file, config.overrides, config.data, config.curves);
-    for (const auto& e : model.experiments()) {
+    const fit::CurveCheck check = fit::check_curves(config);
+    for (const auto& e : check.experiments) {
       for (const auto& w : e.warnings) std::cerr << "pointdriver check: warning: " << w << '\n';
     }
-    const auto curves = model.curves({fit::law_values(model.base().flow_stress)});
-    std::vector<fit::CurveErrors> errors;
-    for (std::size_t e = 0; e < model.experiments().size(); ++e) {
-      std::vector<double> v;
-      for (double x : model.experiments()[e].plastic_strain)
-        v.push_back(fit::interpolate_stress(curves[0][e], x));
-      errors.push_back(fit::curve_errors(model.experiments()[e], v, model.adiabatic(e)));
-      if (!curves[0][e].completed)
-        std::cerr << "WARNING: " << model.experiments()[e].name
-                  << ": the driver run did not complete (points past the last solved step are "
-                     "compared with its stress): "
-                  << curves[0][e].error << '\n';
-    }
-    std::cout << "check of " << config.material_file << " against " << errors.size()
+    for (const auto& w : check.warnings) std::cerr << "WARNING: " << w << '\n';
+    std::cout << "check of " << config.material_file << " against " << check.errors.size()
               << " curves (model - data):\n";
-    fit::print_errors(std::cout, errors);
-    // Tolerances.
-    Json failures = Json::array();
-    std::vector<JunitCase> junit;
-    const auto& t = config.tolerance;
-    for (const auto& c : errors) {
-      const std::size_t before = failures.size();
-      auto test = [&](const char* what, std::optional<double> limit, double value, const char* unit,
-                      double scale) {
-        if (limit && value > *limit) {
-          std::ostringstream s;
-          s << c.name << ": " << what << ' ' << value / scale << ' ' << unit << " exceeds "
-            << *limit / scale << ' ' << unit;
-          failures.push_back(s.str());
-        }
-      };
-      test("RMS", t.rms, c.rms, "MPa", 1e6);
-      test("max", t.max, c.max, "MPa", 1e6);
-      test("|mean signed|", t.mean_signed, std::abs(c.mean_signed), "MPa", 1e6);
-      test("RMS", t.rms_percent, c.rms_percent(), "%", 1.0);
-      std::ostringstream what;
-      what << "RMS " << c.rms / 1e6 << " MPa (" << c.rms_percent() << " %), max " << c.max / 1e6
-           << " MPa, mean signed " << c.mean_signed / 1e6 << " MPa";
-      std::optional<std::string> failed;
-      for (std::size_t k = before; k < failures.size(); ++k)
-        failed = failed.value_or("") + (k > before ? "; " : "") + failures[k].get<std::string>();
-      junit.push_back(
-          {c.name, "check." + fs::path(config.file).stem().string(), 0.0, failed, what.str()});
-    }
-    const auto all = fit::overall(errors);
-    if (config.overall_rms && all.rms > *config.overall_rms) {
-      std::ostringstream s;
-      s << "overall RMS " << all.rms / 1e6 << " MPa exceeds " << *config.overall_rms / 1e6
-        << " MPa";
-      failures.push_back(s.str());
-    }
-    if (config.overall_rms) {
-      std::ostringstream s;
-      s << "overall RMS " << all.rms / 1e6 << " MPa, limit " << *config.overall_rms / 1e6 << " MPa";
-      junit.push_back({"overall RMS", "check." + fs::path(config.file).stem().string(), 0.0,
-                       all.rms > *config.overall_rms ? std::optional(s.str()) : std::nullopt,
-                       s.str()});
-    }
+    fit::print_errors(std::cout, check.errors);
     if (o.has("--junit"))
-      write_junit(o.get("--junit", ""), "pointdriver check " + config.file, junit);
+      write_junit(o.get("--junit", ""), "pointdriver check " + config.file, check.junit);
     // The verdict goes to stderr, so that a CI log shows it beside any error.
-    for (const auto& f : failures) std::cerr << "EXCEEDED: " << f.get<std::string>() << '\n';
-    std::cerr << (failures.empty() ? "all within tolerance\n" : "tolerance exceeded\n");
-    const fs::path dir = config.output_directory;
-    Json report = {{"configuration", config.file},
-                   {"material", config.material_file},
-                   {"curves", fit::errors_json(errors)},
-                   {"overall", {{"rms [Pa]", all.rms}, {"max [Pa]", all.max}}},
-                   {"exceeded", failures},
-                   {"passed", failures.empty()}};
-    std::ofstream(dir / "check_report.json") << report.dump(2) << '\n';
+    for (const auto& f : check.exceeded) std::cerr << "EXCEEDED: " << f << '\n';
+    std::cerr << (check.exceeded.empty() ? "all within tolerance\n" : "tolerance exceeded\n");
+    std::ofstream(fs::path(config.output_directory) / "check_report.json")
+        << check.report.dump(2) << '\n';
     if (config.figures) {
       try {
-        fit::write_figures(config.output_directory, "check", model.experiments(), curves[0], {},
+        fit::write_figures(config.output_directory, "check", check.experiments, check.curves, {},
                            fs::path(config.material_file).filename().string(), "");
       } catch (const std::runtime_error& e) {
         std::cerr << "pointdriver check: " << e.what() << '\n';
       }
     }
-    return failures.empty() ? 0 : 3;
+    return check.exceeded.empty() ? 0 : 3;
   } catch (const InputError& e) {
     std::cerr << e.what() << '\n';
     return 2;
