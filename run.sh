@@ -27,12 +27,16 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian packages the build needs; each is installed only when missing.
-# python3-matplotlib draws the point driver's figures (pointdriver plot, verify, convergence).
-PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev python3-matplotlib)
+# python3-matplotlib draws the point driver's figures (pointdriver plot, verify, convergence);
+# python3-dev and pybind11-dev build the Python module impact (docs/python.md; optional: without
+# them it is left out).
+PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev python3-matplotlib
+  python3-dev pybind11-dev)
 # clang-14 + libclang-rt-14-dev (libFuzzer, sanitizer runtimes) build the fuzz targets (test, fuzz).
 FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
-# clang-format-14 checks every C++ file against .clang-format (test `clang_format`).
-STYLE_PACKAGES=(clang-format-14)
+# clang-format-14 checks every C++ file against .clang-format (test `clang_format`); pytest runs
+# the Python module's tests (python_pytest).
+TEST_TOOL_PACKAGES=(clang-format-14 python3-pytest)
 # Open MPI builds the domain decomposition (docs/mpi.md); the test job runs it on 2 and 4 ranks.
 # Optional: without it everything builds and runs on one rank.
 MPI_PACKAGES=(libopenmpi-dev openmpi-bin)
@@ -68,7 +72,7 @@ case "${1:-}" in
     /usr/bin/python3 mpm/study/study_plot.py out/recommended
     ;;
   test)
-    install_missing_packages "${FUZZ_PACKAGES[@]}" "${STYLE_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
+    install_missing_packages "${FUZZ_PACKAGES[@]}" "${TEST_TOOL_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
     # The test job treats every compiler warning as an error (-Wall -Wextra -Wpedantic are on).
     build release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
     # JUnit XML of each run for CI servers, in its build directory (build/junit.xml, ...).

@@ -4,7 +4,10 @@ then the three programs run from the moved prefix, with the shipped files (data,
 found beside the binaries (support/shipped_file.hpp) and the source tree ruled out
 (IMPACT_NO_SOURCE_TREE=1), from a working directory outside both trees.
 
-  relocation_test.py BUILD_DIR WORK_DIR
+  relocation_test.py BUILD_DIR WORK_DIR [--python PYTHON]
+
+With --python, the installed Python module is imported from the moved prefix's site-packages
+and used: a material from the shipped data, an update, a path and a short scene.
 """
 import os
 import shutil
@@ -20,7 +23,25 @@ def run(cmd, cwd, env, code=0):
     return done
 
 
-def main(build, work):
+PYTHON_SNIPPET = """
+import os, sys
+import numpy as np
+import impact
+assert impact.__file__.startswith(sys.argv[1]), impact.__file__
+m = impact.Material(impact.data_path("materials", "al6061_t6.json"))
+state, report = impact.update(m, m.initial_state(), np.diag([1e3, 0.0, 0.0])[None], 1e-7)
+assert report["status"][0] == "ok" and state["stress"][0, 0, 0] > 0.0
+r = impact.run_path(impact.data_path("paths", "uniaxial_stress_1000.json"))
+assert r.completed and r.units["stress_xx"] == "Pa"
+scene = {"extends": impact.data_path("scenes", "verification", "taylor_rod.json"),
+         "time": {"max_time": 2e-6}, "output": {"snapshots": False}}
+run = impact.run_scene(scene, out="py_rod", threads=1)
+assert run["exit_code"] == 0 and run["summary"]["status"] == "completed", run
+print("python OK", impact.__file__)
+"""
+
+
+def main(build, work, python=None):
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     first, moved = os.path.join(work, "prefix"), os.path.join(work, "moved", "elsewhere")
@@ -55,9 +76,20 @@ def main(build, work):
                 % scene)
     run([os.path.join(bin_dir, "mpm"), "run", short, "--out", "rod", "--threads", "1"], cwd, env)
     assert os.path.exists(os.path.join(cwd, "rod", "summary.json"))
-    print(f"OK: installed, moved to {moved}, material_check, pointdriver run/verify/plot and "
-          "mpm check/run work from there")
+    checked = "material_check, pointdriver run/verify/plot and mpm check/run"
+    if python:
+        version = subprocess.run([python, "-c", "import sys; print('%d.%d' % sys.version_info[:2])"],
+                                 capture_output=True, text=True, check=True).stdout.strip()
+        site = None
+        for root, dirs, _ in os.walk(moved):
+            if os.path.basename(root) == "site-packages" and "impact" in dirs:
+                site = root
+        assert site and f"python{version}" in site, f"no site-packages/impact under {moved}"
+        run([python, "-c", PYTHON_SNIPPET, moved], cwd, dict(env, PYTHONPATH=site))
+        checked += " and the Python module"
+    print(f"OK: installed, moved to {moved}; {checked} work from there")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    extra = sys.argv[3:]
+    main(sys.argv[1], sys.argv[2], extra[1] if extra[:1] == ["--python"] else None)
