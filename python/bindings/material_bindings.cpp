@@ -71,8 +71,17 @@ std::vector<Mat3> tensor_list(const Array& a) {
   return out;
 }
 
-/// The N points of a state dict. Missing keys keep the material's initial state at `temperature`
-/// (so {"temperature": T} alone is a batch at rest); N is the length of the first array given.
+/// state[name] as N values; `name` is named in the error.
+Array scalars(const py::dict& state, const char* name, py::ssize_t n) {
+  Array a = Array::ensure(state[name]);
+  if (!a || a.ndim() != 1 || a.shape(0) != n)
+    throw py::value_error(std::string("state['") + name + "']: expected an array of shape (" +
+                          std::to_string(n) + ",)");
+  return a;
+}
+
+/// The N points of a state dict. A key not given keeps the material's initial state at its room
+/// temperature (so {"temperature": T} alone is a batch at rest at T).
 std::vector<PointState> read_states(const ElasticPlastic& model, const py::dict& state,
                                     py::ssize_t n) {
   std::vector<PointState> out(static_cast<std::size_t>(n),
@@ -84,31 +93,25 @@ std::vector<PointState> read_states(const ElasticPlastic& model, const py::dict&
   }
   for (const auto& f : kScalars) {
     if (!state.contains(f.name)) continue;
-    const Array a = Array::ensure(state[f.name]);
-    if (!a || a.ndim() != 1 || a.shape(0) != n)
-      throw py::value_error(std::string("state['") + f.name + "']: expected an array of shape (" +
-                            std::to_string(n) + ",)");
-    const auto v = a.unchecked<1>();
+    const auto v = scalars(state, f.name, n).unchecked<1>();
     for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = v(i);
   }
   for (const auto& f : kFlags) {
     if (!state.contains(f.name)) continue;
-    const Array a = Array::ensure(state[f.name]);
-    if (!a || a.ndim() != 1 || a.shape(0) != n)
-      throw py::value_error(std::string("state['") + f.name + "']: expected an array of shape (" +
-                            std::to_string(n) + ",)");
-    const auto v = a.unchecked<1>();
+    const auto v = scalars(state, f.name, n).unchecked<1>();
     for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = v(i) != 0.0;
   }
   if (state.contains("failure_cause")) {
-    const Array a = Array::ensure(state["failure_cause"]);
-    for (py::ssize_t i = 0; a && a.ndim() == 1 && i < std::min(n, a.shape(0)); ++i)
-      out[i].failure_cause = static_cast<FailureCause>(static_cast<int>(a.at(i)));
+    const auto v = scalars(state, "failure_cause", n).unchecked<1>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+      if (v(i) < 0.0 || v(i) > static_cast<double>(FailureCause::becker))
+        throw py::value_error("state['failure_cause']: expected codes 0-4 (impact.failure_causes)");
+      out[i].failure_cause = static_cast<FailureCause>(static_cast<int>(v(i)));
+    }
   }
   if (state.contains("instability")) {
-    const Array a = Array::ensure(state["instability"]);
-    for (py::ssize_t i = 0; a && a.ndim() == 1 && i < std::min(n, a.shape(0)); ++i)
-      out[i].instability = static_cast<std::uint8_t>(a.at(i));
+    const auto v = scalars(state, "instability", n).unchecked<1>();
+    for (py::ssize_t i = 0; i < n; ++i) out[i].instability = static_cast<std::uint8_t>(v(i));
   }
   return out;
 }

@@ -16,9 +16,14 @@ from ._impact import InputError  # noqa: F401  (public)
 from . import _impact
 
 __all__ = ["InputError", "Material", "Table", "load_material", "update", "run_path", "fit",
-           "check", "run_scene", "check_scene", "read_history", "data_path", "__version__"]
+           "check", "run_scene", "check_scene", "read_history", "data_path", "failure_causes",
+           "update_statuses", "__version__"]
 
 __version__ = getattr(_impact, "__version__", "unknown")
+
+#: Names of the codes in a state's ``failure_cause`` and of an update report's ``status``.
+failure_causes = list(_impact.failure_cause_names)
+update_statuses = list(_impact.update_status_names)
 
 
 def data_path(*relative):
