@@ -1,5 +1,5 @@
 # Installs the build tree into a scratch prefix, configures and builds the consumer against it, and
-# runs it. Called by CTest with BUILD_DIR, SOURCE_DIR, WORK_DIR and MATERIAL defined.
+# runs it. Called by CTest with BUILD_DIR, SOURCE_DIR, WORK_DIR, MATERIAL and SCENE defined.
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
                 RESULT_VARIABLE rc)
@@ -19,4 +19,9 @@ endif()
 execute_process(COMMAND ${WORK_DIR}/build/install_consumer ${MATERIAL} RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the consumer ran but failed: ${rc}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/build/install_consumer_all ${MATERIAL} ${SCENE}
+                RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the find_package(Impact) consumer ran but failed: ${rc}")
 endif()
