@@ -30,8 +30,9 @@ cd "$(dirname "$0")"
 # python3-matplotlib draws the point driver's figures (pointdriver plot, verify, convergence);
 # python3-dev and pybind11-dev build the Python module impact (docs/python.md; optional: without
 # them it is left out).
-PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev python3-matplotlib
-  python3-dev pybind11-dev)
+# libcli11-dev parses every program's command line (support/command_line.hpp).
+PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev libcli11-dev
+  python3-matplotlib python3-dev pybind11-dev)
 # clang-14 + libclang-rt-14-dev (libFuzzer, sanitizer runtimes) build the fuzz targets (test, fuzz).
 FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
 # clang-format-14 checks every C++ file against .clang-format (test `clang_format`); pytest runs

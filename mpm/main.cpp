@@ -9,7 +9,6 @@
 // after a checkpoint on SIGINT (130) or SIGTERM (143).
 #include <unistd.h>
 
-#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -19,62 +18,20 @@
 #include "mpm/run/summary.hpp"
 #include "mpm/solver.hpp"
 #include "mpm/study/study.hpp"
+#include "support/command_line.hpp"
 
 namespace {
 
-const char* kUsage =
-    "usage: mpm run SCENE.json [--out DIR] [--threads N] [--set JSON]... [--progress]\n"
-    "               [--inject-fault KIND:STEP[:PARTICLE]]...\n"
-    "       mpm run --restart DIR [--threads N] [--progress]\n"
-    "       mpm check SCENE.json [--threads N] [--set JSON]...\n"
-    "       mpm study SCENE_DIR --out DIR [--threads N] [--cases case01,case04] [--no-plot]\n"
-    "       mpm --help\n"
-    "run:   runs the scene; writes DIR/history.csv (energy and momentum ledger), DIR/particles/\n"
-    "       step_NNNNNN.vtu + DIR/particles.pvd (ParaView), DIR/summary.json, DIR/scene.json\n"
-    "       (the resolved scene), DIR/status.json (step reached; completed, failed or\n"
-    "       interrupted), DIR/checkpoint.bin (every output.checkpoint_interval_steps steps, and\n"
-    "       on SIGINT/SIGTERM, after which the run stops with 128 + the signal number).\n"
-    "       DIR defaults to the scene's output.directory. Refuses to start (exit 4) when the\n"
-    "       memory estimate exceeds the available memory.\n"
-    "       --set JSON (run, check; repeatable): a JSON merge patch over the scene (after its\n"
-    "       extends) before validation. --progress: the progress line also when stderr is not\n"
-    "       a terminal (a batch job's log).\n"
-    "       --restart DIR continues DIR's run from DIR/checkpoint.bin with DIR/scene.json and\n"
-    "       the checkpoint's thread count: bit-identical to an uninterrupted run (--threads N\n"
-    "       overrides, with a warning that it no longer is).\n"
-    "       --inject-fault (developer, repeatable): nan:STEP:P (P's updated stress is NaN),\n"
-    "       nan_velocity:STEP:P, outside:STEP:P (P moved beyond the x+ face), jacobian:STEP:P\n"
-    "       (det F < 0), sigterm:STEP, sigint:STEP (the signal after step STEP).\n"
-    "       Under mpirun -np N (or srun), with a build that has MPI, the grid is split into N\n"
-    "       slabs along x, one per rank; rank 0 writes every file; a restart needs the same N\n"
-    "       (docs/mpi.md).\n"
-    "check: validates the scene and prints it resolved, with particle counts, mass and particle\n"
-    "       volume against the exact geometric volume per object, estimated steps and memory\n"
-    "       (exit 4 when the memory estimate exceeds the available memory).\n"
-    "study: the report's Table 2 study: runs SCENE_DIR/case*.json (by name, then\n"
-    "       recommended.json; --cases picks some) one after another, N threads each (default 2),\n"
-    "       without snapshots, into DIR/<case>/; then mpm/study/study_plot.py writes\n"
-    "       DIR/summary.csv + DIR/summary.md (one row per case) and DIR/<case>/energy.png (energy\n"
-    "       and momentum vs time beside case01; not with --no-plot). Python: $MPM_PYTHON,\n"
-    "       /usr/bin/python3 or python3 with matplotlib. Exit 3 if any case failed.\n"
+const char* kFooter =
+    "run writes DIR/history.csv (energy and momentum ledger), DIR/particles/step_NNNNNN.vtu +\n"
+    "DIR/particles.pvd (ParaView), DIR/summary.json, DIR/scene.json (resolved), DIR/status.json\n"
+    "and DIR/checkpoint.bin (every output.checkpoint_interval_steps steps, and on SIGINT or\n"
+    "SIGTERM, after which the run stops with 128 + the signal number). DIR defaults to the\n"
+    "scene's output.directory. run and check refuse (exit 4) a scene whose memory estimate\n"
+    "exceeds the available memory. Under mpirun -np N (or srun), with a build that has MPI, the\n"
+    "grid is split into N slabs along x; rank 0 writes every file (docs/mpi.md).\n"
     "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused\n"
     "restart), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
-
-int usage_error(const std::string& message) {
-  std::cerr << "mpm: " << message << '\n' << kUsage;
-  return 1;
-}
-
-/// A positive integer, the whole argument.
-bool parse_positive(const char* text, int& value) {
-  try {
-    std::size_t used = 0;
-    value = std::stoi(text, &used);
-    return used == std::strlen(text) && value >= 1;
-  } catch (const std::exception&) {
-    return false;
-  }
-}
 
 /// Comma-separated, no empty items.
 bool parse_list(const std::string& text, std::vector<std::string>& items) {
@@ -89,6 +46,11 @@ bool parse_list(const std::string& text, std::vector<std::string>& items) {
   }
 }
 
+int usage_error(const std::string& message) {
+  std::cerr << "mpm: " << message << "\nRun 'mpm --help' for the options.\n";
+  return impact::cli::kExitUsage;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -101,71 +63,68 @@ int main(int argc, char** argv) {
   }
   impact::mpm::MpiSession mpi(argc, argv);
   const impact::mpm::Communicator comm(&mpi);
-  if (argc < 2) return usage_error("missing command");
-  const std::string command = argv[1];
-  if (command == "--help" || command == "-h" || command == "help") {
-    std::cout << kUsage;
-    return 0;
-  }
-  if (command != "run" && command != "check" && command != "study")
-    return usage_error("unknown command '" + command + "'");
-  const bool study = command == "study";
-  std::string scene_file, restart_dir;
-  std::vector<impact::Json> patches;
-  bool progress = isatty(STDERR_FILENO) != 0;
+
+  CLI::App app{"The explicit MPM solver.", "mpm"};
+  impact::cli::Verbosity verbosity;
   impact::mpm::RunOptions options;
   options.comm = &comm;
   impact::mpm::StudyOptions study_options;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else if (a == "--out" && command != "check") {
-      if (i + 1 >= argc) return usage_error("--out needs a directory");
-      options.out_dir = argv[++i];
-    } else if (a == "--threads") {
-      if (i + 1 >= argc) return usage_error("--threads needs a number");
-      if (!parse_positive(argv[++i], options.threads))
-        return usage_error("--threads: expected a positive integer, got '" + std::string(argv[i]) +
-                           "'");
-      study_options.threads = options.threads;
-    } else if (a == "--cases" && study) {
-      if (i + 1 >= argc || !parse_list(argv[++i], study_options.cases))
-        return usage_error(
-            "--cases needs a comma-separated list of case names, e.g. case01,case04");
-    } else if (a == "--restart" && command == "run") {
-      if (i + 1 >= argc) return usage_error("--restart needs a directory");
-      restart_dir = argv[++i];
-    } else if (a == "--inject-fault" && command == "run") {
-      if (i + 1 >= argc) return usage_error("--inject-fault needs KIND:STEP[:PARTICLE]");
-      const auto fault = impact::mpm::parse_fault_injection(argv[++i]);
-      if (!fault) {
-        return usage_error(
-            "--inject-fault: expected nan|nan_velocity|outside|jacobian:STEP:PARTICLE "
-            "or sigterm|sigint:STEP (STEP >= 1), got '" +
-            std::string(argv[i]) + "'");
-      }
-      options.faults.push_back(*fault);
-    } else if (a == "--set" && !study) {
-      if (i + 1 >= argc) return usage_error("--set needs a JSON merge patch");
-      try {
-        patches.push_back(impact::Json::parse(argv[++i]));
-      } catch (const impact::Json::parse_error& e) {
-        return usage_error("--set: invalid JSON: " + std::string(e.what()));
-      }
-    } else if (a == "--progress") {
-      progress = true;
-    } else if (a == "--no-plot" && study) {
-      study_options.plot = false;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_file.empty()) {
-      scene_file = a;
-    } else {
-      return usage_error("unexpected argument '" + a + "'");
-    }
+  std::string scene_file, restart_dir, cases;
+  std::vector<std::string> set_texts, fault_texts;
+  bool progress = isatty(STDERR_FILENO) != 0;
+  app.require_subcommand(1);
+  CLI::App* run = app.add_subcommand("run", "run a scene to its end time");
+  CLI::App* check = app.add_subcommand("check", "validate a scene; particles, mass, memory");
+  CLI::App* study =
+      app.add_subcommand("study", "the report's Table 2 study: every case of a folder");
+  for (CLI::App* c : {run, check, study}) {
+    c->add_option("--threads", options.threads, "OpenMP threads (default: all; study: 2)")
+        ->type_name("N")
+        ->check(CLI::PositiveNumber);
   }
+  run->add_option("SCENE.json", scene_file, "scene file (docs/scenes.md)");
+  check->add_option("SCENE.json", scene_file, "scene file")->required();
+  study->add_option("SCENE_DIR", scene_file, "folder of case*.json (+ recommended.json)")
+      ->required();
+  run->add_option("-o,--out", options.out_dir, "output directory")->type_name("DIR");
+  study->add_option("-o,--out", options.out_dir, "output directory (one folder per case)")
+      ->type_name("DIR")
+      ->required();
+  impact::cli::add_set(*run, set_texts, "the scene (after its extends)");
+  impact::cli::add_set(*check, set_texts, "the scene (after its extends)");
+  for (CLI::App* c : {run, study})
+    c->add_flag("--progress", progress, "the progress line also off a terminal (a batch log)");
+  run->add_option("--restart", restart_dir,
+                  "continue DIR's run from DIR/checkpoint.bin (bit-identical; no SCENE.json)")
+      ->type_name("DIR");
+  run->add_option("--inject-fault", fault_texts,
+                  "developer: nan|nan_velocity|outside|jacobian:STEP:P, sigterm|sigint:STEP")
+      ->type_name("KIND:STEP[:P]")
+      ->allow_extra_args(false);
+  study->add_option("--cases", cases, "comma-separated case names, e.g. case01,case04");
+  bool no_plot = false;
+  study->add_flag("--no-plot", no_plot, "write the table only (no figures)");
+  // mpm --help lists the commands; each command's --help its options, the common ones included.
+  app.footer(kFooter);
+  app.set_version_flag("--version", std::string("mpm ") + IMPACT_VERSION);
+  for (CLI::App* c : {run, check, study}) impact::cli::describe(*c, kFooter, verbosity);
+  if (const auto code = impact::cli::parse(app, argc, argv, verbosity)) return *code;
+
+  for (const auto& text : fault_texts) {
+    const auto fault = impact::mpm::parse_fault_injection(text);
+    if (!fault) {
+      return usage_error(
+          "--inject-fault: expected nan|nan_velocity|outside|jacobian:STEP:PARTICLE or "
+          "sigterm|sigint:STEP (STEP >= 1), got '" +
+          text + "'");
+    }
+    options.faults.push_back(*fault);
+  }
+  if (!cases.empty() && !parse_list(cases, study_options.cases))
+    return usage_error("--cases needs a comma-separated list of case names, e.g. case01,case04");
+  if (options.threads > 0) study_options.threads = options.threads;
+  study_options.plot = !no_plot;
+  const std::vector<impact::Json> patches = impact::cli::patches_of(set_texts);
   if (!restart_dir.empty()) {
     if (!scene_file.empty())
       return usage_error("--restart takes the scene from DIR/scene.json: no SCENE.json");
@@ -173,11 +132,10 @@ int main(int argc, char** argv) {
     if (!patches.empty())
       return usage_error("--restart continues DIR/scene.json as it is: no --set");
   } else if (scene_file.empty()) {
-    return usage_error(study ? "missing SCENE_DIR" : "missing SCENE.json");
+    return usage_error("run: missing SCENE.json (or --restart DIR)");
   }
-  if (study && options.out_dir.empty()) return usage_error("study needs --out DIR");
   try {
-    if (study) {
+    if (study->parsed()) {
       study_options.scene_dir = scene_file;
       study_options.out_dir = options.out_dir;
       study_options.progress = progress;
@@ -190,7 +148,8 @@ int main(int argc, char** argv) {
     for (const impact::Json& patch : patches) document.merge_patch(patch);
     const impact::mpm::Scene scene = impact::mpm::read_scene(document, scene_file);
     for (const std::string& w : scene.warnings) std::cerr << "mpm: warning: " << w << '\n';
-    if (command == "check") {
+    if (verbosity.verbose) std::cerr << scene.resolved.dump(2) << '\n';
+    if (check->parsed()) {
       std::cout << scene.resolved.dump(2) << '\n';
       const int threads = impact::mpm::run_threads(options.threads);
       // An oversized scene is reported without seeding it.

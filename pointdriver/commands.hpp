@@ -14,6 +14,6 @@ int command_convergence(const std::vector<std::string>& args);
 int command_fit(const std::vector<std::string>& args);
 int command_check(const std::vector<std::string>& args);
 int command_cards(const std::vector<std::string>& args);
-int command_plot(const std::vector<std::string>& args, const char* argv0);
+int command_plot(const std::vector<std::string>& args);
 
 }  // namespace impact::pointdriver

@@ -1,55 +1,70 @@
-// pointdriver: runs material-point paths through the models library, verifies it, and plots.
-//   pointdriver run PATH.json [-o out.csv] [--set JSON]     one path, one CSV row per step
-//   pointdriver verify [--out DIR] [--case NAME]            the verification suite
-//   pointdriver batch --paths P1.json ... [--materials M.json ...] [--out DIR]
-//   pointdriver convergence [--out DIR]                     accuracy versus cost study
-//   pointdriver plot out.csv --x COL --y COL [--y COL ...] -o fig.png
-//   pointdriver fit FIT.json [--out DIR]                   flow-stress fit through the driver
-//   pointdriver check CHECK.json [--out DIR]               a parameter set against data
-//   pointdriver cards MATERIAL.json [--units U] [--out DIR] LS-DYNA and Abaqus cards
-// Exit codes: 0 success, 1 usage error, 2 input error, 3 a step could not be solved or a
-// verification case failed.
-#include <cstring>
+// pointdriver: runs material-point paths through the models library, verifies it, fits and
+// checks flow-stress laws, and plots. `pointdriver <command> --help` gives each command's options
+// (pointdriver/commands/, on the programs' convention: support/command_line.hpp).
+// Exit codes: 0 success, 1 usage error, 2 input error, 3 a step could not be solved, a check or a
+// verification case failed, or a fit did not converge.
+#include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "pointdriver/commands.hpp"
+#include "support/command_line.hpp"
 
 namespace {
 
-const char* usage =
-    "usage: pointdriver <command> [options]   (pointdriver <command> --help for details)\n"
-    "commands:\n"
-    "  run PATH.json [-o OUT.csv] [--set JSON]   run one path; one CSV row per step\n"
-    "  verify [--out DIR] [--case NAME]          run the verification suite (table + figures)\n"
-    "  batch --paths P.json... [--materials M.json...] [--out DIR]\n"
-    "                                            every material on every path in one process\n"
-    "  convergence [--out DIR] [--quick]         accuracy versus cost of three paths\n"
-    "  plot OUT.csv --x COL --y COL... -o FIG.png   quick figure (python3-matplotlib)\n"
-    "  fit FIT.json [--out DIR]                  fit a flow-stress law to measured curves\n"
-    "  check CHECK.json [--out DIR]              check a parameter set against measured curves\n"
-    "  cards MATERIAL.json [--units U] [--out DIR]   LS-DYNA and Abaqus Johnson-Cook cards\n"
-    "exit codes: 0 success, 1 usage, 2 input error, 3 unsolved step or failed verification\n";
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const std::vector<std::string>&);
+};
+
+/// Every command, in the order --help lists them.
+const std::vector<Command>& commands() {
+  using namespace impact::pointdriver;
+  static const std::vector<Command> list = {
+      {"run", "run one path; one CSV row per step", command_run},
+      {"verify", "run the verification suite (table + figures)", command_verify},
+      {"batch", "every material on every path in one process", command_batch},
+      {"convergence", "accuracy versus cost of three paths", command_convergence},
+      {"plot", "quick figure of CSV columns (python3-matplotlib)", command_plot},
+      {"fit", "fit a flow-stress law to measured curves", command_fit},
+      {"check", "check a parameter set against measured curves", command_check},
+      {"cards", "LS-DYNA and Abaqus Johnson-Cook cards", command_cards}};
+  return list;
+}
+
+void print_usage(std::ostream& out) {
+  out << "Material-point paths, verification, fitting and checking of flow-stress laws.\n"
+         "Usage: pointdriver COMMAND [OPTIONS]   (pointdriver COMMAND --help for its options)\n\n"
+         "Commands:\n";
+  for (const auto& c : commands())
+    out << "  " << std::left << std::setw(14) << c.name << c.summary << '\n';
+  out << "\nEvery command takes --help, --version, -q/--quiet and -v/--verbose.\n"
+         "Exit codes: 0 success, 1 usage, 2 input error, 3 unsolved step, failed check or\n"
+         "verification, fit not converged.\n";
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-    std::cout << usage;
-    return argc < 2 ? 1 : 0;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) {
+    print_usage(std::cerr);
+    return impact::cli::kExitUsage;
   }
-  const std::string command = argv[1];
-  const std::vector<std::string> args(argv + 2, argv + argc);
-  using namespace impact::pointdriver;
-  if (command == "run") return command_run(args);
-  if (command == "verify") return command_verify(args);
-  if (command == "batch") return command_batch(args);
-  if (command == "convergence") return command_convergence(args);
-  if (command == "fit") return command_fit(args);
-  if (command == "check") return command_check(args);
-  if (command == "cards") return command_cards(args);
-  if (command == "plot") return command_plot(args, argv[0]);
-  std::cerr << "pointdriver: unknown command '" << command << "'\n" << usage;
-  return 1;
+  if (args[0] == "--help" || args[0] == "-h") {
+    print_usage(std::cout);
+    return 0;
+  }
+  if (args[0] == "--version") {
+    std::cout << "pointdriver " << IMPACT_VERSION << '\n';
+    return 0;
+  }
+  for (const auto& c : commands()) {
+    if (args[0] == c.name) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
+  std::cerr << "pointdriver: unknown command '" << args[0] << "'\n";
+  print_usage(std::cerr);
+  return impact::cli::kExitUsage;
 }

@@ -1,37 +1,26 @@
-// material_check FILE [--set JSON]: validates a material file and prints the resolved parameters,
-// or every input problem (file, JSON key path, expectation) with exit code 2. Warnings (a likely
-// unit slip) go to stderr and do not change the exit code.
-#include <cstring>
+// material_check MATERIAL.json [--set JSON]...: validates a material file and prints the resolved
+// parameters, or every input problem (file, JSON key path, expectation) with exit code 2.
+// Warnings (a likely unit slip) go to stderr and do not change the exit code. The command line
+// follows the programs' convention (support/command_line.hpp; the library itself does not use it).
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "models/material/material.hpp"
+#include "support/command_line.hpp"
 
 int main(int argc, char** argv) {
-  const char* usage =
-      "usage: material_check MATERIAL.json [--set JSON_MERGE_PATCH]\n"
-      "Validates a material file and prints its resolved parameters (SI units).\n"
-      "Exit codes: 0 valid, 1 usage error, 2 input error.\n";
-  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-    std::cout << usage;
-    return argc < 2 ? 1 : 0;
-  }
-  std::vector<impact::Json> patches;  // applied in order; kept apart so nulls delete keys
-  for (int i = 2; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--set") == 0 && i + 1 < argc) {
-      try {
-        patches.push_back(impact::Json::parse(argv[++i]));
-      } catch (const impact::Json::parse_error& e) {
-        std::cerr << "material_check: --set: invalid JSON: " << e.what() << '\n';
-        return 1;
-      }
-    } else {
-      std::cerr << "material_check: unknown option '" << argv[i] << "'\n" << usage;
-      return 1;
-    }
-  }
+  CLI::App app{"Validates a material file and prints its resolved parameters (SI units).",
+               "material_check"};
+  impact::cli::Verbosity verbosity;
+  std::string file;
+  std::vector<std::string> patches;
+  app.add_option("MATERIAL.json", file, "material file (docs/models.md)")->required();
+  impact::cli::add_set(app, patches, "the material");
+  impact::cli::describe(app, "Exit codes: 0 valid, 1 usage error, 2 input error.", verbosity);
+  if (const auto code = impact::cli::parse(app, argc, argv, verbosity)) return *code;
   try {
-    const impact::Material m = impact::load_material(argv[1], patches);
+    const impact::Material m = impact::load_material(file, impact::cli::patches_of(patches));
     for (const auto& w : m.warnings) std::cerr << "material_check: warning: " << w << '\n';
     std::cout << impact::to_json(m).dump(2) << '\n';
     return 0;

@@ -25,23 +25,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* batch_help =
-    "usage: pointdriver batch --paths P1.json [P2.json ...] [--materials M1 [M2 ...]]\n"
-    "                         [--set JSON]... [--out DIR] [--threads N] [--no-csv]\n"
+const CommandSpec batch_command{
+    "batch",
     "Runs every material on every path in one process, over N threads (default: all cores).\n"
     "Each material is one of\n"
     "  - a material file (a JSON document with both \"density\" and \"constitutive_model\"):\n"
     "    used as it is on every path;\n"
     "  - any other JSON file, or inline JSON starting with '{': a merge patch over each path's\n"
     "    own material (e.g. '{\"constitutive_model\": {\"flow_stress\": {\"A\": 3.0e8}}}').\n"
-    "Without --materials each path runs with its own material. --set applies a JSON merge patch\n"
-    "to every path (repeatable), as in `pointdriver run`.\n"
+    "Without --materials each path runs with its own material.\n"
     "Writes DIR/<path>__<material>.csv per run (columns as `pointdriver run`; not with --no-csv)\n"
     "and DIR/batch_summary.csv: path, material, steps, completed, failure cause, failure time,\n"
-    "final stress_xx, plastic strain and temperature, wall time, error. Default DIR: batch.\n"
-    "Names: the file stems; an inline patch is set<k>, k its position in --materials.\n"
+    "final stress_xx, plastic strain and temperature, wall time, error.\n"
+    "Names: the file stems; an inline patch is set<k>, k its position in --materials.",
+    "", 0,
     "Exit codes: 0 every run completed, 1 usage, 2 input error, 3 a step could not be solved in\n"
-    "some run (its error is in the summary).\n";
+    "some run (its error is in the summary).\n"};
 
 struct MaterialEntry {
   std::string name;
@@ -99,18 +98,18 @@ std::string csv_number(double v) {
 
 int command_batch(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code = parse_command("batch", batch_help, o, args,
-                                           {{"--paths", -1},
-                                            {"--materials", -1},
-                                            {"--set", 1},
-                                            {"--out", 1},
-                                            {"--threads", 1},
-                                            {"--no-csv", 0}},
-                                           0)) {
+  if (const auto exit_code =
+          parse_command(batch_command, o, args,
+                        {{"--paths", -1, "path files (required)", "P.json"},
+                         {"--materials", -1, "material files, patch files or inline patches", "M"},
+                         {"--set", 1, "JSON merge patch over every path (repeatable)", "JSON"},
+                         {"-o|--out", 1, "output directory (default: batch)", "DIR"},
+                         {"--threads", 1, "threads (default: all cores)", "N"},
+                         {"--no-csv", 0, "the summary only"}})) {
     return *exit_code;
   }
   if (!o.has("--paths")) {
-    std::cerr << "pointdriver batch: missing --paths\n" << batch_help;
+    std::cerr << "pointdriver batch: missing --paths (pointdriver batch --help)\n";
     return 1;
   }
   int threads = 0;

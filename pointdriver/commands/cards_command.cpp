@@ -14,33 +14,36 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* cards_help =
-    "usage: pointdriver cards MATERIAL.json [--units SYSTEM] [--out DIR] [--set JSON]\n"
+const CommandSpec cards_command{
+    "cards",
     "Writes a Johnson-Cook material as LS-DYNA *MAT_JOHNSON_COOK with its *EOS card and as an\n"
     "Abaqus *MATERIAL block (*PLASTIC, HARDENING=JOHNSON COOK; *RATE DEPENDENT) in a consistent\n"
     "unit system (docs/fitting.md): SI (m, kg, s: Pa; the default), mm-s-tonne (MPa), mm-ms-kg\n"
-    "(GPa) or mm-ms-g (MPa); temperatures in K. --set: a JSON merge patch over the material.\n"
-    "Prints both; with --out DIR writes DIR/<material>.k and DIR/<material>.inp instead.\n"
+    "(GPa) or mm-ms-g (MPa); temperatures in K. Prints both; with --out DIR writes\n"
+    "DIR/<material>.k and DIR/<material>.inp instead.",
+    "MATERIAL.json", 1,
     "Exit codes: 0 done, 1 usage, 2 input error (a bad material, a law other than Johnson-Cook,\n"
-    "an unknown unit system).\n";
+    "an unknown unit system).\n"};
 
 }  // namespace
 
 int command_cards(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code = parse_command("cards", cards_help, o, args,
-                                           {{"--units", 1}, {"--out", 1}, {"--set", 1}}, 1)) {
+  if (const auto exit_code = parse_command(
+          cards_command, o, args,
+          {{"--units", 1, "SI (default), mm-s-tonne, mm-ms-kg or mm-ms-g", "SYSTEM"},
+           {"-o|--out", 1, "write the cards into DIR instead of printing them", "DIR"},
+           {"--set", 1, "JSON merge patch over the material (repeatable)", "JSON"}})) {
     return *exit_code;
   }
   if (o.positional.size() != 1) {
-    std::cerr << "pointdriver cards: expected one MATERIAL.json\n" << cards_help;
+    std::cerr << "pointdriver cards: expected one MATERIAL.json (pointdriver cards --help)\n";
     return 1;
   }
   try {
     const UnitSystem& units = unit_system(o.get("--units", "SI"));
-    Json patch = Json::object();
-    if (o.has("--set")) patch = Json::parse(o.get("--set", "{}"));
-    const Material material = load_material(o.positional[0], patch);
+    const Material material = load_material(o.positional[0], cli::patches_of(o.all("--set")));
+    if (o.verbosity.verbose) std::cerr << to_json(material).dump(2) << '\n';
     const std::string dyna = ls_dyna_cards(material, units);
     const std::string abaqus = abaqus_cards(material, units);
     if (!o.has("--out")) {

@@ -18,30 +18,37 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* check_help =
-    "usage: pointdriver check CHECK.json [--out DIR] [--no-figures] [--junit FILE]\n"
+const CommandSpec check_command{
+    "check",
     "Runs the material of CHECK.json on every data curve through the driver's uniaxial-stress\n"
     "path and prints per-curve errors (model - data): RMS, max, mean signed, in MPa and % of the\n"
     "curve's mean stress. Writes DIR/check_report.json and one overlay figure per temperature\n"
     "group (DIR/check_<T>K.png). DIR: --out, else output.directory (default: check).\n"
     "--junit FILE: one JUnit test case per curve (failed when one of its tolerances is exceeded)\n"
-    "and one for the overall RMS.\n"
-    "Exit codes: 0 within every tolerance, 1 usage, 2 input error, 3 a tolerance exceeded.\n";
+    "and one for the overall RMS.",
+    "CHECK.json", 1,
+    "Exit codes: 0 within every tolerance, 1 usage, 2 input error, 3 a tolerance exceeded.\n"};
 
 }  // namespace
 
 int command_check(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code = parse_command(
-          "check", check_help, o, args, {{"--out", 1}, {"--no-figures", 0}, {"--junit", 1}}, 1)) {
+  if (const auto exit_code =
+          parse_command(check_command, o, args,
+                        {{"-o|--out", 1, "output directory", "DIR"},
+                         {"--set", 1, "JSON merge patch over CHECK.json (repeatable)", "JSON"},
+                         {"--no-figures", 0, "no overlay figures"},
+                         {"--junit", 1, "one JUnit test case per curve", "FILE"}})) {
     return *exit_code;
   }
   if (o.positional.size() != 1) {
-    std::cerr << "pointdriver check: expected one CHECK.json\n" << check_help;
+    std::cerr << "pointdriver check: expected one CHECK.json (pointdriver check --help)\n";
     return 1;
   }
   try {
-    fit::CheckConfig config = fit::read_check_config(o.positional[0]);
+    const Json document = patched_json_file(o.positional[0], o.all("--set"));
+    if (o.verbosity.verbose) std::cerr << document.dump(2) << '\n';
+    fit::CheckConfig config = fit::read_check_config(document, o.positional[0]);
     for (const auto& w : config.warnings) std::cerr << "pointdriver check: warning: " << w << '\n';
     if (o.has("--out")) config.output_directory = o.get("--out", "check");
     if (o.has("--no-figures")) config.figures = false;

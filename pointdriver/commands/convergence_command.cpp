@@ -15,8 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* convergence_help =
-    "usage: pointdriver convergence [--out DIR] [--quick] [--material FILE] [--no-plots]\n"
+const CommandSpec convergence_command{
+    "convergence",
     "Accuracy versus cost of the point driver on three paths (uniaxial stress at 1e3 /s with\n"
     "adiabatic heating to strain 0.3; simple shear to gamma = 2; uniaxial-strain compression with\n"
     "the Mie-Gruneisen EOS to rho/rho0 = 1.2), each with N = 10, 20, 50, ..., 100000 uniform\n"
@@ -26,19 +26,20 @@ const char* convergence_help =
     "series: relative max-norm error of the stress tensor over 10 common strains, and of the\n"
     "final stress; the observed order is the least-squares slope of log error vs log dt.\n"
     "Writes DIR/convergence.csv (one row per run), DIR/convergence_orders.csv, DIR/convergence.md\n"
-    "(the tables) and the figures\n"
-    "DIR/convergence_error_vs_time.png and DIR/convergence_error_vs_dt.png (python3 +\n"
-    "matplotlib; --no-plots skips them). Default DIR: docs/figures. The material defaults to\n"
-    "the source tree's data/materials/al6061_t6.json.\n"
-    "Exit codes: 0 done, 1 usage error or the figures could not be drawn, 2 input error.\n";
+    "(the tables) and the figures DIR/convergence_error_vs_time.png and\n"
+    "DIR/convergence_error_vs_dt.png (python3 + matplotlib).",
+    "", 0, "Exit codes: 0 done, 1 usage error or the figures could not be drawn, 2 input error.\n"};
 
 }  // namespace
 
 int command_convergence(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code =
-          parse_command("convergence", convergence_help, o, args,
-                        {{"--out", 1}, {"--quick", 0}, {"--material", 1}, {"--no-plots", 0}}, 0)) {
+  if (const auto exit_code = parse_command(
+          convergence_command, o, args,
+          {{"-o|--out", 1, "output directory (default: docs/figures)", "DIR"},
+           {"--quick", 0, "up to 1000 steps"},
+           {"--material", 1, "material (default: data/materials/al6061_t6.json)", "FILE"},
+           {"--no-plots", 0, "the tables only"}})) {
     return *exit_code;
   }
   const fs::path out = o.get("--out", "docs/figures");

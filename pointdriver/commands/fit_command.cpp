@@ -17,8 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* fit_help =
-    "usage: pointdriver fit FIT.json [--out DIR] [--no-figures]\n"
+const CommandSpec fit_command{
+    "fit",
     "Fits the material's flow-stress law to measured curves (docs/fitting.md).\n"
     "mode \"strength\": the law's free parameters by name (Johnson-Cook: staged initial guess\n"
     "A, B, n; C; m; other laws start from the file), then GSL multifit_nlinear (LM with\n"
@@ -27,23 +27,28 @@ const char* fit_help =
     "mode \"damage\": D1..D5 from fracture strains (eq. 7, constant triaxiality).\n"
     "Prints the report and writes DIR/fit_report.json, DIR/<material>_fitted.json (a material\n"
     "file the driver and MPM read) and one figure per temperature group (DIR/fit_<T>K.png).\n"
-    "DIR: --out, else output.directory of FIT.json (default: fit).\n"
-    "Exit codes: 0 done, 1 usage, 2 input error, 3 the fit did not converge.\n";
+    "DIR: --out, else output.directory of FIT.json (default: fit).",
+    "FIT.json", 1, "Exit codes: 0 done, 1 usage, 2 input error, 3 the fit did not converge.\n"};
 
 }  // namespace
 
 int command_fit(const std::vector<std::string>& args) {
   Options o;
   if (const auto exit_code =
-          parse_command("fit", fit_help, o, args, {{"--out", 1}, {"--no-figures", 0}}, 1)) {
+          parse_command(fit_command, o, args,
+                        {{"-o|--out", 1, "output directory", "DIR"},
+                         {"--set", 1, "JSON merge patch over FIT.json (repeatable)", "JSON"},
+                         {"--no-figures", 0, "no overlay figures"}})) {
     return *exit_code;
   }
   if (o.positional.size() != 1) {
-    std::cerr << "pointdriver fit: expected one FIT.json\n" << fit_help;
+    std::cerr << "pointdriver fit: expected one FIT.json (pointdriver fit --help)\n";
     return 1;
   }
   try {
-    fit::FitConfig config = fit::read_fit_config(o.positional[0]);
+    const Json document = patched_json_file(o.positional[0], o.all("--set"));
+    if (o.verbosity.verbose) std::cerr << document.dump(2) << '\n';
+    fit::FitConfig config = fit::read_fit_config(document, o.positional[0]);
     for (const auto& w : config.warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
     if (o.has("--out")) config.output_directory = o.get("--out", "fit");
     if (o.has("--no-figures")) config.figures = false;

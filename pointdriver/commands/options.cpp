@@ -1,6 +1,5 @@
 #include "pointdriver/commands/options.hpp"
 
-#include <iostream>
 #include <sstream>
 
 namespace impact::pointdriver {
@@ -27,64 +26,43 @@ const std::vector<std::string>& Options::all(const std::string& name) const {
   return it == values.end() ? none : it->second;
 }
 
-Options parse_options(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs,
-                      std::size_t max_positional) {
-  Options o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      o.help = true;
-      continue;
-    }
-    if (a.size() > 1 && a[0] == '-') {
-      const OptionSpec* spec = nullptr;
-      std::string key;
-      for (const auto& s : specs) {
-        const auto names = aliases(s.name);
-        for (const auto& n : names) {
-          if (n == a) {
-            spec = &s;
-            key = names.back();
-          }
-        }
-      }
-      if (!spec) throw UsageError("unknown option '" + a + "'");
-      auto& v = o.values[key];
-      if (spec->arity == 0) {
-        v.push_back("1");
-      } else if (spec->arity == 1) {
-        if (i + 1 >= args.size()) throw UsageError("option '" + a + "' needs a value");
-        v.push_back(args[++i]);
-      } else {
-        std::size_t n = 0;
-        while (i + 1 < args.size() && !(args[i + 1].size() > 1 && args[i + 1][0] == '-')) {
-          v.push_back(args[++i]);
-          ++n;
-        }
-        if (n == 0) throw UsageError("option '" + a + "' needs at least one value");
-      }
-      continue;
-    }
-    if (o.positional.size() >= max_positional) {
-      throw UsageError("unexpected argument '" + a + "'");
-    }
-    o.positional.push_back(a);
-  }
-  return o;
+Json patched_json_file(const std::string& file, const std::vector<std::string>& patches) {
+  Json document = load_json_file(file);
+  for (const auto& p : cli::patches_of(patches)) document.merge_patch(p);
+  return document;
 }
 
-std::optional<int> parse_command(std::string_view command, const char* help, Options& out,
+std::optional<int> parse_command(const CommandSpec& command, Options& out,
                                  const std::vector<std::string>& args,
-                                 const std::vector<OptionSpec>& specs, std::size_t max_positional) {
-  try {
-    out = parse_options(args, specs, max_positional);
-  } catch (const UsageError& e) {
-    std::cerr << "pointdriver " << command << ": " << e.what() << '\n' << help;
-    return 1;
+                                 const std::vector<OptionSpec>& specs) {
+  CLI::App app{command.description, "pointdriver " + command.name};
+  // Every option's words, by its last alias; flags count their occurrences.
+  std::map<std::string, std::vector<std::string>> words;
+  std::map<std::string, std::int64_t> flags;
+  for (const auto& s : specs) {
+    const auto names = aliases(s.name);
+    std::string cli_names;
+    for (const auto& n : names) cli_names += (cli_names.empty() ? "" : ",") + n;
+    const std::string key = names.back();
+    if (s.arity == 0) {
+      app.add_flag(cli_names, flags[key], s.help);
+    } else {
+      CLI::Option* o = app.add_option(cli_names, words[key], s.help)->type_name(s.value_name);
+      if (s.arity == 1) o->allow_extra_args(false);
+      if (key == "--set") o->check(cli::json_text_error, "");
+    }
   }
-  if (out.help) {
-    std::cout << help;
-    return 0;
+  if (command.max_positional > 0) {
+    app.add_option(command.positional, out.positional)
+        ->expected(0, static_cast<int>(command.max_positional));
+  }
+  cli::describe(app, command.footer, out.verbosity);
+  if (const auto code = cli::parse(app, args, out.verbosity)) return code;
+  for (auto& [key, v] : words) {
+    if (!v.empty()) out.values[key] = v;
+  }
+  for (const auto& [key, count] : flags) {
+    if (count > 0) out.values[key] = std::vector<std::string>(static_cast<std::size_t>(count), "1");
   }
   return std::nullopt;
 }

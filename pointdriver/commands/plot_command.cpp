@@ -16,18 +16,18 @@ namespace impact::pointdriver {
 
 namespace {
 
-const char* plot_help =
-    "usage: pointdriver plot OUT.csv [MORE.csv ...] --x COL --y COL [--y COL ...] -o FIG.png\n"
-    "                        [--title T] [--logx] [--logy] [--label NAME ...]\n"
+const CommandSpec plot_command{
+    "plot",
     "Draws --y against --x from point-driver CSV files (one line per file and y column; several\n"
     "files are overlaid with a legend, labelled by file name or by --label, one per file).\n"
     "Columns are named as in the CSV header, with or without the unit: `stress_xx` matches\n"
     "`stress_xx [Pa]`; axis labels show the units. The figure format follows -o (.png, .pdf,\n"
     ".svg). Needs python3 and matplotlib (Debian: apt-get install -y python3-matplotlib); the\n"
-    "script is pointdriver/plot/plot.py in the source tree, or $POINTDRIVER_PLOT_SCRIPT; the\n"
-    "interpreter the first of python3, /usr/bin/python3 that has matplotlib, or "
-    "$POINTDRIVER_PYTHON.\n"
-    "Exit codes: 0 done, 1 usage error or python3/matplotlib missing, 2 input error.\n";
+    "script is pointdriver/plot/plot.py (installed under share/impact), or\n"
+    "$POINTDRIVER_PLOT_SCRIPT; the interpreter the first of python3, /usr/bin/python3 that has\n"
+    "matplotlib, or $POINTDRIVER_PYTHON.",
+    "CSV", std::numeric_limits<std::size_t>::max(),
+    "Exit codes: 0 done, 1 usage error or python3/matplotlib missing, 2 input error.\n"};
 
 /// Runs `argv` (argv[0] looked up on PATH); returns the exit status, 127 when it cannot start.
 int spawn(const std::vector<std::string>& argv, bool quiet) {
@@ -112,17 +112,17 @@ PlotRun run_plot_script(const std::vector<std::string>& args) {
   return r;
 }
 
-int command_plot(const std::vector<std::string>& args, const char*) {
+int command_plot(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code = parse_command("plot", plot_help, o, args,
-                                           {{"--x", 1},
-                                            {"--y", 1},
-                                            {"-o|--output", 1},
-                                            {"--title", 1},
-                                            {"--logx", 0},
-                                            {"--logy", 0},
-                                            {"--label", 1}},
-                                           std::numeric_limits<std::size_t>::max())) {
+  if (const auto exit_code =
+          parse_command(plot_command, o, args,
+                        {{"--x", 1, "column of the x axis", "COL"},
+                         {"--y", 1, "column of a y series (repeatable)", "COL"},
+                         {"-o|--out|--output", 1, "figure file (.png, .pdf, .svg)", "FIG"},
+                         {"--title", 1, "figure title", "TEXT"},
+                         {"--logx", 0, "logarithmic x axis"},
+                         {"--logy", 0, "logarithmic y axis"},
+                         {"--label", 1, "legend label, one per CSV file (repeatable)", "NAME"}})) {
     return *exit_code;
   }
   std::string missing;
@@ -131,7 +131,7 @@ int command_plot(const std::vector<std::string>& args, const char*) {
   if (!o.has("--y")) missing = "--y COL";
   if (!o.has("--output")) missing = "-o FIG.png";
   if (!missing.empty()) {
-    std::cerr << "pointdriver plot: missing " << missing << '\n' << plot_help;
+    std::cerr << "pointdriver plot: missing " << missing << " (pointdriver plot --help)\n";
     return 1;
   }
   if (o.has("--x") && o.all("--x").size() > 1) {

@@ -13,18 +13,16 @@ namespace impact::pointdriver {
 
 namespace {
 
-const char* run_help =
-    "usage: pointdriver run PATH.json [-o OUT.csv] [--set JSON_MERGE_PATCH]... [--junit FILE]\n"
+const CommandSpec run_command{
+    "run",
     "Runs the path and writes one CSV row per step (header `name [unit]`, SI units; columns in\n"
     "docs/pointdriver.md), OUT.summary.json (resolved path, how the run ended) and, when a step\n"
-    "cannot be solved after the cut-backs, OUT.replay.json: the state at the start of that step "
-    "as\n"
-    "a path file that reproduces it. Default OUT: the path file's name with .csv, in the current\n"
-    "directory. --set applies a JSON merge patch to the path before validation (repeatable).\n"
-    "The path's \"checks\" (a column against a value or a reference CSV, docs/pointdriver.md)\n"
-    "are evaluated after the run and printed; --junit FILE writes them as JUnit XML.\n"
+    "cannot be solved after the cut-backs, OUT.replay.json: the state at the start of that step\n"
+    "as a path file that reproduces it. The path's \"checks\" (a column against a value or a\n"
+    "reference CSV) are evaluated after the run and printed.",
+    "PATH.json", 1,
     "Exit codes: 0 done (including a failure stopped by the failure policy), 1 usage, 2 input\n"
-    "error, 3 a step could not be solved or a check failed.\n";
+    "error, 3 a step could not be solved or a check failed.\n"};
 
 const char* cause_name(FailureCause c) {
   return to_string(c).data();
@@ -34,12 +32,15 @@ const char* cause_name(FailureCause c) {
 
 int command_run(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code = parse_command("run", run_help, o, args,
-                                           {{"-o|--output", 1}, {"--set", 1}, {"--junit", 1}}, 1)) {
+  if (const auto exit_code = parse_command(
+          run_command, o, args,
+          {{"-o|--out|--output", 1, "CSV file (default: PATH's name with .csv, here)", "FILE"},
+           {"--set", 1, "JSON merge patch over the path (repeatable)", "JSON"},
+           {"--junit", 1, "the path's checks as JUnit XML", "FILE"}})) {
     return *exit_code;
   }
   if (o.positional.empty()) {
-    std::cerr << "pointdriver run: missing PATH.json\n" << run_help;
+    std::cerr << "pointdriver run: missing PATH.json (pointdriver run --help)\n";
     return 1;
   }
   const std::string file = o.positional[0];
@@ -60,6 +61,7 @@ int command_run(const std::vector<std::string>& args) {
     return 2;
   }
   for (const auto& w : path.warnings) std::cerr << "pointdriver run: warning: " << w << '\n';
+  if (o.verbosity.verbose) std::cerr << path.resolved.dump(2) << '\n';
   const std::filesystem::path out =
       o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
   std::filesystem::path stem = out;

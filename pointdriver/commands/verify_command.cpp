@@ -20,16 +20,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* verify_help =
-    "usage: pointdriver verify [--out DIR] [--case NAME]... [--list] [--junit FILE]\n"
+const CommandSpec verify_command{
+    "verify",
     "Runs the point driver's verification suite: each case drives the material along paths\n"
     "built in code and compares with references derived independently (closed forms, integrals\n"
     "of the driver's own rows), with a stated tolerance. Prints the table (case, quantity,\n"
     "expected, got, error, tolerance, pass), writes it to DIR/verification.csv with the figure\n"
-    "data (CSV) of the cases and, when python3 and matplotlib are installed, the figures (PNG).\n"
-    "  --out DIR    output directory (default: pointdriver_verify/ in the current directory)\n"
-    "  --case NAME  run only this case (repeatable); --list prints the case names\n"
-    "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed.\n";
+    "data (CSV) of the cases and, when python3 and matplotlib are installed, the figures (PNG).",
+    "", 0, "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed.\n"};
 
 std::string fmt(double v, const char* f = "%.6g") {
   char buf[40];
@@ -139,8 +137,11 @@ void draw_figures(const fs::path& out) {
 int command_verify(const std::vector<std::string>& args) {
   Options o;
   if (const auto exit_code =
-          parse_command("verify", verify_help, o, args,
-                        {{"--out", 1}, {"--case", 1}, {"--list", 0}, {"--junit", 1}}, 0)) {
+          parse_command(verify_command, o, args,
+                        {{"-o|--out", 1, "output directory (default: pointdriver_verify)", "DIR"},
+                         {"--case", 1, "run only this case (repeatable)", "NAME"},
+                         {"--list", 0, "print the case names"},
+                         {"--junit", 1, "one JUnit test case per check", "FILE"}})) {
     return *exit_code;
   }
   const auto& cases = verification_cases();

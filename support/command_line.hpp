@@ -1,0 +1,125 @@
+// The one command-line convention of the programs (material_check, pointdriver, mpm), on CLI11:
+//   --out DIR and --out=DIR (-o where a program writes one file or folder), --set PATCH wherever a
+//   JSON file is read (an RFC 7396 merge patch, repeatable, applied in order), --version,
+//   --quiet (nothing on stdout: results go to files, warnings and errors still to stderr),
+//   --verbose (the resolved input and timings on stderr), --help generated from the options.
+// Exit codes are the programs' own; a usage error (unknown option, missing or malformed value)
+// is always 1, --help and --version exit 0.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <optional>
+#include <streambuf>
+#include <string>
+#include <vector>
+
+#include "models/core/input.hpp"
+
+namespace impact::cli {
+
+inline constexpr int kExitUsage = 1;
+
+#ifndef IMPACT_VERSION
+#define IMPACT_VERSION "unknown"
+#endif
+
+/// --quiet and --verbose of one program run. While `quiet` holds after parse(), std::cout is
+/// silenced (restored when this object goes).
+class Verbosity {
+ public:
+  Verbosity() = default;
+  Verbosity(const Verbosity&) = delete;
+  Verbosity& operator=(const Verbosity&) = delete;
+  ~Verbosity() {
+    if (saved_ != nullptr) std::cout.rdbuf(saved_);
+  }
+
+  bool quiet = false;
+  bool verbose = false;
+
+  /// Called by parse(): silences std::cout when quiet.
+  void apply() {
+    if (quiet && saved_ == nullptr) saved_ = std::cout.rdbuf(&null_);
+  }
+
+ private:
+  struct NullBuffer : std::streambuf {
+    int overflow(int c) override { return traits_type::not_eof(c); }
+  };
+  NullBuffer null_;
+  std::streambuf* saved_ = nullptr;
+};
+
+/// A program or command: its description, the exit codes in the help's footer, and the flags
+/// every program takes (--version, --quiet, --verbose).
+inline void describe(CLI::App& app, const std::string& footer, Verbosity& verbosity) {
+  app.footer(footer);
+  const CLI::App* program = &app;  // a command's version is its program's
+  while (program->get_parent() != nullptr) program = program->get_parent();
+  std::string name = program->get_name();
+  name = name.substr(0, name.find(' '));  // "pointdriver run" -> pointdriver
+  app.set_version_flag("--version", name + " " + IMPACT_VERSION);
+  app.add_flag("-q,--quiet", verbosity.quiet, "nothing on stdout (files, stderr as usual)");
+  app.add_flag("-v,--verbose", verbosity.verbose, "the resolved input on stderr");
+  app.get_formatter()->column_width(34);
+}
+
+/// Accepts a JSON text, else says why (a CLI11 check: a malformed --set is a usage error).
+inline std::string json_text_error(const std::string& text) {
+  try {
+    const Json parsed = Json::parse(text);
+    return std::string(parsed.is_discarded() ? "invalid JSON" : "");
+  } catch (const Json::parse_error& e) {
+    return std::string("invalid JSON: ") + e.what();
+  }
+}
+
+/// --set PATCH (repeatable): JSON merge patches over `what`, checked as JSON when parsed.
+inline CLI::Option* add_set(CLI::App& app, std::vector<std::string>& patches,
+                            const std::string& what) {
+  return app.add_option("--set", patches, "JSON merge patch over " + what + " (repeatable)")
+      ->type_name("JSON")
+      ->check(json_text_error, "")
+      ->allow_extra_args(false);  // one patch per --set: "--set P SCENE.json" keeps the scene
+}
+
+/// The patches of add_set, parsed (they were checked).
+inline std::vector<Json> patches_of(const std::vector<std::string>& texts) {
+  std::vector<Json> out;
+  for (const auto& t : texts) out.push_back(Json::parse(t));
+  return out;
+}
+
+/// Parses `args` (in order, without the program name). Returns nothing to go on; 0 after --help
+/// or --version (printed on stdout); kExitUsage after a usage error, printed on stderr as
+/// "<program>: <what>" with a pointer to --help.
+inline std::optional<int> parse(CLI::App& app, std::vector<std::string> args,
+                                Verbosity& verbosity) {
+  std::reverse(args.begin(), args.end());  // CLI11 takes a vector last argument first
+  try {
+    app.parse(args);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::CallForAllHelp&) {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return 0;
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << '\n';
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << app.get_name() << ": " << e.what() << "\nRun '" << app.get_name()
+              << " --help' for the options.\n";
+    return kExitUsage;
+  }
+  verbosity.apply();
+  return std::nullopt;
+}
+
+inline std::optional<int> parse(CLI::App& app, int argc, char** argv, Verbosity& verbosity) {
+  return parse(app, std::vector<std::string>(argv + 1, argv + argc), verbosity);
+}
+
+}  // namespace impact::cli

@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""Every program and command accepts the same flags (support/command_line.hpp): --version and
+--help exit 0, an unknown option is a usage error (1), --out=DIR works as --out DIR, --quiet
+leaves stdout empty, a malformed --set is a usage error wherever a JSON file is read.
+
+  same_flags_test.py BIN_DIR SOURCE_DIR WORK_DIR
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+
+def main(bin_dir, source, work):
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    data = os.path.join(source, "data")
+    material = os.path.join(data, "materials", "al6061_t6.json")
+    path = os.path.join(data, "paths", "uniaxial_stress_1000.json")
+    check = os.path.join(data, "fits", "al6061_t6_check_quasi_static.json")
+    scene = os.path.join(data, "scenes", "verification", "rigid_translation.json")
+    short = '{"time": {"max_time": 1e-6}, "output": {"snapshots": false}}'
+    # (name, command words, valid arguments with {out} for the output, takes --set)
+    commands = [
+        ("material_check", ["material_check"], [material], False, True),
+        ("run", ["pointdriver", "run"], [path, "--out={out}.csv"], True, True),
+        ("verify", ["pointdriver", "verify"], ["--case", "elastic_uniaxial", "--out={out}"],
+         True, False),
+        ("batch", ["pointdriver", "batch"], ["--paths", path, "--out={out}", "--no-csv"], True,
+         True),
+        ("check", ["pointdriver", "check"], [check, "--out={out}", "--no-figures"], True, True),
+        ("cards", ["pointdriver", "cards"], [material, "--out={out}"], True, True),
+        ("mpm_check", ["mpm", "check"], [scene, "--set", short], False, True),
+        ("mpm_run", ["mpm", "run"], [scene, "--out={out}", "--threads", "1", "--set", short],
+         True, True),
+    ]
+    failures = []
+
+    def run(words, args):
+        exe = os.path.join(bin_dir, words[0])
+        return subprocess.run([exe] + words[1:] + args, capture_output=True, text=True, cwd=work)
+
+    for name, words, valid, writes, takes_set in commands:
+        out = os.path.join(work, name)
+        args = [a.replace("{out}", out) for a in valid]
+        program = words[0]
+        r = run(words, ["--version"])
+        if r.returncode != 0 or not r.stdout.startswith(program):
+            failures.append(f"{name}: --version exit {r.returncode}, stdout {r.stdout!r}")
+        r = run(words, ["--help"])
+        if r.returncode != 0 or "--quiet" not in r.stdout or "--version" not in r.stdout:
+            failures.append(f"{name}: --help exit {r.returncode} or lacks --quiet/--version")
+        r = run(words, args + ["--no-such-flag"])
+        if r.returncode != 1 or "--no-such-flag" not in r.stderr:
+            failures.append(f"{name}: unknown option exit {r.returncode}: {r.stderr[-200:]!r}")
+        if takes_set:
+            r = run(words, args + ["--set", "{bad"])
+            if r.returncode != 1 or "--set: invalid JSON" not in r.stderr:
+                failures.append(f"{name}: bad --set exit {r.returncode}: {r.stderr[-200:]!r}")
+        r = run(words, args + ["--quiet"])
+        if r.returncode != 0 or r.stdout != "":
+            failures.append(f"{name}: --quiet exit {r.returncode}, stdout {r.stdout[:200]!r}")
+        if writes and not os.path.exists(out if not name == "run" else out + ".csv"):
+            failures.append(f"{name}: --out={out} wrote nothing there")
+    if failures:
+        sys.exit("FAIL:\n" + "\n".join(failures))
+    print(f"OK: {len(commands)} commands take --version, --help, --quiet, --out=DIR, --set")
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:4])
