@@ -1,6 +1,7 @@
 // JSON reading: every problem names the file and the JSON key path, all problems are reported at
 // once, unknown keys get a nearest-key suggestion.
 #include "models/core/input.hpp"
+#include "support/input_problems.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,17 +10,9 @@
 #include <filesystem>
 
 using namespace impact;
+using impact::testing::problems_text;
 
 namespace {
-
-std::string problems_text(const InputProblems& problems) {
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;

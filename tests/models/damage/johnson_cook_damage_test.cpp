@@ -3,12 +3,14 @@
 // 2004 code's "no damage in strong tension", damage accumulation along a proportional path, the
 // triaxiality of standard stress states and the reader's error messages.
 #include "models/damage/johnson_cook_damage.hpp"
+#include "support/input_problems.hpp"
 
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <string>
 
 using namespace impact;
+using impact::testing::problems_text;
 
 namespace {
 
@@ -32,15 +34,6 @@ Mat3 diagonal(double a, double b, double c) {
   s(1, 1) = b;
   s(2, 2) = c;
   return s;
-}
-
-std::string problems_text(const InputProblems& problems) {
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "support/finite_difference.hpp"
+#include "support/input_problems.hpp"
 
 using namespace impact;
 using impact::testing::relative_difference;
@@ -88,12 +89,7 @@ std::string read_errors(const std::string& json) {
   InputProblems problems("mat.json");
   JsonReader r(j, "/equation_of_state/mie_gruneisen", problems);
   read_mie_gruneisen(r);
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
+  return testing::problems_text(problems);
 }
 
 }  // namespace

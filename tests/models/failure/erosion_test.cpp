@@ -22,8 +22,10 @@
 #include <string>
 
 #include "models/material/material.hpp"
+#include "support/input_problems.hpp"
 
 using namespace impact;
+using impact::testing::problems_text;
 
 namespace {
 
@@ -33,15 +35,6 @@ Mat3 state(double mean_stress) {
   Mat3 s;
   s << mean_stress + 64e6, 16e6, 0.0, 16e6, mean_stress - 32e6, -8e6, 0.0, -8e6, mean_stress - 32e6;
   return s;
-}
-
-std::string problems_text(const InputProblems& problems) {
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
 }
 
 }  // namespace

@@ -10,21 +10,10 @@
 #include <string>
 
 #include "models/damage/johnson_cook_damage.hpp"
+#include "support/input_problems.hpp"
 
 using namespace impact;
-
-namespace {
-
-std::string problems_text(const InputProblems& problems) {
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
-
-}  // namespace
+using impact::testing::problems_text;
 
 BOOST_AUTO_TEST_SUITE(failure_tepla)
 

@@ -1,24 +1,17 @@
 // Stability-check selection: read_stability's names, defaults and errors, and check_stability runs
 // exactly the selected checks, with the tangent built from K, mu, the stress and H.
 #include "models/stability/stability_check.hpp"
+#include "support/input_problems.hpp"
 
 #include <boost/test/unit_test.hpp>
 #include <string>
 
 using namespace impact;
+using impact::testing::problems_text;
 
 namespace {
 
 constexpr double kK = 66.4e9, kMu = 26e9;
-
-std::string problems_text(const InputProblems& problems) {
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
 
 StabilityParams read(const Json& j, InputProblems& problems) {
   JsonReader r(j, "/constitutive_model/stability_check", problems);

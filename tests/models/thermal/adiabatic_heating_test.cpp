@@ -8,21 +8,14 @@
 #include <string>
 
 #include "models/core/tensor.hpp"
+#include "support/input_problems.hpp"
 
 using namespace impact;
+using impact::testing::problems_text;
 
 namespace {
 
 constexpr double kRho = 2700.0, kCp = 896.0, kChi = 0.9;  // report Table 1
-
-std::string problems_text(const InputProblems& problems) {
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
 
 }  // namespace
 

@@ -1,25 +1,14 @@
 // Melting (report sec. 3): a melted point keeps its mean stress and loses its deviator; the melted
 // predicate's boundary; the reader's error messages.
 #include "models/thermal/melting.hpp"
+#include "support/input_problems.hpp"
 
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <string>
 
 using namespace impact;
-
-namespace {
-
-std::string problems_text(const InputProblems& problems) {
-  try {
-    problems.throw_if_any();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
-
-}  // namespace
+using impact::testing::problems_text;
 
 BOOST_AUTO_TEST_SUITE(thermal_melting)
 
