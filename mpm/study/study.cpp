@@ -3,10 +3,7 @@
 // share them), then study_plot.py draws the figures and writes the table.
 #include "mpm/study/study.hpp"
 
-#include <fcntl.h>
 #include <omp.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
@@ -19,9 +16,8 @@
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/solver.hpp"
+#include "support/python_launcher.hpp"
 #include "support/shipped_file.hpp"
-
-extern char** environ;
 
 namespace impact::mpm {
 
@@ -36,52 +32,6 @@ std::string plot_script_path() {
   return shipped_file("mpm/study/study_plot.py").string();
 }
 
-/// Runs `argv` (argv[0] looked up on PATH) without a shell; returns its exit status, 127 when it
-/// cannot start. `quiet` sends its output to /dev/null (interpreter probes).
-int spawn(const std::vector<std::string>& argv, bool quiet) {
-  std::cout.flush();
-  std::cerr.flush();
-  std::vector<char*> cargs;
-  for (const auto& a : argv) cargs.push_back(const_cast<char*>(a.c_str()));
-  cargs.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  if (quiet) {
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  }
-  pid_t pid = 0;
-  const int err = posix_spawnp(&pid, cargs[0], &actions, nullptr, cargs.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (err != 0) return 127;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
-
-/// The interpreter for study_plot.py: the first of $MPM_PYTHON, /usr/bin/python3 (where Debian's
-/// python3-matplotlib installs; a pyenv or venv python3 earlier on PATH may lack it) and python3
-/// on PATH that imports matplotlib (when `figures`); failing that, the first that runs at all (the
-/// table needs only the standard library). Empty when there is none.
-struct Python {
-  std::string command;
-  bool matplotlib = false;
-};
-
-Python find_python(bool figures) {
-  std::vector<std::string> candidates;
-  if (const char* env = std::getenv("MPM_PYTHON"); env && *env) candidates.push_back(env);
-  candidates.insert(candidates.end(), {"/usr/bin/python3", "python3"});
-  if (figures) {
-    for (const auto& c : candidates)
-      if (spawn({c, "-c", "import matplotlib"}, true) == 0) return {c, true};
-  }
-  for (const auto& c : candidates)
-    if (spawn({c, "-c", "import csv, json"}, true) == 0) return {c, false};
-  return {};
-}
-
 /// Runs study_plot.py on OUT. Never changes the study's result: a missing interpreter or a failing
 /// script is a warning with the command to run by hand.
 void run_plot(const fs::path& out, bool figures) {
@@ -93,27 +43,25 @@ void run_plot(const fs::path& out, bool figures) {
               << " (set MPM_STUDY_PLOT_SCRIPT to mpm/study/study_plot.py); no table or figures\n";
     return;
   }
-  const Python python = find_python(figures);
+  const PythonInterpreter python = find_python();
   if (python.command.empty()) {
-    std::cerr << "mpm study: warning: no python3 found ($MPM_PYTHON, /usr/bin/python3, python3); "
-                 "no table or figures. Install python3 and python3-matplotlib, then run:\n  "
-              << by_hand << '\n';
+    std::cerr
+        << "mpm study: warning: no python3 found ($IMPACT_PYTHON, /usr/bin/python3, python3); "
+           "no table or figures. Install python3 and python3-matplotlib, then run:\n  "
+        << by_hand << '\n';
     return;
   }
-  if (const char* env = std::getenv("MPM_PYTHON"); env && *env && python.command != env)
-    std::cerr << "mpm study: note: MPM_PYTHON=" << env
-              << (figures ? " cannot import matplotlib" : " does not run") << "; using "
-              << python.command << '\n';
   if (figures && !python.matplotlib) {
-    std::cerr << "mpm study: warning: no python3 with matplotlib ($MPM_PYTHON, /usr/bin/python3, "
-                 "python3): writing the table only. For the figures install python3-matplotlib "
-                 "(apt-get install -y python3-matplotlib) and run:\n  python3 "
-              << script << ' ' << out.string() << '\n';
+    std::cerr
+        << "mpm study: warning: no python3 with matplotlib ($IMPACT_PYTHON, /usr/bin/python3, "
+           "python3): writing the table only. For the figures install python3-matplotlib "
+           "(apt-get install -y python3-matplotlib) and run:\n  python3 "
+        << script << ' ' << out.string() << '\n';
     figures = false;
   }
   std::vector<std::string> argv{python.command, script, out.string()};
   if (!figures) argv.push_back("--no-figures");
-  if (const int code = spawn(argv, false); code != 0) {
+  if (const int code = spawn_process(argv, false); code != 0) {
     std::cerr << "mpm study: warning: " << script << " exited with code " << code
               << "; run it by hand: " << by_hand << '\n';
   }

@@ -1,7 +1,4 @@
 // pointdriver plot: a quick figure from one or more run CSV files, drawn by plot.py (matplotlib).
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +7,7 @@
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/commands/plot_script.hpp"
+#include "support/python_launcher.hpp"
 #include "support/shipped_file.hpp"
 
 namespace impact::pointdriver {
@@ -24,35 +22,10 @@ const CommandSpec plot_command{
     "`stress_xx [Pa]`; axis labels show the units. The figure format follows -o (.png, .pdf,\n"
     ".svg). Needs python3 and matplotlib (Debian: apt-get install -y python3-matplotlib); the\n"
     "script is pointdriver/plot/plot.py (installed under share/impact), or\n"
-    "$POINTDRIVER_PLOT_SCRIPT; the interpreter the first of python3, /usr/bin/python3 that has\n"
-    "matplotlib, or $POINTDRIVER_PYTHON.",
+    "$POINTDRIVER_PLOT_SCRIPT; the interpreter $IMPACT_PYTHON, else the first of\n"
+    "/usr/bin/python3 and python3 that has matplotlib.",
     "CSV", std::numeric_limits<std::size_t>::max(),
     "Exit codes: 0 done, 1 usage error or python3/matplotlib missing, 2 input error.\n"};
-
-/// Runs `argv` (argv[0] looked up on PATH); returns the exit status, 127 when it cannot start.
-int spawn(const std::vector<std::string>& argv, bool quiet) {
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t pid = fork();
-  if (pid < 0) return 127;
-  if (pid == 0) {
-    std::vector<char*> cargs;
-    for (const auto& a : argv) cargs.push_back(const_cast<char*>(a.c_str()));
-    cargs.push_back(nullptr);
-    if (quiet) {
-      if (std::FILE* null = std::fopen("/dev/null", "w")) {
-        dup2(fileno(null), STDOUT_FILENO);
-        dup2(fileno(null), STDERR_FILENO);
-      }
-    }
-    execvp(cargs[0], cargs.data());
-    _exit(127);
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
 
 }  // namespace
 
@@ -70,38 +43,25 @@ PlotRun run_plot_script(const std::vector<std::string>& args) {
                 " (set POINTDRIVER_PLOT_SCRIPT to the path of pointdriver/plot/plot.py)";
     return r;
   }
-  // The first interpreter that can import matplotlib: $POINTDRIVER_PYTHON, else python3 on PATH,
-  // else Debian's /usr/bin/python3 (where python3-matplotlib installs; a pyenv or venv python3
-  // earlier on PATH may lack it).
-  std::vector<std::string> candidates{"python3", "/usr/bin/python3"};
-  if (const char* env = std::getenv("POINTDRIVER_PYTHON"); env && *env) candidates = {env};
-  std::string python;
-  bool any_python = false;
-  for (const auto& c : candidates) {
-    const int code = spawn({c, "-c", "import matplotlib"}, true);
-    any_python = any_python || code != 127;
-    if (code == 0) {
-      python = c;
-      break;
-    }
-  }
-  if (!any_python) {
+  const PythonInterpreter found = find_python();
+  if (!found.any_runs) {
     r.status = PlotRun::Status::no_python;
     r.exit_code = 127;
     r.message = std::string("python3 is not installed; install it and matplotlib with: ") +
                 plot_install_hint;
     return r;
   }
-  if (python.empty()) {
+  if (!found.matplotlib) {
     r.status = PlotRun::Status::no_matplotlib;
     r.exit_code = 1;
     r.message =
         std::string("python3 cannot import matplotlib; install it with: ") + plot_install_hint;
     return r;
   }
+  const std::string& python = found.command;
   std::vector<std::string> argv{python, script};
   argv.insert(argv.end(), args.begin(), args.end());
-  r.exit_code = spawn(argv, false);
+  r.exit_code = spawn_process(argv, false);
   if (r.exit_code == 0) return r;
   r.status = r.exit_code == 2   ? PlotRun::Status::input_error
              : r.exit_code == 4 ? PlotRun::Status::no_matplotlib

@@ -27,10 +27,9 @@ struct PlotRun {
   std::string message;  ///< for the user, with the fix where there is one
 };
 
-/// Runs `python3 plot.py args...` (no shell: arguments are passed as they are; the interpreter is
-/// $POINTDRIVER_PYTHON, else the first of python3 on PATH and /usr/bin/python3 that imports
-/// matplotlib), with plot.py's
-/// output going to this process's stdout/stderr.
+/// Runs `python3 plot.py args...` (no shell: arguments are passed as they are; the interpreter
+/// by support/python_launcher.hpp's rule), with plot.py's output going to this process's
+/// stdout/stderr.
 PlotRun run_plot_script(const std::vector<std::string>& args);
 
 }  // namespace impact::pointdriver
