@@ -21,6 +21,9 @@
 #   ./run.sh quarter    build and run the quarter model against the full model (docs/figures/quarter_model/)
 #   ./run.sh laws    build and plot the flow-stress laws of each shipped material
 #                    (docs/figures/materials_*.png, docs/models.md)
+#   ./run.sh paraview  install ParaView's Python (python3-paraview, xvfb) when missing and draw the
+#                    main job's last snapshot coloured by plastic strain with pvpython
+#                    (mpm/plot/paraview_snapshot.py -> out/recommended/plastic_strain.png)
 #   ./run.sh taylor [OUT] [OPTIONS]  build and run the House et al. Taylor shots against the
 #                    experiments (docs/taylor.md; OUT defaults to docs/figures/taylor/)
 set -euo pipefail
@@ -97,6 +100,16 @@ case "${1:-}" in
     install_missing_packages "${MPI_PACKAGES[@]}"
     build release -DIMPACT_MPI=ON
     /usr/bin/python3 mpm/benchmark/mpi_scaling.py build/bin/mpm build/mpi-bench --ranks "${2:-2}"
+    ;;
+  paraview)
+    # python3-paraview brings pvpython (about 450 MB with ParaView); xvfb renders without a display.
+    install_missing_packages python3-paraview xvfb xauth
+    if [ ! -f out/recommended/recommended/particles.pvd ]; then
+      echo "run.sh paraview: no out/recommended/recommended/particles.pvd: run ./run.sh main first" >&2
+      exit 1
+    fi
+    xvfb-run -a pvpython mpm/plot/paraview_snapshot.py out/recommended/recommended \
+      --out out/recommended/plastic_strain.png
     ;;
   fuzz)
     install_missing_packages "${FUZZ_PACKAGES[@]}"
