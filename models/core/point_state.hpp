@@ -27,8 +27,11 @@ struct PointState {
   double internal_energy = 0.0;      ///< specific internal energy above the reference state [J/kg]
   double damage = 0.0;               ///< Johnson-Cook damage D [-]
   double porosity = 0.0;             ///< void volume fraction f [-]
-  bool melted = false;               ///< T reached the melting temperature this step
-  bool failed = false;               ///< localized by TEPLA, melting or a stability check (sticky)
+  /// The flow-stress law's internal variable, for a law that has one (Mechanical Threshold
+  /// Stress: the structure-evolution stress sigma_e [Pa]); 0 at the start, unused otherwise.
+  double flow_internal = 0.0;
+  bool melted = false;  ///< T reached the melting temperature this step
+  bool failed = false;  ///< localized by TEPLA, melting or a stability check (sticky)
   FailureCause failure_cause = FailureCause::none;  ///< what failed it (sticky with `failed`)
   std::uint8_t instability = 0;  ///< kDruckerFired | kBeckerFired, reported only (sticky)
   /// The mean stress was tensile at the step that failed the point (before erosion): a spall-like

@@ -27,6 +27,10 @@ struct FlowConditions {
   double pressure = 0.0;       ///< p [Pa], positive in compression
   double compression = 1.0;    ///< rho / rho0 [-]
   double density = 0.0;        ///< rho [kg/m^3]
+  /// For a law with an internal variable (PointState::flow_internal): the plastic strain and the
+  /// variable at the start of the step, from which the law advances it to the ep it is asked at.
+  double start_plastic_strain = 0.0;  ///< [-]
+  double internal = 0.0;              ///< the law's own unit (MTS: sigma_e [Pa])
 };
 
 /// The range a fitter searches for a parameter by default [SI]. Empty (lower == upper, the

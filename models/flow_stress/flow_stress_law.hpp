@@ -15,6 +15,7 @@
 
 #include "models/flow_stress/flow_stress.hpp"
 #include "models/flow_stress/johnson_cook.hpp"
+#include "models/flow_stress/mechanical_threshold_stress.hpp"
 #include "models/flow_stress/preston_tonks_wallace.hpp"
 #include "models/flow_stress/steinberg_cochran_guinan.hpp"
 #include "models/flow_stress/zerilli_armstrong.hpp"
@@ -22,14 +23,30 @@
 namespace impact {
 
 /// Every flow-stress law, one line each (the first is the default of an empty material).
-using FlowStressLaw = std::variant<JohnsonCookParams, ZerilliArmstrongParams,
-                                   SteinbergCochranGuinanParams, PrestonTonksWallaceParams>;
+using FlowStressLaw =
+    std::variant<JohnsonCookParams, ZerilliArmstrongParams, SteinbergCochranGuinanParams,
+                 PrestonTonksWallaceParams, MechanicalThresholdStressParams>;
 
 /// sigma_y(ep, rate, conditions) and its derivatives, whichever law.
 inline FlowStress flow_stress(const FlowStressLaw& law, double plastic_strain,
                               double plastic_strain_rate, const FlowConditions& c) {
   return std::visit(
       [&](const auto& l) { return flow_stress(l, plastic_strain, plastic_strain_rate, c); }, law);
+}
+
+/// The law's internal variable (PointState::flow_internal) after a plastic increment d_ep at
+/// `rate` from `internal`: a law with one defines internal_after(law, internal, d_ep, rate, c)
+/// beside its flow_stress, the same expression its flow stress uses; the others keep it.
+inline double flow_internal_after(const FlowStressLaw& law, double internal, double d_ep,
+                                  double plastic_strain_rate, const FlowConditions& c) {
+  return std::visit(
+      [&](const auto& l) {
+        if constexpr (requires { internal_after(l, internal, d_ep, plastic_strain_rate, c); })
+          return internal_after(l, internal, d_ep, plastic_strain_rate, c);
+        else
+          return internal;
+      },
+      law);
 }
 
 /// The law's JSON "type".

@@ -143,7 +143,8 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   t.molten = molten(s0);
   const auto* jc = std::get_if<JohnsonCookParams>(&p_.flow_stress);
   if (jc) t.thermal = johnson_cook_thermal(*jc, s0.temperature);
-  t.conditions = {s0.temperature, t.p_n, t.rho1 / p_.density, t.rho1};
+  t.conditions = {s0.temperature,    t.p_n,           t.rho1 / p_.density, t.rho1,
+                  s0.plastic_strain, s0.flow_internal};
   t.batched = jc && !t.molten && p_.return_algorithm == ReturnAlgorithm::newton;
   return true;
 }
@@ -195,6 +196,11 @@ void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
   report.plastic = r.plastic;
   s1.plastic_strain = s0.plastic_strain + d_ep;
   s1.plastic_strain_rate = d_ep / dt;
+  // A law's internal variable follows the increment by the expression its flow stress used.
+  if (d_ep > 0.0) {
+    s1.flow_internal =
+        flow_internal_after(p_.flow_stress, s0.flow_internal, d_ep, d_ep / dt, t.conditions);
+  }
 
   // 3. Adiabatic heating (eq. 8): the Taylor-Quinney fraction of the plastic work, retained by the
   //    point only when heating is on (off: isothermal, the heat leaves; docs/theory.md sec. 5).

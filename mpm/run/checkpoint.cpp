@@ -19,7 +19,7 @@ constexpr std::uint32_t kByteOrderMark = 0x01020304;
 
 // A new PointState or Particles member must be added to save()/load() below (and the format
 // version raised): these fail to compile until then.
-static_assert(sizeof(PointState) == 3 * sizeof(Mat3) + 6 * sizeof(double) + 8,
+static_assert(sizeof(PointState) == 3 * sizeof(Mat3) + 7 * sizeof(double) + 8,
               "PointState changed: update Simulation::save/load and kCheckpointVersion");
 static_assert(sizeof(Particles) == 15 * sizeof(std::vector<double>),
               "Particles changed: update Simulation::save/load and kCheckpointVersion");
@@ -27,7 +27,7 @@ static_assert(sizeof(Particles) == 15 * sizeof(std::vector<double>),
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Mat3) == 9 * sizeof(double));
 
 // The PointState members, one record per particle (no padding bytes in the file).
-constexpr std::uint32_t kStateRecord = 3 * sizeof(Mat3) + 6 * sizeof(double) + 5;
+constexpr std::uint32_t kStateRecord = 3 * sizeof(Mat3) + 7 * sizeof(double) + 5;
 
 void write_header(CheckpointWriter& w, const CheckpointHeader& h) {
   w.bytes(kMagic, sizeof kMagic);
@@ -166,7 +166,7 @@ void Simulation::save(CheckpointWriter& out) const {
     out.value(s.F);
     out.value(s.R);
     for (const double d : {s.plastic_strain, s.plastic_strain_rate, s.temperature,
-                           s.internal_energy, s.damage, s.porosity})
+                           s.internal_energy, s.damage, s.porosity, s.flow_internal})
       out.value(d);
     out.value(static_cast<std::uint8_t>(s.melted));
     out.value(static_cast<std::uint8_t>(s.failed));
@@ -218,7 +218,7 @@ void Simulation::load(CheckpointReader& in) {
     in.bytes(&s.F, sizeof s.F);
     in.bytes(&s.R, sizeof s.R);
     for (double* d : {&s.plastic_strain, &s.plastic_strain_rate, &s.temperature, &s.internal_energy,
-                      &s.damage, &s.porosity})
+                      &s.damage, &s.porosity, &s.flow_internal})
       *d = in.value<double>();
     s.melted = in.value<std::uint8_t>() != 0;
     s.failed = in.value<std::uint8_t>() != 0;

@@ -1,0 +1,155 @@
+#include "models/flow_stress/mechanical_threshold_stress.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impact {
+
+namespace {
+
+constexpr double kBoltzmann = 1.380649e-23;  // [J/K]
+
+/// mu(T) (Varshni) and d mu / d T.
+struct Modulus {
+  double mu = 0.0, d_T = 0.0;
+};
+Modulus varshni(const MechanicalThresholdStressParams& p, double T) {
+  if (p.D == 0.0 || p.T0 <= 0.0 || T <= 0.0 || p.T0 / T > 700.0) return {p.mu0, 0.0};
+  const double e = std::exp(p.T0 / T);
+  return {p.mu0 - p.D / (e - 1.0), -p.D * e * p.T0 / (T * T) / ((e - 1.0) * (e - 1.0))};
+}
+
+/// A thermal-activation factor S = [1 - x^(1/q)]^(1/p), x = k T / (g0 b^3 mu) ln(eps0 / rate),
+/// with its derivatives in rate and T.
+struct Activation {
+  double S = 1.0, d_rate = 0.0, d_T = 0.0;
+};
+Activation activation(double g0, double eps0, double p_exp, double q_exp, double b, double rate,
+                      bool rate_clamped, double T, const Modulus& m) {
+  const double c = kBoltzmann / (g0 * b * b * b);
+  const double log_ratio = std::log(eps0 / rate);
+  const double x = c * T / m.mu * log_ratio;
+  if (x <= 0.0) return {1.0, 0.0, 0.0};  // faster than the reference rate: no thermal help
+  const double y = 1.0 - std::pow(x, 1.0 / q_exp);
+  if (y <= 0.0) return {0.0, 0.0, 0.0};  // the barrier is overcome thermally
+  const double S = std::pow(y, 1.0 / p_exp);
+  const double dS_dx = -(1.0 / p_exp) * std::pow(y, 1.0 / p_exp - 1.0) * (1.0 / q_exp) *
+                       std::pow(x, 1.0 / q_exp - 1.0);
+  const double dx_drate = rate_clamped ? 0.0 : -c * T / m.mu / rate;
+  const double dx_dT = c * log_ratio * (m.mu - T * m.d_T) / (m.mu * m.mu);
+  return {S, dS_dx * dx_drate, dS_dx * dx_dT};
+}
+
+/// theta(sigma_e, rate, T) = theta_0 (1 - F(X)) and its derivatives in rate and T.
+struct Hardening {
+  double theta = 0.0, d_rate = 0.0, d_T = 0.0;
+};
+Hardening hardening(const MechanicalThresholdStressParams& p, double sigma_e, double rate,
+                    bool rate_clamped, double T, const Modulus& m) {
+  const double theta0 = p.a0 + p.a1 * std::log(rate) + p.a2 * std::sqrt(rate) - p.a3 * T;
+  const double dtheta0_drate = rate_clamped ? 0.0 : p.a1 / rate + 0.5 * p.a2 / std::sqrt(rate);
+  const double c_es = kBoltzmann / (p.g0_es * p.burgers * p.burgers * p.burgers);
+  const double log_ratio = std::log(rate / p.eps0_es);
+  const double sigma_es = p.sigma_es0 * std::exp(c_es * T / m.mu * log_ratio);
+  const double dses_drate = rate_clamped ? 0.0 : sigma_es * c_es * T / m.mu / rate;
+  const double dses_dT = sigma_es * log_ratio * c_es * (m.mu - T * m.d_T) / (m.mu * m.mu);
+  const double X = sigma_e / sigma_es;
+  const double tanh_alpha = std::tanh(p.alpha);
+  const double t = std::tanh(p.alpha * X);
+  const double F = t / tanh_alpha;
+  const double dF_dX = p.alpha * (1.0 - t * t) / tanh_alpha;
+  const double dX_drate = -X / sigma_es * dses_drate, dX_dT = -X / sigma_es * dses_dT;
+  return {theta0 * (1.0 - F), dtheta0_drate * (1.0 - F) - theta0 * dF_dX * dX_drate,
+          -p.a3 * (1.0 - F) - theta0 * dF_dX * dX_dT};
+}
+
+}  // namespace
+
+MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate, double T) {
+  const bool clamped = rate < p.minimum_strain_rate;
+  const double r = clamped ? p.minimum_strain_rate : rate;
+  const Modulus m = varshni(p, T);
+  const Hardening h = hardening(p, 0.0, r, clamped, T, m);
+  const double c_es = kBoltzmann / (p.g0_es * p.burgers * p.burgers * p.burgers);
+  return {m.mu, activation(p.g0_i, p.eps0_i, p.p_i, p.q_i, p.burgers, r, clamped, T, m).S,
+          activation(p.g0_e, p.eps0_e, p.p_e, p.q_e, p.burgers, r, clamped, T, m).S, h.theta,
+          p.sigma_es0 * std::exp(c_es * T / m.mu * std::log(r / p.eps0_es))};
+}
+
+FlowStress flow_stress(const MechanicalThresholdStressParams& p, double ep, double rate,
+                       const FlowConditions& c) {
+  const double T = c.temperature;
+  const bool clamped = rate < p.minimum_strain_rate;
+  const double r = clamped ? p.minimum_strain_rate : rate;
+  const Modulus m = varshni(p, T);
+  const Activation Si = activation(p.g0_i, p.eps0_i, p.p_i, p.q_i, p.burgers, r, clamped, T, m);
+  const Activation Se = activation(p.g0_e, p.eps0_e, p.p_e, p.q_e, p.burgers, r, clamped, T, m);
+  const Hardening h = hardening(p, c.internal, r, clamped, T, m);
+  const double d_ep = std::max(ep - c.start_plastic_strain, 0.0);
+  const double sigma_e = c.internal + h.theta * d_ep;
+  const double scale = m.mu / p.mu0;
+  const double thermal = Si.S * p.sigma_i + Se.S * sigma_e;
+  FlowStress f;
+  f.value = p.sigma_a + thermal * scale;
+  f.d_plastic_strain = Se.S * h.theta * scale;
+  f.d_rate = (Si.d_rate * p.sigma_i + Se.d_rate * sigma_e + Se.S * h.d_rate * d_ep) * scale;
+  f.d_temperature = (Si.d_T * p.sigma_i + Se.d_T * sigma_e + Se.S * h.d_T * d_ep) * scale +
+                    thermal * m.d_T / p.mu0;
+  return f;
+}
+
+double internal_after(const MechanicalThresholdStressParams& p, double internal, double d_ep,
+                      double rate, const FlowConditions& c) {
+  const bool clamped = rate < p.minimum_strain_rate;
+  const double r = clamped ? p.minimum_strain_rate : rate;
+  const Modulus m = varshni(p, c.temperature);
+  return internal + hardening(p, internal, r, clamped, c.temperature, m).theta * d_ep;
+}
+
+MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThresholdStressParams*,
+                                         double, double) {
+  using P = MechanicalThresholdStressParams;
+  P p;
+  r.ignore("type");
+  const auto stress = [&](const char* key, double P::*member, Range range, const char* what) {
+    p.*member = r.quantity(key, Quantity::stress, range, what);
+  };
+  const auto number = [&](const char* key, double P::*member, Range range, const char* what) {
+    p.*member = r.number(key, range, what);
+  };
+  stress("sigma_a", &P::sigma_a, Range::non_negative(), "MTS athermal stress sigma_a [Pa]");
+  stress("sigma_i", &P::sigma_i, Range::non_negative(), "MTS intrinsic barrier sigma_i [Pa]");
+  number("g0_i", &P::g0_i, Range::positive(), "MTS intrinsic activation energy g0_i [-]");
+  number("eps0_i", &P::eps0_i, Range::positive(), "MTS intrinsic reference rate [1/s]");
+  number("p_i", &P::p_i, Range::open_closed(0.0, 1.0), "MTS intrinsic exponent p_i [-]");
+  number("q_i", &P::q_i, Range::closed(1.0, 2.0), "MTS intrinsic exponent q_i [-]");
+  number("g0_e", &P::g0_e, Range::positive(), "MTS structure activation energy g0_e [-]");
+  number("eps0_e", &P::eps0_e, Range::positive(), "MTS structure reference rate [1/s]");
+  number("p_e", &P::p_e, Range::open_closed(0.0, 1.0), "MTS structure exponent p_e [-]");
+  number("q_e", &P::q_e, Range::closed(1.0, 2.0), "MTS structure exponent q_e [-]");
+  stress("a0", &P::a0, Range::non_negative(), "MTS hardening rate a0 [Pa]");
+  number("a1", &P::a1, Range::any(), "MTS hardening rate a1 (per ln rate) [Pa]");
+  number("a2", &P::a2, Range::any(), "MTS hardening rate a2 (per sqrt rate) [Pa s^0.5]");
+  number("a3", &P::a3, Range::any(), "MTS hardening rate a3 (per K) [Pa/K]");
+  number("alpha", &P::alpha, Range::positive(), "MTS tanh hardening shape alpha [-]");
+  stress("sigma_es0", &P::sigma_es0, Range::positive(), "MTS saturation stress sigma_es0 [Pa]");
+  number("g0_es", &P::g0_es, Range::positive(), "MTS saturation activation energy g0_es [-]");
+  number("eps0_es", &P::eps0_es, Range::positive(), "MTS saturation reference rate [1/s]");
+  number("burgers", &P::burgers, Range::open_closed(0.0, 1e-8), "Burgers vector b [m]");
+  stress("mu0", &P::mu0, Range::positive(), "MTS shear modulus at 0 K mu0 [Pa]");
+  stress("D", &P::D, Range::non_negative(), "Varshni D [Pa]");
+  number("T0", &P::T0, Range::non_negative(), "Varshni T0 [K]");
+  p.minimum_strain_rate = r.number_or("minimum_strain_rate", 1e-6, Range::positive(),
+                                      "slowest rate the law is evaluated at [1/s]");
+  r.reject_unknown_keys();
+  return p;
+}
+
+Json to_json(const MechanicalThresholdStressParams& p) {
+  Json j = {{"type", MechanicalThresholdStressParams::kType}};
+  for (const auto& q : MechanicalThresholdStressParams::kParameters)
+    j[std::string(q.name)] = p.*q.member;
+  return j;
+}
+
+}  // namespace impact

@@ -1,0 +1,247 @@
+// The Mechanical Threshold Stress law (models/flow_stress/mechanical_threshold_stress.hpp):
+//   - values at fixed (ep, rate, T, sigma_e at the step's start) against numbers computed
+//     independently from Follansbee & Kocks (1988) / Banerjee (2007) eqs. 4-12 (Python, the
+//     expressions written out again:
+//       mu = mu0 - D/(exp(T0/T) - 1); S = (1 - (k T/(g0 b^3 mu) ln(eps0/rate))^(1/q))^(1/p)
+//       sigma_es = sigma_es0 (rate/eps0_es)^(k T/(g0_es b^3 mu))
+//       theta = (a0 + a1 ln rate + a2 sqrt rate - a3 T)(1 - tanh(alpha X)/tanh(alpha))
+//       sigma_y = sigma_a + (S_i sigma_i + S_e (sigma_e,n + theta (ep - ep_n))) mu/mu0),
+//     to 1e-12 relative: altering an equation fails them;
+//   - its derivatives against central differences;
+//   - its limits: above a reference rate no thermal activation (S = 1), beyond the barrier S = 0;
+//   - the internal variable through ElasticPlastic::update: every step ends on the surface the
+//     next one starts from, and with alpha -> 0, constant theta_0 and saturation the point follows
+//     Voce's closed form sigma_es (1 - exp(-theta_0 ep / sigma_es)), converging at first order;
+//   - the catalogue: JSON round trip, a bad value named by its key path.
+// The parameter set is illustrative (of the magnitude of Follansbee & Kocks' copper), not a
+// published one.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <string>
+
+#include "models/flow_stress/flow_stress_law.hpp"
+#include "models/material/material.hpp"
+#include "models/plasticity/radial_return.hpp"
+#include "support/finite_difference.hpp"
+#include "support/input_problems.hpp"
+
+using namespace impact;
+
+namespace {
+
+MechanicalThresholdStressParams illustrative() {
+  MechanicalThresholdStressParams p;
+  p.sigma_a = 40e6;
+  p.sigma_i = 100e6;
+  p.g0_i = 1.5;
+  p.eps0_i = 1e13;
+  p.p_i = 0.5;
+  p.q_i = 1.5;
+  p.g0_e = 1.6;
+  p.eps0_e = 1e7;
+  p.p_e = 2.0 / 3.0;
+  p.q_e = 1.0;
+  p.a0 = 2390e6;
+  p.a1 = 12e6;
+  p.a2 = 1.696e6;
+  p.a3 = 0.5e6;
+  p.alpha = 2.0;
+  p.sigma_es0 = 770e6;
+  p.g0_es = 0.2625;
+  p.eps0_es = 1e7;
+  p.burgers = 2.56e-10;
+  p.mu0 = 47.7e9;
+  p.D = 3.0e9;
+  p.T0 = 180.0;
+  return p;
+}
+
+FlowConditions at(double T, double start_ep, double sigma_e) {
+  FlowConditions c;
+  c.temperature = T;
+  c.start_plastic_strain = start_ep;
+  c.internal = sigma_e;
+  return c;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(flow_stress_mechanical_threshold_stress)
+
+BOOST_AUTO_TEST_CASE(values_match_the_papers_equations) {
+  const auto p = illustrative();
+  struct Case {
+    double ep, rate, T, ep_n, sigma_e_n, expected;
+  };
+  for (const Case& c : {Case{0.12, 1000.0, 400.0, 0.1, 100e6, 199604892.38374576},
+                        Case{0.0, 1e-3, 294.0, 0.0, 0.0, 90320950.09515046},
+                        Case{0.31, 5000.0, 600.0, 0.3, 250e6, 269071885.21520925}}) {
+    const FlowStress f = flow_stress(p, c.ep, c.rate, at(c.T, c.ep_n, c.sigma_e_n));
+    BOOST_TEST(f.value == c.expected, boost::test_tools::tolerance(1e-12));
+  }
+  const MtsFactors m = mts_factors(p, 1000.0, 400.0);
+  BOOST_TEST(m.S_i == 0.5744278678679811, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(derivatives_match_central_differences) {
+  const auto p = illustrative();
+  for (const auto& [ep, rate, T, ep_n, se] :
+       {std::array{0.12, 1000.0, 400.0, 0.1, 100e6}, std::array{0.31, 5000.0, 600.0, 0.3, 250e6},
+        std::array{0.05, 0.01, 294.0, 0.04, 30e6}}) {
+    const FlowStress f = flow_stress(p, ep, rate, at(T, ep_n, se));
+    const double d_ep = testing::central_difference(
+        [&](double x) { return flow_stress(p, x, rate, at(T, ep_n, se)).value; }, ep);
+    const double d_rate = testing::central_difference(
+        [&](double x) { return flow_stress(p, ep, x, at(T, ep_n, se)).value; }, rate);
+    const double d_T = testing::central_difference(
+        [&](double x) { return flow_stress(p, ep, rate, at(x, ep_n, se)).value; }, T);
+    BOOST_TEST_CONTEXT("ep " << ep << ", rate " << rate << ", T " << T) {
+      BOOST_TEST(testing::relative_difference(f.d_plastic_strain, d_ep) < 1e-6);
+      BOOST_TEST(testing::relative_difference(f.d_rate, d_rate) < 1e-5);
+      BOOST_TEST(testing::relative_difference(f.d_temperature, d_T) < 1e-5);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(activation_limits) {
+  auto p = illustrative();
+  // Faster than eps0_e: ln(eps0/rate) < 0, no thermal activation: S_e = 1.
+  BOOST_TEST(mts_factors(p, 2e7, 294.0).S_e == 1.0);
+  // Hot enough that k T ln(eps0/rate) exceeds the barrier g0 b^3 mu: S_i = 0, only sigma_a and
+  // the structure term remain.
+  BOOST_TEST(mts_factors(p, 1e-3, 1500.0).S_i == 0.0);
+  // Without Varshni's D the modulus is mu0 at every temperature.
+  p.D = 0.0;
+  BOOST_TEST(mts_factors(p, 1.0, 900.0).mu == p.mu0);
+}
+
+BOOST_AUTO_TEST_CASE(internal_variable_is_integrated_consistently_and_converges_to_voce) {
+  // theta_0 = a0 constant, sigma_es = sigma_es0 (g0_es huge), S_e = 1 (eps0_e below every rate),
+  // no intrinsic or athermal stress, mu = mu0, alpha -> 0 (tanh(alpha X)/tanh(alpha) -> X):
+  // d sigma_e / d ep = a0 (1 - sigma_e / sigma_es), sigma_y = sigma_e, Voce's law.
+  const double a0 = 2e9, ses = 300e6;
+  const Json mts = {{"type", "mechanical_threshold_stress"},
+                    {"sigma_a", 0.0},
+                    {"sigma_i", 0.0},
+                    {"g0_i", 1.0},
+                    {"eps0_i", 1e13},
+                    {"p_i", 0.5},
+                    {"q_i", 1.5},
+                    {"g0_e", 1.0},
+                    {"eps0_e", 1e-6},
+                    {"p_e", 0.5},
+                    {"q_e", 1.0},
+                    {"a0", a0},
+                    {"a1", 0.0},
+                    {"a2", 0.0},
+                    {"a3", 0.0},
+                    {"alpha", 1e-4},
+                    {"sigma_es0", ses},
+                    {"g0_es", 1e12},
+                    {"eps0_es", 1e7},
+                    {"burgers", 2.5e-10},
+                    {"mu0", 26e9},
+                    {"D", 0.0},
+                    {"T0", 0.0}};
+  const Json remove = {{"constitutive_model", {{"flow_stress", nullptr}}}};
+  const Json patch = {{"constitutive_model",
+                       {{"flow_stress", mts},
+                        {"adiabatic_heating", {{"enabled", false}}},
+                        {"damage", {{"type", "none"}}},
+                        {"erosion", {{"algorithm", "none"}}}}}};
+  const Material m =
+      load_material(std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json",
+                    std::vector<Json>{remove, patch});
+  const auto& law = m.model.params().flow_stress;
+  // Uniaxial strain at 1000 /s to eps_xx = 0.3 in `steps` steps; returns the relative error of
+  // the end flow stress against Voce's closed form at the end plastic strain.
+  const auto run = [&](int steps) {
+    const double rate = 1000.0, dt = 0.3 / rate / steps;
+    Mat3 L = Mat3::Zero();
+    L(0, 0) = rate;
+    PointState s = m.model.initial_state(294.0);
+    double worst_surface = 0.0;
+    for (int n = 1; n <= steps; ++n) {
+      Mat3 F1 = Mat3::Identity();
+      F1(0, 0) = std::exp(rate * dt * n);
+      PointState s1;
+      const StepReport r = m.model.update(s, L, F1, dt, s1);
+      BOOST_REQUIRE(r.status == UpdateStatus::ok);
+      if (r.plastic) {
+        // The stress ends on the surface of the state written: the next step starts there.
+        const Mat3 d = s1.stress - s1.stress.trace() / 3.0 * Mat3::Identity();
+        const double q = std::sqrt(1.5 * (d.array() * d.array()).sum());
+        FlowConditions c;
+        c.temperature = s1.temperature;
+        c.start_plastic_strain = s1.plastic_strain;
+        c.internal = s1.flow_internal;
+        const double surface = flow_stress(law, s1.plastic_strain, s1.plastic_strain_rate, c).value;
+        worst_surface = std::max(worst_surface, std::abs(q - surface) / surface);
+      }
+      s = s1;
+    }
+    BOOST_TEST(worst_surface < 1e-9);
+    const double voce = ses * (1.0 - std::exp(-a0 * s.plastic_strain / ses));
+    BOOST_TEST(s.plastic_strain > 0.15);
+    return std::abs(s.flow_internal - voce) / voce;
+  };
+  const double coarse = run(300), fine = run(600);
+  BOOST_TEST_MESSAGE("Voce error: 300 steps " << coarse << ", 600 steps " << fine);
+  BOOST_TEST(fine < 2e-3);
+  BOOST_TEST(coarse / fine > 1.8);  // first order in the step
+  BOOST_TEST(coarse / fine < 2.2);
+}
+
+// The radial return converges onto the MTS surface over the sweep flow_stress_laws_test runs for
+// the other laws (temperatures, rates, overshoots, start plastic strains and structure stresses).
+BOOST_AUTO_TEST_CASE(the_radial_return_converges) {
+  const auto p = illustrative();
+  const double mu = 40e9, dt = 1e-8;
+  Mat3 direction;
+  direction << 2.0, 0.3, -0.1, 0.3, -0.5, 0.2, -0.1, 0.2, -1.5;
+  direction = deviator(direction);
+  direction /= std::sqrt(1.5 * ddot(direction, direction));
+  int cases = 0, worst = 0;
+  for (const double T : {294.0, 600.0, 850.0})
+    for (const double rate : {1e-4, 1.0, 1e3, 1e5})
+      for (const double over : {1e-9, 1e-4, 1e-1, 10.0})
+        for (const double ep0 : {0.0, 1e-3, 0.5}) {
+          const FlowConditions c = at(T, ep0, ep0 > 0.0 ? 200e6 : 0.0);
+          const auto flow = [&](double e, double r) { return flow_stress(p, e, r, c); };
+          const double yield = flow(ep0, 0.0).value;
+          const double q = yield * (1.0 + over);
+          const ReturnResult r = radial_return(direction * q, mu, ep0, dt, flow,
+                                               ReturnAlgorithm::newton, 0.0, {}, rate * dt);
+          ++cases;
+          worst = std::max(worst, r.iterations);
+          BOOST_TEST_CONTEXT("T " << T << " rate " << rate << " overshoot " << over << " ep0 "
+                                  << ep0) {
+            BOOST_TEST_REQUIRE(r.converged);
+            const double d = r.delta_plastic_strain;
+            const double q_new = std::sqrt(1.5 * ddot(r.deviator, r.deviator));
+            if (d > 0.0) BOOST_TEST(std::abs(q_new - flow(ep0 + d, d / dt).value) <= 1e-10 * q);
+          }
+        }
+  BOOST_TEST(cases == 144);
+  BOOST_TEST_MESSAGE("MTS: " << cases << " returns, worst " << worst << " iterations");
+}
+
+BOOST_AUTO_TEST_CASE(json_round_trip_and_bad_input) {
+  const FlowStressLaw law = illustrative();
+  const Json written = to_json(law);
+  InputProblems problems("mts.json");
+  JsonReader r(written, "/flow_stress", problems);
+  const FlowStressLaw read = read_flow_stress(r, 294.0, 1356.0);
+  BOOST_TEST(problems.empty());
+  BOOST_TEST(to_json(read) == written);
+  BOOST_TEST(parameter(read, "sigma_es0") == 770e6);
+  Json bad = written;
+  bad["sigma_es0"] = 0.0;
+  InputProblems bad_problems("mts.json");
+  JsonReader rb(bad, "/constitutive_model/flow_stress", bad_problems);
+  read_flow_stress(rb, 294.0, 1356.0);
+  BOOST_TEST(testing::problems_text(bad_problems)
+                 .find("mts.json: /constitutive_model/flow_stress/sigma_es0") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
