@@ -5,8 +5,10 @@
 
 The 6061-T6 material with its flow_stress replaced (a merge patch on the material, as a user
 writes it) by Zerilli-Armstrong (fcc, Zerilli & Armstrong 1987 copper constants), Steinberg-
-Cochran-Guinan (Steinberg 1996, 6061-T6) and Preston-Tonks-Wallace (Preston, Tonks & Wallace
-2003, copper), and Johnson-Cook as shipped:
+Cochran-Guinan (Steinberg 1996, 6061-T6), Preston-Tonks-Wallace (Preston, Tonks & Wallace
+2003, copper) and Mechanical Threshold Stress (Follansbee & Kocks 1988 in Banerjee's 2007 form,
+an illustrative set; its structure stress sigma_e integrated here along the run's own rows with
+the law's update, sigma_e += theta(sigma_e, rate, T) d_ep), and Johnson-Cook as shipped:
   - `pointdriver run`: uniaxial stress at 1000 /s to 20 % strain, isothermal. At the last step
     the axial stress equals the law's flow stress at the step's plastic strain and rate, start
     temperature and pressure and end density, computed here from the papers' equations
@@ -40,11 +42,39 @@ LAWS = {
                               "s0": 0.0085, "s_inf": 0.00055, "kappa": 0.11, "gamma": 1e-5,
                               "y0": 0.0001, "y_inf": 0.0001, "y1": 0.094, "y2": 0.575,
                               "beta": 0.25, "G0": 51.8e9, "alpha": 0.2, "molar_mass": 63.546e-3},
+    "mechanical_threshold_stress": {
+        "type": "mechanical_threshold_stress", "sigma_a": 40e6, "sigma_i": 100e6, "g0_i": 1.5,
+        "eps0_i": 1e13, "p_i": 0.5, "q_i": 1.5, "g0_e": 1.6, "eps0_e": 1e7, "p_e": 2 / 3,
+        "q_e": 1.0, "a0": 2390e6, "a1": 12e6, "a2": 1.696e6, "a3": 0.5e6, "alpha": 2.0,
+        "sigma_es0": 770e6, "g0_es": 0.2625, "eps0_es": 1e7, "burgers": 2.56e-10, "mu0": 47.7e9,
+        "D": 3.0e9, "T0": 180.0},
     "johnson_cook": None,  # as shipped
 }
+KB = 1.380649e-23
 
 
-def flow_stress(law, ep, rate, T, p, rho, material):
+def mts(law, rate, T):
+    """MTS pieces at one rate and T: mu/mu0, S_i, S_e, and theta(sigma_e) (Banerjee 2007)."""
+    rate = max(rate, 1e-6)
+    mu = law["mu0"] - law["D"] / (math.exp(law["T0"] / T) - 1)
+    b3 = law["burgers"] ** 3
+
+    def S(g0, eps0, p, q):
+        x = KB * T / (g0 * b3 * mu) * math.log(eps0 / rate)
+        if x <= 0:
+            return 1.0
+        y = 1 - x ** (1 / q)
+        return 0.0 if y <= 0 else y ** (1 / p)
+    ses = law["sigma_es0"] * (rate / law["eps0_es"]) ** (KB * T / (law["g0_es"] * b3 * mu))
+    theta0 = law["a0"] + law["a1"] * math.log(rate) + law["a2"] * math.sqrt(rate) - law["a3"] * T
+
+    def theta(se):
+        return theta0 * (1 - math.tanh(law["alpha"] * se / ses) / math.tanh(law["alpha"]))
+    return (mu / law["mu0"], S(law["g0_i"], law["eps0_i"], law["p_i"], law["q_i"]),
+            S(law["g0_e"], law["eps0_e"], law["p_e"], law["q_e"]), theta)
+
+
+def flow_stress(law, ep, rate, T, p, rho, material, sigma_e=0.0):
     """The papers' equations, written out again (not the library's code)."""
     if law is None:
         jc = material["constitutive_model"]["flow_stress"]
@@ -78,6 +108,9 @@ def flow_stress(law, ep, rate, T, p, rho, material):
         tau = ts + a / pp * math.log(1 - (1 - math.exp(-x)) * math.exp(
             -pp * law["theta"] * ep / (a * (math.exp(x) - 1))))
         return 2 * G * tau
+    if law["type"] == "mechanical_threshold_stress":
+        ratio, Si, Se, _ = mts(law, rate, T)
+        return law["sigma_a"] + (Si * law["sigma_i"] + Se * sigma_e) * ratio
     raise ValueError(law["type"])
 
 
@@ -112,9 +145,17 @@ def main(pointdriver, mpm, work):
         last, before = rows[-1], rows[-2]
         ep = float(last["plastic_strain [-]"])
         rate = float(last["plastic_strain_rate [1/s]"])
+        sigma_e = 0.0
+        if law is not None and law["type"] == "mechanical_threshold_stress":
+            for prev, row in zip(rows[:-1], rows[1:]):  # the law's update, step by step
+                d_ep = float(row["plastic_strain [-]"]) - float(prev["plastic_strain [-]"])
+                if d_ep > 0:
+                    theta = mts(law, float(row["plastic_strain_rate [1/s]"]),
+                                float(prev["temperature [K]"]))[3]
+                    sigma_e += theta(sigma_e) * d_ep
         expected = flow_stress(law, ep, rate, float(before["temperature [K]"]),
                                float(before["pressure [Pa]"]), float(last["density [kg/m^3]"]),
-                               material)
+                               material, sigma_e)
         got = float(last["von_mises [Pa]"])
         print(f"{name}: pointdriver ep {ep:.4f}, rate {rate:.1f} /s: von Mises {got:.6e} Pa, "
               f"the law {expected:.6e} Pa")
