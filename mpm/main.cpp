@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
       ->required();
   impact::cli::add_set(*run, set_texts, "the scene (after its extends)");
   impact::cli::add_set(*check, set_texts, "the scene (after its extends)");
+  impact::cli::add_set(*study, set_texts, "every case (after its extends)");
   for (CLI::App* c : {run, study})
     c->add_flag("--progress", progress, "the progress line also off a terminal (a batch log)");
   run->add_option("--restart", restart_dir,
@@ -136,6 +137,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (study->parsed()) {
+      study_options.patches = patches;
       study_options.scene_dir = scene_file;
       study_options.out_dir = options.out_dir;
       study_options.progress = progress;

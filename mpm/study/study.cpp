@@ -119,7 +119,9 @@ int run_study(const StudyOptions& options) {
   std::vector<std::string> problems;
   for (const auto& f : files) {
     try {
-      scenes.push_back(load_scene(f));
+      Json document = load_scene_document(f);
+      for (const Json& patch : options.patches) document.merge_patch(patch);
+      scenes.push_back(read_scene(document, f));
       for (const std::string& w : scenes.back().warnings)
         std::cerr << "mpm study: warning: " << w << '\n';
       scenes.back().output.snapshots = false;  // the study needs the ledger only; VTUs are GBs

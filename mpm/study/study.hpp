@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "models/core/input.hpp"
+
 namespace impact::mpm {
 
 struct StudyOptions {
@@ -15,6 +17,7 @@ struct StudyOptions {
   std::vector<std::string> cases;  ///< case names (file stems) to run; empty: all
   bool plot = true;                ///< draw the figures (the table is written either way)
   bool progress = false;           ///< the solver's progress line on stderr
+  std::vector<Json> patches;       ///< merge patches over every case (after its extends)
 };
 
 /// The scene files a study runs: case*.json sorted by name, then recommended.json if present;
