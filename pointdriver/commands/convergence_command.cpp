@@ -4,10 +4,12 @@
 #include <fstream>
 #include <iostream>
 
+#include "models/material/material.hpp"
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/commands/plot_script.hpp"
 #include "pointdriver/study/convergence_study.hpp"
+#include "support/shipped_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -39,6 +41,7 @@ int command_convergence(const std::vector<std::string>& args) {
           {{"-o|--out", 1, "output directory (default: docs/figures)", "DIR"},
            {"--quick", 0, "up to 1000 steps"},
            {"--material", 1, "material (default: data/materials/al6061_t6.json)", "FILE"},
+           {"--set", 1, "JSON merge patch over the material (repeatable)", "JSON"},
            {"--no-plots", 0, "the tables only"}})) {
     return *exit_code;
   }
@@ -53,6 +56,21 @@ int command_convergence(const std::vector<std::string>& args) {
   ConvergenceSettings settings;
   if (o.has("--quick")) settings.steps = quick_convergence_steps();
   settings.material_file = o.get("--material", "");
+  if (o.has("--set")) {
+    // The patched material is validated and written beside the results (what the study ran).
+    const std::string base = settings.material_file.empty()
+                                 ? shipped_file("data/materials/al6061_t6.json").string()
+                                 : settings.material_file;
+    try {
+      const Json document = patched_json_file(base, o.all("--set"));
+      (void)read_material(document, base);
+      settings.material_file = (out / "convergence_material.json").string();
+      std::ofstream(settings.material_file) << document.dump(2) << '\n';
+    } catch (const InputError& e) {
+      std::cerr << e.what() << '\n';
+      return 2;
+    }
+  }
   settings.progress = [](const std::string& line) { std::cout << line << std::endl; };
   ConvergenceResult result;
   const fs::path csv = out / "convergence.csv";
