@@ -14,6 +14,8 @@
 //     fields. And a run that wrote a checkpoint every 7 steps and then ran on to the end (as a
 //     run killed after its last checkpoint): restarting it drops the history rows after the
 //     checkpoint and ends byte-identical again.
+// (a') The same with both blocks on the Mechanical Threshold Stress law, whose internal variable
+//      (PointState::flow_internal) must come back from the checkpoint.
 // (c) A restart is refused (InputError) for a checkpoint of another format version, a corrupt
 //     one (a flipped byte: checksum), a scene.json edited since, and a missing checkpoint.
 #include <unistd.h>
@@ -62,7 +64,9 @@ bool same_state(const PointState& a, const PointState& b) {
   return a.stress == b.stress && a.F == b.F && a.R == b.R && a.plastic_strain == b.plastic_strain &&
          a.plastic_strain_rate == b.plastic_strain_rate && a.temperature == b.temperature &&
          a.internal_energy == b.internal_energy && a.damage == b.damage &&
-         a.porosity == b.porosity && a.melted == b.melted && a.failed == b.failed;
+         a.porosity == b.porosity && a.flow_internal == b.flow_internal && a.melted == b.melted &&
+         a.failed == b.failed && a.failure_cause == b.failure_cause &&
+         a.instability == b.instability && a.failed_in_tension == b.failed_in_tension;
 }
 
 // Particles that differ in any array.
@@ -181,6 +185,68 @@ BOOST_AUTO_TEST_CASE(simulation_continues_bit_for_bit_from_a_checkpoint) {
   BOOST_TEST(rows_differ == 0u);
   BOOST_TEST(faulted_a == 1);
   BOOST_TEST(c.faulted_particles() == faulted_a);
+}
+
+BOOST_AUTO_TEST_CASE(a_flow_stress_internal_variable_continues_from_a_checkpoint) {
+  // Both blocks on MTS (an illustrative set: sigma_e grows from 0 where they flow).
+  Json doc = load_scene_document(kScene);
+  const Json mts = {{"type", "mechanical_threshold_stress"},
+                    {"sigma_a", 20e6},
+                    {"sigma_i", 30e6},
+                    {"g0_i", 1.5},
+                    {"eps0_i", 1e13},
+                    {"p_i", 0.5},
+                    {"q_i", 1.5},
+                    {"g0_e", 1.6},
+                    {"eps0_e", 1e7},
+                    {"p_e", 2.0 / 3.0},
+                    {"q_e", 1.0},
+                    {"a0", 2390e6},
+                    {"a1", 12e6},
+                    {"a2", 1.696e6},
+                    {"a3", 0.5e6},
+                    {"alpha", 2.0},
+                    {"sigma_es0", 770e6},
+                    {"g0_es", 0.2625},
+                    {"eps0_es", 1e7},
+                    {"burgers", 2.56e-10},
+                    {"mu0", 47.7e9},
+                    {"D", 3.0e9},
+                    {"T0", 180.0}};
+  Json law = mts;  // the overrides are a merge patch: null takes Johnson-Cook's keys out
+  for (const char* key : {"A", "B", "n", "C", "m", "reference_strain_rate", "rate_form"})
+    law[key] = nullptr;
+  for (auto& [name, material] : doc["materials"].items())
+    material["overrides"]["constitutive_model"]["flow_stress"] = law;
+  const Scene s = read_scene(doc, kScene);
+  constexpr int kSteps = 40, kHalf = 20;
+  Particles end_a;
+  {
+    Simulation a(s, 2);
+    for (int i = 0; i < kSteps; ++i) a.step();
+    end_a = a.particles();
+  }
+  std::stringstream checkpoint;
+  {
+    Simulation b(s, 2);
+    for (int i = 0; i < kHalf; ++i) b.step();
+    CheckpointWriter w(checkpoint);
+    b.save(w);
+    w.finish();
+  }
+  Simulation c(s, 2);
+  CheckpointReader r(checkpoint, "checkpoint in memory");
+  c.load(r);
+  r.finish();
+  for (int i = kHalf; i < kSteps; ++i) c.step();
+  std::size_t hardened = 0;
+  for (const PointState& p : end_a.state) hardened += p.flow_internal > 0.0 ? 1 : 0;
+  const std::size_t particles_differ = differing(end_a, c.particles());
+  BOOST_TEST_MESSAGE("MTS blocks: " << hardened << " of " << end_a.size()
+                                    << " particles with sigma_e > 0; " << particles_differ
+                                    << " differ after the restart");
+  BOOST_TEST(hardened > 0u);
+  BOOST_TEST(particles_differ == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(interrupted_and_restarted_run_matches_the_uninterrupted_one) {
