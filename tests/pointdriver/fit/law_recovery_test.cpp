@@ -8,7 +8,9 @@
 //  - Preston-Tonks-Wallace (theta, p, s0, s_inf, kappa free; gamma, y0, y_inf and the overdriven
 //    y1, y2, beta fixed): each within 1e-4;
 //  - Steinberg-Cochran-Guinan, rate-independent (Y0, beta, n free, Y_max fixed above the curves'
-//    stresses): each within 1e-4.
+//    stresses): each within 1e-4;
+//  - Mechanical Threshold Stress, an illustrative set (sigma_a, sigma_i, a0, sigma_es0 free),
+//    its internal variable integrated along each driver curve: each within 1e-4.
 // The acceptance asks 1 %; 1e-4 is what a noise-free fit through the same model must reach.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -157,6 +159,37 @@ BOOST_AUTO_TEST_CASE(steinberg_cochran_guinan) {
             {"dG_dp", 1.34991},
             {"dG_dT", -1.79829e7}},
            {{"Y0", {1e6, 5e9}}, {"beta", {0.0, 1e4}}, {"n", {0.01, 2.0}}});
+}
+
+// Mechanical Threshold Stress, the illustrative set of mechanical_threshold_stress_test.
+BOOST_AUTO_TEST_CASE(mechanical_threshold_stress) {
+  recovers({{"type", "mechanical_threshold_stress"},
+            {"sigma_a", 40e6},
+            {"sigma_i", 100e6},
+            {"g0_i", 1.5},
+            {"eps0_i", 1e13},
+            {"p_i", 0.5},
+            {"q_i", 1.5},
+            {"g0_e", 1.6},
+            {"eps0_e", 1e7},
+            {"p_e", 2.0 / 3.0},
+            {"q_e", 1.0},
+            {"a0", 2390e6},
+            {"a1", 12e6},
+            {"a2", 1.696e6},
+            {"a3", 0.5e6},
+            {"alpha", 2.0},
+            {"sigma_es0", 770e6},
+            {"g0_es", 0.2625},
+            {"eps0_es", 1e7},
+            {"burgers", 2.56e-10},
+            {"mu0", 47.7e9},
+            {"D", 3.0e9},
+            {"T0", 180.0}},
+           {{"sigma_a", {0.0, 2e9}},
+            {"sigma_i", {0.0, 1e10}},
+            {"a0", {0.0, 1e11}},
+            {"sigma_es0", {1e6, 1e10}}});
 }
 
 BOOST_AUTO_TEST_SUITE_END()
