@@ -42,12 +42,8 @@ LAWS = {
                               "s0": 0.0085, "s_inf": 0.00055, "kappa": 0.11, "gamma": 1e-5,
                               "y0": 0.0001, "y_inf": 0.0001, "y1": 0.094, "y2": 0.575,
                               "beta": 0.25, "G0": 51.8e9, "alpha": 0.2, "molar_mass": 63.546e-3},
-    "mechanical_threshold_stress": {
-        "type": "mechanical_threshold_stress", "sigma_a": 40e6, "sigma_i": 100e6, "g0_i": 1.5,
-        "eps0_i": 1e13, "p_i": 0.5, "q_i": 1.5, "g0_e": 1.6, "eps0_e": 1e7, "p_e": 2 / 3,
-        "q_e": 1.0, "a0": 2390e6, "a1": 12e6, "a2": 1.696e6, "a3": 0.5e6, "alpha": 2.0,
-        "sigma_es0": 770e6, "g0_es": 0.2625, "eps0_es": 1e7, "burgers": 2.56e-10, "mu0": 47.7e9,
-        "D": 3.0e9, "T0": 180.0},
+    "mechanical_threshold_stress": json.load(open(os.path.join(
+        ROOT, "tests", "data", "flow_stress", "mts_illustrative.json")))["flow_stress"],
     "johnson_cook": None,  # as shipped
 }
 KB = 1.380649e-23

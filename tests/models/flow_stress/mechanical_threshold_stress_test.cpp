@@ -13,7 +13,7 @@
 //     next one starts from, and with alpha -> 0, constant theta_0 and saturation the point follows
 //     Voce's closed form sigma_es (1 - exp(-theta_0 ep / sigma_es)), converging at first order;
 //   - the catalogue: JSON round trip, a bad value named by its key path.
-// The parameter set is illustrative (of the magnitude of Follansbee & Kocks' copper), not a
+// The parameter set is illustrative (tests/data/flow_stress/mts_illustrative.json), not a
 // published one.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -24,36 +24,19 @@
 #include "models/plasticity/radial_return.hpp"
 #include "support/finite_difference.hpp"
 #include "support/input_problems.hpp"
+#include "support/mts_illustrative.hpp"
 
 using namespace impact;
 
 namespace {
 
 MechanicalThresholdStressParams illustrative() {
-  MechanicalThresholdStressParams p;
-  p.sigma_a = 40e6;
-  p.sigma_i = 100e6;
-  p.g0_i = 1.5;
-  p.eps0_i = 1e13;
-  p.p_i = 0.5;
-  p.q_i = 1.5;
-  p.g0_e = 1.6;
-  p.eps0_e = 1e7;
-  p.p_e = 2.0 / 3.0;
-  p.q_e = 1.0;
-  p.a0 = 2390e6;
-  p.a1 = 12e6;
-  p.a2 = 1.696e6;
-  p.a3 = 0.5e6;
-  p.alpha = 2.0;
-  p.sigma_es0 = 770e6;
-  p.g0_es = 0.2625;
-  p.eps0_es = 1e7;
-  p.burgers = 2.56e-10;
-  p.mu0 = 47.7e9;
-  p.D = 3.0e9;
-  p.T0 = 180.0;
-  return p;
+  const Json document = testing::mts_illustrative_law();  // the reader keeps a reference
+  InputProblems problems("mts_illustrative.json");
+  JsonReader r(document, "/flow_stress", problems);
+  const FlowStressLaw law = read_flow_stress(r, 294.0, 1356.0);
+  BOOST_REQUIRE(problems.empty());
+  return std::get<MechanicalThresholdStressParams>(law);
 }
 
 FlowConditions at(double T, double start_ep, double sigma_e) {

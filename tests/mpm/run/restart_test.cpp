@@ -23,10 +23,12 @@
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "../verification_helpers.hpp"
 #include "mpm/run/checkpoint.hpp"
+#include "support/mts_illustrative.hpp"
 
 using namespace impact;
 using namespace impact::mpm;
@@ -85,6 +87,24 @@ std::size_t differing(const Particles& a, const Particles& b) {
     n += same ? 0 : 1;
   }
   return n;
+}
+
+// Steps a new Simulation of `s` `half` times (`setup` first, e.g. a fault injection), saves a
+// checkpoint in memory and loads it into `c`.
+void load_after(Simulation& c, const Scene& s, int half,
+                const std::function<void(Simulation&)>& setup = {}) {
+  std::stringstream checkpoint;
+  {
+    Simulation b(s, 2);
+    if (setup) setup(b);
+    for (int i = 0; i < half; ++i) b.step();
+    CheckpointWriter w(checkpoint);
+    b.save(w);
+    w.finish();
+  }
+  CheckpointReader r(checkpoint, "checkpoint in memory");
+  c.load(r);
+  r.finish();
 }
 
 std::vector<double> ledger_row(const Simulation& sim) {
@@ -157,19 +177,8 @@ BOOST_AUTO_TEST_CASE(simulation_continues_bit_for_bit_from_a_checkpoint) {
     end_a = a.particles();
     faulted_a = a.faulted_particles();
   }
-  std::stringstream checkpoint;
-  {
-    Simulation b(s, 2);
-    b.inject(nan);
-    for (int i = 0; i < kHalf; ++i) b.step();
-    CheckpointWriter w(checkpoint);
-    b.save(w);
-    w.finish();
-  }
   Simulation c(s, 2);
-  CheckpointReader r(checkpoint, "checkpoint in memory");
-  c.load(r);
-  r.finish();
+  load_after(c, s, kHalf, [&](Simulation& b) { b.inject(nan); });
   BOOST_TEST(c.steps() == kHalf);
   std::size_t rows_differ = 0;
   for (int i = kHalf; i < kSteps; ++i) {
@@ -190,29 +199,10 @@ BOOST_AUTO_TEST_CASE(simulation_continues_bit_for_bit_from_a_checkpoint) {
 BOOST_AUTO_TEST_CASE(a_flow_stress_internal_variable_continues_from_a_checkpoint) {
   // Both blocks on MTS (an illustrative set: sigma_e grows from 0 where they flow).
   Json doc = load_scene_document(kScene);
-  const Json mts = {{"type", "mechanical_threshold_stress"},
-                    {"sigma_a", 20e6},
-                    {"sigma_i", 30e6},
-                    {"g0_i", 1.5},
-                    {"eps0_i", 1e13},
-                    {"p_i", 0.5},
-                    {"q_i", 1.5},
-                    {"g0_e", 1.6},
-                    {"eps0_e", 1e7},
-                    {"p_e", 2.0 / 3.0},
-                    {"q_e", 1.0},
-                    {"a0", 2390e6},
-                    {"a1", 12e6},
-                    {"a2", 1.696e6},
-                    {"a3", 0.5e6},
-                    {"alpha", 2.0},
-                    {"sigma_es0", 770e6},
-                    {"g0_es", 0.2625},
-                    {"eps0_es", 1e7},
-                    {"burgers", 2.56e-10},
-                    {"mu0", 47.7e9},
-                    {"D", 3.0e9},
-                    {"T0", 180.0}};
+  // The illustrative set with a lower athermal and intrinsic stress, so that the blocks flow.
+  Json mts = testing::mts_illustrative_law();
+  mts["sigma_a"] = 20e6;
+  mts["sigma_i"] = 30e6;
   Json law = mts;  // the overrides are a merge patch: null takes Johnson-Cook's keys out
   for (const char* key : {"A", "B", "n", "C", "m", "reference_strain_rate", "rate_form"})
     law[key] = nullptr;
@@ -226,18 +216,8 @@ BOOST_AUTO_TEST_CASE(a_flow_stress_internal_variable_continues_from_a_checkpoint
     for (int i = 0; i < kSteps; ++i) a.step();
     end_a = a.particles();
   }
-  std::stringstream checkpoint;
-  {
-    Simulation b(s, 2);
-    for (int i = 0; i < kHalf; ++i) b.step();
-    CheckpointWriter w(checkpoint);
-    b.save(w);
-    w.finish();
-  }
   Simulation c(s, 2);
-  CheckpointReader r(checkpoint, "checkpoint in memory");
-  c.load(r);
-  r.finish();
+  load_after(c, s, kHalf);
   for (int i = kHalf; i < kSteps; ++i) c.step();
   std::size_t hardened = 0;
   for (const PointState& p : end_a.state) hardened += p.flow_internal > 0.0 ? 1 : 0;

@@ -17,6 +17,7 @@
 #include <map>
 
 #include "pointdriver/fit/strength_fit.hpp"
+#include "support/mts_illustrative.hpp"
 
 using namespace impact;
 using namespace impact::pointdriver::fit;
@@ -161,35 +162,12 @@ BOOST_AUTO_TEST_CASE(steinberg_cochran_guinan) {
            {{"Y0", {1e6, 5e9}}, {"beta", {0.0, 1e4}}, {"n", {0.01, 2.0}}});
 }
 
-// Mechanical Threshold Stress, the illustrative set of mechanical_threshold_stress_test.
+// Mechanical Threshold Stress, the illustrative set (tests/data/flow_stress/mts_illustrative.json).
 BOOST_AUTO_TEST_CASE(mechanical_threshold_stress) {
-  recovers({{"type", "mechanical_threshold_stress"},
-            {"sigma_a", 40e6},
-            {"sigma_i", 100e6},
-            {"g0_i", 1.5},
-            {"eps0_i", 1e13},
-            {"p_i", 0.5},
-            {"q_i", 1.5},
-            {"g0_e", 1.6},
-            {"eps0_e", 1e7},
-            {"p_e", 2.0 / 3.0},
-            {"q_e", 1.0},
-            {"a0", 2390e6},
-            {"a1", 12e6},
-            {"a2", 1.696e6},
-            {"a3", 0.5e6},
-            {"alpha", 2.0},
-            {"sigma_es0", 770e6},
-            {"g0_es", 0.2625},
-            {"eps0_es", 1e7},
-            {"burgers", 2.56e-10},
-            {"mu0", 47.7e9},
-            {"D", 3.0e9},
-            {"T0", 180.0}},
-           {{"sigma_a", {0.0, 2e9}},
-            {"sigma_i", {0.0, 1e10}},
-            {"a0", {0.0, 1e11}},
-            {"sigma_es0", {1e6, 1e10}}});
+  recovers(testing::mts_illustrative_law(), {{"sigma_a", {0.0, 2e9}},
+                                             {"sigma_i", {0.0, 1e10}},
+                                             {"a0", {0.0, 1e11}},
+                                             {"sigma_es0", {1e6, 1e10}}});
 }
 
 BOOST_AUTO_TEST_SUITE_END()
