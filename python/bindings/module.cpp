@@ -24,6 +24,14 @@ PYBIND11_MODULE(_impact, m) {
   impact::python::bind_path(m);
   impact::python::bind_fit(m);
   impact::python::bind_scene(m);
+  m.def(
+      "merge_patch",
+      [](const std::string& target, const std::string& patch) {
+        impact::Json document = impact::python::parse_json(target, "merge_patch target");
+        document.merge_patch(impact::python::parse_json(patch, "merge_patch patch"));
+        return document.dump();
+      },
+      py::arg("target"), py::arg("patch"));
 #ifdef IMPACT_VERSION
   m.attr("__version__") = IMPACT_VERSION;
 #endif

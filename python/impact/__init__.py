@@ -125,16 +125,9 @@ class Material:
 
 
 def _merge_patch(target, patch):
-    """RFC 7396 merge patch (as the programs apply it)."""
-    if not isinstance(patch, dict):
-        return patch
-    out = dict(target) if isinstance(target, dict) else {}
-    for key, value in patch.items():
-        if value is None:
-            out.pop(key, None)
-        else:
-            out[key] = _merge_patch(out.get(key), value)
-    return out
+    """RFC 7396 merge patch, by the library's own (nlohmann::json::merge_patch, as the programs
+    apply --set)."""
+    return json.loads(_impact.merge_patch(json.dumps(target), json.dumps(patch)))
 
 
 def load_material(source, patches=None, base_dir=None):
