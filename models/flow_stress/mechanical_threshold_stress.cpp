@@ -119,10 +119,16 @@ MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThreshol
   };
   stress("sigma_a", &P::sigma_a, Range::non_negative(), "MTS athermal stress sigma_a [Pa]");
   stress("sigma_i", &P::sigma_i, Range::non_negative(), "MTS intrinsic barrier sigma_i [Pa]");
-  number("g0_i", &P::g0_i, Range::positive(), "MTS intrinsic activation energy g0_i [-]");
-  number("eps0_i", &P::eps0_i, Range::positive(), "MTS intrinsic reference rate [1/s]");
-  number("p_i", &P::p_i, Range::open_closed(0.0, 1.0), "MTS intrinsic exponent p_i [-]");
-  number("q_i", &P::q_i, Range::closed(1.0, 2.0), "MTS intrinsic exponent q_i [-]");
+  // An fcc metal has no intrinsic barrier (sigma_i = 0; Follansbee & Kocks' copper): its
+  // activation keys are then optional, since S_i multiplies zero.
+  const auto intrinsic = [&](const char* key, double P::*member, Range range, const char* what) {
+    p.*member =
+        p.sigma_i > 0.0 ? r.number(key, range, what) : r.number_or(key, p.*member, range, what);
+  };
+  intrinsic("g0_i", &P::g0_i, Range::positive(), "MTS intrinsic activation energy g0_i [-]");
+  intrinsic("eps0_i", &P::eps0_i, Range::positive(), "MTS intrinsic reference rate [1/s]");
+  intrinsic("p_i", &P::p_i, Range::open_closed(0.0, 1.0), "MTS intrinsic exponent p_i [-]");
+  intrinsic("q_i", &P::q_i, Range::closed(1.0, 2.0), "MTS intrinsic exponent q_i [-]");
   number("g0_e", &P::g0_e, Range::positive(), "MTS structure activation energy g0_e [-]");
   number("eps0_e", &P::eps0_e, Range::positive(), "MTS structure reference rate [1/s]");
   number("p_e", &P::p_e, Range::open_closed(0.0, 1.0), "MTS structure exponent p_e [-]");

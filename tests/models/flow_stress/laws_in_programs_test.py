@@ -66,8 +66,9 @@ def mts(law, rate, T):
 
     def theta(se):
         return theta0 * (1 - math.tanh(law["alpha"] * se / ses) / math.tanh(law["alpha"]))
-    return (mu / law["mu0"], S(law["g0_i"], law["eps0_i"], law["p_i"], law["q_i"]),
-            S(law["g0_e"], law["eps0_e"], law["p_e"], law["q_e"]), theta)
+    # No intrinsic barrier (sigma_i = 0, an fcc metal): its activation keys need not be given.
+    Si = S(law["g0_i"], law["eps0_i"], law["p_i"], law["q_i"]) if law["sigma_i"] > 0 else 0.0
+    return (mu / law["mu0"], Si, S(law["g0_e"], law["eps0_e"], law["p_e"], law["q_e"]), theta)
 
 
 def flow_stress(law, ep, rate, T, p, rho, material, sigma_e=0.0):

@@ -227,4 +227,30 @@ BOOST_AUTO_TEST_CASE(json_round_trip_and_bad_input) {
                  .find("mts.json: /constitutive_model/flow_stress/sigma_es0") != std::string::npos);
 }
 
+// The shipped Follansbee & Kocks (1988) copper (data/materials/ofhc_copper_mts.json) has no
+// intrinsic barrier (sigma_i = 0), so its file omits the barrier's activation keys; a law with a
+// barrier must give them. The value: sigma_e,n = 0, ep - ep_n = 0.1, 1e3 /s, 294 K, computed
+// from the equations above (Python): mu = 44.1479 GPa, S_e = 0.953055, theta_0 = 2526.5 MPa.
+BOOST_AUTO_TEST_CASE(fcc_copper_needs_no_intrinsic_barrier_keys) {
+  const Json file =
+      load_json_file(std::string(IMPACT_SOURCE_DIR) + "/data/materials/ofhc_copper_mts.json");
+  const Json& block = file.at("constitutive_model").at("flow_stress");
+  BOOST_REQUIRE(!block.contains("g0_i"));
+  InputProblems problems("ofhc_copper_mts.json");
+  JsonReader r(block, "/constitutive_model/flow_stress", problems);
+  const FlowStressLaw law = read_flow_stress(r, 294.0, 1356.0);
+  BOOST_REQUIRE(problems.empty());
+  const auto& p = std::get<MechanicalThresholdStressParams>(law);
+  BOOST_TEST(flow_stress(p, 0.1, 1e3, at(294.0, 0.0, 0.0)).value == 262860494.056348,
+             boost::test_tools::tolerance(1e-12));
+
+  Json barrier = block;
+  barrier["sigma_i"] = 100e6;
+  InputProblems missing("mts.json");
+  JsonReader rm(barrier, "/constitutive_model/flow_stress", missing);
+  read_flow_stress(rm, 294.0, 1356.0);
+  BOOST_TEST(testing::problems_text(missing).find(
+                 "mts.json: /constitutive_model/flow_stress/g0_i") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
