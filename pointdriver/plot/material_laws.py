@@ -8,7 +8,8 @@ one panel per rate and temperature, every law in each panel.
 
 Writes OUT_DIR/materials_<material>.png and OUT_DIR/materials_<material>.csv (columns:
 law, temperature [K], strain_rate [1/s], plastic_strain [-], stress [Pa]) for copper (Johnson-
-Cook, Zerilli-Armstrong, Steinberg-Cochran-Guinan) and tantalum (Preston-Tonks-Wallace).
+Cook, Zerilli-Armstrong, Steinberg-Cochran-Guinan, Mechanical Threshold Stress), tantalum
+(Preston-Tonks-Wallace), Armco iron, 4340 steel and Ti-6Al-4V (Johnson-Cook).
 """
 import csv
 import json
@@ -26,8 +27,12 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 MATERIALS = {
     "copper": [("Johnson-Cook (1983)", "ofhc_copper_jc"),
                ("Zerilli-Armstrong (1987)", "ofhc_copper_za"),
-               ("Steinberg-Cochran-Guinan (1996)", "ofhc_copper_scg")],
+               ("Steinberg-Cochran-Guinan (1996)", "ofhc_copper_scg"),
+               ("Mechanical Threshold Stress (1988)", "ofhc_copper_mts")],
     "tantalum": [("Preston-Tonks-Wallace (2003)", "tantalum_ptw")],
+    "armco_iron": [("Johnson-Cook (1983)", "armco_iron_jc")],
+    "steel_4340": [("Johnson-Cook (1983)", "steel_4340_jc")],
+    "ti6al4v": [("Johnson-Cook (Lesuer 2000)", "ti6al4v_jc")],
 }
 RATES = (1e-3, 1e3)
 TEMPERATURES = (294.0, 600.0)

@@ -3,13 +3,16 @@
 
   materials_test.py POINTDRIVER MPM MATERIAL_CHECK WORK_DIR
 
-For data/materials/ofhc_copper_{jc,za,scg}.json (Johnson & Cook 1983, Zerilli & Armstrong
-1987, Steinberg 1996) and tantalum_ptw.json (Preston, Tonks & Wallace 2003):
+For data/materials/ofhc_copper_{jc,za,scg,mts}.json (Johnson & Cook 1983, Zerilli & Armstrong
+1987, Steinberg 1996, Follansbee & Kocks 1988), tantalum_ptw.json (Preston, Tonks & Wallace
+2003), armco_iron_jc.json and steel_4340_jc.json (Johnson & Cook 1983) and ti6al4v_jc.json
+(Lesuer 2000):
 - `material_check` accepts the file.
 - `pointdriver run`: uniaxial stress to 20 % at 1e-3, 1e3 and 1e4 /s, isothermal at 294 and
   600 K. At the last step the von Mises stress equals the file's law at the step's plastic
   strain and rate, start-of-step temperature and pressure and end-of-step density, computed
-  from the papers' equations independently of the library (laws_in_programs_test.py), to 1e-6.
+  from the papers' equations independently of the library (laws_in_programs_test.py), to 1e-6;
+  for MTS its internal variable sigma_e integrated again here along the driver's rows.
   Then the law's character: SCG is rate independent (the three rates agree to 1e-3) and softens
   with temperature by the modulus ratio (600 K / 294 K between 0.85 and 0.92); the other laws
   harden with rate (1e4 /s above 1e-3 /s) and soften with temperature (600 K below 294 K).
@@ -26,9 +29,10 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, HERE)
-from laws_in_programs_test import flow_stress  # noqa: E402  (the papers' equations)
+from laws_in_programs_test import flow_stress, mts  # noqa: E402  (the papers' equations)
 
-MATERIALS = ["ofhc_copper_jc", "ofhc_copper_za", "ofhc_copper_scg", "tantalum_ptw"]
+MATERIALS = ["ofhc_copper_jc", "ofhc_copper_za", "ofhc_copper_scg", "ofhc_copper_mts",
+             "tantalum_ptw", "armco_iron_jc", "steel_4340_jc", "ti6al4v_jc"]
 RATES = (1e-3, 1e3, 1e4)
 
 
@@ -41,6 +45,21 @@ def run(cmd):
 def law_of(material):
     law = material["constitutive_model"]["flow_stress"]
     return None if law["type"] == "johnson_cook" else law  # None: the material's JC block
+
+
+def structure_stress(law, rows):
+    """MTS: sigma_e at the last row, the law's update theta(sigma_e,n, rate, T_n) d_ep summed
+    over the rows (Follansbee & Kocks 1988); 0 for the laws without an internal variable."""
+    if law is None or law["type"] != "mechanical_threshold_stress":
+        return 0.0
+    sigma_e = 0.0
+    for prev, row in zip(rows[:-1], rows[1:]):
+        d_ep = float(row["plastic_strain [-]"]) - float(prev["plastic_strain [-]"])
+        if d_ep > 0:
+            theta = mts(law, float(row["plastic_strain_rate [1/s]"]),
+                        float(prev["temperature [K]"]))[3]
+            sigma_e += theta(sigma_e) * d_ep
+    return sigma_e
 
 
 def check_point_driver(pointdriver, name, path_to, material, work):
@@ -62,7 +81,8 @@ def check_point_driver(pointdriver, name, path_to, material, work):
             expected = flow_stress(law, ep, float(last["plastic_strain_rate [1/s]"]),
                                    float(before["temperature [K]"]),
                                    float(before["pressure [Pa]"]),
-                                   float(last["density [kg/m^3]"]), material)
+                                   float(last["density [kg/m^3]"]), material,
+                                   structure_stress(law, rows))
             got = float(last["von_mises [Pa]"])
             print(f"{name}, {T:.0f} K, {rate:g} /s: ep {ep:.4f}, von Mises {got:.6e} Pa, "
                   f"the law {expected:.6e} Pa")
