@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "models/flow_stress/cowper_symonds.hpp"
 #include "models/flow_stress/flow_stress.hpp"
 #include "models/flow_stress/johnson_cook.hpp"
 #include "models/flow_stress/mechanical_threshold_stress.hpp"
@@ -25,7 +26,7 @@ namespace impact {
 /// Every flow-stress law, one line each (the first is the default of an empty material).
 using FlowStressLaw =
     std::variant<JohnsonCookParams, ZerilliArmstrongParams, SteinbergCochranGuinanParams,
-                 PrestonTonksWallaceParams, MechanicalThresholdStressParams>;
+                 PrestonTonksWallaceParams, MechanicalThresholdStressParams, CowperSymondsParams>;
 
 /// sigma_y(ep, rate, conditions) and its derivatives, whichever law.
 inline FlowStress flow_stress(const FlowStressLaw& law, double plastic_strain,

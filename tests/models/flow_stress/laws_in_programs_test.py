@@ -8,7 +8,9 @@ writes it) by Zerilli-Armstrong (fcc, Zerilli & Armstrong 1987 copper constants)
 Cochran-Guinan (Steinberg 1996, 6061-T6), Preston-Tonks-Wallace (Preston, Tonks & Wallace
 2003, copper) and Mechanical Threshold Stress (Follansbee & Kocks 1988 in Banerjee's 2007 form,
 an illustrative set; its structure stress sigma_e integrated here along the run's own rows with
-the law's update, sigma_e += theta(sigma_e, rate, T) d_ep), and Johnson-Cook as shipped:
+the law's update, sigma_e += theta(sigma_e, rate, T) d_ep), Swift hardening with Cowper-
+Symonds rate scaling (Bodner & Symonds' aluminium D = 6500 /s, q = 4; an illustrative Swift set),
+and Johnson-Cook as shipped:
   - `pointdriver run`: uniaxial stress at 1000 /s to 20 % strain, isothermal. At the last step
     the axial stress equals the law's flow stress at the step's plastic strain and rate, start
     temperature and pressure and end density, computed here from the papers' equations
@@ -44,6 +46,8 @@ LAWS = {
                               "beta": 0.25, "G0": 51.8e9, "alpha": 0.2, "molar_mass": 63.546e-3},
     "mechanical_threshold_stress": json.load(open(os.path.join(
         ROOT, "tests", "data", "flow_stress", "mts_illustrative.json")))["flow_stress"],
+    "cowper_symonds": {"type": "cowper_symonds", "K": 420e6, "eps0": 0.005, "n": 0.08,
+                       "D": 6500.0, "q": 4.0},
     "johnson_cook": None,  # as shipped
 }
 KB = 1.380649e-23
@@ -105,6 +109,9 @@ def flow_stress(law, ep, rate, T, p, rho, material, sigma_e=0.0):
         tau = ts + a / pp * math.log(1 - (1 - math.exp(-x)) * math.exp(
             -pp * law["theta"] * ep / (a * (math.exp(x) - 1))))
         return 2 * G * tau
+    if law["type"] == "cowper_symonds":  # Swift (1952) x Cowper & Symonds (1957)
+        r = max(rate, 1e-6)
+        return law["K"] * (law["eps0"] + ep) ** law["n"] * (1 + (r / law["D"]) ** (1 / law["q"]))
     if law["type"] == "mechanical_threshold_stress":
         ratio, Si, Se, _ = mts(law, rate, T)
         return law["sigma_a"] + (Si * law["sigma_i"] + Se * sigma_e) * ratio
