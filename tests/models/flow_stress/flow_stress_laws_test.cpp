@@ -81,6 +81,17 @@ SteinbergCochranGuinanParams tantalum_like_sl() {
   return p;
 }
 
+// Swift x Cowper-Symonds (cowper_symonds_test): Cowper & Symonds' mild steel rate constants.
+CowperSymondsParams mild_steel_cs() {
+  CowperSymondsParams p;
+  p.K = 530e6;
+  p.eps0 = 0.01;
+  p.n = 0.26;
+  p.D = 40.4;
+  p.q = 5.0;
+  return p;
+}
+
 PrestonTonksWallaceParams copper_ptw() {
   PrestonTonksWallaceParams p;
   p.theta = 0.025;
@@ -171,8 +182,8 @@ BOOST_AUTO_TEST_CASE(preston_tonks_wallace_equals_the_papers_equations) {
 // Central differences with steps 1e-6 relative (1e-7 absolute at ep = 0 is avoided: the laws'
 // slopes are unbounded there) against each law's derivatives.
 BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
-  const std::vector<FlowStressLaw> laws = {copper_za(), iron_za(), al6061_scg(), tantalum_like_sl(),
-                                           copper_ptw()};
+  const std::vector<FlowStressLaw> laws = {copper_za(),        iron_za(),    al6061_scg(),
+                                           tantalum_like_sl(), copper_ptw(), mild_steel_cs()};
   int checked = 0;
   for (const FlowStressLaw& law : laws)
     for (const double ep : {0.01, 0.2, 0.6})
@@ -200,7 +211,7 @@ BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
           }
           ++checked;
         }
-  BOOST_TEST(checked == 90);
+  BOOST_TEST(checked == 108);
 }
 
 // radial_return_test's sweep for every law: converged, on the yield surface at the step's rate
@@ -208,8 +219,8 @@ BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
 // increment bound the Newton iteration starts from the elastic bound; the worst count is printed.
 BOOST_AUTO_TEST_CASE(the_radial_return_converges_with_every_law) {
   const double mu = 40e9, dt = 1e-8;
-  const std::vector<FlowStressLaw> laws = {copper_za(), iron_za(), al6061_scg(), tantalum_like_sl(),
-                                           copper_ptw()};
+  const std::vector<FlowStressLaw> laws = {copper_za(),        iron_za(),    al6061_scg(),
+                                           tantalum_like_sl(), copper_ptw(), mild_steel_cs()};
   Mat3 direction;
   direction << 2.0, 0.3, -0.1, 0.3, -0.5, 0.2, -0.1, 0.2, -1.5;
   direction = deviator(direction);
@@ -241,7 +252,7 @@ BOOST_AUTO_TEST_CASE(the_radial_return_converges_with_every_law) {
               }
             }
           }
-  BOOST_TEST(cases == 720);
+  BOOST_TEST(cases == 864);
   BOOST_TEST_MESSAGE("every law: " << cases << " returns, worst " << worst << " iterations");
 }
 
