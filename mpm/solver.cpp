@@ -269,6 +269,7 @@ const StepTotals& Simulation::step() {
       },
       shape_);
   stress_settings_.inject_nan_stress = -1;
+  phase_totals_ += last_.seconds;
   if (comm_) {
     agree_on_failure(failure ? std::optional(describe(*failure, steps_ + 1, time_ + dt))
                              : std::nullopt);

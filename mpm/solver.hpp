@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "mpm/grid/grid.hpp"
@@ -51,6 +52,18 @@ std::optional<FaultInjection> parse_fault_injection(const std::string& text);
 /// Wall time of each phase of the last step [s] (omp_get_wtime; for the benchmark's profile).
 struct PhaseTimes {
   double particles_to_grid = 0, grid_update = 0, grid_to_particles = 0, remap = 0, stress = 0;
+
+  /// Each phase with its name, in step order (for summaries).
+  static constexpr std::pair<const char*, double PhaseTimes::*> kPhases[] = {
+      {"particles_to_grid", &PhaseTimes::particles_to_grid},
+      {"grid_update", &PhaseTimes::grid_update},
+      {"grid_to_particles", &PhaseTimes::grid_to_particles},
+      {"remap", &PhaseTimes::remap},
+      {"stress", &PhaseTimes::stress}};
+  PhaseTimes& operator+=(const PhaseTimes& o) {
+    for (const auto& [name, phase] : kPhases) this->*phase += o.*phase;
+    return *this;
+  }
 };
 
 /// One step's totals, for the ledger and for tests.
@@ -103,6 +116,9 @@ class Simulation {
   std::size_t migrated() const { return migrated_; }
   /// Times the slabs were re-balanced (solver.rebalance_above).
   long rebalances() const { return rebalances_; }
+  /// Each phase's wall time summed over the steps this Simulation ran (on this rank) [s]: where a
+  /// rank's time goes, and with several ranks which phase is out of balance (docs/mpi.md).
+  const PhaseTimes& phase_totals() const { return phase_totals_; }
   long failed_particles() const { return failed_; }        ///< failures so far
   long converted_particles() const { return converted_; }  ///< moved to a companion field
   /// Particles flagged by physics.on_numerical_fault = fail_particle so far.
@@ -173,6 +189,7 @@ class Simulation {
   /// Applies the injections of the coming step.
   void apply_injections();
   StepTotals last_;
+  PhaseTimes phase_totals_;
   double time_ = 0.0;
   long steps_ = 0;
   double max_signal_speed_ = 0.0;

@@ -201,6 +201,11 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   // Per rank: the particles it holds at the end and its time in MPI calls (waiting for the others
   // and moving data): the load balance (docs/mpi.md).
   std::vector<double> held, in_mpi, peak;
+  Json phases = Json::object();  // each phase's seconds (per rank with several)
+  for (const auto& [name, phase] : PhaseTimes::kPhases) {
+    const double mine = sim.phase_totals().*phase;
+    phases[name] = comm ? Json(comm->gather_all(mine)) : Json(mine);
+  }
   if (comm) {
     held = comm->gather_all(double(sim.particles().size()));
     in_mpi = comm->gather_all(comm->seconds_in_mpi());
@@ -211,6 +216,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
                              &outputs.paths());
   if (!root) return code;
   outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
+  summary["phase_seconds [s]"] = phases;
   if (comm) {
     summary["ranks_load"] = {{"particles_at_end", held},
                              {"seconds_in_mpi [s]", in_mpi},

@@ -29,7 +29,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 SKIP = ("wall_time", "particles_per_second", "particle_steps_per_second", "memory", "threads",
-        "ranks", "available", "seconds_in_mpi")
+        "ranks", "available", "seconds_in_mpi", "phase_seconds")
 
 
 def numbers(node, path=""):
@@ -240,11 +240,21 @@ def main(mpm, mpiexec, ranks, work):
         with open(os.path.join(many, name), "rb") as f, open(os.path.join(cut, name), "rb") as g:
             assert f.read() == g.read(), f"{name}: the restarted run differs"
     c = json.load(open(os.path.join(cut, "summary.json")))
+    # Each phase's seconds per rank: one entry per rank, none negative, their sum within the
+    # run's wall time (the phase clock runs inside the step loop).
+    for d in (b, c):
+        phases = d["phase_seconds [s]"]
+        assert sorted(phases) == sorted(["particles_to_grid", "grid_update", "grid_to_particles",
+                                         "remap", "stress"]), phases
+        for r in range(ranks):
+            spent = [phases[name][r] for name in phases]
+            assert min(spent) >= 0 and sum(spent) <= d["wall_time [s]"], (r, phases)
     for k in ("wall_time [s]", "particle_steps_per_second", "peak_resident_memory [MB]",
               "available_memory [MB]"):
         b.pop(k, None)
         c.pop(k, None)
     for d in (b, c):  # timings and memory
+        d.pop("phase_seconds [s]")
         d["ranks_load"].pop("seconds_in_mpi [s]")
         d["ranks_load"].pop("peak_resident_memory [MB]")
     assert b == c, "summary.json of the restarted run differs"
