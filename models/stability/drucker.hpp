@@ -9,9 +9,10 @@
 //                             = eps_dot_p [(3 mu + H) eps_dot_c - 3 mu eps_dot_c]
 //                             = H eps_dot_p eps_dot_c,
 // which is H eps_dot_p^2 when D^p = eps_dot_p N is the plastic rate of the same loading. In plastic
-// loading eps_dot_p > 0 and (3 mu + H > 0) eps_dot_c > 0, so the check fires exactly when H <= 0:
+// loading eps_dot_p > 0 and (3 mu + H > 0) eps_dot_c > 0, so the check fires exactly when H < 0:
 // when thermal (or any other) softening along the process outweighs strain hardening. At H = 0
-// exactly (ideal plasticity) the indicator is 0 up to round-off and the verdict is not meaningful.
+// exactly (ideal plasticity) the indicator is 0 up to round-off: drucker_check_j2 (what the
+// update runs) calls that neutral, stable, rather than failing points on the sign of noise.
 //
 // Difference from the 2004 code (docs/report_code.md sec. 9): it tested sigma_dot : D with the
 // total D, which equals D:C^e:D - (2 mu N:D)^2 / (3 mu + H) and is positive whenever D has an
@@ -31,5 +32,14 @@ struct DruckerResult {
 /// Drucker's check with tangent C (for instance elastic_plastic_tangent), rate of deformation D
 /// [1/s] and plastic rate of deformation D^p [1/s] of the same step.
 DruckerResult drucker_check(const Tensor4& tangent, const Mat3& D, const Mat3& Dp);
+
+/// The same check with the J2 tangent of elastic_plastic_tangent(K, mu, stress, H) in closed form,
+/// without assembling it (9 + 27 multiplications instead of 81 + 81):
+///   D^p : C^ep : D = lambda tr D tr D^p + mu D^p : (D + D^T) - (2 mu)^2/(3 mu + H) (N:D)(N:D^p),
+/// lambda = K - 2 mu/3, N = (3/2) s / sigma_eq (the elastic part alone when sigma_eq = 0). An
+/// indicator within 1e-12 of its three terms' size is round-off of the neutral case H = 0 (ideal
+/// plasticity) and counts as stable.
+DruckerResult drucker_check_j2(double bulk_modulus, double shear_modulus, const Mat3& stress,
+                               double H, const Mat3& D, const Mat3& Dp);
 
 }  // namespace impact

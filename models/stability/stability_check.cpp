@@ -40,13 +40,14 @@ StabilityResult check_stability(const StabilityParams& params, double bulk_modul
       params.check == StabilityCheck::drucker || params.check == StabilityCheck::drucker_becker;
   const bool becker =
       params.check == StabilityCheck::becker || params.check == StabilityCheck::drucker_becker;
-  // The 9x9 tangent only where a check needs it: Becker in Becker's plane has a closed form.
-  const bool need_tangent = drucker || (becker && params.search == NormalSearch::full_sphere);
+  // The 9x9 tangent only where a check needs it: Drucker, and Becker in Becker's plane, have
+  // closed forms for the J2 tangent.
+  const bool need_tangent = becker && params.search == NormalSearch::full_sphere;
   const Tensor4 tangent = need_tangent
                               ? elastic_plastic_tangent(bulk_modulus, shear_modulus, stress, H)
                               : Tensor4::Zero();
   if (drucker) {
-    r.drucker = drucker_check(tangent, D, Dp);
+    r.drucker = drucker_check_j2(bulk_modulus, shear_modulus, stress, H, D, Dp);
     if (params.drucker_loading_only && !(ddot(Dp, D) > 0.0)) r.drucker.unstable = false;
   }
   if (becker) {

@@ -6,6 +6,8 @@
 
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 
 #include "models/stability/elastic_plastic_tangent.hpp"
 #include "support/finite_difference.hpp"
@@ -171,6 +173,56 @@ BOOST_AUTO_TEST_CASE(the_2004_total_rate_form_stays_positive_under_the_same_soft
   const Tensor4 c = elastic_plastic_tangent(kK, kMu, u.stress, H);
   BOOST_TEST(drucker_check(c, D, D).indicator > 0.0);  // 2004 form: "stable"
   BOOST_TEST(drucker_check(c, D, u.Dp).unstable);      // eq. (10): unstable
+}
+
+// The closed form (drucker_check_j2, what check_stability runs) equals the assembled 9x9 tangent's
+// D^p : C^ep : D to round-off (1e-12 of the terms' scale) and gives the same verdict, over random
+// stresses, rates of deformation (non-symmetric parts included) and plastic rates, for hardening,
+// softening, ideal (H = 0) and rigid-plastic (H = +inf) slopes, and at zero deviatoric stress.
+BOOST_AUTO_TEST_CASE(the_closed_form_equals_the_assembled_tangent) {
+  std::srand(7);
+  const auto random = []() { return 2.0 * std::rand() / RAND_MAX - 1.0; };
+  const auto random_mat = [&]() {
+    Mat3 m;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m(i, j) = random();
+    return m;
+  };
+  int checked = 0;
+  for (const double H : {5e8, -3e8, 0.0, std::numeric_limits<double>::infinity()})
+    for (int k = 0; k < 50; ++k) {
+      Mat3 stress = 300e6 * random_mat();
+      stress = 0.5 * (stress + stress.transpose());
+      if (k == 0) stress = -100e6 * Mat3::Identity();  // sigma_eq = 0
+      const Mat3 D = 1e3 * random_mat();
+      const Mat3 Dp = k % 5 == 0 ? Mat3(Mat3::Zero()) : Mat3(1e3 * random_mat());
+      const DruckerResult a = drucker_check(elastic_plastic_tangent(kK, kMu, stress, H), D, Dp);
+      const DruckerResult b = drucker_check_j2(kK, kMu, stress, H, D, Dp);
+      const double scale = kK * D.norm() * Dp.norm() + 1.0;
+      BOOST_TEST_CONTEXT("H " << H << " k " << k) {
+        BOOST_TEST(std::abs(a.indicator - b.indicator) <= 1e-12 * scale);
+        if (std::abs(a.indicator) > 1e-9 * scale) BOOST_TEST(a.unstable == b.unstable);
+      }
+      ++checked;
+    }
+  BOOST_TEST(checked == 200);
+}
+
+// Ideal plasticity (H = 0) is Drucker's neutral case: the closed form's indicator is round-off
+// and the point is not failed on its sign, over 100 stress levels and rates; a softening of
+// only 10 Pa (H / 3 mu = 1.3e-10) already fires.
+BOOST_AUTO_TEST_CASE(ideal_plasticity_is_neutral_not_unstable) {
+  int fired_neutral = 0, fired_soft = 0;
+  for (int k = 1; k <= 100; ++k) {
+    const double sigma = 100e6 + 3.3e6 * k, rate = 0.37 * k;
+    const Uniaxial ideal = uniaxial(sigma, 0.0, rate);
+    const DruckerResult a = drucker_check_j2(kK, kMu, ideal.stress, 0.0, ideal.D, ideal.Dp);
+    fired_neutral += a.unstable;
+    const Uniaxial soft = uniaxial(sigma, -10.0, rate);
+    fired_soft += drucker_check_j2(kK, kMu, soft.stress, -10.0, soft.D, soft.Dp).unstable;
+  }
+  BOOST_TEST(fired_neutral == 0);
+  BOOST_TEST(fired_soft == 100);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
