@@ -42,9 +42,7 @@ CowperSymondsParams read_law(JsonReader& r, const CowperSymondsParams*, double, 
 }
 
 Json to_json(const CowperSymondsParams& p) {
-  Json j = {{"type", CowperSymondsParams::kType}};
-  for (const auto& q : CowperSymondsParams::kParameters) j[std::string(q.name)] = p.*q.member;
-  return j;
+  return parameters_to_json(p);
 }
 
 }  // namespace impact

@@ -4,7 +4,10 @@
 // fitter and the checker reach them by; models/flow_stress/flow_stress_law.hpp).
 #pragma once
 
+#include <string>
 #include <string_view>
+
+#include "models/core/input.hpp"
 
 namespace impact {
 
@@ -52,5 +55,14 @@ struct LawParameter {
   double Law::*member;
   FitBounds fit{};
 };
+
+/// {"type": kType, every kParameters entry by name}: the writer of a law whose keys are exactly
+/// its parameters (its reader then reads them back).
+template <class Law>
+Json parameters_to_json(const Law& law) {
+  Json j = {{"type", Law::kType}};
+  for (const auto& q : Law::kParameters) j[std::string(q.name)] = law.*q.member;
+  return j;
+}
 
 }  // namespace impact

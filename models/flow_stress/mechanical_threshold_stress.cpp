@@ -152,10 +152,7 @@ MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThreshol
 }
 
 Json to_json(const MechanicalThresholdStressParams& p) {
-  Json j = {{"type", MechanicalThresholdStressParams::kType}};
-  for (const auto& q : MechanicalThresholdStressParams::kParameters)
-    j[std::string(q.name)] = p.*q.member;
-  return j;
+  return parameters_to_json(p);
 }
 
 }  // namespace impact

@@ -125,10 +125,7 @@ PrestonTonksWallaceParams read_law(JsonReader& r, const PrestonTonksWallaceParam
 }
 
 Json to_json(const PrestonTonksWallaceParams& p) {
-  Json j = {{"type", PrestonTonksWallaceParams::kType}};
-  for (const auto& parameter : PrestonTonksWallaceParams::kParameters)
-    j[std::string(parameter.name)] = p.*parameter.member;
-  return j;
+  return parameters_to_json(p);
 }
 
 }  // namespace impact

@@ -11,21 +11,14 @@
 #include <string>
 
 #include "models/flow_stress/flow_stress_law.hpp"
+#include "support/cowper_symonds_mild_steel.hpp"
 #include "support/input_problems.hpp"
 
 using namespace impact;
 
 namespace {
 
-CowperSymondsParams mild_steel() {
-  CowperSymondsParams p;
-  p.K = 530e6;
-  p.eps0 = 0.01;
-  p.n = 0.26;
-  p.D = 40.4;
-  p.q = 5.0;
-  return p;
-}
+using testing::cowper_symonds_mild_steel;
 
 FlowStress at(const CowperSymondsParams& p, double ep, double rate) {
   return flow_stress(p, ep, rate, FlowConditions{});
@@ -36,7 +29,7 @@ FlowStress at(const CowperSymondsParams& p, double ep, double rate) {
 BOOST_AUTO_TEST_SUITE(flow_stress_cowper_symonds)
 
 BOOST_AUTO_TEST_CASE(values_match_the_equation) {
-  const CowperSymondsParams p = mild_steel();
+  const CowperSymondsParams p = cowper_symonds_mild_steel();
   struct Case {
     double ep, rate, expected;
   };
@@ -58,7 +51,7 @@ BOOST_AUTO_TEST_CASE(values_match_the_equation) {
 
 BOOST_AUTO_TEST_CASE(at_the_rate_constant_the_yield_doubles) {
   for (const auto& [D, q] : {std::pair{40.4, 5.0}, std::pair{6500.0, 4.0}}) {
-    CowperSymondsParams p = mild_steel();
+    CowperSymondsParams p = cowper_symonds_mild_steel();
     p.D = D;
     p.q = q;
     const double ratio = at(p, 0.1, D).value / at(p, 0.1, p.minimum_strain_rate).value;
@@ -68,7 +61,7 @@ BOOST_AUTO_TEST_CASE(at_the_rate_constant_the_yield_doubles) {
 }
 
 BOOST_AUTO_TEST_CASE(json_round_trip_by_name_and_bad_input) {
-  const FlowStressLaw law = mild_steel();
+  const FlowStressLaw law = cowper_symonds_mild_steel();
   const Json written = to_json(law);
   InputProblems problems("cs.json");
   JsonReader r(written, "/flow_stress", problems);

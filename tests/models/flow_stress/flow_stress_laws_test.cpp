@@ -22,6 +22,7 @@
 
 #include "models/flow_stress/flow_stress_law.hpp"
 #include "models/plasticity/radial_return.hpp"
+#include "support/cowper_symonds_mild_steel.hpp"
 
 using namespace impact;
 
@@ -78,17 +79,6 @@ SteinbergCochranGuinanParams tantalum_like_sl() {
   p.U_k = 0.31 * 1.602176634e-19;
   p.Y_P = 0.82e9;
   p.C2 = 1.2e3;
-  return p;
-}
-
-// Swift x Cowper-Symonds (cowper_symonds_test): Cowper & Symonds' mild steel rate constants.
-CowperSymondsParams mild_steel_cs() {
-  CowperSymondsParams p;
-  p.K = 530e6;
-  p.eps0 = 0.01;
-  p.n = 0.26;
-  p.D = 40.4;
-  p.q = 5.0;
   return p;
 }
 
@@ -182,8 +172,9 @@ BOOST_AUTO_TEST_CASE(preston_tonks_wallace_equals_the_papers_equations) {
 // Central differences with steps 1e-6 relative (1e-7 absolute at ep = 0 is avoided: the laws'
 // slopes are unbounded there) against each law's derivatives.
 BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
-  const std::vector<FlowStressLaw> laws = {copper_za(),        iron_za(),    al6061_scg(),
-                                           tantalum_like_sl(), copper_ptw(), mild_steel_cs()};
+  const std::vector<FlowStressLaw> laws = {copper_za(),  iron_za(),
+                                           al6061_scg(), tantalum_like_sl(),
+                                           copper_ptw(), testing::cowper_symonds_mild_steel()};
   int checked = 0;
   for (const FlowStressLaw& law : laws)
     for (const double ep : {0.01, 0.2, 0.6})
@@ -219,8 +210,9 @@ BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
 // increment bound the Newton iteration starts from the elastic bound; the worst count is printed.
 BOOST_AUTO_TEST_CASE(the_radial_return_converges_with_every_law) {
   const double mu = 40e9, dt = 1e-8;
-  const std::vector<FlowStressLaw> laws = {copper_za(),        iron_za(),    al6061_scg(),
-                                           tantalum_like_sl(), copper_ptw(), mild_steel_cs()};
+  const std::vector<FlowStressLaw> laws = {copper_za(),  iron_za(),
+                                           al6061_scg(), tantalum_like_sl(),
+                                           copper_ptw(), testing::cowper_symonds_mild_steel()};
   Mat3 direction;
   direction << 2.0, 0.3, -0.1, 0.3, -0.5, 0.2, -0.1, 0.2, -1.5;
   direction = deviator(direction);
