@@ -103,42 +103,57 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   return Failure{fastest, "energy", m.str()};
 }
 
-// Seed points per cell column along x, all objects together.
-std::vector<std::size_t> column_totals(const SeedCounts& counts) {
-  std::vector<std::size_t> columns(counts.empty() ? 0 : counts.front().size(), 0);
-  for (const auto& object : counts)
-    for (std::size_t i = 0; i < columns.size(); ++i) columns[i] += object[i];
-  return columns;
+// The boxes per axis on `ranks` ranks: the scene's solver.ranks_per_axis, or the split cutting
+// the fewest node faces.
+std::array<int, 3> boxes_per_axis(const Scene& scene, int ranks) {
+  const std::array<int, 3>& p = scene.solver.ranks_per_axis;
+  if (p[0] == 0) return BoxDecomposition::ranks_per_axis(scene.grid.cells, ranks);
+  if (p[0] * p[1] * p[2] != ranks) {
+    std::ostringstream m;
+    m << scene.file << ": /solver/ranks_per_axis: [" << p[0] << ", " << p[1] << ", " << p[2]
+      << "] makes " << p[0] * p[1] * p[2] << " boxes; expected their product to be the rank count "
+      << ranks << " (or [0, 0, 0] for the automatic split)";
+    throw std::invalid_argument(m.str());
+  }
+  return p;
 }
 
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
-    : Simulation(
-          scene, threads, comm != nullptr && comm->size() > 1 ? comm : nullptr,
-          comm != nullptr && comm->size() > 1 ? seed_counts_per_column(scene) : SeedCounts{}) {}
+    : Simulation(scene, threads, comm != nullptr && comm->size() > 1 ? comm : nullptr,
+                 SeedCensus{}) {}
+
+Simulation::SeedCensus Simulation::census(const Scene& scene) {
+  SeedCensus c;
+  c.columns = seed_counts_per_column(scene, &c.per_axis);
+  return c;
+}
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm,
-                       const SeedCounts& counts)
+                       const SeedCensus& given)
     : scene_(scene),
       comm_(comm),
-      // On several ranks every rank counts the seed points per cell column (`counts`), splits
-      // the columns the same way, and seeds and stores only its slab: no rank ever holds the
-      // whole scene or the whole grid.
-      slabs_(comm_ ? SlabDecomposition::balanced(column_totals(counts), comm_->size())
-                   : SlabDecomposition(scene.grid.cells[0])),
-      particles_(comm_ ? seed_columns(scene, slabs_.first_cell(comm_->rank()),
-                                      slabs_.first_cell(comm_->rank() + 1), counts)
+      census_(comm_ && given.columns.empty() ? census(scene) : given),
+      // On several ranks every rank counts the seed points per cell (census_), splits the grid
+      // the same way, and seeds and stores only its box: no rank ever holds the whole scene or
+      // the whole grid.
+      boxes_(
+          comm_ ? BoxDecomposition::balanced(census_.per_axis, boxes_per_axis(scene, comm_->size()))
+                : BoxDecomposition(scene.grid.cells)),
+      particles_(comm_ ? seed_box(scene, boxes_.first_cell(comm_->rank()),
+                                  boxes_.end_cell(comm_->rank()), census_.columns)
                        : seed_particles(scene)),
       grid_(scene.grid, thread_count(threads), scene.field_count(),
             scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction,
-            stored_planes()),
+            stored_box()),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
       ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove) {
+  census_ = SeedCensus{};  // needed for seeding only
   if (comm_) {
-    own_slab();
-    halo_.emplace(*comm_, slabs_);
+    own_box();
+    halo_.emplace(*comm_, boxes_);
   }
   const PhysicsSpec& ph = scene_.physics;
   StressUpdateSettings& st = stress_settings_;
@@ -302,8 +317,8 @@ const StepTotals& Simulation::step() {
   const std::optional<Failure> grown = energy_growth(ledger_, particles_, scene_.time);
   if (comm_) {
     agree_on_failure(grown ? std::optional(describe(*grown, steps_, time_)) : std::nullopt);
-    // Particles that left this rank's slab go to their new owner.
-    migrated_ = migrate(particles_, slabs_, scene_.grid, *comm_).sent;
+    // Particles that left this rank's box go to their new owner.
+    migrated_ = migrate(particles_, boxes_, scene_.grid, *comm_).sent;
     rebalance_if_needed();
   } else if (grown) {
     throw SolverFailure(describe(*grown, steps_, time_));
@@ -311,26 +326,37 @@ const StepTotals& Simulation::step() {
   return last_;
 }
 
-std::optional<NodePlanes> Simulation::stored_planes() const {
+std::optional<NodeBox> Simulation::stored_box() const {
   if (!comm_) return std::nullopt;
   const int r = comm_->rank();
-  return NodePlanes{slabs_.first_cell(r) - kHaloPlanes, slabs_.first_cell(r + 1) + kHaloPlanes};
+  NodeBox box{boxes_.first_cell(r), boxes_.end_cell(r)};
+  for (int d = 0; d < 3; ++d) {
+    box.first[std::size_t(d)] -= kHaloPlanes;
+    box.last[std::size_t(d)] += kHaloPlanes;
+  }
+  return box;
 }
 
 void Simulation::rebuild_grid() {
-  Grid next(scene_.grid, grid_.threads(), grid_.fields(), grid_.has_nodal_stress(),
-            stored_planes());
+  Grid next(scene_.grid, grid_.threads(), grid_.fields(), grid_.has_nodal_stress(), stored_box());
   next.field_body = grid_.field_body;
   next.light_mass = grid_.light_mass;
   grid_ = std::move(next);
-  own_slab();
+  own_box();
 }
 
-void Simulation::own_slab() {
+void Simulation::own_box() {
   const int r = comm_ ? comm_->rank() : 0;
-  grid_.set_owned_planes(r == 0 ? -1 : slabs_.first_cell(r), r + 1 == slabs_.ranks()
-                                                                 ? scene_.grid.cells[0] + 1
-                                                                 : slabs_.first_cell(r + 1) - 1);
+  const std::array<int, 3> coordinates = boxes_.coordinates(r);
+  NodeBox owned;
+  for (std::size_t d = 0; d < 3; ++d) {
+    const SlabDecomposition& axis = boxes_.axis(int(d));
+    const int c = coordinates[d];
+    // The end boxes also own the ghost layer and the last node layer outside their cells.
+    owned.first[d] = c == 0 ? -1 : axis.first_cell(c);
+    owned.last[d] = c + 1 == axis.ranks() ? scene_.grid.cells[d] + 1 : axis.first_cell(c + 1) - 1;
+  }
+  grid_.set_owned(owned);
 }
 
 void Simulation::rebalance_if_needed() {
@@ -342,12 +368,12 @@ void Simulation::rebalance_if_needed() {
     largest = std::max(largest, n);
   }
   if (!(largest > scene_.solver.rebalance_above * total / comm_->size())) return;
-  SlabDecomposition next =
-      SlabDecomposition::balanced(column_counts(particles_, scene_.grid, comm_), comm_->size());
-  if (next == slabs_) return;  // already as balanced as slabs can be
-  slabs_ = std::move(next);
+  BoxDecomposition next = BoxDecomposition::balanced(axis_counts(particles_, scene_.grid, comm_),
+                                                     boxes_.ranks_per_axis());
+  if (next == boxes_) return;  // already as balanced as boxes can be
+  boxes_ = std::move(next);
   rebuild_grid();
-  migrated_ += migrate(particles_, slabs_, scene_.grid, *comm_).sent;
+  migrated_ += migrate(particles_, boxes_, scene_.grid, *comm_).sent;
   ++rebalances_;
 }
 

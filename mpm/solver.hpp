@@ -11,9 +11,9 @@
 
 #include "mpm/grid/grid.hpp"
 #include "mpm/ledger/ledger.hpp"
+#include "mpm/parallel/box_decomposition.hpp"
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/halo_exchange.hpp"
-#include "mpm/parallel/slab_decomposition.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/scene/scene.hpp"
 #include "mpm/shape/shape.hpp"
@@ -77,10 +77,10 @@ struct StepTotals {
 class Simulation {
  public:
   /// Seeds the particles and builds the grid; `threads` <= 0 keeps OpenMP's default. With `comm`
-  /// of several ranks (docs/mpi.md) the grid is split into slabs along x balanced by particle
-  /// count: this rank keeps its slab's particles, sums the node planes it shares with its
-  /// neighbours, and every total (ledger, time step, failures) is reduced over the ranks, so the
-  /// ledger and the time step are the same on every rank.
+  /// of several ranks (docs/mpi.md) the grid is split into boxes balanced by particle count
+  /// (solver.ranks_per_axis per axis): this rank keeps its box's particles, sums the node layers
+  /// it shares with its neighbours, and every total (ledger, time step, failures) is reduced over
+  /// the ranks, so the ledger and the time step are the same on every rank.
   explicit Simulation(const Scene& scene, int threads = 0, const Communicator* comm = nullptr);
   Simulation(const Simulation&) = delete;  // models_ points into scene_
   Simulation& operator=(const Simulation&) = delete;
@@ -106,15 +106,15 @@ class Simulation {
   long steps() const { return steps_; }
   bool finished() const { return time_ >= scene_.time.max_time * (1.0 - 1e-12); }
   int threads() const { return grid_.threads(); }
-  /// This process's rank and the slabs (one rank: rank 0 and one slab).
+  /// This process's rank and the boxes (one rank: rank 0 and one box).
   int rank() const { return comm_ ? comm_->rank() : 0; }
   int ranks() const { return comm_ ? comm_->size() : 1; }
   /// The ranks this run is on: null on one rank.
   const Communicator* communicator() const { return comm_ && comm_->size() > 1 ? comm_ : nullptr; }
-  const SlabDecomposition& slabs() const { return slabs_; }
+  const BoxDecomposition& boxes() const { return boxes_; }
   /// Particles that moved to another rank in the last step.
   std::size_t migrated() const { return migrated_; }
-  /// Times the slabs were re-balanced (solver.rebalance_above).
+  /// Times the boxes were re-balanced (solver.rebalance_above).
   long rebalances() const { return rebalances_; }
   /// Each phase's wall time summed over the steps this Simulation ran (on this rank) [s]: where a
   /// rank's time goes, and with several ranks which phase is out of balance (docs/mpi.md).
@@ -144,12 +144,20 @@ class Simulation {
   void resize_particles(std::size_t n);
 
  private:
-  /// `comm`: null on one rank; `counts`: seed_counts_per_column(scene) on several.
-  Simulation(const Scene& scene, int threads, const Communicator* comm, const SeedCounts& counts);
+  /// The seed points per cell column of each object (ids) and per cell along each axis
+  /// (balance): what several ranks seed their boxes from.
+  struct SeedCensus {
+    SeedCounts columns;
+    SeedAxisCounts per_axis;
+  };
+  static SeedCensus census(const Scene& scene);
+  /// `comm`: null on one rank; `census`: counted here when empty (several ranks).
+  Simulation(const Scene& scene, int threads, const Communicator* comm, const SeedCensus& census);
 
   Scene scene_;
   const Communicator* comm_ = nullptr;  ///< null on one rank
-  SlabDecomposition slabs_;             ///< before the particles and the grid: both follow it
+  SeedCensus census_;                   ///< while seeding (several ranks), then emptied
+  BoxDecomposition boxes_;              ///< before the particles and the grid: both follow it
   Particles particles_;
   Grid grid_;
   AnyShape shape_;
@@ -174,16 +182,16 @@ class Simulation {
   std::optional<HaloExchange> halo_;
   std::size_t migrated_ = 0;
   long rebalances_ = 0;
-  /// The node planes along x this rank's grid stores: its slab's cells [c0, c1) and the halo
-  /// its particles' stencils, the shared-plane sums and the contact gradients reach,
+  /// The nodes this rank's grid stores: its box's cells [c0, c1) per axis and the halo its
+  /// particles' stencils, the shared-layer sums and the contact gradients reach,
   /// [c0 - kHaloPlanes, c1 + kHaloPlanes] (the whole grid on one rank).
-  std::optional<NodePlanes> stored_planes() const;
-  /// Builds this rank's grid for the current slabs (after a re-balance or a restart), keeping
-  /// the settings the constructor gave it; sets the owned planes (own_slab).
+  std::optional<NodeBox> stored_box() const;
+  /// Builds this rank's grid for the current boxes (after a re-balance or a restart), keeping
+  /// the settings the constructor gave it; sets the owned nodes (own_box).
   void rebuild_grid();
-  /// This rank's node planes for the ledger (Grid::set_owned_planes) from slabs_.
-  void own_slab();
-  /// New slabs balanced by the current particle counts when the largest rank holds more than
+  /// This rank's nodes for the ledger (Grid::set_owned) from boxes_.
+  void own_box();
+  /// New boxes balanced by the current particle counts when the largest rank holds more than
   /// solver.rebalance_above times the mean, and the particles moved to them.
   void rebalance_if_needed();
   /// Applies the injections of the coming step.

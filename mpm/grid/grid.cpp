@@ -7,15 +7,15 @@
 namespace impact::mpm {
 
 Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
-           std::optional<NodePlanes> planes)
+           std::optional<NodeBox> box)
     : spec_(spec),
       dx_(spec.spacing()),
       inv_dx_(dx_.cwiseInverse()),
-      first_plane_(planes ? std::max(planes->first, -1) : -1),
-      nx_((planes ? std::min(planes->last, spec.cells[0] + 1) : spec.cells[0] + 1) - first_plane_ +
-          1),
-      ny_(spec.cells[1] + 3),
-      nz_(spec.cells[2] + 3),
+      first_{box ? std::max(box->first[0], -1) : -1, box ? std::max(box->first[1], -1) : -1,
+             box ? std::max(box->first[2], -1) : -1},
+      nx_((box ? std::min(box->last[0], spec.cells[0] + 1) : spec.cells[0] + 1) - first_[0] + 1),
+      ny_((box ? std::min(box->last[1], spec.cells[1] + 1) : spec.cells[1] + 1) - first_[1] + 1),
+      nz_((box ? std::min(box->last[2], spec.cells[2] + 1) : spec.cells[2] + 1) - first_[2] + 1),
       fields_(std::max(fields, 1)),
       threads_(std::max(threads, 1)),
       nodes_(entry_count()) {
@@ -29,9 +29,9 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
   if (nodal_stress || spec.has_wall_friction()) heat.assign(e, 0.0);
   const int n = node_count();
   // The stored node range per axis: the faces' layers and rows are visited only where stored.
-  const NodePlanes x = this->planes();
-  const int lowest[3] = {x.first, -1, -1};
-  const int highest[3] = {x.last, spec_.cells[1] + 1, spec_.cells[2] + 1};
+  const NodeBox x = stored();
+  const std::array<int, 3>& lowest = x.first;
+  const std::array<int, 3>& highest = x.last;
   const auto stored = [&](int axis, int i) { return i >= lowest[axis] && i <= highest[axis]; };
   std::vector<char> mark(n, 0);
   for (int face = 0; face < 6; ++face) {
@@ -67,7 +67,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
       const int layer = face % 2 == 0 ? 0 : c[axis];
       const int ghost = face % 2 == 0 ? -1 : c[axis] + 1;
       const int inner = face % 2 == 0 ? 1 : c[axis] - 1;
-      // A face whose layers this grid does not store is another rank's (x faces only).
+      // A face whose layers this grid does not store is another rank's.
       if (!stored(axis, layer) || !stored(axis, ghost) || !stored(axis, inner)) continue;
       // A wall's face layer is its own condition (apply_walls); its ghost layer is the mirror.
       const bool wall = spec_.faces[face] == FaceCondition::wall;

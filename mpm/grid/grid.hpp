@@ -1,6 +1,6 @@
 // The background grid: cells_d + 1 nodes per axis plus one ghost layer on each side (node index
 // -1 and cells_d + 1), which uGIMP reaches from a particle next to a face; on a rank of a domain
-// decomposition, only the node planes along x of its slab and halo (NodePlanes). Node data are
+// decomposition, only the nodes of its box and halo (NodeBox). Node data are
 // stored once; the scatters write them race-free by coloured slabs (mpm/step/scatter_order.hpp), in
 // an order that does not depend on the thread count. All per-node arrays are allocated once (no
 // allocation in a step).
@@ -63,56 +63,58 @@ struct WallNode {
 /// heat), `projection` on the MUSL re-map (normal contact only).
 enum class WallPass { step, projection };
 
-/// The node planes along x a grid stores, first to last inclusive (node indices, -1 being the
-/// ghost layer): the whole grid [-1, cells_0 + 1] on one rank, a rank's slab and its halo in a
+/// The nodes a grid stores per axis, first[d] to last[d] inclusive (node indices, -1 being the
+/// ghost layer): the whole grid [-1, cells_d + 1] on one rank, a rank's box and its halo in a
 /// domain decomposition (mpm/parallel/halo_exchange.hpp), so that no rank allocates the whole
 /// grid.
-struct NodePlanes {
-  int first;
-  int last;
-  bool operator==(const NodePlanes&) const = default;
+struct NodeBox {
+  std::array<int, 3> first;
+  std::array<int, 3> last;
+  bool operator==(const NodeBox&) const = default;
 };
 
 class Grid {
  public:
   /// `fields` velocity fields; `nodal_stress`: also scatter the stress (friction contact);
-  /// `planes`: the node planes along x to store (all of them when absent). Node indices stay
-  /// those of the whole grid; a face condition applies where its layer is stored.
+  /// `box`: the nodes to store (all of them when absent; clipped to the grid and its ghost
+  /// layers). Node indices stay those of the whole grid; a face condition applies where its layer
+  /// is stored.
   Grid(const GridSpec& spec, int threads, int fields = 1, bool nodal_stress = false,
-       std::optional<NodePlanes> planes = std::nullopt);
+       std::optional<NodeBox> box = std::nullopt);
 
   const GridSpec& spec() const { return spec_; }
   const Vec3& lower() const { return spec_.lower; }
   const Vec3& spacing() const { return dx_; }
   const Vec3& inverse_spacing() const { return inv_dx_; }
   const std::array<int, 3>& cells() const { return spec_.cells; }
-  /// Storage index of node (i, j, k), i in planes() and j, k in [-1, cells_d + 1]; k runs
-  /// fastest.
+  /// Storage index of node (i, j, k) within stored(); k runs fastest.
   int index(int i, int j, int k) const {
-    return ((i - first_plane_) * ny_ + (j + 1)) * nz_ + (k + 1);
+    return ((i - first_[0]) * ny_ + (j - first_[1])) * nz_ + (k - first_[2]);
   }
   int node_count() const { return nx_ * ny_ * nz_; }
   /// (i, j, k) of a storage index (inverse of index()).
   std::array<int, 3> ijk(int index) const {
-    return {index / (ny_ * nz_) + first_plane_, (index / nz_) % ny_ - 1, index % nz_ - 1};
+    return {index / (ny_ * nz_) + first_[0], (index / nz_) % ny_ + first_[1],
+            index % nz_ + first_[2]};
   }
-  /// The node planes along x stored.
-  NodePlanes planes() const { return {first_plane_, first_plane_ + nx_ - 1}; }
+  /// The nodes stored.
+  NodeBox stored() const {
+    return {first_, {first_[0] + nx_ - 1, first_[1] + ny_ - 1, first_[2] + nz_ - 1}};
+  }
   /// Storage coordinate along x of node plane i (0 for the first stored plane).
-  int storage_x(int i) const { return i - first_plane_; }
+  int storage_x(int i) const { return i - first_[0]; }
   int threads() const { return threads_; }
   int fields() const { return fields_; }
 
-  /// The node planes along x whose ledger terms this grid books (all of them on one rank; a
-  /// rank's own planes in a domain decomposition, mpm/parallel/halo_exchange.hpp, so that a node
-  /// two ranks share is booked once). Storage index within one field.
-  void set_owned_planes(int first, int last) {
-    owned_first_ = first;
-    owned_last_ = last;
-  }
+  /// The nodes whose ledger terms this grid books (all of them on one rank; a rank's own box in
+  /// a domain decomposition, mpm/parallel/halo_exchange.hpp, so that a node several ranks share
+  /// is booked once). `node`: storage index within one field.
+  void set_owned(const NodeBox& owned) { owned_ = owned; }
   bool owns(int node) const {
-    const int i = node / (ny_ * nz_) + first_plane_;
-    return i >= owned_first_ && i <= owned_last_;
+    const std::array<int, 3> n = ijk(node);
+    for (int d = 0; d < 3; ++d)
+      if (n[d] < owned_.first[d] || n[d] > owned_.last[d]) return false;
+    return true;
   }
   /// Entries of every per-node array: fields() * node_count().
   int entry_count() const { return fields_ * node_count(); }
@@ -128,10 +130,9 @@ class Grid {
   /// Marks the blocks holding nodes base..base+n-1 per axis (a particle's stencil).
   void mark_stencil(char* marks, const std::array<int, 3>& base, int n) const {
     int lo[3], hi[3];
-    const int first[3] = {first_plane_, -1, -1};  // storage coordinate = node index - first
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = (base[d] - first[d]) / kBlock;
-      hi[d] = (base[d] - first[d] + n - 1) / kBlock;
+    for (int d = 0; d < 3; ++d) {  // storage coordinate = node index - first
+      lo[d] = (base[d] - first_[d]) / kBlock;
+      hi[d] = (base[d] - first_[d] + n - 1) / kBlock;
     }
     for (int a = lo[0]; a <= hi[0]; ++a)
       for (int b = lo[1]; b <= hi[1]; ++b)
@@ -234,7 +235,7 @@ class Grid {
  private:
   GridSpec spec_;
   Vec3 dx_, inv_dx_;
-  int first_plane_;  ///< node index of the first stored plane along x
+  std::array<int, 3> first_;  ///< node index of the first stored node per axis
   int nx_, ny_, nz_;
   int fields_;
   int threads_;
@@ -251,7 +252,7 @@ class Grid {
   int bx_ = 0, by_ = 0, bz_ = 0;  ///< blocks per axis
   std::vector<int> active_;       ///< active nodes, ascending
   std::vector<char> marks_;       ///< per block (active blocks only)
-  int owned_first_ = -1, owned_last_ = 1 << 30;
+  NodeBox owned_{{-1, -1, -1}, {1 << 30, 1 << 30, 1 << 30}};
 };
 
 }  // namespace impact::mpm

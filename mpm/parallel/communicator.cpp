@@ -178,6 +178,8 @@ std::vector<char> Communicator::exchange([[maybe_unused]] int neighbour,
   MPI_Sendrecv(to_send.data(), static_cast<int>(n_send), MPI_BYTE, neighbour, 2 * tag + 1,
                received.data(), static_cast<int>(n_recv), MPI_BYTE, neighbour, 2 * tag + 1,
                MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  exchanged_bytes_ += static_cast<std::uint64_t>(n_send);
+  exchanged_messages_ += 2;  // the size, then the data
 #endif
   return received;
 }

@@ -81,12 +81,17 @@ class Communicator {
   /// Wall time spent in MPI calls so far [s]: waiting for the other ranks plus moving the data
   /// (the load balance shows in it: docs/mpi.md).
   double seconds_in_mpi() const { return seconds_; }
+  /// Bytes and messages this rank sent by exchange() so far (the node sums with its neighbours:
+  /// what docs/mpi.md's cost model predicts).
+  std::uint64_t exchanged_bytes() const { return exchanged_bytes_; }
+  std::uint64_t exchanged_messages() const { return exchanged_messages_; }
 
  private:
   /// Every rank's `values` (all the same length), concatenated in rank order.
   std::vector<double> every_ranks(const std::vector<double>& values) const;
 
   mutable double seconds_ = 0.0;
+  mutable std::uint64_t exchanged_bytes_ = 0, exchanged_messages_ = 0;
   int rank_ = 0;
   int size_ = 1;
   bool mpi_ = false;

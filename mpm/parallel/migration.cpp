@@ -63,22 +63,36 @@ void compact(Particles& P, const std::vector<char>& keep) {
 
 }  // namespace
 
-int cell_column(const GridSpec& grid, double x) {
-  const double c = std::floor((x - grid.lower(0)) / grid.spacing()(0));
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid.cells[0] - 1)));
+int cell_along(const GridSpec& grid, int d, double x) {
+  const double c = std::floor((x - grid.lower(d)) / grid.spacing()(d));
+  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid.cells[std::size_t(d)] - 1)));
 }
 
-std::vector<std::size_t> column_counts(const Particles& P, const GridSpec& grid,
-                                       const Communicator* comm) {
-  std::vector<double> local(std::size_t(grid.cells[0]), 0.0);
-  for (const Vec3& x : P.x) local[std::size_t(cell_column(grid, x(0)))] += 1.0;
+std::array<int, 3> cell_of(const GridSpec& grid, const Vec3& x) {
+  return {cell_along(grid, 0, x(0)), cell_along(grid, 1, x(1)), cell_along(grid, 2, x(2))};
+}
+
+AxisCounts axis_counts(const Particles& P, const GridSpec& grid, const Communicator* comm) {
+  std::vector<double> local(std::size_t(grid.cells[0] + grid.cells[1] + grid.cells[2]), 0.0);
+  for (const Vec3& x : P.x) {
+    std::size_t offset = 0;
+    for (int d = 0; d < 3; ++d) {
+      local[offset + std::size_t(cell_along(grid, d, x(d)))] += 1.0;
+      offset += std::size_t(grid.cells[std::size_t(d)]);
+    }
+  }
   const std::vector<double> all = comm ? comm->sum(local) : local;  // integers: exact
-  std::vector<std::size_t> counts(all.size());
-  for (std::size_t c = 0; c < counts.size(); ++c) counts[c] = static_cast<std::size_t>(all[c]);
+  AxisCounts counts;
+  std::size_t offset = 0;
+  for (int d = 0; d < 3; ++d) {
+    for (int c = 0; c < grid.cells[std::size_t(d)]; ++c)
+      counts[std::size_t(d)].push_back(static_cast<std::size_t>(all[offset + std::size_t(c)]));
+    offset += std::size_t(grid.cells[std::size_t(d)]);
+  }
   return counts;
 }
 
-MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const GridSpec& grid,
+MigrationCounts migrate(Particles& P, const BoxDecomposition& boxes, const GridSpec& grid,
                         const Communicator& comm) {
   MigrationCounts counts;
   const std::size_t n = P.size();
@@ -86,7 +100,7 @@ MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const Grid
   std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
   std::vector<char> keep(n, 1);
   for (std::size_t p = 0; p < n; ++p) {
-    const int owner = slabs.owner_of_cell(cell_column(grid, P.x[p](0)));
+    const int owner = boxes.owner_of_cell(cell_of(grid, P.x[p]));
     if (owner == comm.rank()) continue;
     pack(P, p, to[static_cast<std::size_t>(owner)]);
     keep[p] = 0;

@@ -1,5 +1,5 @@
-// Particles moving between ranks (docs/mpi.md): after a step, a particle whose cell column
-// another rank owns (SlabDecomposition) goes to that rank whole, with every per-particle array
+// Particles moving between ranks (docs/mpi.md): after a step, a particle whose cell another rank
+// owns (BoxDecomposition) goes to that rank whole, with every per-particle array
 // (Particles::for_each_array: position, velocity, mass, volumes, velocity gradient, the whole
 // PointState, wave speed, material, object, velocity field, viscosity, fault and removal flags,
 // id). The leaving particles are cut out in order and the arriving ones appended in the order of
@@ -10,8 +10,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "mpm/parallel/box_decomposition.hpp"
 #include "mpm/parallel/communicator.hpp"
-#include "mpm/parallel/slab_decomposition.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/scene/scene.hpp"
 
@@ -22,16 +22,18 @@ struct MigrationCounts {
   std::size_t received = 0;
 };
 
-/// The cell column along x of position x (clamped into the grid).
-int cell_column(const GridSpec& grid, double x);
+/// The cell along axis d of coordinate x (clamped into the grid).
+int cell_along(const GridSpec& grid, int d, double x);
+/// The cell (i, j, k) of position x (clamped into the grid).
+std::array<int, 3> cell_of(const GridSpec& grid, const Vec3& x);
 
-/// Particles per cell column along x (what SlabDecomposition::balanced splits): of P alone, or
+/// Particles per cell along each axis (what BoxDecomposition::balanced splits): of P alone, or
 /// with `comm` summed over the ranks.
-std::vector<std::size_t> column_counts(const Particles& P, const GridSpec& grid,
-                                       const Communicator* comm = nullptr);
+AxisCounts axis_counts(const Particles& P, const GridSpec& grid,
+                       const Communicator* comm = nullptr);
 
-/// Keeps on this rank the particles of its slab; sends the others to their owners.
-MigrationCounts migrate(Particles& P, const SlabDecomposition& slabs, const GridSpec& grid,
+/// Keeps on this rank the particles of its box; sends the others to their owners.
+MigrationCounts migrate(Particles& P, const BoxDecomposition& boxes, const GridSpec& grid,
                         const Communicator& comm);
 
 /// Every rank's particles on rank 0, in seed order (ascending id), as one rank would hold them

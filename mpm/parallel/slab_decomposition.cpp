@@ -9,7 +9,7 @@ namespace impact::mpm {
 SlabDecomposition SlabDecomposition::balanced(const std::vector<std::size_t>& counts, int ranks) {
   const int cells = static_cast<int>(counts.size());
   if (ranks < 1) throw std::invalid_argument("SlabDecomposition: ranks must be >= 1");
-  if (cells < kMinCells * ranks) {
+  if (ranks > 1 && cells < kMinCells * ranks) {  // one slab: the whole axis, however narrow
     std::ostringstream m;
     m << cells << " grid cells along x cannot be split into " << ranks << " slabs of at least "
       << kMinCells << " cells (the decomposition needs grid.cells[0] >= " << kMinCells * ranks

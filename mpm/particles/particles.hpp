@@ -75,10 +75,20 @@ Particles seed_particles(const Scene& scene);
 using SeedCounts = std::vector<std::vector<std::size_t>>;
 SeedCounts seed_counts_per_column(const Scene& scene);
 
+/// Seed points per cell along each axis, all objects together (what the boxes of a domain
+/// decomposition are balanced by), counted in the same pass as seed_counts_per_column.
+using SeedAxisCounts = std::array<std::vector<std::size_t>, 3>;
+SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis);
+
 /// What seed_particles() creates in the cell columns [first, end) only, in the same order, with
 /// the same doubles, and each with its seed index (Particles::id: its index in seed_particles());
 /// `counts`: seed_counts_per_column(scene). One rank's slab, seeded without the rest.
 Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts& counts);
+
+/// What seed_particles() creates in the cells [first_d, end_d) per axis only (one rank's box):
+/// seed_columns() of its x range, without the points outside its y and z ranges.
+Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
+                   const std::array<int, 3>& end, const SeedCounts& counts);
 
 /// The number of seed points of object `object` (what seed_particles() would create) inside the
 /// closed box [lower, upper]: seeds only the cells the box overlaps (scene validation of the

@@ -123,11 +123,27 @@ Particles seed_particles(const Scene& scene) {
 }
 
 SeedCounts seed_counts_per_column(const Scene& scene) {
+  return seed_counts_per_column(scene, nullptr);
+}
+
+SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis) {
+  const GridSpec& g = scene.grid;
   std::vector<std::vector<std::size_t>> counts(scene.objects.size(),
-                                               std::vector<std::size_t>(scene.grid.cells[0], 0));
+                                               std::vector<std::size_t>(g.cells[0], 0));
+  if (per_axis)
+    for (int d = 0; d < 3; ++d) (*per_axis)[std::size_t(d)].assign(std::size_t(g.cells[d]), 0);
+  const Vec3 h = g.spacing();
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const auto [lo, hi] = bounds(scene.objects[oi].geometry);
-    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3&, int i) { ++counts[oi][i]; });
+    for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int i) {
+      ++counts[oi][i];
+      if (!per_axis) return;
+      ++(*per_axis)[0][std::size_t(i)];
+      for (int d = 1; d < 3; ++d) {  // sub-cell centres: the floor is exact
+        const int c = static_cast<int>(std::floor((x(d) - g.lower(d)) / h(d)));
+        ++(*per_axis)[std::size_t(d)][std::size_t(std::clamp(c, 0, g.cells[d] - 1))];
+      }
+    });
   }
   return counts;
 }
@@ -153,6 +169,34 @@ Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts&
     for (std::size_t k = start; k < p.size(); ++k) p.id.push_back(before + (k - start));
     for (int i = first; i < static_cast<int>(counts[oi].size()); ++i) before += counts[oi][i];
   }
+  return p;
+}
+
+Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
+                   const std::array<int, 3>& end, const SeedCounts& counts) {
+  Particles p = seed_columns(scene, first[0], end[0], counts);
+  const GridSpec& g = scene.grid;
+  const Vec3 h = g.spacing();
+  const std::size_t n = p.size();
+  std::vector<char> keep(n, 1);
+  std::size_t kept = 0;
+  for (std::size_t q = 0; q < n; ++q) {
+    for (int d = 1; d < 3; ++d) {
+      const int c = static_cast<int>(std::floor((p.x[q](d) - g.lower(d)) / h(d)));
+      if (c < first[std::size_t(d)] || c >= end[std::size_t(d)]) keep[q] = 0;
+    }
+    kept += keep[q] ? 1 : 0;
+  }
+  if (kept == n) return p;
+  // In seed order, every array (ids included); then exact storage, as seed_particles() has.
+  p.for_each_array([&](auto& a) {
+    if (a.size() != n) return;
+    std::size_t out = 0;
+    for (std::size_t q = 0; q < n; ++q)
+      if (keep[q]) a[out++] = a[q];
+    a.resize(out);
+    a.shrink_to_fit();
+  });
   return p;
 }
 

@@ -182,7 +182,8 @@ void Simulation::save(CheckpointWriter& out) const {
   out.array("fault", P.fault);
   out.array("removed", P.removed);
   out.array("id", P.id);
-  out.array("slabs", slabs_.first_cells());
+  for (const char* axis : {"boxes_x", "boxes_y", "boxes_z"})
+    out.array(axis, boxes_.axis(axis[6] - 'x').first_cells());
   out.value(static_cast<std::int64_t>(rebalances_));
   out.section("simulation", 1, 3 * sizeof(double) + 4 * sizeof(std::int64_t));
   out.value(time_);
@@ -237,13 +238,18 @@ void Simulation::load(CheckpointReader& in) {
   in.array("fault", P.fault, P.fault.size());
   in.array("removed", P.removed, P.removed.size());
   in.array("id", P.id, P.id.size());
-  std::vector<int> first_cells;
-  in.array("slabs", first_cells, std::uint64_t(slabs_.ranks()) + 1);
-  if (first_cells.front() != 0 || first_cells.back() != scene_.grid.cells[0] ||
-      !std::is_sorted(first_cells.begin(), first_cells.end()))
-    in.fail("slab boundaries out of order (corrupt checkpoint)");
-  slabs_ = SlabDecomposition(std::move(first_cells));
-  if (comm_) rebuild_grid();  // the node planes of the restored slab
+  std::array<SlabDecomposition, 3> axes;
+  for (const char* axis : {"boxes_x", "boxes_y", "boxes_z"}) {
+    const int d = axis[6] - 'x';
+    std::vector<int> first_cells;
+    in.array(axis, first_cells, std::uint64_t(boxes_.axis(d).ranks()) + 1);
+    if (first_cells.front() != 0 || first_cells.back() != scene_.grid.cells[std::size_t(d)] ||
+        !std::is_sorted(first_cells.begin(), first_cells.end()))
+      in.fail(std::string(axis) + ": box boundaries out of order (corrupt checkpoint)");
+    axes[std::size_t(d)] = SlabDecomposition(std::move(first_cells));
+  }
+  boxes_ = BoxDecomposition(std::move(axes));
+  if (comm_) rebuild_grid();  // the nodes of the restored box
   rebalances_ = static_cast<long>(in.value<std::int64_t>());
   for (std::size_t p = 0; p < n; ++p) {
     if (P.material[p] >= scene_.materials.size() || P.object[p] >= scene_.objects.size() ||
@@ -336,7 +342,7 @@ RunState read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
            ", read by rank " + std::to_string(sim.rank()) + " of " + std::to_string(sim.ranks()) +
            " (restart on the rank count of the run)");
   }
-  // One rank holds the seeded particles; on several, particles have moved between the slabs.
+  // One rank holds the seeded particles; on several, particles have moved between the boxes.
   if (h.ranks == 1 && h.particles != sim.particles().size()) {
     r.fail(std::to_string(h.particles) + " particles, the scene seeds " +
            std::to_string(sim.particles().size()));

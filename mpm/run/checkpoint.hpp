@@ -31,8 +31,9 @@ namespace impact::mpm {
 class Simulation;
 
 // 2: outflow, no face work; 3: failure cause; 4: particle ids (ranks); 5: the flow-stress law's
-// internal variable (PointState::flow_internal)
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+// internal variable (PointState::flow_internal); 6: the boxes of the domain decomposition (three
+// axes' boundaries, was the slabs along x)
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 /// Rank r's checkpoint in DIR: checkpoint.bin for rank 0 (and a one-rank run),
 /// checkpoint.rank<r>.bin for the others.

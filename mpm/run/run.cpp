@@ -137,6 +137,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   ProgressLine progress(options.progress && root);
   FaultReport faults(progress);
   wall.restart(resume ? resumed.wall_time : 0.0);
+  const long first_step = sim.steps();  // this process's steps: the halo traffic's divisor
   progress.start();
   std::string status = "completed", message;
   int code = 0;
@@ -200,7 +201,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   }
   // Per rank: the particles it holds at the end and its time in MPI calls (waiting for the others
   // and moving data): the load balance (docs/mpi.md).
-  std::vector<double> held, in_mpi, peak;
+  std::vector<double> held, in_mpi, peak, halo_bytes, halo_messages;
   Json phases = Json::object();  // each phase's seconds (per rank with several)
   for (const auto& [name, phase] : PhaseTimes::kPhases) {
     const double mine = sim.phase_totals().*phase;
@@ -210,6 +211,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     held = comm->gather_all(double(sim.particles().size()));
     in_mpi = comm->gather_all(comm->seconds_in_mpi());
     peak = comm->gather_all(peak_resident_memory().value_or(0.0) / 1e6);
+    const double steps = double(std::max(sim.steps() - first_step, 1L));
+    halo_bytes = comm->gather_all(double(comm->exchanged_bytes()) / steps);
+    halo_messages = comm->gather_all(double(comm->exchanged_messages()) / steps);
   }
   const double seconds = wall.seconds();
   Json summary = run_summary(sim, sim.particles(), status, message, seconds, outputs.observables(),
@@ -221,8 +225,14 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     summary["ranks_load"] = {{"particles_at_end", held},
                              {"seconds_in_mpi [s]", in_mpi},
                              {"peak_resident_memory [MB]", peak},
+                             {"halo_bytes_sent_per_step [B]", halo_bytes},
+                             {"halo_messages_sent_per_step", halo_messages},
                              {"rebalances", sim.rebalances()},
-                             {"slabs", sim.slabs().first_cells()}};
+                             {"boxes",
+                              {{"ranks_per_axis", sim.boxes().ranks_per_axis()},
+                               {"x", sim.boxes().axis(0).first_cells()},
+                               {"y", sim.boxes().axis(1).first_cells()},
+                               {"z", sim.boxes().axis(2).first_cells()}}}};
   }
   write_file_atomically(dir / "summary.json",
                         [&](std::ostream& o) { o << summary.dump(2) << '\n'; });

@@ -209,8 +209,17 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
       read_vec3(r, at(doc, "solver"), "gravity", "body force per unit mass [m/s^2]", Vec3::Zero());
   s.rebalance_above = r.number_or(
       "rebalance_above", 1.2, Range::open(1.0, std::numeric_limits<double>::infinity()),
-      "several ranks: re-balance the slabs when the largest particle count exceeds this multiple "
+      "several ranks: re-balance the boxes when the largest particle count exceeds this multiple "
       "of the mean [-]");
+  s.ranks_per_axis =
+      read_int3(r, at(doc, "solver"), "ranks_per_axis", 0, 1 << 20,
+                "several ranks: boxes per axis, their product the rank count; [0, 0, 0] chooses "
+                "the split cutting the fewest node faces",
+                std::array<int, 3>{0, 0, 0});
+  const auto& p = s.ranks_per_axis;
+  if ((p[0] == 0 || p[1] == 0 || p[2] == 0) && !(p[0] == 0 && p[1] == 0 && p[2] == 0))
+    r.problems().add(r.key_path("ranks_per_axis"),
+                     "expected three integers >= 1, or [0, 0, 0] for the automatic split");
   r.reject_unknown_keys();
 }
 

@@ -63,9 +63,12 @@ struct SolverSpec {
   Scheme scheme = Scheme::musl;
   FIntegration f_integration = FIntegration::forward_euler;
   Vec3 gravity = Vec3::Zero();  ///< body force per unit mass [m/s^2]
-  /// On several ranks (docs/mpi.md): the slabs are re-balanced by particle count when the largest
+  /// On several ranks (docs/mpi.md): the boxes are re-balanced by particle count when the largest
   /// rank's count exceeds this multiple of the mean [-].
   double rebalance_above = 1.2;
+  /// On several ranks: boxes per axis (product = the rank count); {0, 0, 0}: the split that cuts
+  /// the fewest node faces (BoxDecomposition::ranks_per_axis).
+  std::array<int, 3> ranks_per_axis{0, 0, 0};
 };
 
 /// How the velocity fields of different materials interact at shared nodes (Bardenhagen et al.

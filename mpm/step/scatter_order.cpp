@@ -7,7 +7,7 @@ void order_for_scatter(const std::vector<Stencil<N>>& S, const Grid& G, ScatterO
   constexpr int T = ScatterOrder::kSlab;
   // Storage coordinates along x run from 0 (the first stored plane: the ghost layer, node -1,
   // on one rank) to the last stored plane.
-  const int slabs = (G.storage_x(G.planes().last) + 1 + T - 1) / T;
+  const int slabs = (G.storage_x(G.stored().last[0]) + 1 + T - 1) / T;
   const int n = static_cast<int>(S.size());
   order.slab_of.resize(n);
   order.start.assign(slabs + 1, 0);

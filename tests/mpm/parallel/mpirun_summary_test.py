@@ -15,7 +15,11 @@ at the shared node planes and in the reductions. The run stopped by SIGTERM afte
 file per rank) and restarted on as many ranks writes every file bit for bit as the uninterrupted
 run. A NaN stress injected into the last particle (on the last rank) in step 5 stops every rank
 with exit code 3 and a message naming the step, the rank and the particle. Particle paths whose
-particles cross slab boundaries are written as on one rank (paths_across_ranks).
+particles cross slab boundaries are written as on one rank (paths_across_ranks). The scene
+split in boxes across y and z (solver.ranks_per_axis 1 x 2 x RANKS/2) gives the same summary
+and restarts bit for bit; a split that does not multiply to RANKS is refused
+(boxes_across_y_and_z). Each rank's halo bytes and messages per step equal the cost model's
+count (halo_traffic).
 """
 import json
 import math
@@ -28,6 +32,9 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
+# The recommended scene's grid (data/scenes/sphere_cylinder/case01.json).
+with open(os.path.join(ROOT, "data/scenes/sphere_cylinder/case01.json")) as _case01:
+    CELLS = json.load(_case01)["grid"]["cells"]
 SKIP = ("wall_time", "particles_per_second", "particle_steps_per_second", "memory", "threads",
         "ranks", "available", "seconds_in_mpi", "phase_seconds")
 
@@ -108,7 +115,7 @@ def paths_across_ranks(mpm, mpiexec, ranks, work, env):
     probe = os.path.join(work, "flyer_probe")
     run([mpiexec, "-np", str(ranks), "--oversubscribe", mpm, "run", flyer, "--out", probe,
          "--threads", "1"], env)
-    slabs = json.load(open(os.path.join(probe, "summary.json")))["ranks_load"]["slabs"]
+    slabs = json.load(open(os.path.join(probe, "summary.json")))["ranks_load"]["boxes"]["x"]
     x0, dx = -0.022, 0.2e-3  # the scene's grid
     paths = {}
     for k, b in enumerate(slabs[1:-1]):
@@ -153,6 +160,94 @@ def paths_across_ranks(mpm, mpiexec, ranks, work, env):
           f"{sorted(moved)} changed rank on the way")
 
 
+def same_observables(a, b, ranks):
+    """Every number of summary b (several ranks) within 1e-9 of one-rank summary a: energies
+    relative to E0, momenta to sqrt(2 M E0), the rest to their magnitude."""
+    assert a["status"] == b["status"] == "completed", (a["status"], b["status"])
+    assert b["ranks"] == ranks, b["ranks"]
+    e0 = a["initial_energy [J]"]
+    mass = a["mass [kg]"]
+    p_scale = math.sqrt(2.0 * mass * e0)
+    nb = dict(numbers(b))
+    worst = (0.0, "")
+    for path, x in numbers(a):
+        if any(s in path for s in SKIP):
+            continue
+        assert path in nb, f"{path} missing on {ranks} ranks"
+        y = nb[path]
+        if "[J]" in path:
+            scale = e0
+        elif "momentum" in path or "impulse" in path:
+            scale = p_scale
+        else:
+            scale = max(abs(x), abs(y))
+        d = abs(x - y) / scale if scale > 0 else 0.0
+        worst = max(worst, (d, path))
+    print(f"{ranks} ranks ({b['ranks_load']['boxes']['ranks_per_axis']} boxes) against one: "
+          f"worst relative difference {worst[0]:.3e} at {worst[1]}")
+    assert worst[0] < 1e-9, worst
+
+
+def halo_traffic(summary, cells, fields=1):
+    """The bytes and messages each rank sent per step, against docs/mpi.md's cost model: per
+    neighbour along axis d, the node sums of particles-to-grid (64 B per node and field) and of
+    the MUSL re-map (24 B) over 3 node layers times the rank's stored extents on the other two
+    axes (its cells and 3 halo layers each side, clipped to the grid and its ghost layers); two
+    messages (size, data) per exchange. Scenes without contact or nodal stress."""
+    load = summary["ranks_load"]
+    boxes = load["boxes"]
+    p = boxes["ranks_per_axis"]
+    first = [boxes["x"], boxes["y"], boxes["z"]]
+    for r in range(p[0] * p[1] * p[2]):
+        c = (r // (p[1] * p[2]), (r // p[2]) % p[1], r % p[2])
+        extent = [min(first[d][c[d] + 1] + 3, cells[d] + 1) - max(first[d][c[d]] - 3, -1) + 1
+                  for d in range(3)]
+        nbytes = messages = 0
+        for d in range(3):
+            neighbours = (c[d] > 0) + (c[d] + 1 < p[d])
+            face = extent[(d + 1) % 3] * extent[(d + 2) % 3]
+            nbytes += neighbours * 3 * face * fields * (64 + 24)
+            messages += neighbours * 2 * 2
+        assert load["halo_bytes_sent_per_step [B]"][r] == nbytes, (r, load, nbytes)
+        assert load["halo_messages_sent_per_step"][r] == messages, (r, load, messages)
+    print(f"halo traffic per step as the cost model: {load['halo_bytes_sent_per_step [B]']} B")
+
+
+def boxes_across_y_and_z(mpm, mpiexec, ranks, work, env, one):
+    """The same scene split 1 x 2 x ranks/2 (solver.ranks_per_axis): the summary as on one rank,
+    and stopped after step 40 and restarted, every file bit for bit as the uninterrupted run. A
+    split whose product is not the rank count is refused naming the key."""
+    scene = os.path.join(work, "boxes.json")
+    with open(scene, "w") as f:
+        json.dump({"extends": os.path.join(work, "scene.json"),
+                   "solver": {"ranks_per_axis": [1, 2, ranks // 2]}}, f)
+    launch = [mpiexec, "-np", str(ranks), "--oversubscribe", mpm, "run", "--threads", "1"]
+    whole, cut = os.path.join(work, "boxes_whole"), os.path.join(work, "boxes_cut")
+    run(launch + [scene, "--out", whole], env)
+    b = json.load(open(os.path.join(whole, "summary.json")))
+    assert b["ranks_load"]["boxes"]["ranks_per_axis"] == [1, 2, ranks // 2], b["ranks_load"]
+    same_observables(json.load(open(os.path.join(one, "summary.json"))), b, ranks)
+    halo_traffic(b, CELLS)
+    done = subprocess.run(launch + [scene, "--out", cut, "--inject-fault", "sigterm:40"],
+                          capture_output=True, text=True, env=env)
+    assert done.returncode == 143, (done.returncode, done.stderr)
+    run(launch + ["--restart", cut], env)
+    for name in ["history.csv", "particles.pvd"] + [
+            os.path.join("particles", n) for n in sorted(os.listdir(os.path.join(whole, "particles")))]:
+        with open(os.path.join(whole, name), "rb") as f, open(os.path.join(cut, name), "rb") as g:
+            assert f.read() == g.read(), f"{name}: the restarted run (boxes) differs"
+    print(f"boxes 1 x 2 x {ranks // 2}: restart bit-identical")
+    wrong = os.path.join(work, "boxes_wrong.json")
+    with open(wrong, "w") as f:
+        json.dump({"extends": scene, "solver": {"ranks_per_axis": [ranks, 2, 1]}}, f)
+    done = subprocess.run(launch + [wrong, "--out", os.path.join(work, "wrong")],
+                          capture_output=True, text=True, env=env)
+    assert done.returncode == 3, (done.returncode, done.stderr)
+    assert (f"/solver/ranks_per_axis: [{ranks}, 2, 1] makes {2 * ranks} boxes; expected their "
+            f"product to be the rank count {ranks}") in done.stderr, done.stderr
+    print("a split that does not match the rank count: refused, naming the key")
+
+
 def run(cmd, env=None):
     done = subprocess.run(cmd, capture_output=True, text=True, env=env)
     if done.returncode != 0:
@@ -175,28 +270,8 @@ def main(mpm, mpiexec, ranks, work):
          "--threads", "1"], env)
     a = json.load(open(os.path.join(one, "summary.json")))
     b = json.load(open(os.path.join(many, "summary.json")))
-    assert a["status"] == b["status"] == "completed", (a["status"], b["status"])
-    assert b["ranks"] == ranks, b["ranks"]
-    e0 = a["initial_energy [J]"]
-    mass = a["mass [kg]"]
-    p_scale = math.sqrt(2.0 * mass * e0)
-    nb = dict(numbers(b))
-    worst = (0.0, "")
-    for path, x in numbers(a):
-        if any(s in path for s in SKIP):
-            continue
-        assert path in nb, f"{path} missing on {ranks} ranks"
-        y = nb[path]
-        if "[J]" in path:
-            scale = e0
-        elif "momentum" in path or "impulse" in path:
-            scale = p_scale
-        else:
-            scale = max(abs(x), abs(y))
-        d = abs(x - y) / scale if scale > 0 else 0.0
-        worst = max(worst, (d, path))
-    print(f"{ranks} ranks against one: worst relative difference {worst[0]:.3e} at {worst[1]}")
-    assert worst[0] < 1e-9, worst
+    same_observables(a, b, ranks)
+    halo_traffic(b, CELLS)
     ha = open(os.path.join(one, "history.csv")).read().splitlines()
     hb = open(os.path.join(many, "history.csv")).read().splitlines()
     assert ha[0] == hb[0] and len(ha) == len(hb), "history.csv: other columns or rows"
@@ -257,6 +332,9 @@ def main(mpm, mpiexec, ranks, work):
         d.pop("phase_seconds [s]")
         d["ranks_load"].pop("seconds_in_mpi [s]")
         d["ranks_load"].pop("peak_resident_memory [MB]")
+        # traffic counters of this process (checked against the cost model in halo_traffic)
+        d["ranks_load"].pop("halo_bytes_sent_per_step [B]")
+        d["ranks_load"].pop("halo_messages_sent_per_step")
     assert b == c, "summary.json of the restarted run differs"
     print(f"restart on {ranks} ranks: bit-identical")
     # A fault on one rank stops every rank: the last particle (seed index n - 1, at the far end
@@ -271,6 +349,7 @@ def main(mpm, mpiexec, ranks, work):
     assert status["status"] == "failed" and status["step"] == 4, status
     print("a fault on one rank: every rank stopped, the message names rank, step and particle")
     paths_across_ranks(mpm, mpiexec, ranks, work, env)
+    boxes_across_y_and_z(mpm, mpiexec, ranks, work, env, one)
     print("OK")
 
 

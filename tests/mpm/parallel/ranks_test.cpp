@@ -53,18 +53,21 @@ Scene scene_from(const std::string& file, const Json& patch) {
   return read_scene(doc, file);
 }
 
-// Each rank's grid stores its slab's node planes and the halo only (never the whole grid): the
-// planes [c0 - kHaloPlanes, c1 + kHaloPlanes] within [-1, cells + 1], for the current slabs.
-void expect_slab_grid(const Simulation& ranks) {
-  const int r = ranks.rank(), cells = ranks.scene().grid.cells[0];
-  const NodePlanes expected{std::max(ranks.slabs().first_cell(r) - kHaloPlanes, -1),
-                            std::min(ranks.slabs().first_cell(r + 1) + kHaloPlanes, cells + 1)};
-  const NodePlanes stored = ranks.grid().planes();
-  BOOST_TEST(stored.first == expected.first);
-  BOOST_TEST(stored.last == expected.last);
-  const auto& c = ranks.grid().cells();
-  BOOST_TEST(ranks.grid().node_count() ==
-             (expected.last - expected.first + 1) * (c[1] + 3) * (c[2] + 3));
+// Each rank's grid stores its box's nodes and the halo only (never the whole grid): the nodes
+// [c0 - kHaloPlanes, c1 + kHaloPlanes] per axis within [-1, cells + 1], for the current boxes.
+void expect_box_grid(const Simulation& ranks) {
+  const int r = ranks.rank();
+  const NodeBox stored = ranks.grid().stored();
+  int count = 1;
+  for (std::size_t d = 0; d < 3; ++d) {
+    const int cells = ranks.scene().grid.cells[d];
+    const int first = std::max(ranks.boxes().first_cell(r)[d] - kHaloPlanes, -1);
+    const int last = std::min(ranks.boxes().end_cell(r)[d] + kHaloPlanes, cells + 1);
+    BOOST_TEST(stored.first[d] == first);
+    BOOST_TEST(stored.last[d] == last);
+    count *= last - first + 1;
+  }
+  BOOST_TEST(ranks.grid().node_count() == count);
 }
 
 // Steps both runs to the end (or `max_steps`), comparing the ledgers at every step. Energies are
@@ -100,8 +103,8 @@ void compare_with_one_rank(const Scene& scene, double tolerance, long max_steps 
     migrated += static_cast<long>(comm.sum(std::int64_t(ranks.migrated())));
   }
   const double p_scale = std::sqrt(2.0 * mass * energy);
-  BOOST_TEST_MESSAGE(scene.file << " on " << comm.size() << " ranks (slabs "
-                                << ranks.slabs().describe() << "), " << alone.steps()
+  BOOST_TEST_MESSAGE(scene.file << " on " << comm.size() << " ranks (boxes "
+                                << ranks.boxes().describe() << "), " << alone.steps()
                                 << " steps: energies within " << d_energy / energy
                                 << " of E, momentum within " << d_momentum / p_scale << ", closure "
                                 << closure / p_scale << " (one rank " << closure_alone / p_scale
@@ -110,7 +113,7 @@ void compare_with_one_rank(const Scene& scene, double tolerance, long max_steps 
   // velocity field their own tests prescribe) has E = 0 and must then agree exactly.
   BOOST_TEST(d_energy <= tolerance * energy);
   BOOST_TEST(d_momentum <= tolerance * p_scale);
-  expect_slab_grid(ranks);
+  expect_box_grid(ranks);
   BOOST_TEST(closure <= std::max(1e-12 * p_scale, 10.0 * closure_alone));
 }
 
@@ -158,7 +161,7 @@ BOOST_AUTO_TEST_CASE(the_slabs_are_rebalanced_as_the_block_moves) {
   const Communicator comm(&fixture->session);
   const Scene scene = flying_block(1.2);
   Simulation ranks(scene, 1, &comm), alone(scene, 1);
-  const SlabDecomposition first = ranks.slabs();
+  const BoxDecomposition first = ranks.boxes();
   while (!alone.finished()) {
     alone.step();
     ranks.step();
@@ -167,11 +170,11 @@ BOOST_AUTO_TEST_CASE(the_slabs_are_rebalanced_as_the_block_moves) {
   const double n = double(alone.particles().size());
   double largest = 0.0;
   for (double h : held) largest = std::max(largest, h);
-  BOOST_TEST_MESSAGE("rebalanced " << ranks.rebalances() << " times: slabs " << first.describe()
-                                   << " -> " << ranks.slabs().describe());
+  BOOST_TEST_MESSAGE("rebalanced " << ranks.rebalances() << " times: boxes " << first.describe()
+                                   << " -> " << ranks.boxes().describe());
   BOOST_TEST(ranks.rebalances() > 0);
-  BOOST_TEST(!(ranks.slabs() == first));
-  expect_slab_grid(ranks);  // the grid followed the slabs
+  BOOST_TEST(!(ranks.boxes() == first));
+  expect_box_grid(ranks);  // the grid followed the boxes
   // As balanced as slabs of whole cell columns, at least 4 wide, allow: each column of the block
   // holds n / 8 particles.
   BOOST_TEST(largest <= std::max(1.2 * n / comm.size(), n / 8.0 * SlabDecomposition::kMinCells));
@@ -183,10 +186,11 @@ BOOST_AUTO_TEST_CASE(the_slabs_are_rebalanced_as_the_block_moves) {
   BOOST_TEST(comm.sum(std::int64_t(P.size())) == std::int64_t(n));
 }
 
-// Every verification scene whose grid has at least 4 cells per rank along x (the others are
-// refused on this many ranks: SlabDecomposition), for its first 60 steps, as the scene file has
-// it (the elastic bar and the compression test start at rest without their tests' velocity
-// fields: they must stay equal, here at zero).
+// Every verification scene whose grid splits into boxes of at least 4 cells per axis on this many
+// ranks (BoxDecomposition::ranks_per_axis; on 4 ranks the rigid translation and the sliding
+// block are split across y and z, and only the 13 x 7 x 7 Taylor rod is refused), for its first
+// 60 steps, as the scene file has it (the elastic bar and the compression test start at rest
+// without their tests' velocity fields: they must stay equal, here at zero).
 BOOST_AUTO_TEST_CASE(every_verification_scene_books_as_on_one_rank) {
   const Communicator comm(&fixture->session);
   int compared = 0;
@@ -194,9 +198,10 @@ BOOST_AUTO_TEST_CASE(every_verification_scene_books_as_on_one_rank) {
                            "flyer_plate.json", "rigid_translation.json", "sliding_block.json",
                            "taylor_rod.json", "two_spheres.json", "uniaxial_compression.json"}) {
     const Scene scene = scene_from(std::string("verification/") + name, Json::object());
-    if (scene.grid.cells[0] < SlabDecomposition::kMinCells * comm.size()) {
-      BOOST_TEST_MESSAGE(name << ": " << scene.grid.cells[0] << " cells along x, too few for "
-                              << comm.size() << " ranks");
+    try {
+      BoxDecomposition::ranks_per_axis(scene.grid.cells, comm.size());
+    } catch (const std::invalid_argument& refused) {
+      BOOST_TEST_MESSAGE(name << ": " << refused.what());
       continue;
     }
     BOOST_TEST_CONTEXT(name) {
@@ -204,7 +209,76 @@ BOOST_AUTO_TEST_CASE(every_verification_scene_books_as_on_one_rank) {
     }
     ++compared;
   }
-  BOOST_TEST(compared >= 6);
+  BOOST_TEST(compared >= (comm.size() == 2 ? 9 : 8));
+}
+
+// Boxes split across y and z as well as x (solver.ranks_per_axis): the nodes along the boxes'
+// edges are shared by four ranks, summed one axis after another. Case 1 on 2 ranks split in y
+// and in z, on 4 ranks 2 x 2 in x-y and in y-z: friction contact (the mass gradients read the
+// copied layers beyond the shared ones, also at the edges), erosion and conversion, symmetric
+// faces on the y = 0 and z = 0 boxes only.
+BOOST_AUTO_TEST_CASE(case01_split_in_boxes_across_every_axis_books_as_on_one_rank) {
+  const Communicator comm(&fixture->session);
+  const std::vector<std::array<int, 3>> splits =
+      comm.size() == 2 ? std::vector<std::array<int, 3>>{{1, 2, 1}, {1, 1, 2}}
+                       : std::vector<std::array<int, 3>>{{2, 2, 1}, {1, 2, 2}};
+  for (const std::array<int, 3>& p : splits) {
+    BOOST_TEST_CONTEXT("ranks_per_axis " << p[0] << " " << p[1] << " " << p[2]) {
+      compare_with_one_rank(scene_from("sphere_cylinder/case01.json",
+                                       {{"time", {{"max_time", 1.0e-6}}},
+                                        {"solver", {{"ranks_per_axis", {p[0], p[1], p[2]}}}}}),
+                            1e-9);
+    }
+  }
+}
+
+// A rigid block flying diagonally (+x and +y) through fixed boxes, 1 x 2 on 2 ranks and 2 x 2 on
+// 4 (one box's corner crossed): it starts across the boundaries (balanced by particle count)
+// and ends inside the last box; count, mass, positions and motion are unchanged.
+BOOST_AUTO_TEST_CASE(a_block_crossing_box_boundaries_diagonally_keeps_its_particles_and_motion) {
+  const Communicator comm(&fixture->session);
+  const int p = comm.size() == 2 ? 1 : 2;
+  const Scene scene =
+      scene_from("verification/rigid_translation.json",
+                 {{"objects",
+                   {{"block",
+                     {{"geometry", {{"lower", {0.01, 0.01, 0.01}}, {"upper", {0.04, 0.04, 0.03}}}},
+                      {"velocity", {500.0, 500.0, 0.0}}}}}},
+                  {"grid", {{"upper", {0.12, 0.12, 0.04}}, {"cells", {24, 24, 8}}}},
+                  {"solver", {{"rebalance_above", 1e300}, {"ranks_per_axis", {p, 2, 1}}}},
+                  {"time", {{"max_time", 1.0e-4}}}});
+  Simulation ranks(scene, 1, &comm), alone(scene, 1);
+  const std::size_t n = alone.particles().size();
+  const std::vector<double> held_before = comm.gather_all(double(ranks.particles().size()));
+  long migrated = 0;
+  while (!alone.finished()) {
+    alone.step();
+    ranks.step();
+    migrated += static_cast<long>(comm.sum(std::int64_t(ranks.migrated())));
+  }
+  const Particles& P = ranks.particles();
+  double m = 0.0, mass = 0.0, worst_x = 0.0;
+  for (double mp : alone.particles().mass) mass += mp;
+  for (std::size_t q = 0; q < P.size(); ++q) {
+    m += P.mass[q];
+    worst_x = std::max(worst_x, (P.x[q] - alone.particles().x[P.id[q]]).cwiseAbs().maxCoeff());
+  }
+  BOOST_TEST_MESSAGE("diagonal block: " << n << " particles, boxes " << ranks.boxes().describe()
+                                        << ", " << migrated << " migrations");
+  BOOST_TEST(comm.sum(std::int64_t(P.size())) == std::int64_t(n));
+  BOOST_TEST(std::abs(comm.sum(m) - mass) <= 1e-13 * mass);
+  BOOST_TEST(comm.max(worst_x) < 1e-12);
+  const LedgerRow a = alone.ledger().row(), r = ranks.ledger().row();
+  BOOST_TEST(std::abs(r.kinetic_energy - a.kinetic_energy) <= 1e-12 * a.kinetic_energy);
+  BOOST_TEST((r.momentum - a.momentum).norm() <= 1e-12 * a.momentum.norm());
+  expect_box_grid(ranks);
+  const std::vector<double> held_after = comm.gather_all(double(P.size()));
+  const int last = comm.size() - 1;
+  for (int q = 0; q < comm.size(); ++q) {
+    BOOST_TEST_INFO("rank " << q);
+    BOOST_TEST(held_before[std::size_t(q)] > 0.0);  // the block starts across every boundary
+    BOOST_TEST(held_after[std::size_t(q)] == (q == last ? double(n) : 0.0));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_block_crossing_every_slab_boundary_keeps_its_particles_and_motion) {
@@ -239,9 +313,10 @@ BOOST_AUTO_TEST_CASE(a_block_crossing_every_slab_boundary_keeps_its_particles_an
   const LedgerRow a = alone.ledger().row(), r = ranks.ledger().row();
   BOOST_TEST(std::abs(r.kinetic_energy - a.kinetic_energy) <= 1e-12 * a.kinetic_energy);
   BOOST_TEST((r.momentum - a.momentum).norm() <= 1e-12 * a.momentum.norm());
-  BOOST_TEST_MESSAGE("block: " << n << " particles, slabs " << ranks.slabs().describe() << ", "
+  BOOST_TEST_MESSAGE("block: " << n << " particles, boxes " << ranks.boxes().describe() << ", "
                                << migrated << " migrations, position error " << worst_x << " m");
-  BOOST_TEST_REQUIRE(ranks.slabs().first_cell(comm.size() - 1) <= 22);
+  BOOST_TEST_REQUIRE(ranks.boxes().ranks_per_axis()[0] == comm.size());  // slabs along x
+  BOOST_TEST_REQUIRE(ranks.boxes().axis(0).first_cell(comm.size() - 1) <= 22);
   const int last = comm.size() - 1;
   BOOST_TEST(held_before[0] > 0.0);
   for (int q = 0; q < comm.size(); ++q) {

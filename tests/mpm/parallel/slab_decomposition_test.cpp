@@ -59,6 +59,9 @@ BOOST_AUTO_TEST_CASE(a_grid_too_small_for_the_ranks_is_refused) {
   const std::vector<std::size_t> counts(7, 1);
   BOOST_CHECK_THROW(SlabDecomposition::balanced(counts, 2), std::invalid_argument);
   BOOST_CHECK_NO_THROW(SlabDecomposition::balanced(std::vector<std::size_t>(8, 1), 2));
+  // One slab is the whole axis, however narrow (an axis the boxes do not split).
+  BOOST_TEST(SlabDecomposition::balanced(std::vector<std::size_t>(1, 5), 1).first_cells() ==
+             (std::vector<int>{0, 1}));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

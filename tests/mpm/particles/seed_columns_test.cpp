@@ -4,13 +4,17 @@
 // seeding as its id; the ranges of a split together give every particle once. The recommended
 // sphere-cylinder: two objects (the later one's points inside the earlier one are skipped) and a
 // sphere that lies in some columns only. The counts per column add up to the whole seeding.
+// seed_box: the boxes of a 2 x 3 x 2 split seed every particle once, with the same doubles and
+// seed indices, and the counts per cell along each axis match the whole seeding's cells.
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <string>
 
 #include "mpm/particles/particles.hpp"
 #include "mpm/scene/scene.hpp"
 
 using namespace impact::mpm;
+using impact::Vec3;
 
 namespace {
 
@@ -75,6 +79,46 @@ BOOST_AUTO_TEST_CASE(column_ranges_seed_the_same_particles_with_their_seed_indic
       BOOST_TEST((column >= cuts[k] && column < cuts[k + 1]));
     }
   }
+  for (std::size_t q = 0; q < all.size(); ++q) BOOST_TEST_REQUIRE(seen[q] == 1);
+}
+
+BOOST_AUTO_TEST_CASE(boxes_seed_every_particle_once_with_its_seed_index) {
+  const Scene scene = recommended();
+  const Particles all = seed_particles(scene);
+  SeedAxisCounts per_axis;
+  const auto counts = seed_counts_per_column(scene, &per_axis);
+  const GridSpec& g = scene.grid;
+  const auto cell = [&](const Vec3& x, int d) {
+    return static_cast<int>(std::floor((x(d) - g.lower(d)) / g.spacing()(d)));
+  };
+  // The counts per cell along each axis, counted again from the whole seeding.
+  for (int d = 0; d < 3; ++d) {
+    std::vector<std::size_t> expected(std::size_t(g.cells[std::size_t(d)]), 0);
+    for (const Vec3& x : all.x) ++expected[std::size_t(cell(x, d))];
+    BOOST_TEST(per_axis[std::size_t(d)] == expected);
+  }
+  const std::vector<int> cx = {0, 7, g.cells[0]}, cy = {0, 4, 11, g.cells[1]},
+                         cz = {0, 9, g.cells[2]};
+  std::vector<int> seen(all.size(), 0);
+  for (std::size_t a = 0; a + 1 < cx.size(); ++a)
+    for (std::size_t b = 0; b + 1 < cy.size(); ++b)
+      for (std::size_t c = 0; c + 1 < cz.size(); ++c) {
+        const std::array<int, 3> lo{cx[a], cy[b], cz[c]}, hi{cx[a + 1], cy[b + 1], cz[c + 1]};
+        const Particles box = seed_box(scene, lo, hi, counts);
+        BOOST_REQUIRE(box.id.size() == box.size());
+        for (std::size_t p = 0; p < box.size(); ++p) {
+          const std::size_t q = box.id[p];
+          BOOST_REQUIRE(q < all.size());
+          ++seen[q];
+          BOOST_TEST((box.x[p] == all.x[q]));
+          BOOST_TEST(box.mass[p] == all.mass[q]);
+          BOOST_TEST(box.object[p] == all.object[q]);
+          if (p > 0) BOOST_TEST(box.id[p] > box.id[p - 1]);  // seed order kept
+          for (int d = 0; d < 3; ++d)
+            BOOST_TEST((cell(box.x[p], d) >= lo[std::size_t(d)] &&
+                        cell(box.x[p], d) < hi[std::size_t(d)]));
+        }
+      }
   for (std::size_t q = 0; q < all.size(); ++q) BOOST_TEST_REQUIRE(seen[q] == 1);
 }
 

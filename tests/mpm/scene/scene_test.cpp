@@ -124,6 +124,23 @@ BOOST_AUTO_TEST_CASE(errors_name_the_key_path_and_what_was_expected) {
   BOOST_TEST(e.find("/solver/scheme: unknown name \"usf\"; known: usl, musl") != std::string::npos);
 }
 
+// solver.ranks_per_axis: three integers >= 1 (their product checked against the rank count when
+// a run starts, mpm/solver.cpp), or [0, 0, 0] for the automatic split (the default).
+BOOST_AUTO_TEST_CASE(ranks_per_axis_is_all_positive_or_all_zero) {
+  Json doc = base();
+  BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{0, 0, 0}));
+  doc["solver"]["ranks_per_axis"] = {2, 1, 2};
+  BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{2, 1, 2}));
+  doc["solver"]["ranks_per_axis"] = {2, 0, 1};
+  std::string e = error_of(doc);
+  BOOST_TEST(e.find("/solver/ranks_per_axis: expected three integers >= 1, or [0, 0, 0]") !=
+             std::string::npos);
+  doc["solver"]["ranks_per_axis"] = {2, -1, 1};
+  e = error_of(doc);
+  BOOST_TEST(e.find("/solver/ranks_per_axis: expected integers in [0, 1048576]") !=
+             std::string::npos);
+}
+
 // Multipliers in (1, 1.5] are admissible (to test where the CFL limit fails) but warned about;
 // time.max_energy_growth defaults to 1 (+100 %) and must be positive.
 BOOST_AUTO_TEST_CASE(a_multiplier_above_one_is_read_with_a_warning) {
