@@ -11,8 +11,9 @@
 #   ./run.sh mpi [RANKS]  install Open MPI when missing, build with it, and run the recommended
 #                    scene on RANKS (default 2) ranks of one thread (docs/mpi.md; results in
 #                    out/recommended-mpi/recommended/)
-#   ./run.sh mpi-bench [RANKS]  ranks against threads on the 2.25x sphere-cylinder grid
-#                    (mpm/benchmark/mpi_scaling.py; figures in docs/mpi.md; about 10 min)
+#   ./run.sh mpi-bench [RANKS]  ranks against threads on the 2.25x sphere-cylinder grid, slabs
+#                    and (2 ranks) boxes cut across y and across z (mpm/benchmark/mpi_scaling.py;
+#                    figures in docs/mpi.md; about 12 min once built)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
 #   ./run.sh table2  build and run the report's 16 cases (docs/figures/sphere_cylinder/)
@@ -99,7 +100,9 @@ case "${1:-}" in
   mpi-bench)
     install_missing_packages "${MPI_PACKAGES[@]}"
     build release -DIMPACT_MPI=ON
-    /usr/bin/python3 mpm/benchmark/mpi_scaling.py build/bin/mpm build/mpi-bench --ranks "${2:-2}"
+    if [ "${2:-2}" = 2 ]; then splits=(--splits 1x2x1 1x1x2); else splits=(); fi
+    /usr/bin/python3 mpm/benchmark/mpi_scaling.py build/bin/mpm build/mpi-bench --ranks "${2:-2}" \
+      "${splits[@]}"
     ;;
   paraview)
     # python3-paraview brings pvpython (about 450 MB with ParaView); xvfb renders without a display.

@@ -84,6 +84,13 @@ int main(int argc, char** argv) {
   }
   run->add_option("SCENE.json", scene_file, "scene file (docs/scenes.md)");
   check->add_option("SCENE.json", scene_file, "scene file")->required();
+  int plan_ranks = 0;
+  check
+      ->add_option("--ranks", plan_ranks,
+                   "also report the split over N MPI ranks: boxes, particles and halo bytes per "
+                   "rank (docs/mpi.md)")
+      ->type_name("N")
+      ->check(CLI::PositiveNumber);
   study->add_option("SCENE_DIR", scene_file, "folder of case*.json (+ recommended.json)")
       ->required();
   run->add_option("-o,--out", options.out_dir, "output directory")->type_name("DIR");
@@ -159,7 +166,7 @@ int main(int argc, char** argv) {
         std::cerr << "mpm: check: mpm run would refuse this scene: " << refusal << '\n';
         return impact::mpm::kExitMemory;
       }
-      std::cout << impact::mpm::check_report(scene, threads).dump(2) << '\n';
+      std::cout << impact::mpm::check_report(scene, threads, plan_ranks).dump(2) << '\n';
       return 0;
     }
     return impact::mpm::run(scene, options);

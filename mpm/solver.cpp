@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "mpm/parallel/decomposition_plan.hpp"
 #include "mpm/parallel/migration.hpp"
 #include "mpm/step/parallel.hpp"
 
@@ -103,26 +104,7 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   return Failure{fastest, "energy", m.str()};
 }
 
-// The boxes per axis on `ranks` ranks: the scene's solver.ranks_per_axis, or the split cutting
-// the fewest node faces.
-std::array<int, 3> boxes_per_axis(const Scene& scene, int ranks) {
-  const std::array<int, 3>& p = scene.solver.ranks_per_axis;
-  if (p[0] == 0) return BoxDecomposition::ranks_per_axis(scene.grid.cells, ranks);
-  if (p[0] * p[1] * p[2] != ranks) {
-    std::ostringstream m;
-    m << scene.file << ": /solver/ranks_per_axis: [" << p[0] << ", " << p[1] << ", " << p[2]
-      << "] makes " << p[0] * p[1] * p[2] << " boxes; expected their product to be the rank count "
-      << ranks << " (or [0, 0, 0] for the automatic split)";
-    throw std::invalid_argument(m.str());
-  }
-  return p;
-}
-
 }  // namespace
-
-Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
-    : Simulation(scene, threads, comm != nullptr && comm->size() > 1 ? comm : nullptr,
-                 SeedCensus{}) {}
 
 Simulation::SeedCensus Simulation::census(const Scene& scene) {
   SeedCensus c;
@@ -130,17 +112,16 @@ Simulation::SeedCensus Simulation::census(const Scene& scene) {
   return c;
 }
 
-Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm,
-                       const SeedCensus& given)
+Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
     : scene_(scene),
-      comm_(comm),
-      census_(comm_ && given.columns.empty() ? census(scene) : given),
+      comm_(comm != nullptr && comm->size() > 1 ? comm : nullptr),
+      census_(comm_ ? census(scene) : SeedCensus{}),
       // On several ranks every rank counts the seed points per cell (census_), splits the grid
       // the same way, and seeds and stores only its box: no rank ever holds the whole scene or
       // the whole grid.
-      boxes_(
-          comm_ ? BoxDecomposition::balanced(census_.per_axis, boxes_per_axis(scene, comm_->size()))
-                : BoxDecomposition(scene.grid.cells)),
+      boxes_(comm_ ? BoxDecomposition::balanced(census_.per_axis,
+                                                ranks_per_axis_of(scene, comm_->size()))
+                   : BoxDecomposition(scene.grid.cells)),
       particles_(comm_ ? seed_box(scene, boxes_.first_cell(comm_->rank()),
                                   boxes_.end_cell(comm_->rank()), census_.columns)
                        : seed_particles(scene)),
@@ -328,13 +309,7 @@ const StepTotals& Simulation::step() {
 
 std::optional<NodeBox> Simulation::stored_box() const {
   if (!comm_) return std::nullopt;
-  const int r = comm_->rank();
-  NodeBox box{boxes_.first_cell(r), boxes_.end_cell(r)};
-  for (int d = 0; d < 3; ++d) {
-    box.first[std::size_t(d)] -= kHaloPlanes;
-    box.last[std::size_t(d)] += kHaloPlanes;
-  }
-  return box;
+  return stored_nodes(boxes_, scene_.grid.cells, comm_->rank());
 }
 
 void Simulation::rebuild_grid() {

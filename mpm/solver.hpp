@@ -151,8 +151,6 @@ class Simulation {
     SeedAxisCounts per_axis;
   };
   static SeedCensus census(const Scene& scene);
-  /// `comm`: null on one rank; `census`: counted here when empty (several ranks).
-  Simulation(const Scene& scene, int threads, const Communicator* comm, const SeedCensus& census);
 
   Scene scene_;
   const Communicator* comm_ = nullptr;  ///< null on one rank

@@ -1,5 +1,6 @@
 #include "mpm/parallel/halo_exchange.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace impact::mpm {
@@ -93,6 +94,38 @@ void sum_shared(Grid& G, T* data, const Communicator& comm, const BoxDecompositi
 }
 
 }  // namespace
+
+NodeBox stored_nodes(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank) {
+  NodeBox box{boxes.first_cell(rank), boxes.end_cell(rank)};
+  for (std::size_t d = 0; d < 3; ++d) {
+    box.first[d] = std::max(box.first[d] - kHaloPlanes, -1);
+    box.last[d] = std::min(box.last[d] + kHaloPlanes, cells[d] + 1);
+  }
+  return box;
+}
+
+HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank,
+                         int fields, bool nodal_stress, bool musl) {
+  const NodeBox box = stored_nodes(boxes, cells, rank);
+  const double per_node = double(sizeof(NodeData)) + (nodal_stress ? sizeof(NodeStress) : 0.0) +
+                          (musl ? sizeof(Vec3) : 0.0);
+  const int exchanges_per_neighbour = 1 + (nodal_stress ? 1 : 0) + (musl ? 1 : 0);
+  HaloTraffic t;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int e = (axis + 1) % 3, f = (axis + 2) % 3;
+    const double layer = double(box.last[std::size_t(e)] - box.first[std::size_t(e)] + 1) *
+                         double(box.last[std::size_t(f)] - box.first[std::size_t(f)] + 1) * fields;
+    for_neighbours(boxes, rank, axis, [&](int, int, bool) {
+      t.bytes += 3.0 * layer * per_node;
+      t.messages += 2.0 * exchanges_per_neighbour;
+      if (fields > 1) {  // contact: the layer beyond
+        t.bytes += layer * double(sizeof(NodeData));
+        t.messages += 2.0;
+      }
+    });
+  }
+  return t;
+}
 
 void HaloExchange::sum_node_data(Grid& G, bool contact) const {
   if (comm_.size() == 1) return;

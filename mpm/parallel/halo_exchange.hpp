@@ -24,6 +24,22 @@ namespace impact::mpm {
 /// (c1 + 2) from the neighbour, and the mass gradient there reads one layer further.
 constexpr int kHaloPlanes = 3;
 
+/// The nodes rank `rank`'s grid stores: its box's cells [c0, c1) per axis widened by kHaloPlanes
+/// on each side, clipped to the grid and its ghost layers [-1, cells + 1].
+NodeBox stored_nodes(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank);
+
+/// What a rank sends by the node sums per step (docs/mpi.md, "Cost model"): per neighbour along
+/// axis d, 3 node layers times its stored extents on the other two axes times the velocity fields,
+/// each node 64 B (mass, momentum, force), 48 B more with nodal stress (friction contact) and 24 B
+/// more with the MUSL re-map's momentum; with several fields (contact) also the layer beyond,
+/// 64 B per node. Two messages (size, then data) per exchange.
+struct HaloTraffic {
+  double bytes = 0.0;
+  double messages = 0.0;
+};
+HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank,
+                         int fields, bool nodal_stress, bool musl);
+
 class HaloExchange {
  public:
   HaloExchange(const Communicator& comm, const BoxDecomposition& boxes)

@@ -1,10 +1,11 @@
-// The grid split across ranks (docs/mpi.md): rank r owns the cells [first_cell(r),
-// first_cell(r + 1)) along x, the slab whose particles it keeps and whose nodes it books. A
-// particle's stencil reaches from the node below its cell to two nodes above it (uGIMP), so the
-// particles of neighbouring slabs share 4 node planes; a slab at least kMinCells wide keeps every
-// node shared by at most two ranks, whose sums (a + b = b + a) are then the same bits on both.
-// Slabs are balanced by particle count: the boundaries cut the cumulative count of particles per
-// cell column into equal parts.
+// One axis of the grid split across ranks (docs/mpi.md; BoxDecomposition combines three): slab r
+// holds the cells [first_cell(r), first_cell(r + 1)) along the axis. The particles of cells
+// [c0, c1) reach the nodes [c0 - 1, c1 + 1] (uGIMP), so neighbouring slabs share the 3 node
+// layers around their boundary b, [b - 1, b + 1]; a slab at least kMinCells = 3 wide keeps the
+// layers it shares below apart from those it shares above, so every node is shared by at most
+// two slabs of an axis, whose sums (a + b = b + a) are then the same bits on both. Slabs are
+// balanced by particle count: the boundaries cut the cumulative count of particles per cell
+// into equal parts.
 #pragma once
 
 #include <cstddef>
@@ -16,7 +17,7 @@ namespace impact::mpm {
 class SlabDecomposition {
  public:
   /// Narrowest slab [cells].
-  static constexpr int kMinCells = 4;
+  static constexpr int kMinCells = 3;
 
   /// One slab of `cells` cells.
   explicit SlabDecomposition(int cells = 1) : first_{0, cells} {}

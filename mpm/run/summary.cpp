@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "mpm/parallel/decomposition_plan.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/step/step.hpp"
 
@@ -104,7 +105,7 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
 
 }  // namespace
 
-Json check_report(const Scene& scene, int threads) {
+Json check_report(const Scene& scene, int threads, int ranks) {
   const Particles P = seed_particles(scene);
   Json report = particle_report(scene, P, threads);
   const double dt =
@@ -112,6 +113,7 @@ Json check_report(const Scene& scene, int threads) {
                scene.time.max_dt);
   report["stable_dt [s]"] = dt;
   report["estimated_steps"] = std::ceil(scene.time.max_time / dt);
+  if (ranks > 1) report["decomposition"] = plan_decomposition(scene, P, ranks);
   return report;
 }
 

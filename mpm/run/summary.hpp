@@ -11,8 +11,9 @@
 namespace impact::mpm {
 
 /// What `mpm check` prints after the resolved scene: per-object counts, mass, particle volume
-/// against the exact geometric volume, estimated steps and memory.
-Json check_report(const Scene& scene, int threads);
+/// against the exact geometric volume, estimated steps and memory; with `ranks` > 1 also the
+/// split over that many MPI ranks ("decomposition": plan_decomposition).
+Json check_report(const Scene& scene, int threads, int ranks = 0);
 
 /// summary.json at the end of a run of sim, whose particles are P (on several ranks, those this
 /// rank holds: a collective call, every rank gets the whole summary): `status` (completed, failed,

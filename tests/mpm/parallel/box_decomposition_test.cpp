@@ -12,10 +12,11 @@ BOOST_AUTO_TEST_SUITE(mpm_box_decomposition)
 
 // Cut node faces sum_d (p_d - 1) N_e N_f, N = cells + 1 per axis:
 //   112 x 45 x 45 on 4: 4x1x1 cuts 3 * 46 * 46 = 6348, 2x2x1 46 * 46 + 113 * 46 = 7314: slabs.
-//   12 x 12 x 12 on 4: 4x1x1 leaves 3-cell slabs (refused); 2x2x1, 2x1x2 and 1x2x2 all cut
+//   12 x 12 x 12 on 4: 4x1x1 cuts 3 * 13 * 13 = 507; 2x2x1, 2x1x2 and 1x2x2 all cut
 //     2 * 13 * 13 = 338: the tie goes to x, then y.
-//   8 x 20 x 12 on 4: 1x2x2 cuts 9 * 13 + 9 * 21 = 306, 1x4x1 351, 2x2x1 390, 2x1x2 462; 4x1x1
-//     and 1x1x4 leave 2- and 3-cell slabs.
+//   8 x 20 x 12 on 4: 1x2x2 cuts 9 * 13 + 9 * 21 = 306, 1x4x1 351, 2x2x1 390, 2x1x2 462, 1x1x4
+//     567; 4x1x1 leaves 2-cell slabs.
+//   13 x 7 x 7 on 4 (the Taylor rod): 2x2x1 cuts 8 * 8 + 14 * 8 = 176, 4x1x1 192.
 //   48 x 2 x 2 on 2: the narrow axes are not split, so they need no width.
 BOOST_AUTO_TEST_CASE(the_ranks_per_axis_cut_the_fewest_node_faces) {
   using P = std::array<int, 3>;
@@ -23,6 +24,7 @@ BOOST_AUTO_TEST_CASE(the_ranks_per_axis_cut_the_fewest_node_faces) {
   BOOST_TEST((BoxDecomposition::ranks_per_axis({112, 45, 45}, 4) == P{4, 1, 1}));
   BOOST_TEST((BoxDecomposition::ranks_per_axis({12, 12, 12}, 4) == P{2, 2, 1}));
   BOOST_TEST((BoxDecomposition::ranks_per_axis({8, 20, 12}, 4) == P{1, 2, 2}));
+  BOOST_TEST((BoxDecomposition::ranks_per_axis({13, 7, 7}, 4) == P{2, 2, 1}));
   BOOST_TEST((BoxDecomposition::ranks_per_axis({48, 2, 2}, 2) == P{2, 1, 1}));
   BOOST_TEST((BoxDecomposition::ranks_per_axis({40, 40, 40}, 8) == P{2, 2, 2}));
   BOOST_TEST((BoxDecomposition::ranks_per_axis({5, 5, 5}, 1) == P{1, 1, 1}));
@@ -30,10 +32,10 @@ BOOST_AUTO_TEST_CASE(the_ranks_per_axis_cut_the_fewest_node_faces) {
 
 BOOST_AUTO_TEST_CASE(a_grid_no_split_fits_is_refused_with_its_size) {
   try {
-    BoxDecomposition::ranks_per_axis({13, 7, 7}, 4);
+    BoxDecomposition::ranks_per_axis({5, 5, 5}, 4);  // 2 boxes of 5 cells would be 2 and 3 wide
     BOOST_FAIL("expected std::invalid_argument");
   } catch (const std::invalid_argument& e) {
-    BOOST_TEST(std::string(e.what()).find("13 x 7 x 7 cells cannot be split into 4 boxes") !=
+    BOOST_TEST(std::string(e.what()).find("5 x 5 x 5 cells cannot be split into 4 boxes") !=
                std::string::npos);
   }
   BOOST_CHECK_THROW(BoxDecomposition::ranks_per_axis({100, 100, 100}, 0), std::invalid_argument);

@@ -228,6 +228,19 @@ def boxes_across_y_and_z(mpm, mpiexec, ranks, work, env, one):
     assert b["ranks_load"]["boxes"]["ranks_per_axis"] == [1, 2, ranks // 2], b["ranks_load"]
     same_observables(json.load(open(os.path.join(one, "summary.json"))), b, ranks)
     halo_traffic(b, CELLS)
+    # `mpm check --ranks` plans the same boxes and traffic without running (no re-balance here).
+    checked = subprocess.run([mpm, "check", scene, "--ranks", str(ranks)], capture_output=True,
+                             text=True)
+    assert checked.returncode == 0, checked.stderr
+    text = checked.stdout
+    plan = json.loads(text[text.rindex("\n{", 0, len(text) - 2):])["decomposition"]
+    assert b["ranks_load"]["rebalances"] == 0, b["ranks_load"]
+    for axis in "xyz":
+        assert plan["boxes"][axis] == b["ranks_load"]["boxes"][axis], (plan, b["ranks_load"])
+    measured = b["ranks_load"]["halo_bytes_sent_per_step [B]"]
+    assert plan["halo_bytes_sent_per_step [B]"]["max"] == max(measured), (plan, measured)
+    assert plan["halo_bytes_sent_per_step [B]"]["mean"] == sum(measured) / ranks, (plan, measured)
+    print(f"mpm check --ranks {ranks}: the run's boxes and halo bytes, planned without running")
     done = subprocess.run(launch + [scene, "--out", cut, "--inject-fault", "sigterm:40"],
                           capture_output=True, text=True, env=env)
     assert done.returncode == 143, (done.returncode, done.stderr)
