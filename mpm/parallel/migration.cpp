@@ -49,18 +49,6 @@ void unpack(Particles& P, const std::vector<char>& in, const std::vector<bool>& 
   }
 }
 
-// Keeps the particles with keep[p], in order, in every array in use.
-void compact(Particles& P, const std::vector<char>& keep) {
-  const std::size_t n = P.size();
-  P.for_each_array([&](auto& a) {
-    if (a.size() != n) return;
-    std::size_t out = 0;
-    for (std::size_t p = 0; p < n; ++p)
-      if (keep[p]) a[out++] = a[p];
-    a.resize(out);
-  });
-}
-
 }  // namespace
 
 int cell_along(const GridSpec& grid, int d, double x) {
@@ -107,7 +95,7 @@ MigrationCounts migrate(Particles& P, const BoxDecomposition& boxes, const GridS
     ++counts.sent;
   }
   if (!comm.any(counts.sent > 0)) return counts;
-  if (counts.sent > 0) compact(P, keep);
+  if (counts.sent > 0) P.keep_only(keep);
   const std::size_t before = P.size();
   const std::vector<std::vector<char>> from = comm.all_to_all(to);
   for (const std::vector<char>& bytes : from) unpack(P, bytes, in_use);

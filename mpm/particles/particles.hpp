@@ -61,6 +61,8 @@ struct Particles {
 
  public:
   void reserve(std::size_t n);
+  /// Keeps the particles p with keep[p] != 0, in order, in every array in use.
+  void keep_only(const std::vector<char>& keep);
   /// Approximate storage per particle [bytes] without the optional q (for `mpm check` and the
   /// benchmark).
   static std::size_t bytes_per_particle();

@@ -19,6 +19,17 @@ void Particles::reserve(std::size_t n) {
   field.reserve(n);
 }
 
+void Particles::keep_only(const std::vector<char>& keep) {
+  const std::size_t n = size();
+  for_each_array([&](auto& a) {
+    if (a.size() != n) return;  // an optional array not in use
+    std::size_t out = 0;
+    for (std::size_t p = 0; p < n; ++p)
+      if (keep[p]) a[out++] = a[p];
+    a.resize(out);
+  });
+}
+
 std::size_t Particles::bytes_per_particle() {
   return 2 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(Mat3) + sizeof(PointState) +
          sizeof(double) + 3 * sizeof(std::uint16_t);
@@ -188,15 +199,8 @@ Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
     kept += keep[q] ? 1 : 0;
   }
   if (kept == n) return p;
-  // In seed order, every array (ids included); then exact storage, as seed_particles() has.
-  p.for_each_array([&](auto& a) {
-    if (a.size() != n) return;
-    std::size_t out = 0;
-    for (std::size_t q = 0; q < n; ++q)
-      if (keep[q]) a[out++] = a[q];
-    a.resize(out);
-    a.shrink_to_fit();
-  });
+  p.keep_only(keep);                                     // in seed order, ids included
+  p.for_each_array([](auto& a) { a.shrink_to_fit(); });  // exact storage, as seed_particles()
   return p;
 }
 

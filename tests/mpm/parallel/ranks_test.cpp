@@ -72,6 +72,17 @@ void expect_box_grid(const Simulation& ranks) {
   BOOST_TEST(ranks.grid().node_count() == count);
 }
 
+// Steps both runs to the end; returns the migrations summed over the steps and ranks.
+long step_both_to_the_end(Simulation& ranks, Simulation& alone, const Communicator& comm) {
+  long migrated = 0;
+  while (!alone.finished()) {
+    alone.step();
+    ranks.step();
+    migrated += static_cast<long>(comm.sum(std::int64_t(ranks.migrated())));
+  }
+  return migrated;
+}
+
 // Steps both runs to the end (or `max_steps`), comparing the ledgers at every step. Energies are
 // compared against E = the largest kinetic + strain energy of the one-rank run (E0, unless work
 // is done on the bodies from rest), momenta against sqrt(2 M E) (|p0| is zero for two bodies
@@ -252,12 +263,7 @@ BOOST_AUTO_TEST_CASE(a_block_crossing_box_boundaries_diagonally_keeps_its_partic
   Simulation ranks(scene, 1, &comm), alone(scene, 1);
   const std::size_t n = alone.particles().size();
   const std::vector<double> held_before = comm.gather_all(double(ranks.particles().size()));
-  long migrated = 0;
-  while (!alone.finished()) {
-    alone.step();
-    ranks.step();
-    migrated += static_cast<long>(comm.sum(std::int64_t(ranks.migrated())));
-  }
+  const long migrated = step_both_to_the_end(ranks, alone, comm);
   const Particles& P = ranks.particles();
   double m = 0.0, mass = 0.0, worst_x = 0.0;
   for (double mp : alone.particles().mass) mass += mp;
@@ -296,12 +302,7 @@ BOOST_AUTO_TEST_CASE(a_block_crossing_every_slab_boundary_keeps_its_particles_an
   // The block starts in cells 2-9, so some of it lies in the first slab (the slabs are balanced
   // by particle count), and ends in cells 22-29, inside the last: it crossed every boundary.
   const std::vector<double> held_before = comm.gather_all(double(ranks.particles().size()));
-  long migrated = 0;
-  while (!alone.finished()) {
-    alone.step();
-    ranks.step();
-    migrated += static_cast<long>(comm.sum(std::int64_t(ranks.migrated())));
-  }
+  const long migrated = step_both_to_the_end(ranks, alone, comm);
   const std::vector<double> held_after = comm.gather_all(double(ranks.particles().size()));
   const Particles& P = ranks.particles();
   BOOST_TEST(comm.sum(std::int64_t(P.size())) == std::int64_t(n));
