@@ -92,6 +92,10 @@ class Grid {
     return ((i - first_[0]) * ny_ + (j - first_[1])) * nz_ + (k - first_[2]);
   }
   int node_count() const { return nx_ * ny_ * nz_; }
+  /// index(i + 1, j, k) - index(i, j, k) and index(i, j + 1, k) - index(i, j, k): the hot loops
+  /// step through a stencil with these, held in registers, from index() of its base node.
+  int stride_x() const { return ny_ * nz_; }
+  int stride_y() const { return nz_; }
   /// (i, j, k) of a storage index (inverse of index()).
   std::array<int, 3> ijk(int index) const {
     return {index / (ny_ * nz_) + first_[0], (index / nz_) % ny_ + first_[1],

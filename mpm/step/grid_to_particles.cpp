@@ -24,9 +24,11 @@ template <int N>
 Mat3 gradient(const Grid& G, const Stencil<N>& s, const std::vector<Vec3>& v, const Vec3& v_ref,
               std::size_t offset) {
   Mat3 L = Mat3::Zero();
+  const std::size_t base = offset + G.index(s.base[0], s.base[1], s.base[2]);
+  const std::size_t sx = G.stride_x(), sy = G.stride_y();
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
-      const std::size_t row = offset + G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+      const std::size_t row = base + i * sx + j * sy;
       const double wij = s.w[0][i] * s.w[1][j];
       const double dxw = s.dw[0][i] * s.w[1][j];
       const double wdy = s.w[0][i] * s.dw[1][j];
@@ -53,6 +55,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
   constexpr int N = Shape::N;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
+  const std::size_t sx = G.stride_x(), sy = G.stride_y();
   const int nt = G.threads();
   const bool heat = !G.heat.empty();
   const bool outflow = !P.removed.empty();  // grid.outflow = remove
@@ -69,9 +72,10 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
       const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
       Vec3 dv = Vec3::Zero(), v_new = Vec3::Zero();
       double h = 0.0;  // sum_I S_Ip heat_I / m_I
+      const std::size_t base = offset + G.index(s.base[0], s.base[1], s.base[2]);
       for (int i = 0; i < N; ++i)
         for (int j = 0; j < N; ++j) {
-          const std::size_t row = offset + G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+          const std::size_t row = base + i * sx + j * sy;
           const double wij = s.w[0][i] * s.w[1][j];
           for (int k = 0; k < N; ++k) {
             const double w = wij * s.w[2][k];
@@ -144,13 +148,14 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
   const int nt = G.threads();
   G.clear_momentum();
   Vec3* const buf = G.momentum_buffer();
+  const int sx = G.stride_x(), sy = G.stride_y();
   scatter_by_colour(order, nt, [&](int p) {
     const Stencil<N>& s = S[p];
-    Vec3* const field = buf + P.field[p] * G.node_count();
+    Vec3* const base = buf + P.field[p] * G.node_count() + G.index(s.base[0], s.base[1], s.base[2]);
     const Vec3 mv = P.mass[p] * P.v[p];
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j) {
-        Vec3* row = field + G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+        Vec3* row = base + i * sx + j * sy;
         const Vec3 mvij = (s.w[0][i] * s.w[1][j]) * mv;
         for (int k = 0; k < N; ++k) row[k] += s.w[2][k] * mvij;
       }

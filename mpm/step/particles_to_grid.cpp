@@ -29,9 +29,11 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
   NodeData* const buf = G.node_buffer();
   NodeStress* const sbuf = nodal_stress ? G.stress_buffer() : nullptr;
   char* const marks = G.dense() ? nullptr : G.block_marks();
+  const int sx = G.stride_x(), sy = G.stride_y();
   scatter_by_colour(order, G.threads(), [&](int p) {
     const Stencil<N>& s = S[p];
     if (marks) G.mark_stencil(marks, s.base, N);
+    const int base_index = G.index(s.base[0], s.base[1], s.base[2]);
     const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
     NodeData* const field = buf + offset;
     Mat3 sigma = P.state[p].stress;
@@ -41,7 +43,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
     const Vec3 mv = m * P.v[p];
     for (int i = 0; i < N; ++i) {
       for (int j = 0; j < N; ++j) {
-        const int row_index = G.index(s.base[0] + i, s.base[1] + j, s.base[2]);
+        const int row_index = base_index + i * sx + j * sy;
         NodeData* row = field + row_index;
         const double wij = s.w[0][i] * s.w[1][j];
         const double dxw = s.dw[0][i] * s.w[1][j];
