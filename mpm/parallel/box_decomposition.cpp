@@ -6,28 +6,37 @@
 
 namespace impact::mpm {
 
-std::array<int, 3> BoxDecomposition::ranks_per_axis(const std::array<int, 3>& cells, int ranks) {
-  if (ranks < 1) throw std::invalid_argument("BoxDecomposition: ranks must be >= 1");
-  const double nodes[3] = {cells[0] + 1.0, cells[1] + 1.0, cells[2] + 1.0};
-  std::array<int, 3> best{0, 0, 0};
-  double fewest = std::numeric_limits<double>::infinity();
-  // Descending p_x, then p_y: a tie keeps the first found, the one cutting x most.
+std::vector<std::array<int, 3>> BoxDecomposition::splits(const std::array<int, 3>& cells,
+                                                         int ranks) {
+  std::vector<std::array<int, 3>> out;
   for (int px = ranks; px >= 1; --px) {
     if (ranks % px != 0) continue;
     for (int py = ranks / px; py >= 1; --py) {
       if ((ranks / px) % py != 0) continue;
       const std::array<int, 3> p{px, py, ranks / px / py};
       bool fits = true;
-      for (int d = 0; d < 3; ++d)
-        fits = fits && (p[std::size_t(d)] == 1 ||
-                        cells[std::size_t(d)] >= SlabDecomposition::kMinCells * p[std::size_t(d)]);
-      if (!fits) continue;
-      const double cut = (p[0] - 1) * nodes[1] * nodes[2] + (p[1] - 1) * nodes[0] * nodes[2] +
-                         (p[2] - 1) * nodes[0] * nodes[1];
-      if (cut < fewest) {
-        fewest = cut;
-        best = p;
-      }
+      for (std::size_t d = 0; d < 3; ++d)
+        fits = fits && (p[d] == 1 || cells[d] >= SlabDecomposition::kMinCells * p[d]);
+      if (fits) out.push_back(p);
+    }
+  }
+  return out;
+}
+
+double BoxDecomposition::cut_faces(const std::array<int, 3>& cells, const std::array<int, 3>& p) {
+  const double n[3] = {cells[0] + 1.0, cells[1] + 1.0, cells[2] + 1.0};
+  return (p[0] - 1) * n[1] * n[2] + (p[1] - 1) * n[0] * n[2] + (p[2] - 1) * n[0] * n[1];
+}
+
+std::array<int, 3> BoxDecomposition::ranks_per_axis(const std::array<int, 3>& cells, int ranks) {
+  if (ranks < 1) throw std::invalid_argument("BoxDecomposition: ranks must be >= 1");
+  std::array<int, 3> best{0, 0, 0};
+  double fewest = std::numeric_limits<double>::infinity();
+  for (const std::array<int, 3>& p : splits(cells, ranks)) {  // a tie keeps the first found
+    const double cut = cut_faces(cells, p);
+    if (cut < fewest) {
+      fewest = cut;
+      best = p;
     }
   }
   if (best[0] == 0) {

@@ -31,6 +31,11 @@ class BoxDecomposition {
   /// least SlabDecomposition::kMinCells wide along each axis it splits; ties go to more cuts
   /// along x, then y. Throws std::invalid_argument when no split fits.
   static std::array<int, 3> ranks_per_axis(const std::array<int, 3>& cells, int ranks);
+  /// Every split of `ranks` into ranks per axis that leaves each split axis at least kMinCells
+  /// cells per box, more cuts along x first, then along y.
+  static std::vector<std::array<int, 3>> splits(const std::array<int, 3>& cells, int ranks);
+  /// The node faces a split cuts across the whole grid, sum_d (p_d - 1) N_e N_f.
+  static double cut_faces(const std::array<int, 3>& cells, const std::array<int, 3>& per_axis);
   /// Each axis d cut into per_axis[d] slabs balanced by counts[d]; throws std::invalid_argument
   /// when an axis has fewer than kMinCells cells per slab.
   static BoxDecomposition balanced(const AxisCounts& counts, const std::array<int, 3>& per_axis);

@@ -20,7 +20,9 @@ std::array<int, 3> ranks_per_axis_of(const Scene& scene, int ranks);
 
 /// The decomposition of `scene`'s seeded particles P on `ranks` ranks: ranks per axis, the boxes'
 /// first cells, particles per rank (min, mean, max, their imbalance max / mean, empty ranks),
-/// stored grid nodes per rank (max) and halo bytes and messages per step (min, mean, max).
+/// stored grid nodes per rank (max) and halo bytes and messages per step (min, mean, max); and of
+/// every admissible split the one whose busiest box holds the fewest particles
+/// ("least_loaded_split": set it with solver.ranks_per_axis).
 Json plan_decomposition(const Scene& scene, const Particles& P, int ranks);
 
 }  // namespace impact::mpm

@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""`mpm check --ranks N` (mpm/parallel/decomposition_plan.cpp, docs/mpi.md).
+
+The recommended grid (50 x 20 x 20 cells, one field, MUSL) cut 2 x 2 x 1 on 4 ranks: a box's
+stored nodes are its cells and 3 halo layers each side within [-1, cells + 1], so an x-low box
+stores 22 x 15 x 23 nodes and sends 3 layers x (15 x 23 + 22 x 23) nodes x 88 B = 224 664 B per
+step, an x-high box 38 x 15 x 23 and 3 x (15 x 23 + 38 x 23) x 88 B = 321 816 B (what the MPI
+test measures a run sending). Then against itself by another path: its "least_loaded_split", found from a summed-volume table of particles per cell,
+must be the split whose busiest box holds the fewest particles among every split of N that
+leaves each split axis at least 3 cells per box (enumerated here), each split's busiest box
+counted by `mpm check` with that split set (particles assigned to boxes one by one).
+
+  decomposition_plan_test.py MPM SCENE RANKS
+"""
+import json
+import subprocess
+import sys
+
+
+def plan(mpm, scene, ranks, split=None):
+    cmd = [mpm, "check", scene, "--ranks", str(ranks)]
+    if split:
+        cmd += ["--set", json.dumps({"solver": {"ranks_per_axis": split}})]
+    done = subprocess.run(cmd, capture_output=True, text=True)
+    assert done.returncode == 0, (cmd, done.stderr)
+    text = done.stdout
+    report = json.loads(text[text.rindex("\n{", 0, len(text) - 2):])
+    return report["decomposition"]
+
+
+def known_split(mpm, scene):
+    p = plan(mpm, scene, 4, [2, 2, 1])
+    halo = p["halo_bytes_sent_per_step [B]"]
+    assert (halo["min"], halo["max"]) == (224664.0, 321816.0), p
+    assert p["halo_messages_sent_per_step"]["max"] == 8 and p["empty_ranks"] == 0, p
+    print(f"2 x 2 x 1 on 4 ranks: {halo['min']:.0f} and {halo['max']:.0f} B per step, by hand too")
+
+
+def main(mpm, scene, ranks):
+    known_split(mpm, scene)
+    automatic = plan(mpm, scene, ranks)
+    resolved = subprocess.run([mpm, "check", scene], capture_output=True, text=True).stdout
+    cells = json.loads(resolved[:resolved.index("\n}\n") + 2])["grid"]["cells"]
+    splits = []
+    for px in range(ranks, 0, -1):
+        for py in range(ranks // px, 0, -1):
+            if ranks % px or (ranks // px) % py:
+                continue
+            p = [px, py, ranks // px // py]
+            if all(p[d] == 1 or cells[d] >= 3 * p[d] for d in range(3)):
+                splits.append(p)
+    busiest = {tuple(p): plan(mpm, scene, ranks, p)["particles_per_rank"]["max"] for p in splits}
+    best = automatic["least_loaded_split"]
+    print(f"{len(splits)} splits of {ranks} ranks, busiest box per split: {busiest}")
+    print(f"least loaded: {best}")
+    assert best["splits_searched"] == len(splits), (best, splits)
+    assert best["particles_per_rank_max"] == min(busiest.values()), (best, busiest)
+    assert busiest[tuple(best["ranks_per_axis"])] == best["particles_per_rank_max"], (best, busiest)
+    assert best["particles_per_rank_max"] <= automatic["particles_per_rank"]["max"]
+    print("OK")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2], int(sys.argv[3]))
