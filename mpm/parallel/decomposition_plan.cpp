@@ -41,7 +41,7 @@ class CellSums {
       : n_{grid.cells[0] + 1, grid.cells[1] + 1, grid.cells[2] + 1},
         sum_(std::size_t(n_[0]) * std::size_t(n_[1]) * std::size_t(n_[2]), 0.0) {
     for (const Vec3& x : P.x) {
-      const std::array<int, 3> c = cell_of(grid, x);
+      const std::array<int, 3> c = grid.cell_of(x);
       sum_[at(c[0] + 1, c[1] + 1, c[2] + 1)] += 1.0;
     }
     for (int i = 1; i < n_[0]; ++i)  // prefix sums along each axis in turn
@@ -80,12 +80,12 @@ constexpr double kMaxTableCells = 32e6;
 
 // Of every admissible split of `ranks`, the one whose busiest box holds the fewest particles
 // (fewer cut node faces on a tie), with the boxes balanced per axis as a run would balance them.
-Json least_loaded_split(const Scene& scene, const Particles& P, int ranks) {
+Json least_loaded_split(const Scene& scene, const Particles& P, const AxisCounts& counts,
+                        int ranks) {
   const std::array<int, 3>& cells = scene.grid.cells;
   if (double(cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1) > kMaxTableCells)
     return "not searched: more than 32e6 cells";
   const CellSums sums(P, scene.grid);
-  const AxisCounts counts = axis_counts(P, scene.grid);
   std::array<int, 3> best{0, 0, 0};
   double fewest = std::numeric_limits<double>::infinity(), best_cut = fewest;
   const std::vector<std::array<int, 3>> splits = BoxDecomposition::splits(cells, ranks);
@@ -111,10 +111,11 @@ Json least_loaded_split(const Scene& scene, const Particles& P, int ranks) {
 }  // namespace
 
 Json plan_decomposition(const Scene& scene, const Particles& P, int ranks) {
+  const AxisCounts counts = axis_counts(P, scene.grid);
   const BoxDecomposition boxes =
-      BoxDecomposition::balanced(axis_counts(P, scene.grid), ranks_per_axis_of(scene, ranks));
+      BoxDecomposition::balanced(counts, ranks_per_axis_of(scene, ranks));
   std::vector<double> held(std::size_t(ranks), 0.0), nodes(held), bytes(held), messages(held);
-  for (const Vec3& x : P.x) held[std::size_t(boxes.owner_of_cell(cell_of(scene.grid, x)))] += 1.0;
+  for (const Vec3& x : P.x) held[std::size_t(boxes.owner_of_cell(scene.grid.cell_of(x)))] += 1.0;
   const int fields = scene.field_count();
   const bool stress = fields > 1 && scene.physics.contact.type == ContactType::friction;
   for (int r = 0; r < ranks; ++r) {
@@ -141,7 +142,7 @@ Json plan_decomposition(const Scene& scene, const Particles& P, int ranks) {
           {"grid_nodes_per_rank", spread(nodes)},
           {"halo_bytes_sent_per_step [B]", spread(bytes)},
           {"halo_messages_sent_per_step", spread(messages)},
-          {"least_loaded_split", least_loaded_split(scene, P, ranks)}};
+          {"least_loaded_split", least_loaded_split(scene, P, counts, ranks)}};
 }
 
 }  // namespace impact::mpm

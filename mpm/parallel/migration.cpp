@@ -51,21 +51,12 @@ void unpack(Particles& P, const std::vector<char>& in, const std::vector<bool>& 
 
 }  // namespace
 
-int cell_along(const GridSpec& grid, int d, double x) {
-  const double c = std::floor((x - grid.lower(d)) / grid.spacing()(d));
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid.cells[std::size_t(d)] - 1)));
-}
-
-std::array<int, 3> cell_of(const GridSpec& grid, const Vec3& x) {
-  return {cell_along(grid, 0, x(0)), cell_along(grid, 1, x(1)), cell_along(grid, 2, x(2))};
-}
-
 AxisCounts axis_counts(const Particles& P, const GridSpec& grid, const Communicator* comm) {
   std::vector<double> local(std::size_t(grid.cells[0] + grid.cells[1] + grid.cells[2]), 0.0);
   for (const Vec3& x : P.x) {
     std::size_t offset = 0;
     for (int d = 0; d < 3; ++d) {
-      local[offset + std::size_t(cell_along(grid, d, x(d)))] += 1.0;
+      local[offset + std::size_t(grid.cell_along(d, x(d)))] += 1.0;
       offset += std::size_t(grid.cells[std::size_t(d)]);
     }
   }
@@ -88,7 +79,7 @@ MigrationCounts migrate(Particles& P, const BoxDecomposition& boxes, const GridS
   std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
   std::vector<char> keep(n, 1);
   for (std::size_t p = 0; p < n; ++p) {
-    const int owner = boxes.owner_of_cell(cell_of(grid, P.x[p]));
+    const int owner = boxes.owner_of_cell(grid.cell_of(P.x[p]));
     if (owner == comm.rank()) continue;
     pack(P, p, to[static_cast<std::size_t>(owner)]);
     keep[p] = 0;

@@ -22,11 +22,6 @@ struct MigrationCounts {
   std::size_t received = 0;
 };
 
-/// The cell along axis d of coordinate x (clamped into the grid).
-int cell_along(const GridSpec& grid, int d, double x);
-/// The cell (i, j, k) of position x (clamped into the grid).
-std::array<int, 3> cell_of(const GridSpec& grid, const Vec3& x);
-
 /// Particles per cell along each axis (what BoxDecomposition::balanced splits): of P alone, or
 /// with `comm` summed over the ranks.
 AxisCounts axis_counts(const Particles& P, const GridSpec& grid,

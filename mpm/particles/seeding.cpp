@@ -143,17 +143,13 @@ SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis) 
                                                std::vector<std::size_t>(g.cells[0], 0));
   if (per_axis)
     for (int d = 0; d < 3; ++d) (*per_axis)[std::size_t(d)].assign(std::size_t(g.cells[d]), 0);
-  const Vec3 h = g.spacing();
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const auto [lo, hi] = bounds(scene.objects[oi].geometry);
     for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int i) {
       ++counts[oi][i];
       if (!per_axis) return;
       ++(*per_axis)[0][std::size_t(i)];
-      for (int d = 1; d < 3; ++d) {  // sub-cell centres: the floor is exact
-        const int c = static_cast<int>(std::floor((x(d) - g.lower(d)) / h(d)));
-        ++(*per_axis)[std::size_t(d)][std::size_t(std::clamp(c, 0, g.cells[d] - 1))];
-      }
+      for (int d = 1; d < 3; ++d) ++(*per_axis)[std::size_t(d)][std::size_t(g.cell_along(d, x(d)))];
     });
   }
   return counts;
@@ -186,14 +182,12 @@ Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts&
 Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
                    const std::array<int, 3>& end, const SeedCounts& counts) {
   Particles p = seed_columns(scene, first[0], end[0], counts);
-  const GridSpec& g = scene.grid;
-  const Vec3 h = g.spacing();
   const std::size_t n = p.size();
   std::vector<char> keep(n, 1);
   std::size_t kept = 0;
   for (std::size_t q = 0; q < n; ++q) {
     for (int d = 1; d < 3; ++d) {
-      const int c = static_cast<int>(std::floor((p.x[q](d) - g.lower(d)) / h(d)));
+      const int c = scene.grid.cell_along(d, p.x[q](d));
       if (c < first[std::size_t(d)] || c >= end[std::size_t(d)]) keep[q] = 0;
     }
     kept += keep[q] ? 1 : 0;

@@ -13,6 +13,9 @@ namespace impact::mpm {
 
 namespace {
 
+// The tags of the boxes' boundaries along x, y and z (format 6).
+constexpr const char* kBoxTags[3] = {"boxes_x", "boxes_y", "boxes_z"};
+
 constexpr char kMagic[16] = {'I', 'M', 'P', 'A', 'C', 'T', '-', 'M',
                              'P', 'M', '-', 'C', 'K', 'P', 'T', '\n'};
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
@@ -182,8 +185,7 @@ void Simulation::save(CheckpointWriter& out) const {
   out.array("fault", P.fault);
   out.array("removed", P.removed);
   out.array("id", P.id);
-  for (const char* axis : {"boxes_x", "boxes_y", "boxes_z"})
-    out.array(axis, boxes_.axis(axis[6] - 'x').first_cells());
+  for (int d = 0; d < 3; ++d) out.array(kBoxTags[d], boxes_.axis(d).first_cells());
   out.value(static_cast<std::int64_t>(rebalances_));
   out.section("simulation", 1, 3 * sizeof(double) + 4 * sizeof(std::int64_t));
   out.value(time_);
@@ -239,13 +241,12 @@ void Simulation::load(CheckpointReader& in) {
   in.array("removed", P.removed, P.removed.size());
   in.array("id", P.id, P.id.size());
   std::array<SlabDecomposition, 3> axes;
-  for (const char* axis : {"boxes_x", "boxes_y", "boxes_z"}) {
-    const int d = axis[6] - 'x';
+  for (int d = 0; d < 3; ++d) {
     std::vector<int> first_cells;
-    in.array(axis, first_cells, std::uint64_t(boxes_.axis(d).ranks()) + 1);
+    in.array(kBoxTags[d], first_cells, std::uint64_t(boxes_.axis(d).ranks()) + 1);
     if (first_cells.front() != 0 || first_cells.back() != scene_.grid.cells[std::size_t(d)] ||
         !std::is_sorted(first_cells.begin(), first_cells.end()))
-      in.fail(std::string(axis) + ": box boundaries out of order (corrupt checkpoint)");
+      in.fail(std::string(kBoxTags[d]) + ": box boundaries out of order (corrupt checkpoint)");
     axes[std::size_t(d)] = SlabDecomposition(std::move(first_cells));
   }
   boxes_ = BoxDecomposition(std::move(axes));

@@ -3,7 +3,9 @@
 // applied over it as an RFC 7396 JSON merge patch, recursively. Errors name file + key path.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +45,16 @@ struct GridSpec {
   bool active_blocks = true;
   Outflow outflow = Outflow::stop;
   Vec3 spacing() const { return (upper - lower).cwiseQuotient(Vec3(cells[0], cells[1], cells[2])); }
+  /// The cell along axis d holding coordinate x, clamped into [0, cells_d - 1] (seed points,
+  /// migration and the domain decomposition's counts all bin particles by it).
+  int cell_along(int d, double x) const {
+    const double c = std::floor((x - lower(d)) / spacing()(d));
+    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells[std::size_t(d)] - 1)));
+  }
+  /// The cell (i, j, k) holding position x, clamped into the grid.
+  std::array<int, 3> cell_of(const Vec3& x) const {
+    return {cell_along(0, x(0)), cell_along(1, x(1)), cell_along(2, x(2))};
+  }
 };
 
 struct TimeSpec {
