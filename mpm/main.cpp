@@ -29,7 +29,8 @@ const char* kFooter =
     "SIGTERM, after which the run stops with 128 + the signal number). DIR defaults to the\n"
     "scene's output.directory. run and check refuse (exit 4) a scene whose memory estimate\n"
     "exceeds the available memory. Under mpirun -np N (or srun), with a build that has MPI, the\n"
-    "grid is split into N slabs along x; rank 0 writes every file (docs/mpi.md).\n"
+    "grid is split into N boxes (solver.ranks_per_axis, or the split cutting the fewest node\n"
+    "faces); check --ranks N plans it. Rank 0 writes every file (docs/mpi.md).\n"
     "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused\n"
     "restart), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
 

@@ -87,8 +87,9 @@ SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis);
 /// `counts`: seed_counts_per_column(scene). One rank's slab, seeded without the rest.
 Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts& counts);
 
-/// What seed_particles() creates in the cells [first_d, end_d) per axis only (one rank's box):
-/// seed_columns() of its x range, without the points outside its y and z ranges.
+/// What seed_particles() creates in the cells [first_d, end_d) per axis only (one rank's box), as
+/// seed_columns() does for columns: it walks its x range's points for their seed indices but
+/// stores only its own, in exactly reserved arrays (no more than the box's share at any time).
 Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
                    const std::array<int, 3>& end, const SeedCounts& counts);
 

@@ -9,11 +9,16 @@
 
 namespace impact::mpm::test {
 
-inline Scene verification_scene(const std::string& name, const Json& patch = Json::object()) {
-  const std::string file = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/verification/" + name;
+/// A scene shipped under data/scenes/ (`path` relative to it), with `patch` merged on top.
+inline Scene shipped_scene(const std::string& path, const Json& patch = Json::object()) {
+  const std::string file = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/" + path;
   Json doc = load_scene_document(file);
   doc.merge_patch(patch);
   return read_scene(doc, file);
+}
+
+inline Scene verification_scene(const std::string& name, const Json& patch = Json::object()) {
+  return shipped_scene("verification/" + name, patch);
 }
 
 inline Json with_solver(const char* interpolation, const char* scheme) {

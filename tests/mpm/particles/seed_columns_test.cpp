@@ -10,26 +10,16 @@
 #include <cmath>
 #include <string>
 
+#include "../verification_helpers.hpp"
 #include "mpm/particles/particles.hpp"
-#include "mpm/scene/scene.hpp"
 
 using namespace impact::mpm;
 using impact::Vec3;
 
-namespace {
-
-Scene recommended() {
-  const std::string file =
-      std::string(IMPACT_SOURCE_DIR) + "/data/scenes/sphere_cylinder/recommended.json";
-  return read_scene(load_scene_document(file), file);
-}
-
-}  // namespace
-
 BOOST_AUTO_TEST_SUITE(mpm_seed_columns)
 
 BOOST_AUTO_TEST_CASE(the_counts_per_column_add_up_to_the_whole_seeding) {
-  const Scene scene = recommended();
+  const Scene scene = test::shipped_scene("sphere_cylinder/recommended.json");
   const Particles all = seed_particles(scene);
   const auto counts = seed_counts_per_column(scene);
   BOOST_REQUIRE(counts.size() == scene.objects.size());
@@ -46,7 +36,7 @@ BOOST_AUTO_TEST_CASE(the_counts_per_column_add_up_to_the_whole_seeding) {
 }
 
 BOOST_AUTO_TEST_CASE(column_ranges_seed_the_same_particles_with_their_seed_indices) {
-  const Scene scene = recommended();
+  const Scene scene = test::shipped_scene("sphere_cylinder/recommended.json");
   const Particles all = seed_particles(scene);
   const auto counts = seed_counts_per_column(scene);
   const int cells = scene.grid.cells[0];
@@ -83,7 +73,7 @@ BOOST_AUTO_TEST_CASE(column_ranges_seed_the_same_particles_with_their_seed_indic
 }
 
 BOOST_AUTO_TEST_CASE(boxes_seed_every_particle_once_with_its_seed_index) {
-  const Scene scene = recommended();
+  const Scene scene = test::shipped_scene("sphere_cylinder/recommended.json");
   const Particles all = seed_particles(scene);
   SeedAxisCounts per_axis;
   const auto counts = seed_counts_per_column(scene, &per_axis);
