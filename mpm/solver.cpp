@@ -112,6 +112,28 @@ Simulation::SeedCensus Simulation::census(const Scene& scene) {
   return c;
 }
 
+BoxDecomposition Simulation::split(const Scene& scene, const SeedCensus& census,
+                                   const Communicator& comm) {
+  const int ranks = comm.size();
+  const auto count = [&](SplitLoads& loads) {
+    // "least_loaded": each rank counts the seed points of its share of the cell columns (equal
+    // shares of the count, from the census) in every split's boxes; the sums are every rank's.
+    std::vector<std::size_t> prefix(1, 0);
+    for (std::size_t i = 0; i < census.per_axis[0].size(); ++i)
+      prefix.push_back(prefix.back() + census.per_axis[0][i]);
+    const auto column_of_share = [&](int r) {  // first column i with prefix(i) >= r N / R
+      const std::size_t target =
+          (prefix.back() * std::size_t(r) + std::size_t(ranks) - 1) / std::size_t(ranks);
+      return int(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
+    };
+    for_each_seed_cell(scene, column_of_share(comm.rank()), column_of_share(comm.rank() + 1),
+                       [&](const std::array<int, 3>& cell) { loads.add(cell); });
+    loads.loads() = comm.sum(loads.loads());
+  };
+  return BoxDecomposition::balanced(census.per_axis,
+                                    ranks_per_axis_of(scene, ranks, census.per_axis, count));
+}
+
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
     : scene_(scene),
       comm_(comm != nullptr && comm->size() > 1 ? comm : nullptr),
@@ -119,9 +141,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
       // On several ranks every rank counts the seed points per cell (census_), splits the grid
       // the same way, and seeds and stores only its box: no rank ever holds the whole scene or
       // the whole grid.
-      boxes_(comm_ ? BoxDecomposition::balanced(census_.per_axis,
-                                                ranks_per_axis_of(scene, comm_->size()))
-                   : BoxDecomposition(scene.grid.cells)),
+      boxes_(comm_ ? split(scene, census_, *comm_) : BoxDecomposition(scene.grid.cells)),
       particles_(comm_ ? seed_box(scene, boxes_.first_cell(comm_->rank()),
                                   boxes_.end_cell(comm_->rank()), census_.columns)
                        : seed_particles(scene)),

@@ -151,6 +151,9 @@ class Simulation {
     SeedAxisCounts per_axis;
   };
   static SeedCensus census(const Scene& scene);
+  /// The boxes of the ranks (solver.ranks_per_axis), balanced by the census.
+  static BoxDecomposition split(const Scene& scene, const SeedCensus& census,
+                                const Communicator& comm);
 
   Scene scene_;
   const Communicator* comm_ = nullptr;  ///< null on one rank

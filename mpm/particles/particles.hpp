@@ -3,7 +3,9 @@
 // library's PointState, so a new model variable costs no change here.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "models/core/point_state.hpp"
@@ -92,6 +94,11 @@ Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts&
 /// stores only its own, in exactly reserved arrays (no more than the box's share at any time).
 Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
                    const std::array<int, 3>& end, const SeedCounts& counts);
+
+/// Calls f(cell) with the cell (i, j, k) of every seed point of seed_particles() in the cell
+/// columns [first, end) along x, nothing stored (a run's count of each split's box loads).
+void for_each_seed_cell(const Scene& scene, int first, int end,
+                        const std::function<void(const std::array<int, 3>&)>& f);
 
 /// The number of seed points of object `object` (what seed_particles() would create) inside the
 /// closed box [lower, upper]: seeds only the cells the box overlaps (scene validation of the

@@ -174,6 +174,15 @@ SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis) 
   return counts;
 }
 
+void for_each_seed_cell(const Scene& scene, int first, int end,
+                        const std::function<void(const std::array<int, 3>&)>& f) {
+  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+    const auto [lo, hi] = columns_of(scene, oi, first, end);
+    if (lo(0) <= hi(0))
+      for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int) { f(scene.grid.cell_of(x)); });
+  }
+}
+
 Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts& counts) {
   const GridSpec& g = scene.grid;
   return seed_box(scene, {first, 0, 0}, {end, g.cells[1], g.cells[2]}, counts);

@@ -211,15 +211,28 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
       "rebalance_above", 1.2, Range::open(1.0, std::numeric_limits<double>::infinity()),
       "several ranks: re-balance the boxes when the largest particle count exceeds this multiple "
       "of the mean [-]");
-  s.ranks_per_axis =
-      read_int3(r, at(doc, "solver"), "ranks_per_axis", 0, 1 << 20,
-                "several ranks: boxes per axis, their product the rank count; [0, 0, 0] chooses "
-                "the split cutting the fewest node faces",
-                std::array<int, 3>{0, 0, 0});
+  const Json& solver = at(doc, "solver");
+  if (solver.is_object() && solver.contains("ranks_per_axis") &&
+      solver["ranks_per_axis"].is_string()) {
+    s.split = r.choice("ranks_per_axis", {"fewest_cut_faces", "least_loaded"},
+                       "several ranks: the split cutting the fewest node faces, or the one whose "
+                       "busiest box holds the fewest particles",
+                       "fewest_cut_faces") == "least_loaded"
+                  ? SplitRule::least_loaded
+                  : SplitRule::fewest_cut_faces;
+  } else {
+    s.ranks_per_axis = read_int3(
+        r, solver, "ranks_per_axis", 0, 1 << 20,
+        "several ranks: boxes per axis, their product the rank count; [0, 0, 0] chooses the "
+        "split cutting the fewest node faces (\"fewest_cut_faces\"), \"least_loaded\" the one "
+        "whose busiest box holds the fewest particles",
+        std::array<int, 3>{0, 0, 0});
+  }
   const auto& p = s.ranks_per_axis;
   if ((p[0] == 0 || p[1] == 0 || p[2] == 0) && !(p[0] == 0 && p[1] == 0 && p[2] == 0))
     r.problems().add(r.key_path("ranks_per_axis"),
-                     "expected three integers >= 1, or [0, 0, 0] for the automatic split");
+                     "expected three integers >= 1, [0, 0, 0] for the automatic split, or "
+                     "\"least_loaded\"");
   r.reject_unknown_keys();
 }
 

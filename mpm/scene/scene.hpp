@@ -68,6 +68,9 @@ struct TimeSpec {
   double max_energy_growth = 1.0;
 };
 
+/// How a run on several ranks chooses its ranks per axis (solver.ranks_per_axis, docs/mpi.md).
+enum class SplitRule { fewest_cut_faces, least_loaded };
+
 struct SolverSpec {
   /// The shape functions' kName (mpm/shape/shape.hpp): gimp (27-node uGIMP) or linear (8-node
   /// trilinear).
@@ -78,9 +81,12 @@ struct SolverSpec {
   /// On several ranks (docs/mpi.md): the boxes are re-balanced by particle count when the largest
   /// rank's count exceeds this multiple of the mean [-].
   double rebalance_above = 1.2;
-  /// On several ranks: boxes per axis (product = the rank count); {0, 0, 0}: the split that cuts
-  /// the fewest node faces (BoxDecomposition::ranks_per_axis).
+  /// On several ranks: boxes per axis (product = the rank count); {0, 0, 0}: chosen by `split`.
   std::array<int, 3> ranks_per_axis{0, 0, 0};
+  /// How {0, 0, 0} chooses: the split cutting the fewest node faces
+  /// (BoxDecomposition::ranks_per_axis), or the one whose busiest box holds the fewest particles
+  /// (SplitLoads, JSON "least_loaded").
+  SplitRule split = SplitRule::fewest_cut_faces;
 };
 
 /// How the velocity fields of different materials interact at shared nodes (Bardenhagen et al.

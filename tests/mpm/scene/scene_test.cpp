@@ -125,16 +125,27 @@ BOOST_AUTO_TEST_CASE(errors_name_the_key_path_and_what_was_expected) {
 }
 
 // solver.ranks_per_axis: three integers >= 1 (their product checked against the rank count when
-// a run starts, mpm/solver.cpp), or [0, 0, 0] for the automatic split (the default).
-BOOST_AUTO_TEST_CASE(ranks_per_axis_is_all_positive_or_all_zero) {
+// a run starts, mpm/solver.cpp), [0, 0, 0] for the automatic split cutting the fewest node faces
+// (the default, also "fewest_cut_faces"), or "least_loaded".
+BOOST_AUTO_TEST_CASE(ranks_per_axis_is_all_positive_or_all_zero_or_a_rule) {
   Json doc = base();
   BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{0, 0, 0}));
+  BOOST_TEST((read_scene(doc, "test.json").solver.split == SplitRule::fewest_cut_faces));
   doc["solver"]["ranks_per_axis"] = {2, 1, 2};
   BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{2, 1, 2}));
-  doc["solver"]["ranks_per_axis"] = {2, 0, 1};
+  doc["solver"]["ranks_per_axis"] = "least_loaded";
+  BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{0, 0, 0}));
+  BOOST_TEST((read_scene(doc, "test.json").solver.split == SplitRule::least_loaded));
+  doc["solver"]["ranks_per_axis"] = "fewest_cut_faces";
+  BOOST_TEST((read_scene(doc, "test.json").solver.split == SplitRule::fewest_cut_faces));
+  doc["solver"]["ranks_per_axis"] = "balanced";
   std::string e = error_of(doc);
-  BOOST_TEST(e.find("/solver/ranks_per_axis: expected three integers >= 1, or [0, 0, 0]") !=
-             std::string::npos);
+  BOOST_TEST(e.find("/solver/ranks_per_axis: unknown name \"balanced\"; known: fewest_cut_faces, "
+                    "least_loaded") != std::string::npos);
+  doc["solver"]["ranks_per_axis"] = {2, 0, 1};
+  e = error_of(doc);
+  BOOST_TEST(e.find("/solver/ranks_per_axis: expected three integers >= 1, [0, 0, 0] for the "
+                    "automatic split, or \"least_loaded\"") != std::string::npos);
   doc["solver"]["ranks_per_axis"] = {2, -1, 1};
   e = error_of(doc);
   BOOST_TEST(e.find("/solver/ranks_per_axis: expected integers in [0, 1048576]") !=
