@@ -115,23 +115,23 @@ Simulation::SeedCensus Simulation::census(const Scene& scene) {
 BoxDecomposition Simulation::split(const Scene& scene, const SeedCensus& census,
                                    const Communicator& comm) {
   const int ranks = comm.size();
-  const auto count = [&](SplitLoads& loads) {
-    // "least_loaded": each rank counts the seed points of its share of the cell columns (equal
-    // shares of the count, from the census) in every split's boxes; the sums are every rank's.
+  // "least_loaded": each rank counts the seed points of an equal share of the cell columns (by
+  // the census's counts); the tables the search builds from them are summed over the ranks.
+  const auto count_cells = [&] {
     std::vector<std::size_t> prefix(1, 0);
-    for (std::size_t i = 0; i < census.per_axis[0].size(); ++i)
-      prefix.push_back(prefix.back() + census.per_axis[0][i]);
-    const auto column_of_share = [&](int r) {  // first column i with prefix(i) >= r N / R
+    for (const std::size_t n : census.per_axis[0]) prefix.push_back(prefix.back() + n);
+    const auto column_of_share = [&](int r) {  // the first column i with prefix(i) >= r N / R
       const std::size_t target =
           (prefix.back() * std::size_t(r) + std::size_t(ranks) - 1) / std::size_t(ranks);
       return int(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
     };
+    std::vector<CellCount> counted;
     for_each_seed_cell(scene, column_of_share(comm.rank()), column_of_share(comm.rank() + 1),
-                       [&](const std::array<int, 3>& cell) { loads.add(cell); });
-    loads.loads() = comm.sum(loads.loads());
+                       [&](const std::array<int, 3>& cell) { count_cell(counted, cell); });
+    return counted;
   };
-  return BoxDecomposition::balanced(census.per_axis,
-                                    ranks_per_axis_of(scene, ranks, census.per_axis, count));
+  return initial_boxes(scene, ranks, census.per_axis, count_cells,
+                       [&](const std::vector<double>& table) { return comm.sum(table); });
 }
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
@@ -365,6 +365,12 @@ void Simulation::rebalance_if_needed() {
   if (!(largest > scene_.solver.rebalance_above * total / comm_->size())) return;
   BoxDecomposition next = BoxDecomposition::balanced(axis_counts(particles_, scene_.grid, comm_),
                                                      boxes_.ranks_per_axis());
+  if (scene_.solver.split == SplitRule::least_loaded && scene_.solver.ranks_per_axis[0] == 0) {
+    std::vector<CellCount> counted;  // this rank's particles, summed over the ranks per table
+    for (const Vec3& x : particles_.x) count_cell(counted, scene_.grid.cell_of(x));
+    next = refine_boundaries(
+        next, counted, [&](const std::vector<double>& t) { return comm_->sum(t); }, nullptr);
+  }
   if (next == boxes_) return;  // already as balanced as boxes can be
   boxes_ = std::move(next);
   rebuild_grid();

@@ -10,15 +10,15 @@
 
 namespace impact::mpm {
 
-std::array<int, 3> ranks_per_axis_of(const Scene& scene, int ranks, const AxisCounts& counts,
-                                     const std::function<void(SplitLoads&)>& count) {
+BoxDecomposition initial_boxes(const Scene& scene, int ranks, const AxisCounts& counts,
+                               const std::function<std::vector<CellCount>()>& count_cells,
+                               const TableSum& sum) {
   const std::array<int, 3>& p = scene.solver.ranks_per_axis;
-  if (p[0] == 0 && scene.solver.split == SplitRule::least_loaded) {
-    SplitLoads loads(scene.grid.cells, counts, ranks);
-    count(loads);
-    return loads.least_loaded().ranks_per_axis;
-  }
-  if (p[0] == 0) return BoxDecomposition::ranks_per_axis(scene.grid.cells, ranks);
+  if (p[0] == 0 && scene.solver.split == SplitRule::least_loaded)
+    return least_loaded_split(scene.grid.cells, counts, ranks, count_cells(), sum).boxes;
+  if (p[0] == 0)
+    return BoxDecomposition::balanced(counts,
+                                      BoxDecomposition::ranks_per_axis(scene.grid.cells, ranks));
   if (p[0] * p[1] * p[2] != ranks) {
     std::ostringstream m;
     m << scene.file << ": /solver/ranks_per_axis: [" << p[0] << ", " << p[1] << ", " << p[2]
@@ -26,7 +26,7 @@ std::array<int, 3> ranks_per_axis_of(const Scene& scene, int ranks, const AxisCo
       << ranks << " (or [0, 0, 0] or \"least_loaded\" for an automatic split)";
     throw std::invalid_argument(m.str());
   }
-  return p;
+  return BoxDecomposition::balanced(counts, p);
 }
 
 namespace {
@@ -39,32 +39,38 @@ Json spread(const std::vector<double>& per_rank) {
           {"max", *std::max_element(per_rank.begin(), per_rank.end())}};
 }
 
-// Each particle counted in its cell for every split.
-void count_particles(const Particles& P, const GridSpec& grid, SplitLoads& loads) {
-  for (const Vec3& x : P.x) loads.add(grid.cell_of(x));
+// The particles per cell (one process: the sums are the identity).
+std::vector<CellCount> count_cells(const Particles& P, const GridSpec& grid) {
+  std::vector<CellCount> counted;
+  for (const Vec3& x : P.x) count_cell(counted, grid.cell_of(x));
+  return counted;
 }
 
-// Of every admissible split of `ranks`, the one whose busiest box holds the fewest particles
-// (fewer cut node faces on a tie), with the boxes balanced per axis as a run would balance them.
-Json least_loaded_split(const Scene& scene, const Particles& P, const AxisCounts& counts,
-                        int ranks) {
-  SplitLoads loads(scene.grid.cells, counts, ranks);
-  count_particles(P, scene.grid, loads);
-  const SplitLoads::Choice best = loads.least_loaded();
+std::vector<double> on_one_process(const std::vector<double>& table) {
+  return table;
+}
+
+// Of every admissible split of `ranks`, the least loaded boxes (split_search.hpp).
+Json least_loaded(const Scene& scene, const Particles& P, const AxisCounts& counts, int ranks) {
+  const SplitChoice best = least_loaded_split(scene.grid.cells, counts, ranks,
+                                              count_cells(P, scene.grid), on_one_process);
   const double mean = double(P.size()) / ranks;
-  return {{"ranks_per_axis", best.ranks_per_axis},
+  return {{"ranks_per_axis", best.boxes.ranks_per_axis()},
+          {"boxes",
+           {{"x", best.boxes.axis(0).first_cells()},
+            {"y", best.boxes.axis(1).first_cells()},
+            {"z", best.boxes.axis(2).first_cells()}}},
           {"particles_per_rank_max", best.busiest},
           {"imbalance (max / mean)", mean > 0.0 ? best.busiest / mean : 1.0},
-          {"splits_searched", loads.splits_searched()}};
+          {"splits_searched", best.splits_searched}};
 }
 
 }  // namespace
 
 Json plan_decomposition(const Scene& scene, const Particles& P, int ranks) {
   const AxisCounts counts = axis_counts(P, scene.grid);
-  const BoxDecomposition boxes = BoxDecomposition::balanced(
-      counts, ranks_per_axis_of(scene, ranks, counts,
-                                [&](SplitLoads& l) { count_particles(P, scene.grid, l); }));
+  const BoxDecomposition boxes = initial_boxes(
+      scene, ranks, counts, [&] { return count_cells(P, scene.grid); }, on_one_process);
   std::vector<double> held(std::size_t(ranks), 0.0), nodes(held), bytes(held), messages(held);
   for (const Vec3& x : P.x) held[std::size_t(boxes.owner_of_cell(scene.grid.cell_of(x)))] += 1.0;
   const int fields = scene.field_count();
@@ -93,7 +99,7 @@ Json plan_decomposition(const Scene& scene, const Particles& P, int ranks) {
           {"grid_nodes_per_rank", spread(nodes)},
           {"halo_bytes_sent_per_step [B]", spread(bytes)},
           {"halo_messages_sent_per_step", spread(messages)},
-          {"least_loaded_split", least_loaded_split(scene, P, counts, ranks)}};
+          {"least_loaded_split", least_loaded(scene, P, counts, ranks)}};
 }
 
 }  // namespace impact::mpm

@@ -15,19 +15,22 @@
 
 namespace impact::mpm {
 
-/// The boxes per axis a run of `scene` on `ranks` ranks uses: solver.ranks_per_axis when given,
-/// else the split cutting the fewest node faces, or with "least_loaded" the least loaded split,
-/// whose box loads `count` fills (SplitLoads::add per particle; a run sums its ranks' shares);
-/// `counts`: the particles per cell along each axis. Throws std::invalid_argument when nothing
-/// fits (the message names the key or the grid).
-std::array<int, 3> ranks_per_axis_of(const Scene& scene, int ranks, const AxisCounts& counts,
-                                     const std::function<void(SplitLoads&)>& count);
+/// The boxes a run of `scene` on `ranks` ranks starts from, each axis balanced by `counts` (the
+/// particles per cell along it): solver.ranks_per_axis when given, else the split cutting the
+/// fewest node faces; with "least_loaded" the least loaded split with refined boundaries
+/// (least_loaded_split) from this process's particles per cell, `count_cells()`, summed over the
+/// ranks by `sum`. Throws std::invalid_argument when nothing fits (the message names the key or
+/// the grid).
+BoxDecomposition initial_boxes(const Scene& scene, int ranks, const AxisCounts& counts,
+                               const std::function<std::vector<CellCount>()>& count_cells,
+                               const TableSum& sum);
 
 /// The decomposition of `scene`'s seeded particles P on `ranks` ranks: ranks per axis, the boxes'
 /// first cells, particles per rank (min, mean, max, their imbalance max / mean, empty ranks),
 /// stored grid nodes per rank (max) and halo bytes and messages per step (min, mean, max); and of
 /// every admissible split the one whose busiest box holds the fewest particles
-/// ("least_loaded_split": what solver.ranks_per_axis "least_loaded" picks).
+/// with its boundaries refined ("least_loaded_split": what solver.ranks_per_axis "least_loaded"
+/// makes).
 Json plan_decomposition(const Scene& scene, const Particles& P, int ranks);
 
 }  // namespace impact::mpm

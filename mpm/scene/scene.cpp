@@ -215,8 +215,8 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
   if (solver.is_object() && solver.contains("ranks_per_axis") &&
       solver["ranks_per_axis"].is_string()) {
     s.split = r.choice("ranks_per_axis", {"fewest_cut_faces", "least_loaded"},
-                       "several ranks: the split cutting the fewest node faces, or the one whose "
-                       "busiest box holds the fewest particles",
+                       "several ranks: the split cutting the fewest node faces, or the least "
+                       "loaded boxes",
                        "fewest_cut_faces") == "least_loaded"
                   ? SplitRule::least_loaded
                   : SplitRule::fewest_cut_faces;
@@ -224,8 +224,8 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
     s.ranks_per_axis = read_int3(
         r, solver, "ranks_per_axis", 0, 1 << 20,
         "several ranks: boxes per axis, their product the rank count; [0, 0, 0] chooses the "
-        "split cutting the fewest node faces (\"fewest_cut_faces\"), \"least_loaded\" the one "
-        "whose busiest box holds the fewest particles",
+        "split cutting the fewest node faces (\"fewest_cut_faces\"), \"least_loaded\" the "
+        "least loaded boxes",
         std::array<int, 3>{0, 0, 0});
   }
   const auto& p = s.ranks_per_axis;

@@ -84,8 +84,8 @@ struct SolverSpec {
   /// On several ranks: boxes per axis (product = the rank count); {0, 0, 0}: chosen by `split`.
   std::array<int, 3> ranks_per_axis{0, 0, 0};
   /// How {0, 0, 0} chooses: the split cutting the fewest node faces
-  /// (BoxDecomposition::ranks_per_axis), or the one whose busiest box holds the fewest particles
-  /// (SplitLoads, JSON "least_loaded").
+  /// (BoxDecomposition::ranks_per_axis), or the least loaded boxes (least_loaded_split, JSON
+  /// "least_loaded": refined boundaries, also when re-balancing).
   SplitRule split = SplitRule::fewest_cut_faces;
 };
 
