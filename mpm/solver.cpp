@@ -131,7 +131,7 @@ BoxDecomposition Simulation::split(const Scene& scene, const SeedCensus& census,
     return counted;
   };
   return initial_boxes(scene, ranks, census.per_axis, count_cells,
-                       [&](const std::vector<double>& table) { return comm.sum(table); });
+                       [&](const std::vector<double>& table) { return comm.sum_counts(table); });
 }
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
@@ -369,7 +369,7 @@ void Simulation::rebalance_if_needed() {
     std::vector<CellCount> counted;  // this rank's particles, summed over the ranks per table
     for (const Vec3& x : particles_.x) count_cell(counted, scene_.grid.cell_of(x));
     next = refine_boundaries(
-        next, counted, [&](const std::vector<double>& t) { return comm_->sum(t); }, nullptr);
+        next, counted, [&](const std::vector<double>& t) { return comm_->sum_counts(t); }, nullptr);
   }
   if (next == boxes_) return;  // already as balanced as boxes can be
   boxes_ = std::move(next);

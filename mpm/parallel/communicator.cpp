@@ -94,6 +94,17 @@ std::vector<double> Communicator::sum(const std::vector<double>& values) const {
   return total;
 }
 
+std::vector<double> Communicator::sum_counts(const std::vector<double>& counts) const {
+  if (!mpi_) return counts;
+  std::vector<double> total(counts.size(), 0.0);
+#ifdef IMPACT_MPI
+  const MpiTimer timer(seconds_);
+  MPI_Allreduce(counts.data(), total.data(), static_cast<int>(counts.size()), MPI_DOUBLE, MPI_SUM,
+                MPI_COMM_WORLD);
+#endif
+  return total;
+}
+
 std::int64_t Communicator::sum(std::int64_t value) const {
   std::int64_t total = value;
 #ifdef IMPACT_MPI

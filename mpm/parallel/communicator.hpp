@@ -47,6 +47,10 @@ class Communicator {
   std::vector<double> sum(const std::vector<double>& values) const;
   double sum(double value) const { return sum(std::vector<double>{value})[0]; }
   std::int64_t sum(std::int64_t value) const;
+  /// Element-wise sums of whole numbers (counts below 2^53, so exact in any order) by one
+  /// reduction: unlike sum(), no rank receives every rank's table (a table of the box search
+  /// on 4 096 ranks would take 1.2 GB per rank as every rank's copies).
+  std::vector<double> sum_counts(const std::vector<double>& counts) const;
   double max(double value) const;
   /// Element-wise maxima over the ranks (exact).
   std::vector<double> max(const std::vector<double>& values) const;

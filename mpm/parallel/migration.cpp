@@ -60,7 +60,7 @@ AxisCounts axis_counts(const Particles& P, const GridSpec& grid, const Communica
       offset += std::size_t(grid.cells[std::size_t(d)]);
     }
   }
-  const std::vector<double> all = comm ? comm->sum(local) : local;  // integers: exact
+  const std::vector<double> all = comm ? comm->sum_counts(local) : local;
   AxisCounts counts;
   std::size_t offset = 0;
   for (int d = 0; d < 3; ++d) {

@@ -33,7 +33,8 @@ inline void count_cell(std::vector<CellCount>& counted, const std::array<int, 3>
     counted.push_back({cell, 1.0});
 }
 
-/// Sums a table over the ranks, element by element (the identity on one process).
+/// Sums a table of counts over the ranks, element by element (Communicator::sum_counts; the
+/// identity on one process).
 using TableSum = std::function<std::vector<double>(const std::vector<double>&)>;
 
 /// `boxes` with each axis's boundaries moved in turn, the other two axes' held, to the cuts that
