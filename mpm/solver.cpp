@@ -106,9 +106,24 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
 
 }  // namespace
 
-Simulation::SeedCensus Simulation::census(const Scene& scene) {
+Simulation::SeedCensus Simulation::census(const Scene& scene, const Communicator& comm) {
+  // Each rank counts an equal block of cell columns and the counts (whole numbers) are summed:
+  // no rank walks every seed point of the scene.
+  const long columns = scene.grid.cells[0], ranks = comm.size(), r = comm.rank();
   SeedCensus c;
-  c.columns = seed_counts_per_column(scene, &c.per_axis);
+  c.columns = seed_counts_per_column(scene, &c.per_axis, int(columns * r / ranks),
+                                     int(columns * (r + 1) / ranks));
+  std::vector<double> table;  // each object's columns, then the cells along each axis
+  for (const auto& object : c.columns)
+    for (const std::size_t n : object) table.push_back(double(n));
+  for (const auto& axis : c.per_axis)
+    for (const std::size_t n : axis) table.push_back(double(n));
+  table = comm.sum_counts(table);
+  std::size_t k = 0;
+  for (auto& object : c.columns)
+    for (std::size_t& n : object) n = std::size_t(table[k++]);
+  for (auto& axis : c.per_axis)
+    for (std::size_t& n : axis) n = std::size_t(table[k++]);
   return c;
 }
 
@@ -137,7 +152,7 @@ BoxDecomposition Simulation::split(const Scene& scene, const SeedCensus& census,
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
     : scene_(scene),
       comm_(comm != nullptr && comm->size() > 1 ? comm : nullptr),
-      census_(comm_ ? census(scene) : SeedCensus{}),
+      census_(comm_ ? census(scene, *comm_) : SeedCensus{}),
       // On several ranks every rank counts the seed points per cell (census_), splits the grid
       // the same way, and seeds and stores only its box: no rank ever holds the whole scene or
       // the whole grid.

@@ -150,7 +150,7 @@ class Simulation {
     SeedCounts columns;
     SeedAxisCounts per_axis;
   };
-  static SeedCensus census(const Scene& scene);
+  static SeedCensus census(const Scene& scene, const Communicator& comm);
   /// The boxes of the ranks (solver.ranks_per_axis), balanced by the census.
   static BoxDecomposition split(const Scene& scene, const SeedCensus& census,
                                 const Communicator& comm);

@@ -83,6 +83,9 @@ SeedCounts seed_counts_per_column(const Scene& scene);
 /// decomposition are balanced by), counted in the same pass as seed_counts_per_column.
 using SeedAxisCounts = std::array<std::vector<std::size_t>, 3>;
 SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis);
+/// The same counted in the cell columns [first, end) along x only (zero elsewhere): the census
+/// of several ranks, each counting a block of columns, the blocks' counts then summed.
+SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis, int first, int end);
 
 /// What seed_particles() creates in the cell columns [first, end) only, in the same order, with
 /// the same doubles, and each with its seed index (Particles::id: its index in seed_particles());

@@ -157,13 +157,19 @@ SeedCounts seed_counts_per_column(const Scene& scene) {
 }
 
 SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis) {
+  return seed_counts_per_column(scene, per_axis, 0, scene.grid.cells[0]);
+}
+
+SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis, int first,
+                                  int end) {
   const GridSpec& g = scene.grid;
   std::vector<std::vector<std::size_t>> counts(scene.objects.size(),
                                                std::vector<std::size_t>(g.cells[0], 0));
   if (per_axis)
     for (int d = 0; d < 3; ++d) (*per_axis)[std::size_t(d)].assign(std::size_t(g.cells[d]), 0);
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
-    const auto [lo, hi] = bounds(scene.objects[oi].geometry);
+    const auto [lo, hi] = columns_of(scene, oi, first, end);
+    if (lo(0) > hi(0)) continue;
     for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int i) {
       ++counts[oi][i];
       if (!per_axis) return;

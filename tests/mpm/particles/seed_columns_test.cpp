@@ -4,6 +4,7 @@
 // seeding as its id; the ranges of a split together give every particle once. The recommended
 // sphere-cylinder: two objects (the later one's points inside the earlier one are skipped) and a
 // sphere that lies in some columns only. The counts per column add up to the whole seeding.
+// Blocks of columns counted apart (the census of several ranks) add up to the whole count.
 // seed_box: the boxes of a 2 x 3 x 2 split seed every particle once, with the same doubles and
 // seed indices, and the counts per cell along each axis match the whole seeding's cells.
 #include <boost/test/unit_test.hpp>
@@ -33,6 +34,32 @@ BOOST_AUTO_TEST_CASE(the_counts_per_column_add_up_to_the_whole_seeding) {
     total += of_object;
   }
   BOOST_TEST(total == all.size());
+}
+
+// The census of several ranks: each counts a block of columns, the blocks' counts summed must be
+// the whole count, and a block counts nothing outside its columns.
+BOOST_AUTO_TEST_CASE(blocks_of_columns_count_their_columns_only_and_add_up) {
+  const Scene scene = test::shipped_scene("sphere_cylinder/recommended.json");
+  SeedAxisCounts whole_axes;
+  const auto whole = seed_counts_per_column(scene, &whole_axes);
+  const std::vector<int> cuts = {0, 3, 5, 6, 7, 13, 29, 29, scene.grid.cells[0]};
+  SeedCounts summed(whole.size(), std::vector<std::size_t>(whole[0].size(), 0));
+  SeedAxisCounts summed_axes;
+  for (std::size_t d = 0; d < 3; ++d) summed_axes[d].assign(whole_axes[d].size(), 0);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    SeedAxisCounts axes;
+    const auto block = seed_counts_per_column(scene, &axes, cuts[k], cuts[k + 1]);
+    for (std::size_t o = 0; o < block.size(); ++o)
+      for (std::size_t i = 0; i < block[o].size(); ++i) {
+        const bool inside = int(i) >= cuts[k] && int(i) < cuts[k + 1];
+        BOOST_TEST(block[o][i] == (inside ? whole[o][i] : 0u));
+        summed[o][i] += block[o][i];
+      }
+    for (std::size_t d = 0; d < 3; ++d)
+      for (std::size_t c = 0; c < axes[d].size(); ++c) summed_axes[d][c] += axes[d][c];
+  }
+  BOOST_TEST(summed == whole);
+  for (std::size_t d = 0; d < 3; ++d) BOOST_TEST(summed_axes[d] == whole_axes[d]);
 }
 
 BOOST_AUTO_TEST_CASE(column_ranges_seed_the_same_particles_with_their_seed_indices) {
