@@ -111,8 +111,13 @@ Simulation::SeedCensus Simulation::census(const Scene& scene, const Communicator
   // no rank walks every seed point of the scene.
   const long columns = scene.grid.cells[0], ranks = comm.size(), r = comm.rank();
   SeedCensus c;
-  c.columns = seed_counts_per_column(scene, &c.per_axis, int(columns * r / ranks),
-                                     int(columns * (r + 1) / ranks));
+  const bool least_loaded =
+      scene.solver.split == SplitRule::least_loaded && scene.solver.ranks_per_axis[0] == 0;
+  c.columns = seed_counts_per_column(
+      scene, &c.per_axis, int(columns * r / ranks), int(columns * (r + 1) / ranks),
+      least_loaded ? std::function<void(const std::array<int, 3>&)>(
+                         [&](const std::array<int, 3>& cell) { count_cell(c.cells, cell); })
+                   : nullptr);
   std::vector<double> table;  // each object's columns, then the cells along each axis
   for (const auto& object : c.columns)
     for (const std::size_t n : object) table.push_back(double(n));
@@ -129,24 +134,11 @@ Simulation::SeedCensus Simulation::census(const Scene& scene, const Communicator
 
 BoxDecomposition Simulation::split(const Scene& scene, const SeedCensus& census,
                                    const Communicator& comm) {
-  const int ranks = comm.size();
-  // "least_loaded": each rank counts the seed points of an equal share of the cell columns (by
-  // the census's counts); the tables the search builds from them are summed over the ranks.
-  const auto count_cells = [&] {
-    std::vector<std::size_t> prefix(1, 0);
-    for (const std::size_t n : census.per_axis[0]) prefix.push_back(prefix.back() + n);
-    const auto column_of_share = [&](int r) {  // the first column i with prefix(i) >= r N / R
-      const std::size_t target =
-          (prefix.back() * std::size_t(r) + std::size_t(ranks) - 1) / std::size_t(ranks);
-      return int(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
-    };
-    std::vector<CellCount> counted;
-    for_each_seed_cell(scene, column_of_share(comm.rank()), column_of_share(comm.rank() + 1),
-                       [&](const std::array<int, 3>& cell) { count_cell(counted, cell); });
-    return counted;
-  };
-  return initial_boxes(scene, ranks, census.per_axis, count_cells,
-                       [&](const std::vector<double>& table) { return comm.sum_counts(table); });
+  // "least_loaded": the census counted this rank's block's points per cell; the tables the
+  // search builds from them are summed over the ranks.
+  return initial_boxes(
+      scene, comm.size(), census.per_axis, [&] { return census.cells; },
+      [&](const std::vector<double>& table) { return comm.sum_counts(table); });
 }
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)

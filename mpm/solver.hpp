@@ -14,6 +14,7 @@
 #include "mpm/parallel/box_decomposition.hpp"
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/halo_exchange.hpp"
+#include "mpm/parallel/split_search.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/scene/scene.hpp"
 #include "mpm/shape/shape.hpp"
@@ -149,6 +150,8 @@ class Simulation {
   struct SeedCensus {
     SeedCounts columns;
     SeedAxisCounts per_axis;
+    /// This rank's block's points per cell, for the "least_loaded" search (else empty).
+    std::vector<CellCount> cells;
   };
   static SeedCensus census(const Scene& scene, const Communicator& comm);
   /// The boxes of the ranks (solver.ranks_per_axis), balanced by the census.

@@ -84,8 +84,11 @@ SeedCounts seed_counts_per_column(const Scene& scene);
 using SeedAxisCounts = std::array<std::vector<std::size_t>, 3>;
 SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis);
 /// The same counted in the cell columns [first, end) along x only (zero elsewhere): the census
-/// of several ranks, each counting a block of columns, the blocks' counts then summed.
-SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis, int first, int end);
+/// of several ranks, each counting a block of columns, the blocks' counts then summed. `each`,
+/// when given, also sees every point's cell (i, j, k), in seed order.
+SeedCounts seed_counts_per_column(
+    const Scene& scene, SeedAxisCounts* per_axis, int first, int end,
+    const std::function<void(const std::array<int, 3>&)>& each = nullptr);
 
 /// What seed_particles() creates in the cell columns [first, end) only, in the same order, with
 /// the same doubles, and each with its seed index (Particles::id: its index in seed_particles());
@@ -97,11 +100,6 @@ Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts&
 /// stores only its own, in exactly reserved arrays (no more than the box's share at any time).
 Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
                    const std::array<int, 3>& end, const SeedCounts& counts);
-
-/// Calls f(cell) with the cell (i, j, k) of every seed point of seed_particles() in the cell
-/// columns [first, end) along x, nothing stored (a run's count of each split's box loads).
-void for_each_seed_cell(const Scene& scene, int first, int end,
-                        const std::function<void(const std::array<int, 3>&)>& f);
 
 /// The number of seed points of object `object` (what seed_particles() would create) inside the
 /// closed box [lower, upper]: seeds only the cells the box overlaps (scene validation of the

@@ -160,8 +160,8 @@ SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis) 
   return seed_counts_per_column(scene, per_axis, 0, scene.grid.cells[0]);
 }
 
-SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis, int first,
-                                  int end) {
+SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis, int first, int end,
+                                  const std::function<void(const std::array<int, 3>&)>& each) {
   const GridSpec& g = scene.grid;
   std::vector<std::vector<std::size_t>> counts(scene.objects.size(),
                                                std::vector<std::size_t>(g.cells[0], 0));
@@ -172,21 +172,13 @@ SeedCounts seed_counts_per_column(const Scene& scene, SeedAxisCounts* per_axis, 
     if (lo(0) > hi(0)) continue;
     for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int i) {
       ++counts[oi][i];
+      if (each) each(g.cell_of(x));
       if (!per_axis) return;
       ++(*per_axis)[0][std::size_t(i)];
       for (int d = 1; d < 3; ++d) ++(*per_axis)[std::size_t(d)][std::size_t(g.cell_along(d, x(d)))];
     });
   }
   return counts;
-}
-
-void for_each_seed_cell(const Scene& scene, int first, int end,
-                        const std::function<void(const std::array<int, 3>&)>& f) {
-  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
-    const auto [lo, hi] = columns_of(scene, oi, first, end);
-    if (lo(0) <= hi(0))
-      for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int) { f(scene.grid.cell_of(x)); });
-  }
 }
 
 Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts& counts) {
