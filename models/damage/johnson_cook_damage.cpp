@@ -28,7 +28,9 @@ double triaxiality(const Mat3& stress) {
 
 double jc_damage_increment(const JohnsonCookDamageParams& p, double delta_plastic_strain,
                            double triaxiality, double plastic_strain_rate, double temperature) {
-  if (p.cutoff_triaxiality && triaxiality < *p.cutoff_triaxiality) return 0.0;
+  if (p.cutoff_triaxiality &&
+      triaxiality <= *p.cutoff_triaxiality + cutoff_tolerance(*p.cutoff_triaxiality))
+    return 0.0;
   return delta_plastic_strain /
          jc_fracture_strain(p, triaxiality, plastic_strain_rate, temperature);
 }
@@ -47,9 +49,10 @@ JohnsonCookDamageParams read_johnson_cook_damage(JsonReader& r, double room_temp
   p.min_fracture_strain = r.number_or("min_fracture_strain", 1e-3, Range::positive(),
                                       "floor on the fracture strain eps_f [-]");
   if (r.has("cutoff_triaxiality")) {
-    p.cutoff_triaxiality = r.number("cutoff_triaxiality", Range::closed(-10.0, 0.0),
-                                    "triaxiality below which no damage accumulates [-] (Bao & "
-                                    "Wierzbicki 2005: -1/3)");
+    p.cutoff_triaxiality =
+        r.number("cutoff_triaxiality", Range::closed(-10.0, 0.0),
+                 "triaxiality at and below which no damage accumulates [-] (Bao & "
+                 "Wierzbicki 2005: -1/3)");
   }
   // eps_f at zero triaxiality, reference rate and room temperature is D1 + D2; a non-positive value
   // would put every point on the floor even in pure shear: surely a typo (e.g. a sign of D2).

@@ -17,12 +17,16 @@
 //    the floor already makes damage grow fastest at high triaxiality, and compression only raises
 //    eps_f (D3 < 0), which is the model's intent.
 // Optional cut-off (not in the report): Bao & Wierzbicki (2005), "On the cut-off value of negative
-// triaxiality for fracture", Eng. Fract. Mech. 72:1049-1069, found no fracture below sigma* = -1/3
-// in their upsetting tests; with `cutoff_triaxiality` a plastic increment below it adds no damage,
-// so a compressed core (a Taylor rod's) does not fail on strain alone.
+// triaxiality for fracture", Eng. Fract. Mech. 72:1049-1069, found no fracture at or below
+// sigma* = -1/3 in their upsetting tests; with `cutoff_triaxiality` a plastic increment at or below
+// it adds no damage, so a compressed core (a Taylor rod's) does not fail on strain alone. The
+// cut-off is inclusive to round-off (cutoff_tolerance): -1/3 is uniaxial compression itself, whose
+// computed sigma* lands a few ulp on either side of -1/3 depending on the frame.
 // T_room and T_melt are the material's (one source of truth with the flow stress).
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "models/core/input.hpp"
@@ -38,12 +42,21 @@ struct JohnsonCookDamageParams {
   double D5 = 0.0;                     ///< temperature coefficient [-]
   double reference_strain_rate = 1.0;  ///< rate0 [1/s]
   double min_fracture_strain = 1e-3;   ///< floor on eps_f [-]
-  /// Below this triaxiality no damage accumulates (Bao & Wierzbicki 2005 place the cut-off at
-  /// -1/3); absent: damage grows at every triaxiality (the report's eq. 7).
+  /// At and below this triaxiality (to cutoff_tolerance) no damage accumulates (Bao & Wierzbicki
+  /// 2005 place the cut-off at -1/3); absent: damage grows at every triaxiality (the report's
+  /// eq. 7).
   std::optional<double> cutoff_triaxiality;
   double room_temperature = 294.0;  ///< [K]
   double melt_temperature = 925.0;  ///< [K]
 };
+
+/// The round-off band above the cut-off that still counts as at it: 8 eps (1 + |cutoff|), eps =
+/// 2^-52. sigma_m and sigma_eq carry errors of a few eps of the stress scale max(|sigma_m|,
+/// sigma_eq), so sigma* = sigma_m / sigma_eq is off by a few eps (1 + |sigma*|): randomly rotated
+/// uniaxial compressions give -1/3 to within 0.75 eps (1e6 frames). 2.4e-15 at -1/3.
+inline double cutoff_tolerance(double cutoff) {
+  return 8.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(cutoff));
+}
 
 /// Fracture strain eps_f(sigma*, rate, T) >= min_fracture_strain; rate [1/s], T [K].
 double jc_fracture_strain(const JohnsonCookDamageParams& p, double triaxiality,
@@ -55,7 +68,8 @@ double jc_fracture_strain(const JohnsonCookDamageParams& p, double triaxiality,
 double triaxiality(const Mat3& stress);
 
 /// Damage increment d_ep / eps_f for a plastic-strain increment d_ep >= 0 taken at the given
-/// triaxiality, plastic strain rate [1/s] and temperature [K]; 0 below cutoff_triaxiality.
+/// triaxiality, plastic strain rate [1/s] and temperature [K]; 0 at or below cutoff_triaxiality
+/// (+ cutoff_tolerance).
 double jc_damage_increment(const JohnsonCookDamageParams& p, double delta_plastic_strain,
                            double triaxiality, double plastic_strain_rate, double temperature);
 

@@ -5,8 +5,11 @@
 #include "models/damage/johnson_cook_damage.hpp"
 #include "support/input_problems.hpp"
 
+#include <Eigen/Geometry>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <limits>
+#include <random>
 #include <string>
 
 using namespace impact;
@@ -180,6 +183,47 @@ BOOST_AUTO_TEST_CASE(cutoff_triaxiality_gives_no_damage_below_it_and_the_closed_
              boost::test_tools::tolerance(1e-14));
   p.cutoff_triaxiality.reset();  // the report's eq. 7: damage at every triaxiality
   BOOST_TEST(jc_damage_increment(p, 0.01, -0.34, 1.0, 294.0) > 0.0);
+}
+
+// Uniaxial compression is sigma* = -1/3 exactly; computed in a rotated frame it lands a few ulp on
+// either side. 1000 random frames and stress magnitudes 1 MPa..10 GPa: triaxiality() is within
+// 1 eps of -1/3 and at or above it in most frames (the strict cut-off accrued damage there), yet
+// with the cut-off at -1/3 no frame accrues damage. Just above the band (2 x cutoff_tolerance, and
+// -1/3 + 1e-6) the closed form applies again: the band is round-off wide, not a shifted cut-off.
+BOOST_AUTO_TEST_CASE(
+    uniaxial_compression_in_rotated_frames_accrues_no_damage_at_cutoff_minus_one_third) {
+  JohnsonCookDamageParams p = al6061();
+  p.cutoff_triaxiality = -1.0 / 3.0;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  std::mt19937_64 gen(37);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int above = 0, damaged = 0;
+  double worst = 0.0;
+  for (int i = 0; i < 1000; ++i) {
+    const Mat3 R =
+        Eigen::Quaterniond(u(gen), u(gen), u(gen), u(gen)).normalized().toRotationMatrix();
+    const double magnitude = std::pow(10.0, 8.0 + 2.0 * u(gen));
+    const double t = triaxiality(R * diagonal(-magnitude, 0.0, 0.0) * R.transpose());
+    above += t >= -1.0 / 3.0;
+    worst = std::max(worst, std::abs(t + 1.0 / 3.0));
+    damaged += jc_damage_increment(p, 0.01, t, 1.0, 294.0) != 0.0;
+  }
+  BOOST_TEST_MESSAGE("rotated uniaxial compression: "
+                     << above << " of 1000 frames at or above -1/3, |sigma* + 1/3| <= "
+                     << worst / eps << " eps");
+  BOOST_TEST(above > 0);  // round-off does put frames at or above the cut-off
+  BOOST_TEST(worst <= eps);
+  BOOST_TEST(damaged == 0);
+  const double band = cutoff_tolerance(-1.0 / 3.0);
+  BOOST_TEST(band == 8.0 * eps * 4.0 / 3.0);
+  BOOST_TEST(jc_damage_increment(p, 0.01, -1.0 / 3.0 + band, 1.0, 294.0) == 0.0);
+  for (const double t : {-1.0 / 3.0 + 2.0 * band, -1.0 / 3.0 + 1e-6}) {
+    BOOST_TEST_CONTEXT("sigma* = -1/3 + " << t + 1.0 / 3.0) {
+      BOOST_TEST(jc_damage_increment(p, 0.01, t, 1.0, 294.0) ==
+                     0.01 / (-0.77 + 1.45 * std::exp(-0.47 * t)),
+                 boost::test_tools::tolerance(1e-14));
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(reader_takes_a_cutoff_and_rejects_a_positive_one) {

@@ -3,8 +3,11 @@
 // Johnson-Cook curve, objectivity under rigid rotation, heating, damage, melting, failure.
 #include "models/material/elastic_plastic.hpp"
 
+#include <Eigen/Geometry>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <limits>
+#include <random>
 
 #include "models/material/material.hpp"
 
@@ -311,6 +314,54 @@ BOOST_AUTO_TEST_CASE(damage_cutoff_stops_damage_in_confined_compression_not_in_t
   }
   BOOST_TEST(t.damage > 0.0);
   BOOST_TEST(t.damage == u.damage);
+}
+
+BOOST_AUTO_TEST_CASE(
+    uniaxial_compression_in_rotated_frames_accrues_no_damage_at_cutoff_minus_one_third) {
+  // Perfect plasticity (B = C = 0, no heating) at sigma_y = A under sigma = -A n n: an isochoric
+  // compression along n, D = -rate (3/2 n n - 1/2 I), keeps the stress uniaxial (the plastic flow
+  // is along the deviator, tr D = 0 keeps the pressure A/3), and from a state without a previous
+  // plastic rate the return starts at its elastic bound, which is the root: sigma* = -1/3 to
+  // round-off. One plastic step in each of 1000 random directions n: with the cut-off at -1/3
+  // (JSON's closest double) none accrues damage, without it every one does.
+  const auto material = [](const std::string& damage) {
+    return al6061(Json::parse(R"({"constitutive_model": {"erosion": {"algorithm": "none"},
+        "adiabatic_heating": {"enabled": false}, "flow_stress": {"B": 0.0, "C": 0.0})" +
+                              damage + "}}"));
+  };
+  const Material with = material(R"(, "damage": {"cutoff_triaxiality": -0.3333333333333333})");
+  const Material without = material("");
+  BOOST_TEST(*with.model.params().damage->cutoff_triaxiality == -1.0 / 3.0);
+  const double A = 324e6, rate = 1e2, dt = 1e-6;
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int plastic = 0, above = 0, damaged = 0, damaged_without = 0;
+  double worst = 0.0;
+  for (int i = 0; i < 1000; ++i) {
+    const Mat3 Q =
+        Eigen::Quaterniond(u(gen), u(gen), u(gen), u(gen)).normalized().toRotationMatrix();
+    const Mat3 L = Q * diag(-rate, 0.5 * rate, 0.5 * rate) * Q.transpose();
+    const Mat3 F1 =
+        Q * diag(std::exp(-rate * dt), std::exp(0.5 * rate * dt), std::exp(0.5 * rate * dt)) *
+        Q.transpose();
+    PointState s = with.model.initial_state(294.0), a, b;
+    s.stress = Q * diag(-A, 0.0, 0.0) * Q.transpose();
+    plastic += with.model.update(s, L, F1, dt, a).plastic;
+    without.model.update(s, L, F1, dt, b);
+    const double t = triaxiality(a.stress);
+    above += t >= -1.0 / 3.0;
+    worst = std::max(worst, std::abs(t + 1.0 / 3.0));
+    damaged += a.damage != 0.0;
+    damaged_without += b.damage > 0.0;
+  }
+  BOOST_TEST_MESSAGE("rotated uniaxial compression: "
+                     << above << " of 1000 steps at or above -1/3, |sigma* + 1/3| <= "
+                     << worst / std::numeric_limits<double>::epsilon() << " eps");
+  BOOST_TEST(plastic == 1000);
+  BOOST_TEST(worst <= cutoff_tolerance(-1.0 / 3.0));  // uniaxial to round-off
+  BOOST_TEST(above > 0);                              // where the strict cut-off accrued damage
+  BOOST_TEST(damaged == 0);
+  BOOST_TEST(damaged_without == 1000);
 }
 
 BOOST_AUTO_TEST_CASE(porosity_growth_tension_opens_no_voids_under_pressure) {
