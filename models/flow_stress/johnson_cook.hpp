@@ -5,7 +5,8 @@
 //   clamped (default):  1 + C ln(max(rate*, 1))   -- rates below the reference give no softening,
 //                       continuous at rate* = 1 (as MFront's and LS-DYNA's JC do);
 //   report_2004:        (1 + rate*)^C for rate* < 1, 1 + C ln rate* otherwise (the report's code;
-//                       it jumps by 2^C - 1 = +0.14 % at rate* = 1 for C = 0.002).
+//                       it drops from 2^C to 1 at rate* = 1, by 0.14 % for C = 0.002: the radial
+//                       return then takes the smallest root, radial_return.hpp).
 // Temperature factor: 1 for T* <= 0 (no hardening below room temperature: JC was fitted above it),
 // 0 for T* >= 1 (molten: no deviatoric strength; melting is flagged by thermal/melting).
 // T_room and T_melt come from the material (one source of truth), not from this block.
@@ -174,8 +175,17 @@ inline double johnson_cook_increment_bound(const JohnsonCookParams& p,
                                      p, thermal.factor, plastic_strain, overshoot, dt);
 }
 
-/// The law at one temperature, as the radial return calls it: flow(ep, rate) and the increment's
-/// upper bound (models/plasticity/radial_return.hpp, BoundedFlow).
+/// The plastic-strain increment over dt at which the flow stress drops (rate* = 1 of the 2004 rate
+/// form, when C > 0): reference_strain_rate dt; +inf for a continuous law.
+template <class V>
+[[gnu::always_inline]] inline V johnson_cook_jump_increment(const JohnsonCookParams& p, V dt) {
+  const bool jumps = p.rate_form == JohnsonCookRateForm::report_2004 && p.C > 0.0;
+  return jumps ? V(p.reference_strain_rate * dt)
+               : lane::splat<V>(std::numeric_limits<double>::infinity());
+}
+
+/// The law at one temperature, as the radial return calls it: flow(ep, rate), the increment's
+/// upper bound and its jump (models/plasticity/radial_return.hpp, BoundedFlow, JumpingFlow).
 struct JohnsonCookAtTemperature {
   const JohnsonCookParams& params;
   JohnsonCookThermal thermal;
@@ -185,6 +195,7 @@ struct JohnsonCookAtTemperature {
   double increment_bound(double plastic_strain, double overshoot, double dt) const {
     return johnson_cook_increment_bound(params, thermal, plastic_strain, overshoot, dt);
   }
+  double jump_increment(double dt) const { return johnson_cook_jump_increment<double>(params, dt); }
 };
 
 /// Homologous temperature T* = (T - T_room)/(T_melt - T_room), unclamped.

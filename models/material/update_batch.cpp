@@ -166,7 +166,6 @@ void UpdateBatch::return_by_material(double dt) {
       } else {
         lane.result.plastic = false;
         lane.result.converged = b.converged[k] != 0;
-        lane.result.bracket_closed = false;
         lane.result.iterations = static_cast<int>(b.iterations[k]);
         lane.result.delta_plastic_strain = b.increment[k];
         lane.result.flow = FlowStress{b.flow.value[k], b.flow.d_plastic_strain[k], b.flow.d_rate[k],

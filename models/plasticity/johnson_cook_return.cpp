@@ -17,6 +17,9 @@ struct LawAt {
   [[gnu::always_inline]] BasicFlowStress<V> operator()(V ep, V rate) const {
     return johnson_cook_form<Form>(p, ep, rate, theta, d_theta);
   }
+  [[gnu::always_inline]] V jump_increment(V dt) const {
+    return johnson_cook_jump_increment<V>(p, dt);
+  }
 };
 template <JohnsonCookRateForm Form, class V>
 struct BoundAt {

@@ -5,7 +5,8 @@
 // the return are the templates the one-point update instantiates with double (radial_return with
 // JohnsonCookAtTemperature, used by ElasticPlastic::update and so by the point driver), and every
 // operation is an IEEE basic one (models/core/lane_math.hpp), so a point gets the same bits in a
-// vector as alone: tests/models/plasticity/johnson_cook_return_test.cpp checks it.
+// vector as alone: tests/models/plasticity/radial_return_test.cpp and
+// tests/models/material/update_batch_test.cpp check it.
 #pragma once
 
 #include "models/core/lane_math.hpp"

@@ -4,8 +4,16 @@
 // q_tr <= sigma_y(ep_n, 0). Otherwise the plastic strain increment d solves (Simo & Hughes 1998,
 // Computational Inelasticity, sec. 3.3, with the rate of the step d/dt as the plastic strain rate):
 //   g(d) = q_tr - 3 mu d - sigma_y(ep_n + d, d / dt) = 0,
-// and s_{n+1} = s_tr (1 - 3 mu d / q_tr). g is monotone decreasing with g(0) > 0, so the root is
-// unique.
+// and s_{n+1} = s_tr (1 - 3 mu d / q_tr). For a continuous flow stress g decreases from g(0) > 0
+// and the root is unique. The report's 2004 Johnson-Cook rate form is not continuous: its factor
+// drops from 2^C to 1 at rate* = 1, i.e. at d_j = reference_rate dt, where g jumps UP, and g can
+// then have two roots (6061-T6 at ep 0.1, dt 1e-8: rate* 0.418 and 1.417). The return takes the
+// smallest root, the first increment, growing from 0, at which the stress is back on the yield
+// surface, whatever the guess: a law that knows where it jumps (JumpingFlow) reports d_j, g is
+// evaluated just left of it, and the bracket is (0, d_j) if g <= 0 there (to the tolerance), else
+// (d_j, h]. Inside either, g is continuous and decreasing, so its root is unique and a guess
+// outside it is ignored. The sides are taken 8 eps away from d_j so that the law's own rounding of
+// rate* = d / dt / reference_rate puts every iterate on the side the bracket is on.
 //
 // Solver (docs/theory.md sec. 4). Newton's method on g in u = ln d, started from an upper bound of
 // the root: the smaller of the elastic bound overshoot / 3 mu (all of the overshoot taken by the
@@ -17,13 +25,11 @@
 // well for n = 0.02 as for n = 1. The start and the variable are what make it converge in a few
 // steps: Newton in d from the elastic bound, at zero plastic strain with a low exponent n, lies far
 // to the right of a root whose slope is infinite at d = 0, and needed more than 60 steps. A step
-// that leaves the bracket [lo, hi] falls back to a geometric bisection. A flow stress that jumps
-// (the report's JC rate form at rate* = 1) has no root: the bracket then closes on the jump and
-// the point sits on the set-valued yield surface there, q_{n+1} = q_tr - 3 mu d between the
-// one-sided flow stresses, which is returned as the flow stress. A root below the smallest double
-// (a tiny overshoot with a low n at ep = 0) is an increment of zero to double precision: the trial
-// stress is on the yield surface of ep + d and is returned unchanged. A result that met neither
-// test is reported as not converged, never silently accepted.
+// that leaves the bracket [lo, hi] falls back to a geometric bisection. A root below the smallest
+// double (a tiny overshoot with a low n at ep = 0) is an increment of zero to double precision: the
+// trial stress is on the yield surface of ep + d and is returned unchanged. A result that met
+// neither test is reported as not converged, never silently accepted. (A bracket cannot close
+// without a root: g(lo) > 0 >= g(hi) and g only jumps up, so a zero crossing lies between.)
 //
 // The report's 2004 code (docs/report_code.md sec. 3) instead took d = sqrt(2/3 eta:eta) dt,
 // treating all deviatoric strain rate eta as plastic, and rescaled s_tr onto sigma_y(ep_n + d,
@@ -57,13 +63,10 @@ struct ReturnTolerance {
 struct ReturnResult {
   Mat3 deviator = Mat3::Zero();       ///< s_{n+1} [Pa]
   double delta_plastic_strain = 0.0;  ///< d [-]
-  /// Flow stress and slopes at (ep_n + d, d/dt); when the bracket closed, value is the point's
-  /// q_{n+1} on the set-valued surface (see above).
-  FlowStress flow;
+  FlowStress flow;                    ///< flow stress and slopes at (ep_n + d, d/dt)
   int iterations = 0;
   bool plastic = false;
   bool converged = true;
-  bool bracket_closed = false;  ///< converged by the bracket (a jump of sigma_y), not |g|
 };
 
 /// A flow law that can bound the increment: flow.increment_bound(ep, overshoot, dt) returns an
@@ -72,6 +75,17 @@ template <class Flow>
 concept BoundedFlow = requires(const Flow& f) {
   { f.increment_bound(0.0, 0.0, 0.0) } -> std::convertible_to<double>;
 };
+
+/// A flow law whose sigma_y(ep + d, d/dt) drops at one increment: flow.jump_increment(dt) returns
+/// it (the 2004 Johnson-Cook rate form: reference_rate dt), +inf when the law is continuous.
+template <class Flow, class V>
+concept JumpingFlow = requires(const Flow& f, V dt) {
+  { f.jump_increment(dt) } -> std::convertible_to<V>;
+};
+
+/// How far from a jump the bracket's ends are taken, relative to it: more than the rounding of
+/// rate* = d / dt / reference_rate (3 operations of 1/2 eps each).
+inline constexpr double kJumpMargin = 8.0 * std::numeric_limits<double>::epsilon();
 
 /// The inputs and outputs of the return for one point (V = double) or a vector of points (V =
 /// lane::Vec, one per lane): fill the inputs, call return_values, read the outputs. A lane with
@@ -92,7 +106,6 @@ struct alignas(lane::kLaneBytes) ReturnValues {
   Int iterations{};
   Int plastic{};
   Int converged{};
-  Int bracket_closed{};
 };
 
 /// The radial return of the header comment, one algorithm for one point or a vector of them:
@@ -111,7 +124,6 @@ template <class V, class Flow, class Bound>
   const auto plastic = q > f0.value;
   b.plastic = lane::flag<V>(plastic);
   b.converged = Int{} + 1;  // set: elastic lanes are done
-  b.bracket_closed = Int{};
   b.iterations = Int{};
   b.increment = lane::splat<V>(0.0);
   b.flow = f0;
@@ -125,11 +137,25 @@ template <class V, class Flow, class Bound>
   // stress is on the yield surface of ep_n + d.
   const auto below_smallest = plastic & !(h > 0.0);
   auto active = plastic & !below_smallest;
-  const V g0 = b.guess;
-  V d = select<V>(active, select<V>((g0 > 0.0) & (g0 < h), g0, h), 0.0);
-  auto from_guess = d < h;     // the iteration started at a guess: hi not evaluated yet
   V lo = lane::splat<V>(0.0);  // g(lo) > 0
   V hi = h;                    // g(hi) <= 0
+  if constexpr (JumpingFlow<Flow, V>) {
+    // The smallest root (header comment): g just left of the jump says on which side it lies.
+    const V jump = flow.jump_increment(b.dt);
+    const V left = jump * (1.0 - kJumpMargin), right = jump * (1.0 + kJumpMargin);
+    const auto inside = active & (left < h);
+    if (lane::any(inside)) {
+      const V at = select<V>(inside, left, h);  // harmless where the jump is outside
+      const V g_left = q - b.three_mu * at - flow(V(b.plastic_strain + at), V(at / b.dt)).value;
+      const auto on_left = g_left <= tol.relative_residual * q;
+      hi = select<V>(inside & on_left, left, hi);
+      // Right of the jump; if h lies within the margin, the root is at h to the tolerance.
+      lo = select<V>(inside & !on_left, select<V>(right < h, right, left), lo);
+    }
+  }
+  const V g0 = b.guess;
+  V d = select<V>(active, select<V>((g0 > lo) & (g0 < hi), g0, hi), 0.0);
+  auto from_guess = d < hi;  // the iteration started at a guess: hi not evaluated yet
   b.converged = lane::flag<V>(!active);
   b.iterations = lane::flag<V>(below_smallest) & 1;
   b.flow.value = select<V>(below_smallest, q, b.flow.value);
@@ -142,9 +168,6 @@ template <class V, class Flow, class Bound>
     const V lo1 = select<V>(up, d, lo);
     const V hi1 = select<V>(up, hi, d);
     const auto guess1 = up & from_guess;
-    // The bracket closed without a root: a jump of sigma_y; the point sits on the set-valued
-    // surface, q_{n+1} = q_tr - 3 mu d.
-    const auto closed = (!root) & (hi1 - lo1 <= 1e-15 * hi1);
     // Newton in u = ln d: du = -g / (d dg/dd), dg/dd = -(3 mu + dsigma/dep + dsigma/drate / dt).
     const V slope = b.three_mu + f.d_plastic_strain + f.d_rate / b.dt;
     V next = d * lane::exp(V(g / (slope * d)));
@@ -153,15 +176,13 @@ template <class V, class Flow, class Bound>
     const auto outside = !((next > lo1) & (next < hi1));
     const V bisection = select<V>(lo1 > 0.0, lane::sqrt(V(lo1 * hi1)), 0.5 * hi1);
     next = select<V>(outside, select<V>(guess1, hi1, bisection), next);
-    const auto done = root | closed;
     b.iterations = select(active, Int{} + it, b.iterations);
-    b.flow.value = select<V>(active, select<V>(closed, q - b.three_mu * d, f.value), b.flow.value);
+    b.flow.value = select<V>(active, f.value, b.flow.value);
     b.flow.d_plastic_strain = select<V>(active, f.d_plastic_strain, b.flow.d_plastic_strain);
     b.flow.d_rate = select<V>(active, f.d_rate, b.flow.d_rate);
     b.flow.d_temperature = select<V>(active, f.d_temperature, b.flow.d_temperature);
-    b.converged |= lane::flag<V>(active & done);
-    b.bracket_closed |= lane::flag<V>(active & closed);
-    const auto go_on = active & !done;
+    b.converged |= lane::flag<V>(active & root);
+    const auto go_on = active & !root;
     lo = select<V>(go_on, lo1, lo);
     hi = select<V>(go_on, hi1, hi);
     from_guess = go_on ? (guess1 & !outside) : from_guess;
@@ -179,7 +200,6 @@ ReturnResult finish_return(const Mat3& s_trial, const ReturnValues<V>& b, int k)
   ReturnResult out;
   out.plastic = get(b.plastic, k) != 0;
   out.converged = get(b.converged, k) != 0;
-  out.bracket_closed = get(b.bracket_closed, k) != 0;
   out.iterations = static_cast<int>(get(b.iterations, k));
   out.delta_plastic_strain = get(b.increment, k);
   out.flow = FlowStress{get(b.flow.value, k), get(b.flow.d_plastic_strain, k),
