@@ -34,6 +34,10 @@ struct FlowConditions {
   /// variable at the start of the step, from which the law advances it to the ep it is asked at.
   double start_plastic_strain = 0.0;  ///< [-]
   double internal = 0.0;              ///< the law's own unit (MTS: sigma_e [Pa])
+  /// T_m [K] of the material's melting curve (models/thermal/melting.hpp) at the start-of-step
+  /// density, the one the melting check uses: Preston-Tonks-Wallace's T^ = T / T_m. 0 (a caller
+  /// outside a material): the law's own melt_temperature.
+  double melt_temperature = 0.0;
 };
 
 /// The range a fitter searches for a parameter by default [SI]. Empty (lower == upper, the

@@ -38,8 +38,13 @@ constexpr double kAvogadro = 6.02214076e23;  // [1/mol]
 
 }  // namespace
 
-double ptw_shear_modulus(const PrestonTonksWallaceParams& p, double temperature) {
-  return std::max(p.G0 * (1.0 - p.alpha * temperature / p.melt_temperature), 0.0);
+double ptw_melt_temperature(const PrestonTonksWallaceParams& p, const FlowConditions& c) {
+  return c.melt_temperature > 0.0 ? c.melt_temperature : p.melt_temperature;
+}
+
+double ptw_shear_modulus(const PrestonTonksWallaceParams& p, double temperature,
+                         double melt_temperature) {
+  return std::max(p.G0 * (1.0 - p.alpha * temperature / melt_temperature), 0.0);
 }
 
 FlowStress flow_stress(const PrestonTonksWallaceParams& p, double plastic_strain,
@@ -51,7 +56,7 @@ FlowStress flow_stress(const PrestonTonksWallaceParams& p, double plastic_strain
   const Dual psi = variable(plastic_strain, 0);
   const Dual rate = plastic_strain_rate < p.minimum_strain_rate ? constant(p.minimum_strain_rate)
                                                                 : variable(plastic_strain_rate, 1);
-  const Dual T_hat = variable(c.temperature, 2) / p.melt_temperature;
+  const Dual T_hat = variable(c.temperature, 2) / ptw_melt_temperature(p, c);
   const Dual G = p.G0 * (1.0 - p.alpha * T_hat);
   FlowStress f;
   if (G.value() <= 0.0) return f;  // no strength left (beyond the modulus' zero)

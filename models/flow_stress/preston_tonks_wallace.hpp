@@ -8,12 +8,14 @@
 //                      exp(-p theta psi / ((s0 - tau_y)(exp(p (tau_s - tau_y)/(s0 - tau_y)) - 1))))
 //   (p -> 0: the Voce law tau = tau_s - (tau_s - tau_y) exp(-theta psi / (tau_s - tau_y))),
 // and the von Mises flow stress sigma_y = 2 G tau (the paper's convention). The shear modulus is
-// the paper's G = G0 (1 - alpha T^). The thermally activated branch covers quasi-static to
-// ~1e4 /s, the power laws the overdriven shock regime up to 1e12 /s. Like Zerilli-Armstrong, the
-// law has no rate-independent limit: the static yield check and slower steps use
-// minimum_strain_rate (default 1e-6 /s). The derivatives come from forward-mode automatic
-// differentiation of the same expressions (Eigen's AutoDiffScalar), so they cannot drift from the
-// value.
+// the paper's G = G0 (1 - alpha T^). T_melt is the paper's T_m(rho): in a material, the melting
+// curve's at the step's start density (FlowConditions::melt_temperature: the constant T_m0, or
+// Steinberg-Cochran-Guinan's, which compression raises), the one the melting check uses. The
+// thermally activated branch covers quasi-static to ~1e4 /s, the power laws the overdriven shock
+// regime up to 1e12 /s. Like Zerilli-Armstrong, the law has no rate-independent limit: the static
+// yield check and slower steps use minimum_strain_rate (default 1e-6 /s). The derivatives come from
+// forward-mode automatic differentiation of the same expressions (Eigen's AutoDiffScalar), so they
+// cannot drift from the value.
 #pragma once
 
 #include "models/core/input.hpp"
@@ -36,7 +38,7 @@ struct PrestonTonksWallaceParams {
   double G0 = 0.0;                    ///< shear modulus at 0 K [Pa]
   double alpha = 0.0;                 ///< shear modulus softening G = G0 (1 - alpha T^) [-]
   double molar_mass = 0.0;            ///< M N_A [kg/mol]
-  double melt_temperature = 0.0;      ///< T_melt [K] (the material's)
+  double melt_temperature = 0.0;      ///< T_m0 [K] (the material's; see ptw_melt_temperature)
   double minimum_strain_rate = 1e-6;  ///< [1/s]
 
   static constexpr std::string_view kType = "preston_tonks_wallace";
@@ -59,10 +61,15 @@ struct PrestonTonksWallaceParams {
       {"minimum_strain_rate", "1/s", &P::minimum_strain_rate}};
 };
 
-/// The law's shear modulus G0 (1 - alpha T / T_melt) [Pa], floored at 0.
-double ptw_shear_modulus(const PrestonTonksWallaceParams& p, double temperature);
+/// The T_m [K] of T^ = T / T_m: the conditions' melting temperature, or the law's own when they
+/// carry none (0).
+double ptw_melt_temperature(const PrestonTonksWallaceParams& p, const FlowConditions& c);
 
-/// sigma_y = 2 G tau; conditions: T and the density rho (> 0).
+/// The law's shear modulus G0 (1 - alpha T / T_m) [Pa], floored at 0.
+double ptw_shear_modulus(const PrestonTonksWallaceParams& p, double temperature,
+                         double melt_temperature);
+
+/// sigma_y = 2 G tau; conditions: T, the density rho (> 0) and T_m (ptw_melt_temperature).
 FlowStress flow_stress(const PrestonTonksWallaceParams& p, double plastic_strain,
                        double plastic_strain_rate, const FlowConditions& c);
 

@@ -140,11 +140,13 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   t.p_n = trial.p_n;
   t.rho0_n = trial.rho0_n;
   t.rho1 = trial.rho1;
-  t.molten = molten(s0);
+  // One melting temperature for the step: the melting check's and the flow stress's (PTW's T^).
+  const double melt_temperature = melting_temperature_of(s0);
+  t.molten = p_.melting.do_melting && is_melted(s0.temperature, melt_temperature);
   const auto* jc = std::get_if<JohnsonCookParams>(&p_.flow_stress);
   if (jc) t.thermal = johnson_cook_thermal(*jc, s0.temperature);
-  t.conditions = {s0.temperature,    t.p_n,           t.rho1 / p_.density, t.rho1,
-                  s0.plastic_strain, s0.flow_internal};
+  t.conditions = {s0.temperature,   t.p_n,           t.rho1 / p_.density, t.rho1, s0.plastic_strain,
+                  s0.flow_internal, melt_temperature};
   t.batched = jc && !t.molten && p_.return_algorithm == ReturnAlgorithm::newton;
   return true;
 }

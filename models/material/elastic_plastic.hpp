@@ -105,7 +105,7 @@ struct UpdateTrial {
   double rho0_n = 0.0;         ///< start-of-step density [kg/m^3]
   double rho1 = 0.0;           ///< end-of-step density [kg/m^3]
   JohnsonCookThermal thermal;  ///< Johnson-Cook's temperature factor at the start-of-step T
-  FlowConditions conditions;   ///< what any other law reads: T_n, p_n, rho1 / rho0, rho1
+  FlowConditions conditions;  ///< what any other law reads: T_n, p_n, rho1 / rho0, rho1, T_m(rho_n)
   double shear_modulus = 0.0;  ///< mu at the start-of-step T, p and rho (shear_modulus_model)
   bool molten = false;         ///< no return: the deviator is zero
   /// Newton's return of a Johnson-Cook point, which a batch can do (johnson_cook_return); other

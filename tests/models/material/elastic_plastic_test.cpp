@@ -4,10 +4,13 @@
 #include "models/material/elastic_plastic.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
+#include <variant>
 
 #include "models/material/material.hpp"
 
@@ -569,6 +572,53 @@ BOOST_AUTO_TEST_CASE(compression_raises_the_melting_point_on_the_scg_curve) {
   BOOST_TEST(deviator_after_a_step(Json::object()) == 0.0);
   BOOST_TEST(deviator_after_a_step(
                  {{"curve", "steinberg_cochran_guinan"}, {"gamma0", 1.97}, {"a", 1.5}}) > 1e5);
+}
+
+// Preston-Tonks-Wallace's T^ = T / T_m(rho) (Preston, Tonks & Wallace 2003) with the material's
+// Steinberg-Cochran-Guinan melting curve: tantalum (data/materials/tantalum_ptw.json, T_m0 = 3290
+// K; the curve's Gamma0 = 1.67, a = 1.3 chosen here) at 2000 K compressed to rho / rho0 = 1.15
+// has T_m = T_m0 exp(2a (1 - 1/eta)) eta^(2 (Gamma0 - a - 1/3)) = 4665.8 K. A plastic shear step
+// (start 0.8 GPa von Mises, ep 0.1) ends on the yield surface of PTW's equations (p = 0: Voce)
+// evaluated here at that T_m, at the step's ep, rate and end density, to 1e-10 (342.4 MPa); at
+// T_m0 (T^ 0.61 instead of 0.43) it would be 314.7 MPa, 8 % lower: the law read the raised T_m.
+BOOST_AUTO_TEST_CASE(ptw_reads_the_melting_curves_raised_melting_point_under_compression) {
+  const Material ta =
+      load_material(std::string(IMPACT_SOURCE_DIR) + "/data/materials/tantalum_ptw.json",
+                    Json::parse(R"({"constitutive_model": {"melting":
+      {"curve": "steinberg_cochran_guinan", "gamma0": 1.67, "a": 1.3}}})"));
+  const auto& p = std::get<PrestonTonksWallaceParams>(ta.model.params().flow_stress);
+  const double T = 2000.0, eta = 1.15, dt = 1e-8, ep0 = 0.1;
+  PointState s0 = ta.model.initial_state(T);
+  s0.F = std::cbrt(1.0 / eta) * Mat3::Identity();
+  s0.plastic_strain = ep0;
+  s0.stress(0, 1) = s0.stress(1, 0) = 0.8e9 / std::sqrt(3.0);
+  Mat3 L = Mat3::Zero();
+  L(0, 1) = 1e4;
+  const Mat3 F1 = (Mat3::Identity() + L * dt) * s0.F;
+  PointState s1;
+  const StepReport r = ta.model.update(s0, L, F1, dt, s1);
+  BOOST_REQUIRE(r.status == UpdateStatus::ok);
+  BOOST_REQUIRE(r.plastic);
+  const double T_m = 3290.0 * std::exp(2.0 * 1.3 * (1.0 - 1.0 / eta)) *
+                     std::pow(eta, 2.0 * (1.67 - 1.3 - 1.0 / 3.0));
+  BOOST_TEST(T_m == 4665.84, boost::test_tools::tolerance(1e-5));
+  // PTW eq. (5)-(12) by hand, Voce limit p = 0.
+  const auto ptw = [&](double ep, double rate, double rho, double melt) {
+    const double T_hat = T / melt, G = p.G0 * (1.0 - p.alpha * T_hat);
+    const double atoms = rho * 6.02214076e23 / p.molar_mass;
+    const double xi = 0.5 * std::cbrt(4.0 * std::numbers::pi * atoms / 3.0) * std::sqrt(G / rho);
+    const double ratio = rate / (p.gamma * xi),
+                 e = std::erf(p.kappa * T_hat * std::log(1.0 / ratio));
+    const double tau_s = std::max(p.s0 - (p.s0 - p.s_inf) * e, p.s0 * std::pow(ratio, p.beta));
+    const double tau_y =
+        std::max(p.y0 - (p.y0 - p.y_inf) * e,
+                 std::min(p.y1 * std::pow(ratio, p.y2), p.s0 * std::pow(ratio, p.beta)));
+    return 2.0 * G * (tau_s - (tau_s - tau_y) * std::exp(-p.theta * ep / (tau_s - tau_y)));
+  };
+  const double d = s1.plastic_strain - ep0, rho1 = ta.model.params().density / F1.determinant();
+  const double q = von_mises(s1.stress);
+  BOOST_TEST(q == ptw(ep0 + d, d / dt, rho1, T_m), boost::test_tools::tolerance(1e-10));
+  BOOST_TEST(q / ptw(ep0 + d, d / dt, rho1, 3290.0) - 1.0 > 0.05);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
