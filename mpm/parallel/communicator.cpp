@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 
 #ifdef IMPACT_MPI
 #include <mpi.h>
@@ -175,22 +176,36 @@ std::string Communicator::broadcast(const std::string& text, [[maybe_unused]] in
   return out;
 }
 
-std::vector<char> Communicator::exchange([[maybe_unused]] int neighbour,
-                                         [[maybe_unused]] const std::vector<char>& to_send,
-                                         [[maybe_unused]] int tag) const {
-  std::vector<char> received;
+std::vector<std::vector<char>> Communicator::exchange(const std::vector<int>& neighbours,
+                                                      const std::vector<std::vector<char>>& to_send,
+                                                      [[maybe_unused]] int tag) const {
+  std::vector<std::vector<char>> received(neighbours.size());
 #ifdef IMPACT_MPI
-  if (!mpi_ || neighbour < 0 || neighbour >= size_) return received;
+  if (!mpi_) return received;
   const MpiTimer timer(seconds_);
-  long long n_send = static_cast<long long>(to_send.size()), n_recv = 0;
-  MPI_Sendrecv(&n_send, 1, MPI_LONG_LONG, neighbour, 2 * tag, &n_recv, 1, MPI_LONG_LONG, neighbour,
-               2 * tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  received.resize(static_cast<std::size_t>(n_recv));
-  MPI_Sendrecv(to_send.data(), static_cast<int>(n_send), MPI_BYTE, neighbour, 2 * tag + 1,
-               received.data(), static_cast<int>(n_recv), MPI_BYTE, neighbour, 2 * tag + 1,
-               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  exchanged_bytes_ += static_cast<std::uint64_t>(n_send);
-  exchanged_messages_ += 2;  // the size, then the data
+  const std::size_t n = neighbours.size();
+  for (std::size_t i = 0; i < n; ++i) received[i].resize(to_send[i].size());
+  // The receives first, so that a neighbour's message finds its buffer.
+  std::vector<MPI_Request> requests(2 * n, MPI_REQUEST_NULL);
+  for (std::size_t i = 0; i < n; ++i)
+    MPI_Irecv(received[i].data(), static_cast<int>(received[i].size()), MPI_BYTE, neighbours[i],
+              tag, MPI_COMM_WORLD, &requests[i]);
+  for (std::size_t i = 0; i < n; ++i) {
+    MPI_Isend(to_send[i].data(), static_cast<int>(to_send[i].size()), MPI_BYTE, neighbours[i], tag,
+              MPI_COMM_WORLD, &requests[n + i]);
+    exchanged_bytes_ += static_cast<std::uint64_t>(to_send[i].size());
+    ++exchanged_messages_;
+  }
+  std::vector<MPI_Status> statuses(2 * n);
+  MPI_Waitall(static_cast<int>(2 * n), requests.data(), statuses.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    int count = 0;
+    MPI_Get_count(&statuses[i], MPI_BYTE, &count);
+    if (static_cast<std::size_t>(count) != received[i].size())
+      throw std::logic_error("halo exchange: rank " + std::to_string(neighbours[i]) + " sent " +
+                             std::to_string(count) + " B to rank " + std::to_string(rank_) +
+                             ", which sent it " + std::to_string(received[i].size()) + " B");
+  }
 #endif
   return received;
 }

@@ -75,9 +75,15 @@ class Communicator {
   }
   /// The bytes `text` of rank `from`, on every rank.
   std::string broadcast(const std::string& text, int from) const;
-  /// Sends `to_send` to rank `neighbour` and returns what it sent back (both call this with each
-  /// other's rank; `tag` tells exchanges in the same step apart). neighbour < 0: nothing.
-  std::vector<char> exchange(int neighbour, const std::vector<char>& to_send, int tag) const;
+  /// Sends to_send[i] to rank neighbours[i] and returns what each sent back (every neighbour calls
+  /// this with this rank among its own). Every receive and send is posted before one wait, so a
+  /// rank between two neighbours waits for neither's other exchange: no chain across the ranks.
+  /// Each pair sends each other the same number of bytes (two neighbours' shared node layers are
+  /// the same list on both, halo_exchange.cpp), so no size goes first; a neighbour's message of
+  /// another length throws std::logic_error. `tag` tells exchanges in the same step apart.
+  std::vector<std::vector<char>> exchange(const std::vector<int>& neighbours,
+                                          const std::vector<std::vector<char>>& to_send,
+                                          int tag) const;
   /// to_each[r] goes to rank r; returns what each rank sent here, indexed by sender.
   std::vector<std::vector<char>> all_to_all(const std::vector<std::vector<char>>& to_each) const;
   void barrier() const;
@@ -85,8 +91,8 @@ class Communicator {
   /// Wall time spent in MPI calls so far [s]: waiting for the other ranks plus moving the data
   /// (the load balance shows in it: docs/mpi.md).
   double seconds_in_mpi() const { return seconds_; }
-  /// Bytes and messages this rank sent by exchange() so far (the node sums with its neighbours:
-  /// what docs/mpi.md's cost model predicts).
+  /// Bytes and messages (one per neighbour and exchange) this rank sent by exchange() so far (the
+  /// node sums with its neighbours: what docs/mpi.md's cost model predicts).
   std::uint64_t exchanged_bytes() const { return exchanged_bytes_; }
   std::uint64_t exchanged_messages() const { return exchanged_messages_; }
 

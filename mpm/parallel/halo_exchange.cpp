@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 namespace impact::mpm {
 
@@ -56,41 +58,77 @@ void add(Vec3& a, const Vec3& b) {
   a += b;
 }
 
-// Calls visit(neighbour, b, above) for this rank's neighbours along `axis` (lower first): b the
-// boundary cell between the two boxes, `above` whether the neighbour is the upper one.
-template <class Visit>
-void for_neighbours(const BoxDecomposition& boxes, int rank, int axis, Visit&& visit) {
+// A neighbour of a box along one axis: its rank, b the boundary cell between the two boxes, and
+// whether it is the upper one.
+struct Neighbour {
+  int rank = 0;
+  int b = 0;
+  bool above = false;
+};
+
+// This rank's neighbours along `axis`, the lower first (none, one or two).
+std::vector<Neighbour> neighbours_along(const BoxDecomposition& boxes, int rank, int axis) {
   const std::array<int, 3> c = boxes.coordinates(rank);
   const int p = boxes.axis(axis).ranks();
+  std::vector<Neighbour> out;
   for (const int step : {-1, 1}) {
     std::array<int, 3> n = c;
     n[std::size_t(axis)] += step;
     if (n[std::size_t(axis)] < 0 || n[std::size_t(axis)] >= p) continue;
     const bool above = step > 0;
     const int b = boxes.axis(axis).first_cell(above ? n[std::size_t(axis)] : c[std::size_t(axis)]);
-    visit(boxes.rank_at(n), b, above);
+    out.push_back({boxes.rank_at(n), b, above});
   }
+  return out;
+}
+
+// Packs `layers(n)` for each neighbour n along `axis`, sends them to both neighbours at once and
+// returns what each sent back, in the same order (Communicator::exchange: no chain across the
+// ranks of the axis).
+template <class T, class Layers>
+std::vector<std::vector<char>> exchange_layers(const Grid& G, const T* data,
+                                               const Communicator& comm,
+                                               const std::vector<Neighbour>& neighbours, int axis,
+                                               int tag, Layers&& layers) {
+  std::vector<int> ranks;
+  std::vector<std::vector<char>> out;
+  for (const Neighbour& n : neighbours) {
+    const auto [first, last] = layers(n);
+    ranks.push_back(n.rank);
+    out.push_back(pack(G, data, axis, first, last));
+  }
+  return comm.exchange(ranks, out, tag);
 }
 
 // Along each axis in turn: sends this rank's partial sums at the layers [b - 1, b + 1] of each
 // boundary b it shares and adds the neighbour's; `mark`: marks the blocks of the nodes whose
-// received mass is nonzero.
+// received mass is nonzero. Both neighbours' layers are packed before either's part is added;
+// a box at least SlabDecomposition::kMinCells = 3 cells wide keeps the two sets of layers apart,
+// so each shared node adds one partial sum to its own, as when the ranks exchanged with their
+// lower neighbour first and then with the upper one: the same bits.
 template <class T>
 void sum_shared(Grid& G, T* data, const Communicator& comm, const BoxDecomposition& boxes, int tag,
                 bool mark) {
   char* const marks = mark && !G.dense() ? G.block_marks() : nullptr;
-  for (int axis = 0; axis < 3; ++axis)
-    for_neighbours(boxes, comm.rank(), axis, [&](int neighbour, int b, bool) {
-      const std::vector<char> in = comm.exchange(neighbour, pack(G, data, axis, b - 1, b + 1), tag);
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::vector<Neighbour> neighbours = neighbours_along(boxes, comm.rank(), axis);
+    if (neighbours.empty()) continue;
+    const std::vector<std::vector<char>> in =
+        exchange_layers(G, data, comm, neighbours, axis, tag, [](const Neighbour& n) {
+          return std::pair{n.b - 1, n.b + 1};
+        });
+    for (std::size_t i = 0; i < neighbours.size(); ++i) {
+      const int b = neighbours[i].b;
       std::size_t k = 0;
       for_layers(G, axis, b - 1, b + 1, [&](int e, const std::array<int, 3>& ijk) {
-        const T remote = record<T>(in, k++);
+        const T remote = record<T>(in[i], k++);
         add(data[e], remote);
         if constexpr (std::is_same_v<T, NodeData>) {
           if (marks && remote.mass != 0.0) G.mark_stencil(marks, ijk, 1);
         }
       });
-    });
+    }
+  }
 }
 
 }  // namespace
@@ -115,14 +153,14 @@ HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>
     const int e = (axis + 1) % 3, f = (axis + 2) % 3;
     const double layer = double(box.last[std::size_t(e)] - box.first[std::size_t(e)] + 1) *
                          double(box.last[std::size_t(f)] - box.first[std::size_t(f)] + 1) * fields;
-    for_neighbours(boxes, rank, axis, [&](int, int, bool) {
+    for (std::size_t n = neighbours_along(boxes, rank, axis).size(); n > 0; --n) {
       t.bytes += 3.0 * layer * per_node;
-      t.messages += 2.0 * exchanges_per_neighbour;
+      t.messages += exchanges_per_neighbour;
       if (fields > 1) {  // contact: the layer beyond
         t.bytes += layer * double(sizeof(NodeData));
-        t.messages += 2.0;
+        t.messages += 1.0;
       }
-    });
+    }
   }
   return t;
 }
@@ -135,17 +173,25 @@ void HaloExchange::sum_node_data(Grid& G, bool contact) const {
   // The layer beyond the shared ones, whole on the neighbour: b + 2 from above, b - 2 from below.
   char* const marks = G.dense() ? nullptr : G.block_marks();
   NodeData* const data = G.node_buffer();
-  for (int axis = 0; axis < 3; ++axis)
-    for_neighbours(boxes_, comm_.rank(), axis, [&](int neighbour, int b, bool above) {
-      const int mine = above ? b - 2 : b + 2, theirs = above ? b + 2 : b - 2;
-      const std::vector<char> in =
-          comm_.exchange(neighbour, pack(G, G.node_buffer(), axis, mine, mine), kBeyondTag);
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::vector<Neighbour> neighbours = neighbours_along(boxes_, comm_.rank(), axis);
+    if (neighbours.empty()) continue;
+    // The layers sent (c0 + 2, c1 - 2) lie inside a box at least 3 cells wide and those received
+    // (c0 - 2, c1 + 2) outside it: packing both before writing either copies what the chain did.
+    const std::vector<std::vector<char>> in =
+        exchange_layers(G, data, comm_, neighbours, axis, kBeyondTag, [](const Neighbour& n) {
+          const int mine = n.above ? n.b - 2 : n.b + 2;
+          return std::pair{mine, mine};
+        });
+    for (std::size_t i = 0; i < neighbours.size(); ++i) {
+      const int theirs = neighbours[i].above ? neighbours[i].b + 2 : neighbours[i].b - 2;
       std::size_t k = 0;
       for_layers(G, axis, theirs, theirs, [&](int e, const std::array<int, 3>& ijk) {
-        data[e] = record<NodeData>(in, k++);
+        data[e] = record<NodeData>(in[i], k++);
         if (marks && data[e].mass != 0.0) G.mark_stencil(marks, ijk, 1);
       });
-    });
+    }
+  }
 }
 
 void HaloExchange::sum_momentum(Grid& G) const {

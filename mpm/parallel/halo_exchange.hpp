@@ -3,14 +3,15 @@
 // neighbours along an axis both scatter into the three node layers [b - 1, b + 1] around their
 // common boundary b. After a scatter each sends its partial sums there and adds the other's, one
 // axis after another (x, then y, then z), each layer over the whole stored box on the other two
-// axes: a node near an edge or a corner of the box first gathers its x neighbour's part, then
-// the y neighbours' (each already holding its own x neighbour's, the diagonal rank's), then the
-// z neighbours'. Every shared node then holds the whole sum, the same bits on every rank that
-// stores it (each addition is a + b = b + a on both sides), and the grid update, contact and
-// faces run on every rank as on one. Contact's mass gradient at layer b + 1 also reads layer
-// b + 2, which only the upper rank's particles fill: with contact the ranks also copy that layer
-// (and b - 2 the other way), again one axis after another so that the corners arrive too. Each
-// node's ledger terms are booked by one rank, the owner of its box (Grid::owns).
+// axes, to its lower and upper neighbour at once (no chain along the axis's ranks): a node near an
+// edge or a corner of the box first gathers its x neighbour's part, then the y neighbours' (each
+// already holding its own x neighbour's, the diagonal rank's), then the z neighbours'. Every shared
+// node then holds the whole sum, the same bits on every rank that stores it (each addition is a + b
+// = b + a on both sides), and the grid update, contact and faces run on every rank as on one.
+// Contact's mass gradient at layer b + 1 also reads layer b + 2, which only the upper rank's
+// particles fill: with contact the ranks also copy that layer (and b - 2 the other way), again one
+// axis after another so that the corners arrive too. Each node's ledger terms are booked by one
+// rank, the owner of its box (Grid::owns).
 #pragma once
 
 #include "mpm/grid/grid.hpp"
@@ -32,7 +33,7 @@ NodeBox stored_nodes(const BoxDecomposition& boxes, const std::array<int, 3>& ce
 /// axis d, 3 node layers times its stored extents on the other two axes times the velocity fields,
 /// each node 64 B (mass, momentum, force), 48 B more with nodal stress (friction contact) and 24 B
 /// more with the MUSL re-map's momentum; with several fields (contact) also the layer beyond,
-/// 64 B per node. Two messages (size, then data) per exchange.
+/// 64 B per node. One message per neighbour and exchange (both sides send the same length).
 struct HaloTraffic {
   double bytes = 0.0;
   double messages = 0.0;

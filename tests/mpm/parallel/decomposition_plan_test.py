@@ -35,7 +35,8 @@ def known_split(mpm, scene):
     p = plan(mpm, scene, 4, [2, 2, 1])
     halo = p["halo_bytes_sent_per_step [B]"]
     assert (halo["min"], halo["max"]) == (224664.0, 321816.0), p
-    assert p["halo_messages_sent_per_step"]["max"] == 8 and p["empty_ranks"] == 0, p
+    # 2 neighbours x 2 exchanges (the P2G sums and the re-map momentum), one message each
+    assert p["halo_messages_sent_per_step"]["max"] == 4 and p["empty_ranks"] == 0, p
     print(f"2 x 2 x 1 on 4 ranks: {halo['min']:.0f} and {halo['max']:.0f} B per step, by hand too")
 
 

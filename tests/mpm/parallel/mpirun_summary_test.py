@@ -192,8 +192,9 @@ def halo_traffic(summary, cells, fields=1):
     """The bytes and messages each rank sent per step, against docs/mpi.md's cost model: per
     neighbour along axis d, the node sums of particles-to-grid (64 B per node and field) and of
     the MUSL re-map (24 B) over 3 node layers times the rank's stored extents on the other two
-    axes (its cells and 3 halo layers each side, clipped to the grid and its ghost layers); two
-    messages (size, data) per exchange. Scenes without contact or nodal stress."""
+    axes (its cells and 3 halo layers each side, clipped to the grid and its ghost layers); one
+    message per neighbour and exchange (no size first: both send the same length). Scenes
+    without contact or nodal stress."""
     load = summary["ranks_load"]
     boxes = load["boxes"]
     p = boxes["ranks_per_axis"]
@@ -207,7 +208,7 @@ def halo_traffic(summary, cells, fields=1):
             neighbours = (c[d] > 0) + (c[d] + 1 < p[d])
             face = extent[(d + 1) % 3] * extent[(d + 2) % 3]
             nbytes += neighbours * 3 * face * fields * (64 + 24)
-            messages += neighbours * 2 * 2
+            messages += neighbours * 2  # the P2G sums and the re-map momentum
         assert load["halo_bytes_sent_per_step [B]"][r] == nbytes, (r, load, nbytes)
         assert load["halo_messages_sent_per_step"][r] == messages, (r, load, messages)
     print(f"halo traffic per step as the cost model: {load['halo_bytes_sent_per_step [B]']} B")
