@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "mpm/step/parallel.hpp"
 
@@ -11,7 +13,7 @@ namespace impact::mpm {
 
 namespace {
 
-constexpr int kMaxFields = 64;  // fields sharing one node (materials x 2)
+constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
 
 // Gradient of one field's nodal mass at node (i, j, k) by central differences (one-sided at the
 // outermost layers). The report's normals came from the same differences (sec. 14).
@@ -100,7 +102,11 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   const bool book = pass == ContactPass::step;
   const bool write_heat = book && !G.heat.empty();
   const int nn = G.node_count();
-  const int nf = std::min(G.fields(), kMaxFields);
+  // read_scene refuses scenes with more fields; a grid built otherwise must not overrun the arrays.
+  if (G.fields() > kMaxFields)
+    throw std::logic_error("apply_contact: " + std::to_string(G.fields()) +
+                           " velocity fields, at most " + std::to_string(kMaxFields));
+  const int nf = G.fields();
   const int nt = G.threads();
   const bool friction = contact.type == ContactType::friction && G.has_nodal_stress();
   // Body of each field: its material (a material's parent and companion fields are one body

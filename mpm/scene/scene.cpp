@@ -561,6 +561,23 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
   }
 }
 
+// Multi-field contact keeps per-node arrays of kMaxContactFields fields (contact.cpp): a scene
+// with more velocity fields is refused here rather than have the rest ignored.
+void check_field_count(InputProblems& problems, const Scene& s) {
+  const int fields = s.field_count();
+  if (fields <= kMaxContactFields) return;
+  const bool conversion = s.physics.create_new_particles;
+  std::ostringstream m;
+  m << s.materials.size() << " materials make " << fields << " velocity fields"
+    << (conversion ? " (each with a companion field: physics.create_new_particles)" : "")
+    << " under physics.contact.type \""
+    << (s.physics.contact.type == ContactType::friction ? "friction" : "approach")
+    << "\": expected at most " << kMaxContactFields << " fields ("
+    << (conversion ? kMaxContactFields / 2 : kMaxContactFields)
+    << " materials), or contact \"single_velocity\" (one field)";
+  problems.add("/materials", m.str());
+}
+
 }  // namespace
 
 Json load_scene_document(const std::string& file) {
@@ -584,6 +601,7 @@ Scene read_scene(const Json& document, const std::string& file) {
   read_objects(root, document, s.materials, s.objects);
   apply_physics_overrides(s.physics, s.materials);
   read_observables(problems, document, s);
+  check_field_count(problems, s);
   root.reject_unknown_keys();
   problems.throw_if_any();
   s.warnings.insert(s.warnings.end(), problems.warnings().begin(), problems.warnings().end());

@@ -93,6 +93,10 @@ struct SolverSpec {
 /// 2001; docs/report_code.md sec. 14). `single_velocity` is ordinary single-field MPM.
 enum class ContactType { single_velocity, friction, approach };
 
+/// The most velocity fields multi-field contact handles at a node (its per-node arrays in
+/// contact.cpp are this long); the scene check refuses a scene with more (Scene::field_count).
+constexpr int kMaxContactFields = 64;
+
 struct ContactSpec {
   ContactType type = ContactType::single_velocity;
   double mu = 0.0;  ///< Coulomb friction coefficient (friction only) [-]

@@ -186,4 +186,36 @@ BOOST_AUTO_TEST_CASE(a_bad_material_override_names_the_scene_entry_and_the_mater
   BOOST_TEST(e.find("/density") != std::string::npos);
 }
 
+// Multi-field contact handles at most 64 velocity fields at a node (its per-node arrays): one per
+// material, two with particle conversion (a companion each). 64 fields are read; 65 (65
+// materials, or 33 with conversion: 66) are refused at /materials with the limit, where the
+// contact used to ignore the fields beyond the 64th.
+BOOST_AUTO_TEST_CASE(more_than_64_contact_fields_are_refused) {
+  const auto with_materials = [](int n, bool conversion) {
+    Json doc = base();
+    const Json material = doc["materials"]["elastic_al"];
+    for (int i = 1; i < n; ++i) doc["materials"]["copy_" + std::to_string(i)] = material;
+    doc["physics"]["contact"] = {{"type", "friction"}, {"mu", 0.1}};
+    doc["physics"]["create_new_particles"] = conversion;
+    return doc;
+  };
+  BOOST_TEST(read_scene(with_materials(64, false), "test.json").field_count() == 64);
+  BOOST_TEST(read_scene(with_materials(32, true), "test.json").field_count() == 64);
+  std::string e = error_of(with_materials(65, false));
+  BOOST_TEST_MESSAGE(e);
+  BOOST_TEST(e.find("test.json: /materials: 65 materials make 65 velocity fields under "
+                    "physics.contact.type \"friction\": expected at most 64 fields (64 "
+                    "materials), or contact \"single_velocity\" (one field)") != std::string::npos);
+  e = error_of(with_materials(33, true));
+  BOOST_TEST_MESSAGE(e);
+  BOOST_TEST(e.find("test.json: /materials: 33 materials make 66 velocity fields (each with a "
+                    "companion field: physics.create_new_particles) under physics.contact.type "
+                    "\"friction\": expected at most 64 fields (32 materials)") !=
+             std::string::npos);
+  // One shared field whatever the materials: single_velocity contact has no limit.
+  Json single = with_materials(65, true);
+  single["physics"]["contact"]["type"] = "single_velocity";
+  BOOST_TEST(read_scene(single, "test.json").field_count() == 1);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
