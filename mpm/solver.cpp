@@ -44,7 +44,7 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   const bool usl = s.scheme == Scheme::usl;
   compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n, once per step
   order_for_scatter(S, G, order);  // by slab and colour: race-free scatters, any thread count
-  particles_to_grid<Shape>(P, G, S, order, halo);  // m_I, p_I, f_I per field (eqs. 20-22)
+  particles_to_grid<Shape>(P, G, S, order, dt, halo);  // m_I, p_I, f_I per field (eqs. 20-22)
   clock.lap(&PhaseTimes::particles_to_grid);
   t.grid = grid_update(G, dt, s.gravity, usl, contact);  // v*_I, contact, faces (eq. 24)
   clock.lap(&PhaseTimes::grid_update);
@@ -153,7 +153,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
                                   boxes_.end_cell(comm_->rank()), census_.columns)
                        : seed_particles(scene)),
       grid_(scene.grid, thread_count(threads), scene.field_count(),
-            scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction,
+            scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction &&
+                scene.physics.contact.mu > 0.0,
             stored_box()),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
@@ -194,15 +195,23 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
   if (grid_.fields() > 1) {  // contact bodies: a material's parent and companion fields
     grid_.field_body.assign(grid_.fields(), 0);
+    grid_.field_density.assign(grid_.fields(), 1.0);
     for (int m = 0; m < static_cast<int>(scene_.materials.size()); ++m) {
       grid_.field_body[scene_.parent_field(m)] = m;
       grid_.field_body[scene_.companion_field(m)] = m;
+      const double rho = scene_.materials[std::size_t(m)].material.model.params().density;
+      grid_.field_density[scene_.parent_field(m)] = rho;
+      grid_.field_density[scene_.companion_field(m)] = rho;
     }
   }
   double lightest = std::numeric_limits<double>::infinity();
   for (const double m : particles_.mass) lightest = std::min(lightest, m);
   if (comm_) lightest = comm_->min(lightest);
   if (std::isfinite(lightest)) grid_.light_mass = kLightNodeMassFraction * lightest;
+  // Walls hold only where a particle's domain reaches them (grid/wall.cpp).
+  if (grid_.has_walls())
+    for (const Vec3& l : half_widths(scene_))
+      grid_.particle_half_width.push_back(l.cwiseProduct(scene_.grid.spacing()));
   restart_ledger();
 }
 
@@ -340,9 +349,11 @@ std::optional<NodeBox> Simulation::stored_box() const {
 }
 
 void Simulation::rebuild_grid() {
-  Grid next(scene_.grid, grid_.threads(), grid_.fields(), grid_.has_nodal_stress(), stored_box());
+  Grid next(scene_.grid, grid_.threads(), grid_.fields(), !grid_.heat.empty(), stored_box());
   next.field_body = grid_.field_body;
+  next.field_density = grid_.field_density;
   next.light_mass = grid_.light_mass;
+  next.particle_half_width = grid_.particle_half_width;
   grid_ = std::move(next);
   own_box();
 }

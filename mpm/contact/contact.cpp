@@ -30,63 +30,60 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
   return g;
 }
 
-// The contact of n >= 2 bodies at one node: each body b has mass m[b], velocity v[b], mass
-// gradient grad[b] and start velocity v0[b] (for the slip of the motion). Writes the velocity
-// correction dv[b] (momentum-conserving: the mass-weighted mean correction removed, zero to
-// round-off for a pair) and the Coulomb work heat[b] >= 0; returns whether any body was corrected.
+// The contact of n >= 2 bodies at one node: each body b has mass m[b], velocity v[b] and mass
+// gradient grad[b]. Writes the velocity correction dv[b] (momentum-conserving: the mass-weighted
+// mean correction removed, zero to round-off for a pair) and the Coulomb work heat[b] >= 0;
+// returns whether any body was corrected.
 struct Bodies {
   int n = 0;
   double m[kMaxFields];
-  Vec3 v[kMaxFields], grad[kMaxFields], v0[kMaxFields];
+  double volume[kMaxFields];  ///< sum over the body's fields of m_f / rho_f [m^3]
+  Vec3 v[kMaxFields], grad[kMaxFields];
 };
 
-bool correct(const Bodies& B, const Mat3& sigma, bool friction, double mu, bool book, Vec3* dv,
-             double* heat) {
+// The (unnormalised) normal of body b, pointing from it into the others (contact.hpp):
+// grad m_rest - grad m_b, or for a pair with `larger_volume` the surface of the body with more
+// volume at the node.
+Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNormal rule) {
+  if (B.n != 2 || rule == ContactNormal::mass_gradients) return grad_total - 2.0 * B.grad[b];
+  const int larger = B.volume[1] > B.volume[0] ? 1 : 0;
+  return larger == b ? Vec3(-B.grad[b]) : Vec3(B.grad[larger]);
+}
+
+bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, Vec3* dv, double* heat) {
   double M = 0.0;
-  Vec3 P = Vec3::Zero(), P0 = Vec3::Zero(), gradM = Vec3::Zero();
+  Vec3 P = Vec3::Zero(), gradM = Vec3::Zero();
   for (int b = 0; b < B.n; ++b) {
     M += B.m[b];
     P += B.m[b] * B.v[b];
     gradM += B.grad[b];
-    if (book) P0 += B.m[b] * B.v0[b];
   }
   const Vec3 vcm = P / M;
-  const Vec3 vcm_start = P0 / M;  // the slip the bodies make over the step
   Vec3 net = Vec3::Zero();
   bool any = false;
   for (int b = 0; b < B.n; ++b) {
     dv[b].setZero();
     heat[b] = 0.0;
-    const Vec3 g = gradM - 2.0 * B.grad[b];  // grad m_rest - grad m_b
+    const Vec3 g = surface_normal(B, gradM, b, rule);
     const double gn = g.norm();
     if (!(gn > 0.0)) continue;  // no surface here: leave the body alone
     const Vec3 n = g / gn;
     const Vec3 u = B.v[b] - vcm;
     const double un = u.dot(n);
-    const bool approaching = un > 0.0;
-    // The report's friction also held surfaces that SEPARATE while the nodal stress is
-    // compressive. With sigma_I summed from the particles inside the interface that glued
-    // rebounding blocks whose interior still rang in compression, and the switching between
-    // glued and free fed energy in (contact_blocks_test). Compression now keeps a touching
-    // (u_n = 0) pair in contact, never pulls a separating pair back.
-    const bool compressed = friction && n.dot(sigma * n) < 0.0 && un >= 0.0;
-    if (!approaching && !compressed) continue;
+    if (!(un > 0.0)) continue;  // touching at rest or separating: never pulled back
     const Vec3 ut = u - un * n;
     const double ut_norm = ut.norm();
     dv[b] = -un * n;
-    // Coulomb: the slip is reduced by s = min(mu |u_n|, |u_t|) (stick when it is all of it).
+    // Coulomb: the slip is reduced by s = min(mu u_n, |u_t|) (stick when it is all of it).
     double s = 0.0;
     if (mu > 0.0 && ut_norm > 0.0) {
-      s = std::min(mu * std::abs(un), ut_norm);
+      s = std::min(mu * un, ut_norm);
       dv[b] -= s * (ut / ut_norm);
     }
-    // Coulomb work: the friction impulse m s times the slip speed of the motion over the step,
-    // that of the corrected start field (what the positions follow), >= 0. The normal reaction
+    // Coulomb work: the friction impulse m s times the slip that remains, |u_t| - s, the
+    // relative tangential velocity the positions then follow (zero in stick). The normal reaction
     // only keeps u_n = 0 and does no work.
-    if (book && s > 0.0) {
-      const Vec3 u0 = B.v0[b] - vcm_start;
-      heat[b] = B.m[b] * s * (u0 - u0.dot(n) * n).norm();
-    }
+    if (book) heat[b] = B.m[b] * s * (ut_norm - s);
     net += B.m[b] * dv[b];
     any = true;
   }
@@ -108,12 +105,15 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
                            " velocity fields, at most " + std::to_string(kMaxFields));
   const int nf = G.fields();
   const int nt = G.threads();
-  const bool friction = contact.type == ContactType::friction && G.has_nodal_stress();
   // Body of each field: its material (a material's parent and companion fields are one body
   // against the others); every field its own body if the solver set none.
   int body_of[kMaxFields];
-  for (int f = 0; f < nf; ++f)
+  double inverse_density[kMaxFields];  // 1 / rho_f: the nodal volume m_f / rho_f
+  for (int f = 0; f < nf; ++f) {
     body_of[f] = f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
+    inverse_density[f] =
+        f < static_cast<int>(G.field_density.size()) ? 1.0 / G.field_density[f] : 1.0;
+  }
   ContactTotals partial[kMaxThreads];
   // G.heat was zeroed at the start of the step (grid_update): contact adds to it.
   const std::vector<int>& nodes = G.active_nodes();  // heat is read at active nodes only
@@ -134,55 +134,40 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       Vec3 grad[kMaxFields];
       for (int a = 0; a < na; ++a)
         grad[a] = mass_gradient(G, G.mass.data() + std::size_t(active[a]) * nn, ijk);
-      Mat3 sigma = Mat3::Zero();
-      if (friction) {
-        for (int a = 0; a < na; ++a) {
-          const double* s = G.nodal_stress()[active[a] * nn + I].s;
-          Mat3 t;
-          t << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
-          sigma += t;
-        }
-      }
       // 1. Between bodies: each body's fields summed (mass, momentum, mass gradient).
       int body_index[kMaxFields];  // active field -> body slot
       int members[kMaxFields];     // fields per body slot
       int slot_of_body[kMaxFields];
       for (int b = 0; b < nf; ++b) slot_of_body[b] = -1;
       Bodies B;
-      Vec3 P[kMaxFields], P0[kMaxFields];
+      Vec3 P[kMaxFields];
       for (int a = 0; a < na; ++a) {
         const int e = active[a] * nn + I;
         int& slot = slot_of_body[body_of[active[a]]];
         if (slot < 0) {
           slot = B.n++;
           B.m[slot] = 0.0;
+          B.volume[slot] = 0.0;
           B.grad[slot].setZero();
           P[slot].setZero();
-          P0[slot].setZero();
           members[slot] = 0;
         }
         body_index[a] = slot;
         ++members[slot];
         B.m[slot] += G.mass[e];
+        B.volume[slot] += G.mass[e] * inverse_density[active[a]];
         B.grad[slot] += grad[a];
         P[slot] += G.mass[e] * v[e];
-        P0[slot] += G.mass[e] * G.velocity[e];
       }
-      for (int b = 0; b < B.n; ++b) {
-        B.v[b] = P[b] / B.m[b];
-        B.v0[b] = P0[b] / B.m[b];
-      }
+      for (int b = 0; b < B.n; ++b) B.v[b] = P[b] / B.m[b];
       for (int a = 0; a < na; ++a) {  // a one-field body keeps its velocity bit for bit
         const int b = body_index[a];
-        if (members[b] == 1) {
-          B.v[b] = v[active[a] * nn + I];
-          B.v0[b] = G.velocity[active[a] * nn + I];
-        }
+        if (members[b] == 1) B.v[b] = v[active[a] * nn + I];
       }
       Vec3 dv[kMaxFields];
       double heat[kMaxFields];
       bool any = false;
-      if (B.n >= 2 && correct(B, sigma, friction, contact.mu, book, dv, heat)) {
+      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, dv, heat)) {
         any = true;
         for (int a = 0; a < na; ++a) {
           const int e = active[a] * nn + I;
@@ -206,12 +191,12 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           const int e = active[a] * nn + I;
           field_of[pair.n] = e;
           pair.m[pair.n] = G.mass[e];
+          pair.volume[pair.n] = G.mass[e] * inverse_density[active[a]];
           pair.v[pair.n] = v[e];
           pair.grad[pair.n] = grad[a];
-          pair.v0[pair.n] = G.velocity[e];
           ++pair.n;
         }
-        if (!correct(pair, sigma, friction, contact.mu, book, dv, heat)) continue;
+        if (!correct(pair, contact.mu, contact.normal, book, dv, heat)) continue;
         any = true;
         for (int k = 0; k < pair.n; ++k) {
           v[field_of[k]] += dv[k];

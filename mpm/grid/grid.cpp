@@ -6,7 +6,7 @@
 
 namespace impact::mpm {
 
-Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
+Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
            std::optional<NodeBox> box)
     : spec_(spec),
       dx_(spec.spacing()),
@@ -20,14 +20,14 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
       threads_(std::max(threads, 1)),
       nodes_(entry_count()) {
   const int e = entry_count();
-  if (nodal_stress) stress_.assign(e, NodeStress{});
   mass.assign(e, 0.0);
   velocity.assign(e, Vec3::Zero());
   velocity_new.assign(e, Vec3::Zero());
   increment.assign(e, Vec3::Zero());
   velocity_L.assign(e, Vec3::Zero());
-  if (nodal_stress || spec.has_wall_friction()) heat.assign(e, 0.0);
+  if (friction_heat || spec.has_wall_friction()) heat.assign(e, 0.0);
   const int n = node_count();
+  const bool has_wall = spec.has_walls();
   // The stored node range per axis: the faces' layers and rows are visited only where stored.
   const NodeBox x = stored();
   const std::array<int, 3>& lowest = x.first;
@@ -57,8 +57,20 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
   free_increment.assign(boundary_nodes_.size() * fields_, Vec3::Zero());
   // The mirror's writes in its order: every face layer first (all faces), then the ghost layers
   // in face order, so that a ghost corner node is the reflection in both planes of an interior
-  // node (grid/boundary.cpp).
+  // node (grid/boundary.cpp). A wall's face layer and ghost layer are its own condition
+  // (grid/wall.cpp); a mirror write whose source lies on a wall's layers is applied again after
+  // the walls.
   const int c[3] = {spec_.cells[0], spec_.cells[1], spec_.cells[2]};
+  const auto on_wall_layer = [&](int i, int j, int k) {
+    const int ijk[3] = {i, j, k};
+    for (int face = 0; face < 6; ++face) {
+      if (spec_.faces[face] != FaceCondition::wall) continue;
+      const int axis = face / 2;
+      if (face % 2 == 0 ? ijk[axis] <= 0 : ijk[axis] >= c[axis]) return true;
+    }
+    return false;
+  };
+  std::vector<int> wall_slot(has_wall ? n : 0, -1);
   for (int pass = 0; pass < 2; ++pass)
     for (int face = 0; face < 6; ++face) {
       if (!constrained_[face]) continue;
@@ -69,8 +81,8 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
       const int inner = face % 2 == 0 ? 1 : c[axis] - 1;
       // A face whose layers this grid does not store is another rank's.
       if (!stored(axis, layer) || !stored(axis, ghost) || !stored(axis, inner)) continue;
-      // A wall's face layer is its own condition (apply_walls); its ghost layer is the mirror.
       const bool wall = spec_.faces[face] == FaceCondition::wall;
+      if (wall && pass == 1) continue;  // set with the face layer (below)
       for (int u = lowest[a]; u <= highest[a]; ++u)
         for (int w = lowest[b]; w <= highest[b]; ++w) {
           int ijk[3];
@@ -79,15 +91,45 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
           ijk[axis] = pass == 0 ? layer : ghost;
           const int target = index(ijk[0], ijk[1], ijk[2]);
           ijk[axis] = inner;
-          if (wall && pass == 0) {
-            wall_all_.push_back(
-                {target, axis, face % 2 == 0 ? 1.0 : -1.0, spec_.wall_friction[face]});
-          } else {
-            mirror_all_.push_back(
-                {target, pass == 0 ? -1 : index(ijk[0], ijk[1], ijk[2]), axis, fixed});
+          const int source = index(ijk[0], ijk[1], ijk[2]);
+          if (wall) {
+            ijk[axis] = ghost;
+            const int outside = index(ijk[0], ijk[1], ijk[2]);
+            int& slot = wall_slot[target];
+            if (slot < 0) {
+              slot = int(wall_all_.size());
+              wall_all_.push_back({target, 0, {}});
+            }
+            WallNode& node = wall_all_[slot];
+            node.face[node.count++] = {axis,
+                                       face % 2 == 0 ? 1.0 : -1.0,
+                                       spec_.wall_friction[face],
+                                       std::uint8_t(1u << face),
+                                       outside,
+                                       source};
+            continue;
           }
+          const MirrorWrite m{target, pass == 0 ? -1 : source, axis, fixed};
+          mirror_all_.push_back(m);
+          ijk[axis] = inner;
+          if (has_wall && pass == 1 && on_wall_layer(ijk[0], ijk[1], ijk[2]))
+            mirror_after_walls_all_.push_back(m);
         }
     }
+  // Wall nodes in ascending storage order: the heat sum runs in the same order on any grid.
+  std::sort(wall_all_.begin(), wall_all_.end(),
+            [](const WallNode& x, const WallNode& y) { return x.node < y.node; });
+  for (int face = 0; face < 6; ++face) {
+    if (spec_.faces[face] != FaceCondition::wall) continue;
+    const int axis = face / 2;
+    wall_planes_.push_back({axis, face % 2 == 0 ? 1.0 : -1.0,
+                            face % 2 == 0 ? spec_.lower(axis) : spec_.upper(axis),
+                            std::uint8_t(1u << face)});
+  }
+  if (has_wall) {
+    wall_touch.assign(e, 0);
+    wall_held_.assign(std::size_t(fields_) * wall_all_.size(), 0);
+  }
   bx_ = (nx_ + kBlock - 1) / kBlock;
   by_ = (ny_ + kBlock - 1) / kBlock;
   bz_ = (nz_ + kBlock - 1) / kBlock;
@@ -97,12 +139,14 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool nodal_stress,
     active_boundary_.resize(boundary_nodes_.size());
     for (std::size_t k = 0; k < boundary_nodes_.size(); ++k) active_boundary_[k] = int(k);
     mirror_active_ = mirror_all_;
+    mirror_after_walls_active_ = mirror_after_walls_all_;
     wall_active_ = wall_all_;
   } else {
     marks_.assign(std::size_t(bx_) * by_ * bz_, 0);
     active_.reserve(n);  // no allocation in a step
     active_boundary_.reserve(boundary_nodes_.size());
     mirror_active_.reserve(mirror_all_.size());
+    mirror_after_walls_active_.reserve(mirror_after_walls_all_.size());
     wall_active_.reserve(wall_all_.size());
   }
 }
@@ -139,6 +183,9 @@ void Grid::activate() {
   mirror_active_.clear();
   for (const MirrorWrite& w : mirror_all_)
     if (in_marked_block(w.target)) mirror_active_.push_back(w);
+  mirror_after_walls_active_.clear();
+  for (const MirrorWrite& w : mirror_after_walls_all_)
+    if (in_marked_block(w.target)) mirror_after_walls_active_.push_back(w);
   wall_active_.clear();
   for (const WallNode& w : wall_all_)
     if (in_marked_block(w.node)) wall_active_.push_back(w);
@@ -146,10 +193,10 @@ void Grid::activate() {
 }
 
 void Grid::clear() {
-  const bool stress = has_nodal_stress();
+  const bool touch = !wall_touch.empty();
   for_active_entries([&](int i) {
     nodes_[i] = NodeData{};
-    if (stress) stress_[i] = NodeStress{};
+    if (touch) wall_touch[i] = 0;
     mass[i] = 0.0;
   });
 }
@@ -166,8 +213,7 @@ void Grid::clear_momentum() {
 }
 
 std::size_t Grid::bytes() const {
-  std::size_t b = nodes_.size() * sizeof(NodeData) + remap_.size() * sizeof(Vec3) +
-                  stress_.size() * sizeof(NodeStress);
+  std::size_t b = nodes_.size() * sizeof(NodeData) + remap_.size() * sizeof(Vec3);
   b +=
       (mass.size() + heat.size()) * sizeof(double) +
       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size()) * sizeof(Vec3);
@@ -176,7 +222,10 @@ std::size_t Grid::bytes() const {
   b += (boundary_nodes_.capacity() + active_boundary_.capacity()) * sizeof(int) +
        free_increment.capacity() * sizeof(Vec3) +
        (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite) +
-       (wall_all_.capacity() + wall_active_.capacity()) * sizeof(WallNode);
+       (mirror_after_walls_all_.capacity() + mirror_after_walls_active_.capacity()) *
+           sizeof(MirrorWrite) +
+       (wall_all_.capacity() + wall_active_.capacity()) * sizeof(WallNode) + wall_touch.size() +
+       wall_held_.size();
   return b;
 }
 

@@ -16,7 +16,9 @@
 // arrays are read only at active nodes or weighted by their mass. Dense mode: every node active.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -34,12 +36,6 @@ struct alignas(64) NodeData {
   double pad = 0.0;
 };
 
-/// Nodal stress sum_p S_Ip sigma_p (xx, yy, zz, xy, yz, zx): only its normal component's sign is
-/// used, by friction contact's compression test (docs/report_code.md sec. 14).
-struct NodeStress {
-  double s[6] = {};
-};
-
 /// One write of the face mirror (Grid::apply_mirror): `target` is a face-layer node (its
 /// constrained components zeroed) or a ghost node (the reflection of `source`, the first interior
 /// node); storage indices within one field.
@@ -50,17 +46,38 @@ struct MirrorWrite {
   bool fixed;
 };
 
-/// One face-layer node of a `wall` face (Grid::apply_walls): `inward` is +1 on a lower face and
-/// -1 on an upper one (the direction the wall pushes), `mu` the face's Coulomb coefficient.
-struct WallNode {
-  int node;
+/// One `wall` face a face-layer node lies on (grid/wall.cpp): `inward` is +1 on a lower face and
+/// -1 on an upper one (the direction the wall pushes), `mu` its Coulomb coefficient, `bit` the
+/// face's bit in Grid::wall_touch (1 << face), `ghost` and `inner` the storage indices of the node
+/// outside it and of the first interior node (-1 where not stored).
+struct WallFace {
   int axis;
   double inward;
   double mu;
+  std::uint8_t bit;
+  int ghost;
+  int inner;
 };
 
-/// Which velocity a wall acts on: `step` on the step's end velocity v* (contact, friction and its
-/// heat), `projection` on the MUSL re-map (normal contact only).
+/// A face-layer node of the `wall` faces: on one face, two on an edge, three at a corner; its
+/// faces are projected together (Grid::apply_walls).
+struct WallNode {
+  int node;
+  int count = 0;
+  std::array<WallFace, 3> face;
+};
+
+/// A `wall` face's plane for the touch test (Grid::wall_touch): the particles whose domain reaches
+/// `plane` along `axis` within the step.
+struct WallPlane {
+  int axis;
+  double inward;
+  double plane;  ///< [m]
+  std::uint8_t bit;
+};
+
+/// Which velocity a wall acts on: `step` on the step's start and end velocities (contact, friction
+/// and its heat), `projection` on the MUSL re-map (normal contact only).
 enum class WallPass { step, projection };
 
 /// The nodes a grid stores per axis, first[d] to last[d] inclusive (node indices, -1 being the
@@ -75,11 +92,12 @@ struct NodeBox {
 
 class Grid {
  public:
-  /// `fields` velocity fields; `nodal_stress`: also scatter the stress (friction contact);
+  /// `fields` velocity fields; `friction_heat`: a heat array for friction contact's Coulomb work
+  /// (a wall face with friction allocates it too);
   /// `box`: the nodes to store (all of them when absent; clipped to the grid and its ghost
   /// layers). Node indices stay those of the whole grid; a face condition applies where its layer
   /// is stored.
-  Grid(const GridSpec& spec, int threads, int fields = 1, bool nodal_stress = false,
+  Grid(const GridSpec& spec, int threads, int fields = 1, bool friction_heat = false,
        std::optional<NodeBox> box = std::nullopt);
 
   const GridSpec& spec() const { return spec_; }
@@ -168,16 +186,6 @@ class Grid {
   }
   /// Copies the scattered masses into `mass` at the active nodes (after the scatter).
   void collect_mass();
-  /// Nodal stress scatter target (empty unless constructed with nodal_stress).
-  NodeStress* stress_buffer() {
-    return stress_.data();
-  }
-  bool has_nodal_stress() const {
-    return !stress_.empty();
-  }
-  const std::vector<NodeStress>& nodal_stress() const {
-    return stress_;
-  }
   /// The scattered node data.
   std::vector<NodeData>& nodes() {
     return nodes_;
@@ -208,6 +216,8 @@ class Grid {
   /// Contact body of each velocity field (its material: a material's parent and companion fields
   /// are one body against the others, contact/contact.hpp); empty: every field its own body.
   std::vector<int> field_body;
+  /// Reference density of each velocity field's material [kg/m^3] (contact's nodal volumes).
+  std::vector<double> field_density;
 
   /// Nodes touched by a constrained (symmetric or fixed) face: face layers, ghost layers, once
   /// each (for the impulse / boundary bookkeeping); indices within one field.
@@ -224,15 +234,39 @@ class Grid {
   /// constrained face the constrained components on the face layer are zeroed, and the ghost
   /// layer outside is set to the reflection of the first interior layer.
   void apply_mirror(std::vector<Vec3>& v) const;
-  /// The `wall` faces' face layers (grid/wall.cpp), on every field of the end velocity `end`: a
-  /// node moving into the wall has its normal component zeroed and, in the step pass, friction
-  /// takes up to mu times that normal velocity off its tangential one; any other node is left
-  /// free (the wall never pulls). Step pass: adds the Coulomb heat to `heat` (if allocated) and
-  /// returns its sum [J].
-  double apply_walls(std::vector<Vec3>& end, WallPass pass);
+  /// The `wall` faces (grid/wall.cpp) on every field of the end velocity `end` (the step's v*, or
+  /// MUSL's re-mapped velocity in the projection pass): at a face-layer node whose field touches a
+  /// wall this step (wall_touch) and moves into it, the normal component is zeroed; the held
+  /// faces of an edge or corner node are projected together, then one Coulomb correction (step
+  /// pass) takes up to sum mu_f j_f off what remains tangential. A node that does not touch, or
+  /// moves away, is left free (the wall never pulls). The ghost node outside a held face is the
+  /// mirror image of the first interior node, in `start` (the step's v_I, step pass) and `end`;
+  /// outside a free one it keeps its own velocity. Step pass: adds the Coulomb heat to `heat` (if
+  /// allocated) and returns its sum [J].
+  double apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallPass pass);
   bool has_walls() const {
     return !wall_all_.empty();
   }
+  /// The bits (1 << face) of the wall faces that a particle at `x` moving at `v`, of half-widths
+  /// `half_width` [m], reaches within `dt`: n . (x - x_wall) - l_n + dt min(0, n . v) <= 1e-9 of
+  /// the spacing (a particle seeded against the wall touches it whatever the round-off).
+  std::uint8_t touched_walls(const Vec3& x, const Vec3& v, const Vec3& half_width,
+                             double dt) const {
+    std::uint8_t bits = 0;
+    for (const WallPlane& w : wall_planes_) {
+      const double approach = std::min(0.0, w.inward * v(w.axis));
+      const double gap = w.inward * (x(w.axis) - w.plane) - half_width(w.axis) + dt * approach;
+      if (gap <= 1e-9 * dx_(w.axis)) bits |= w.bit;
+    }
+    return bits;
+  }
+  /// Per entry: the bits (1 << face) of the wall faces that a particle of the entry's field with
+  /// this node in its stencil reaches within the step (particles-to-grid; summed over the ranks as
+  /// a bitwise or); allocated only with wall faces. A wall holds only where its body touches it.
+  std::vector<std::uint8_t> wall_touch;
+  /// Per scene object: the particles' half-widths [m] (uGIMP's l times the spacing), the extent
+  /// of a particle's domain for the touch test; set by the solver with wall faces.
+  std::vector<Vec3> particle_half_width;
 
   std::size_t bytes() const;
 
@@ -244,14 +278,17 @@ class Grid {
   int fields_;
   int threads_;
   std::vector<NodeData> nodes_;
-  std::vector<NodeStress> stress_;
   std::vector<Vec3> remap_;
   std::vector<int> boundary_nodes_;
   std::vector<int> active_boundary_;
   std::vector<MirrorWrite> mirror_all_;     ///< every face node, in the order of the mirror
   std::vector<MirrorWrite> mirror_active_;  ///< those whose target is in an active block
-  std::vector<WallNode> wall_all_;          ///< face layers of the wall faces
-  std::vector<WallNode> wall_active_;       ///< those in an active block
+  /// Mirror writes whose source lies on a wall's layers: applied after the walls.
+  std::vector<MirrorWrite> mirror_after_walls_all_, mirror_after_walls_active_;
+  std::vector<WallNode> wall_all_;       ///< face-layer nodes of the wall faces, ascending
+  std::vector<WallNode> wall_active_;    ///< those in an active block
+  std::vector<std::uint8_t> wall_held_;  ///< per field and active wall node: the held faces' bits
+  std::vector<WallPlane> wall_planes_;
   std::array<bool, 6> constrained_{};
   int bx_ = 0, by_ = 0, bz_ = 0;  ///< blocks per axis
   std::vector<int> active_;       ///< active nodes, ascending

@@ -51,11 +51,11 @@ void add(NodeData& a, const NodeData& b) {
     a.force[d] += b.force[d];
   }
 }
-void add(NodeStress& a, const NodeStress& b) {
-  for (int c = 0; c < 6; ++c) a.s[c] += b.s[c];
-}
 void add(Vec3& a, const Vec3& b) {
   a += b;
+}
+void add(std::uint8_t& a, const std::uint8_t& b) {  // wall touch bits: a particle of either rank
+  a |= b;
 }
 
 // A neighbour of a box along one axis: its rank, b the boundary cell between the two boxes, and
@@ -143,11 +143,11 @@ NodeBox stored_nodes(const BoxDecomposition& boxes, const std::array<int, 3>& ce
 }
 
 HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank,
-                         int fields, bool nodal_stress, bool musl) {
+                         int fields, bool walls, bool musl) {
   const NodeBox box = stored_nodes(boxes, cells, rank);
-  const double per_node = double(sizeof(NodeData)) + (nodal_stress ? sizeof(NodeStress) : 0.0) +
-                          (musl ? sizeof(Vec3) : 0.0);
-  const int exchanges_per_neighbour = 1 + (nodal_stress ? 1 : 0) + (musl ? 1 : 0);
+  const double per_node =
+      double(sizeof(NodeData)) + (walls ? sizeof(std::uint8_t) : 0.0) + (musl ? sizeof(Vec3) : 0.0);
+  const int exchanges_per_neighbour = 1 + (walls ? 1 : 0) + (musl ? 1 : 0);
   HaloTraffic t;
   for (int axis = 0; axis < 3; ++axis) {
     const int e = (axis + 1) % 3, f = (axis + 2) % 3;
@@ -168,7 +168,7 @@ HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>
 void HaloExchange::sum_node_data(Grid& G, bool contact) const {
   if (comm_.size() == 1) return;
   sum_shared(G, G.node_buffer(), comm_, boxes_, kSumTag, /*mark=*/true);
-  if (G.has_nodal_stress()) sum_shared(G, G.stress_buffer(), comm_, boxes_, kSumTag, false);
+  if (!G.wall_touch.empty()) sum_shared(G, G.wall_touch.data(), comm_, boxes_, kSumTag, false);
   if (!contact) return;
   // The layer beyond the shared ones, whole on the neighbour: b + 2 from above, b - 2 from below.
   char* const marks = G.dense() ? nullptr : G.block_marks();

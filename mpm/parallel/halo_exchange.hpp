@@ -31,15 +31,16 @@ NodeBox stored_nodes(const BoxDecomposition& boxes, const std::array<int, 3>& ce
 
 /// What a rank sends by the node sums per step (docs/mpi.md, "Cost model"): per neighbour along
 /// axis d, 3 node layers times its stored extents on the other two axes times the velocity fields,
-/// each node 64 B (mass, momentum, force), 48 B more with nodal stress (friction contact) and 24 B
-/// more with the MUSL re-map's momentum; with several fields (contact) also the layer beyond,
-/// 64 B per node. One message per neighbour and exchange (both sides send the same length).
+/// each node 64 B (mass, momentum, force), 1 B more with `wall` faces (the walls a particle
+/// touches: Grid::wall_touch) and 24 B more with the MUSL re-map's momentum; with several fields
+/// (contact) also the layer beyond, 64 B per node. One message per neighbour and exchange (both
+/// sides send the same length).
 struct HaloTraffic {
   double bytes = 0.0;
   double messages = 0.0;
 };
 HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank,
-                         int fields, bool nodal_stress, bool musl);
+                         int fields, bool walls, bool musl);
 
 class HaloExchange {
  public:

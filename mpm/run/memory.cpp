@@ -58,11 +58,13 @@ double estimated_grid_bytes(const Scene& scene) {
   const double nx = g.cells[0] + 3.0, ny = g.cells[1] + 3.0, nz = g.cells[2] + 3.0;
   const double nodes = nx * ny * nz;
   const double fields = scene.field_count();
-  const bool friction = fields > 1 && scene.physics.contact.type == ContactType::friction;
+  const bool contact_heat = fields > 1 && scene.physics.contact.type == ContactType::friction &&
+                            scene.physics.contact.mu > 0.0;
   const bool musl = scene.solver.scheme == Scheme::musl;
-  double per_entry = 64.0 + 8.0 + 4.0 * 24.0;  // NodeData, mass, 4 velocities
-  if (musl) per_entry += 24.0;                 // re-map momentum
-  if (friction) per_entry += 48.0 + 8.0;       // nodal stress, heat
+  double per_entry = 64.0 + 8.0 + 4.0 * 24.0;                   // NodeData, mass, 4 velocities
+  if (musl) per_entry += 24.0;                                  // re-map momentum
+  if (contact_heat || g.has_wall_friction()) per_entry += 8.0;  // friction heat
+  if (g.has_walls()) per_entry += 1.0;                          // wall touch bits
   double bytes = fields * nodes * per_entry;
   bytes += nodes * 4.0;  // active-node list (dense: every node; blocks: reserved for all)
   if (g.active_blocks) {
@@ -71,14 +73,19 @@ double estimated_grid_bytes(const Scene& scene) {
   }
   // Boundary nodes (constrained faces: face and ghost layers), their free increments, the active
   // subset's positions and the mirror's writes (all and active: Grid::apply_mirror).
-  double boundary = 0.0;
+  // A wall's face layer is a list of its own (all and active, and the held faces per field), its
+  // ghost layer none (grid/wall.cpp).
+  double boundary = 0.0, mirrored = 0.0, walled = 0.0;
   const double n[3] = {nx, ny, nz};
   for (int face = 0; face < 6; ++face) {
     if (g.faces[face] == FaceCondition::free) continue;
     const int axis = face / 2;
-    boundary += 2.0 * n[(axis + 1) % 3] * n[(axis + 2) % 3];
+    const double layer = n[(axis + 1) % 3] * n[(axis + 2) % 3];
+    boundary += 2.0 * layer;
+    (g.faces[face] == FaceCondition::wall ? walled : mirrored) += layer;
   }
-  bytes += boundary * (4.0 + 4.0 + fields * 24.0 + 2.0 * sizeof(MirrorWrite));
+  bytes += boundary * (4.0 + 4.0 + fields * 24.0) + 2.0 * mirrored * 2.0 * sizeof(MirrorWrite) +
+           walled * (2.0 * sizeof(WallNode) + fields);
   return bytes;
 }
 

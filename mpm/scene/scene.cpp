@@ -240,13 +240,17 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
   JsonReader r = root.optional_child("physics", "optional physics (the report's <MPM> flags)")
                      .value_or(JsonReader(empty_json_object(), "/physics", root.problems()));
   if (auto c = r.optional_child("contact", "interaction of the materials' velocity fields")) {
+    // "approach" is the report's name for the same model as "friction" (contact/contact.hpp).
     const std::string type = c->choice("type", {"single_velocity", "friction", "approach"},
                                        "contact model", "single_velocity");
-    ph.contact.type = type == "friction"   ? ContactType::friction
-                      : type == "approach" ? ContactType::approach
-                                           : ContactType::single_velocity;
+    ph.contact.type =
+        type == "single_velocity" ? ContactType::single_velocity : ContactType::friction;
     ph.contact.mu =
         c->number_or("mu", 0.0, Range::non_negative(), "Coulomb friction coefficient [-]");
+    ph.contact.normal = c->choice("normal", {"mass_gradients", "larger_volume"},
+                                  "contact normal at a node", "mass_gradients") == "larger_volume"
+                            ? ContactNormal::larger_volume
+                            : ContactNormal::mass_gradients;
     c->reject_unknown_keys();
   }
   if (auto a = r.optional_child("artificial_viscosity", "bulk viscosity, report eq. 12")) {

@@ -40,6 +40,11 @@ struct GridSpec {
       if (mu > 0.0) return true;
     return false;
   }
+  bool has_walls() const {
+    for (const FaceCondition f : faces)
+      if (f == FaceCondition::wall) return true;
+    return false;
+  }
   /// Grid work only on the 2x2x2-node blocks the particles' stencils touch (grid/grid.hpp);
   /// false: every node of the box every step (the 2004 code's dense loops).
   bool active_blocks = true;
@@ -90,8 +95,15 @@ struct SolverSpec {
 };
 
 /// How the velocity fields of different materials interact at shared nodes (Bardenhagen et al.
-/// 2001; docs/report_code.md sec. 14). `single_velocity` is ordinary single-field MPM.
-enum class ContactType { single_velocity, friction, approach };
+/// 2001; docs/report_code.md sec. 14). `single_velocity` is ordinary single-field MPM; `friction`
+/// (the scene's "friction" or "approach": one model, contact/contact.hpp) gives each material its
+/// own field, corrected where they approach, with Coulomb friction mu.
+enum class ContactType { single_velocity, friction };
+
+/// The contact normal at a node of two bodies (contact/contact.hpp): `mass_gradients` unit(grad
+/// m_other - grad m_self) (Bardenhagen et al. 2001); `larger_volume` the surface of the body with
+/// more volume at the node (Nairn's "maximum volume"; for a small body on a large flat one).
+enum class ContactNormal { mass_gradients, larger_volume };
 
 /// The most velocity fields multi-field contact handles at a node (its per-node arrays in
 /// contact.cpp are this long); the scene check refuses a scene with more (Scene::field_count).
@@ -99,7 +111,8 @@ constexpr int kMaxContactFields = 64;
 
 struct ContactSpec {
   ContactType type = ContactType::single_velocity;
-  double mu = 0.0;  ///< Coulomb friction coefficient (friction only) [-]
+  double mu = 0.0;  ///< Coulomb friction coefficient [-]
+  ContactNormal normal = ContactNormal::mass_gradients;
 };
 
 /// Artificial bulk viscosity, report eq. 12 (von Neumann & Richtmyer 1950, Wilkins 1980):

@@ -170,7 +170,7 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
   if (contact != nullptr && G.fields() > 1)
     apply_contact(G, *contact, G.velocity_L, ContactPass::projection);
   G.apply_mirror(G.velocity_L);
-  if (G.has_walls()) G.apply_walls(G.velocity_L, WallPass::projection);
+  if (G.has_walls()) G.apply_walls(nullptr, G.velocity_L, WallPass::projection);
 #pragma omp parallel for schedule(static) num_threads(nt)
   for (std::ptrdiff_t p = 0; p < n; ++p)
     P.L[p] = gradient(G, S[p], G.velocity_L, P.v[p], P.field[p] * nn);

@@ -76,7 +76,8 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     }
   G.apply_mirror(G.velocity);
   G.apply_mirror(G.velocity_new);
-  if (G.has_walls()) out.wall_friction_heat = G.apply_walls(G.velocity_new, WallPass::step);
+  if (G.has_walls())
+    out.wall_friction_heat = G.apply_walls(&G.velocity, G.velocity_new, WallPass::step);
   G.for_active_entries([&](int i) { G.increment[i] = G.velocity_new[i] - G.velocity[i]; });
   // The faces' impulse: what they changed in the increments that move the particles (serial, in
   // node order: deterministic). A stationary wall does no work (docs/mpm.md#ledger).

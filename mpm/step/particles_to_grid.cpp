@@ -20,16 +20,16 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
-                       const ScatterOrder& order, const HaloExchange* halo) {
+                       const ScatterOrder& order, double dt, const HaloExchange* halo) {
   constexpr int N = Shape::N;
   G.clear();  // where the last step put mass: now zero everywhere
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   const bool viscosity = !P.q.empty();
-  const bool nodal_stress = G.has_nodal_stress();
   NodeData* const buf = G.node_buffer();
-  NodeStress* const sbuf = nodal_stress ? G.stress_buffer() : nullptr;
   char* const marks = G.dense() ? nullptr : G.block_marks();
   const int sx = G.stride_x(), sy = G.stride_y();
+  // Wall faces: which walls each particle's domain reaches this step (grid/wall.cpp).
+  std::uint8_t* const touch = G.wall_touch.empty() ? nullptr : G.wall_touch.data();
   scatter_by_colour(order, G.threads(), [&](int p) {
     const Stencil<N>& s = S[p];
     if (marks) G.mark_stencil(marks, s.base, N);
@@ -61,14 +61,17 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
             node.force[d] += f(d);
           }
         }
-        if (sbuf) {  // friction contact's compression test only
-          const Mat3& t = P.state[p].stress;
-          const double c[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
-          NodeStress* srow = sbuf + offset + row_index;
-          for (int k = 0; k < N; ++k)
-            for (int c6 = 0; c6 < 6; ++c6) srow[k].s[c6] += wij * s.w[2][k] * c[c6];
-        }
       }
+    }
+    if (touch) {  // the nodes this particle weighs, where it reaches a wall
+      const std::uint8_t bits =
+          G.touched_walls(P.x[p], P.v[p], G.particle_half_width[P.object[p]], dt);
+      if (bits == 0) return;
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j)
+          for (int k = 0; k < N; ++k)
+            if (s.w[0][i] * s.w[1][j] * s.w[2][k] > 0.0)
+              touch[offset + base_index + i * sx + j * sy + k] |= bits;
     }
   });
   if (halo) halo->sum_node_data(G, /*contact=*/G.fields() > 1);

@@ -51,11 +51,12 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 /// Particles to grid (Sulsky et al. 1994 eqs. 20-22):
 ///   m_I = sum_p S_Ip m_p,  p_I = sum_p S_Ip m_p v_p,
 ///   f_I = -sum_p V_p sigma_p . grad S_Ip   (gravity is added as m_I g in grid_update),
-/// scattered in `order` (order_for_scatter on S); `halo` (several ranks) completes the sums at the
-/// node planes shared with the neighbouring ranks before the step's nodes are activated.
+/// scattered in `order` (order_for_scatter on S); with wall faces, also the walls each particle
+/// reaches within the step `dt` (Grid::wall_touch); `halo` (several ranks) completes the sums at
+/// the node planes shared with the neighbouring ranks before the step's nodes are activated.
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
-                       const ScatterOrder& order, const HaloExchange* halo = nullptr);
+                       const ScatterOrder& order, double dt, const HaloExchange* halo = nullptr);
 
 /// USL's velocity gradient limits the acceleration part of v*_I at nodes lighter than this
 /// fraction of the lightest particle mass: v^L_I = v_I + min(1, m_I/m_light) (v*_I - v_I). Why:

@@ -24,9 +24,13 @@
 // approach with mu = 0: the corrections are along the normals only, along x on the contact face,
 //   so each block keeps its tangential momentum to within 1 % of p_y0. Not to round-off: at the
 //   two y-edges of the contact face the mass-gradient normal tilts towards y as the blocks slide
-//   past each other (0.08 cell in 8 us); measured max |Dp_y|/p_y0 = 0.24 %.
-// friction and approach: the ledger closes, |energy_error| < 2 % of E0 at the end. A separating
-//   pair is never pulled back (mpm/contact/contact.cpp, detection).
+//   past each other (0.08 cell in 8 us); measured max |Dp_y|/p_y0 = 0.24 %. (With the normal
+//   `larger_volume`, the heavier block's own edge tilts it: 61 %; that normal is for a small body
+//   on a large flat one, contact_friction_test.cpp.)
+// approach with mu = 0: the ledger closes, |energy_error| < 2 % of E0 at the end; friction: the
+//   residual is first order in dt (the Coulomb work on the step's slip): below 12 % at multiplier
+//   0.5 and 1 % at 0.1 (measured +10.0 % and -0.16 %). A separating pair is never pulled back
+//   (mpm/contact/contact.cpp, detection).
 // friction: friction_heat (the Coulomb work on the slip that remains, m s (|u_t| - s) per node)
 //   never decreases, step by step, is positive (the blocks slip: 10 m/s relative along y), and
 //   stays below the kinetic energy of the relative tangential motion, 1/2 m1 m2/(m1 + m2)
@@ -84,9 +88,9 @@ struct Measured {
   bool has_friction_column = false;
 };
 
-Measured collide(const char* type, double mu, double max_time) {
+Measured collide(const char* type, double mu, double max_time, double multiplier = 0.5) {
   const Json patch = {{"physics", {{"contact", {{"type", type}, {"mu", mu}}}}},
-                      {"time", {{"max_time", max_time}}}};
+                      {"time", {{"max_time", max_time}, {"multiplier", multiplier}}}};
   const Scene scene = test::verification_scene("contact_blocks.json", patch);
   Simulation sim(scene);
   const Particles& P = sim.particles();
@@ -142,18 +146,19 @@ Measured collide(const char* type, double mu, double max_time) {
   m.energy_error = row.energy_error;
   m.heat_fraction = heat / e0;
   BOOST_TEST_MESSAGE(
-      type << " (mu " << mu << "): " << P.size() << " particles, " << sim.steps()
-           << " steps, fields " << sim.grid().fields() << "; max |p - p0 - J_b|/p_block "
-           << m.worst_momentum << "; final relative v_x " << m.final_relative_vx << " m/s (was "
-           << v_approach << "), mean separation speed (slope of the centroid distance) "
-           << m.separation_speed << " m/s; centroid distance " << m.centroid_distance0 * 1e3
-           << " -> " << m.centroid_distance * 1e3 << " mm (max change "
-           << m.worst_distance_change / m.spacing << " cells); left block max |Dp_x| "
-           << max_dpx / p_block << ", max |Dp_y| " << max_dpy / p_block
-           << " p_block, max |Dp_y|/|Dp_x| " << max_ratio << ", max (|Dp_y| - mu |Dp_x|)/p_block "
-           << m.worst_coulomb << ", max |Dp_y|/p_y0 " << m.worst_tangential << "; energy_error "
-           << row.energy_error << ", friction_heat " << sink(sim.ledger(), "friction_heat")
-           << " J of E0 " << sim.ledger().initial_energy() << " J");
+      type << " (mu " << mu << ", multiplier " << multiplier << "): " << P.size() << " particles, "
+           << sim.steps() << " steps, fields " << sim.grid().fields()
+           << "; max |p - p0 - J_b|/p_block " << m.worst_momentum << "; final relative v_x "
+           << m.final_relative_vx << " m/s (was " << v_approach
+           << "), mean separation speed (slope of the centroid distance) " << m.separation_speed
+           << " m/s; centroid distance " << m.centroid_distance0 * 1e3 << " -> "
+           << m.centroid_distance * 1e3 << " mm (max change " << m.worst_distance_change / m.spacing
+           << " cells); left block max |Dp_x| " << max_dpx / p_block << ", max |Dp_y| "
+           << max_dpy / p_block << " p_block, max |Dp_y|/|Dp_x| " << max_ratio
+           << ", max (|Dp_y| - mu |Dp_x|)/p_block " << m.worst_coulomb << ", max |Dp_y|/p_y0 "
+           << m.worst_tangential << "; energy_error " << row.energy_error << ", friction_heat "
+           << sink(sim.ledger(), "friction_heat") << " J of E0 " << sim.ledger().initial_energy()
+           << " J");
   return m;
 }
 
@@ -173,7 +178,13 @@ BOOST_AUTO_TEST_CASE(friction_conserves_momentum_obeys_coulomb_and_the_blocks_re
   const Measured m = collide("friction", mu, 8e-6);
   BOOST_TEST(m.worst_momentum <= 1e-12);
   BOOST_TEST(m.worst_coulomb <= 1e-9);
-  BOOST_TEST(std::abs(m.energy_error) < 0.02);
+  // The Coulomb work is booked on the slip that remains after the step's correction, first order
+  // in dt on this violent oblique impact: energy_error +10.0 / +3.3 / -0.16 % at multipliers
+  // 0.5 / 0.25 / 0.1 (booked on the start field's slip it stayed near -2 % at every step size,
+  // counted heat in stick, and disagreed with the wall's convention).
+  BOOST_TEST(std::abs(m.energy_error) < 0.12);
+  const Measured fine = collide("friction", mu, 8e-6, 0.1);
+  BOOST_TEST(std::abs(fine.energy_error) < 0.01);
   BOOST_TEST(m.has_friction_column);
   BOOST_TEST(m.heat_decrease == 0.0);
   BOOST_TEST(m.heat_fraction > 0.0);

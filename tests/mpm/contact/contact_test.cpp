@@ -1,0 +1,121 @@
+// Multi-material contact at one node (mpm/contact/contact.cpp) against the correction worked by
+// hand: two bodies of mass 0.5 at node (2, 2, 2) of a unit-cell grid, their mass gradients from
+// the neighbouring nodes (central differences), mu = 0.3, the step pass.
+//   stick   v_0 = (1, 0.1, 0), v_1 = (-1, 0, 0): u = v - v_cm = +-(1, 0.05, 0), u_n = 1, |u_t| =
+//           0.05 <= mu u_n: both move with v_cm = (0, 0.05, 0) and no heat is booked (static
+//           friction does no work). Booked on the start slip, m s |u0_t|, it was 2.5e-3 J.
+//   slip    v_0 = (1, 2, 0): u = +-(1, 1, 0), s = mu u_n = 0.3: v_0 = (0, 1.7, 0), v_1 = (0, 0.3,
+//           0); heat m s (|u_t| - s) = 0.5 * 0.3 * 0.7 per body, 0.21 J: the friction impulse
+//           0.15 N s times the relative slip that remains, 1.4 m/s.
+//   normal  body 0's corner (its mass falls off along x and along y) on body 1's flat face
+//           (along x only), body 0 sliding along y with no approach: with `larger_volume` the
+//           normal is body 1's face and nothing is corrected; with `mass_gradients` (the sum
+//           of the gradients) the normal tilts towards y and the slide is taken as an approach.
+// All values are exact in binary or within 1e-15.
+#include <boost/test/unit_test.hpp>
+
+#include "mpm/contact/contact.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+// A dense 4 x 4 x 4 grid of unit cells, two velocity fields, free faces.
+Grid two_field_grid() {
+  GridSpec spec;
+  spec.lower = Vec3::Zero();
+  spec.upper = Vec3::Constant(4.0);
+  spec.cells = {4, 4, 4};
+  spec.faces.fill(FaceCondition::free);
+  spec.active_blocks = false;
+  Grid G(spec, 1, 2);
+  G.heat.assign(G.entry_count(), 0.0);
+  return G;
+}
+
+int entry(const Grid& G, int field, int i, int j, int k) {
+  return field * G.node_count() + G.index(i, j, k);
+}
+
+// Body 0 on the left (nodes x = 1, 2), body 1 on the right (x = 2, 3): a flat interface at x = 2.
+Grid flat_interface() {
+  Grid G = two_field_grid();
+  G.mass[entry(G, 0, 1, 2, 2)] = 1.0;
+  G.mass[entry(G, 0, 2, 2, 2)] = 0.5;
+  G.mass[entry(G, 1, 2, 2, 2)] = 0.5;
+  G.mass[entry(G, 1, 3, 2, 2)] = 1.0;
+  return G;
+}
+
+ContactSpec friction(double mu, ContactNormal normal = ContactNormal::mass_gradients) {
+  ContactSpec c;
+  c.type = ContactType::friction;
+  c.mu = mu;
+  c.normal = normal;
+  return c;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(contact)
+
+BOOST_AUTO_TEST_CASE(a_node_in_stick_moves_with_the_centre_of_mass_and_books_no_heat) {
+  Grid G = flat_interface();
+  const int a = entry(G, 0, 2, 2, 2), b = entry(G, 1, 2, 2, 2);
+  G.velocity_new[a] = G.velocity[a] = Vec3(1.0, 0.1, 0.0);
+  G.velocity_new[b] = G.velocity[b] = Vec3(-1.0, 0.0, 0.0);
+  const ContactTotals t = apply_contact(G, friction(0.3), G.velocity_new, ContactPass::step);
+  BOOST_TEST(t.contact_nodes == 1);
+  BOOST_TEST((G.velocity_new[a] - Vec3(0.0, 0.05, 0.0)).norm() < 1e-15);
+  BOOST_TEST((G.velocity_new[b] - Vec3(0.0, 0.05, 0.0)).norm() < 1e-15);
+  BOOST_TEST(t.friction_heat == 0.0);
+  BOOST_TEST(G.heat[a] == 0.0);
+  BOOST_TEST(G.heat[b] == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_slipping_node_books_the_impulse_times_the_slip_that_remains) {
+  Grid G = flat_interface();
+  const int a = entry(G, 0, 2, 2, 2), b = entry(G, 1, 2, 2, 2);
+  G.velocity_new[a] = G.velocity[a] = Vec3(1.0, 2.0, 0.0);
+  G.velocity_new[b] = G.velocity[b] = Vec3(-1.0, 0.0, 0.0);
+  const ContactTotals t = apply_contact(G, friction(0.3), G.velocity_new, ContactPass::step);
+  BOOST_TEST((G.velocity_new[a] - Vec3(0.0, 1.7, 0.0)).norm() < 1e-15);
+  BOOST_TEST((G.velocity_new[b] - Vec3(0.0, 0.3, 0.0)).norm() < 1e-15);
+  BOOST_TEST(t.friction_heat == 0.21, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(G.heat[a] == G.heat[b]);
+  // The start and projection passes correct but book nothing.
+  Grid H = flat_interface();
+  H.velocity[a] = Vec3(1.0, 2.0, 0.0);
+  H.velocity[b] = Vec3(-1.0, 0.0, 0.0);
+  BOOST_TEST(apply_contact(H, friction(0.3), H.velocity, ContactPass::start).friction_heat == 0.0);
+  BOOST_TEST(H.heat[a] == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(the_larger_body_gives_the_normal_at_the_corner_of_the_smaller) {
+  for (const ContactNormal rule : {ContactNormal::larger_volume, ContactNormal::mass_gradients}) {
+    Grid G = two_field_grid();
+    // Body 0: a corner at (2, 2, 2), its interior towards -x and -y. Body 1: a face along x.
+    G.mass[entry(G, 0, 1, 2, 2)] = 1.0;
+    G.mass[entry(G, 0, 2, 1, 2)] = 1.0;
+    G.mass[entry(G, 0, 2, 2, 2)] = 0.25;
+    G.mass[entry(G, 1, 2, 2, 2)] = 0.5;
+    G.mass[entry(G, 1, 3, 2, 2)] = 1.0;
+    G.mass[entry(G, 1, 2, 1, 2)] = 0.5;  // body 1 continues along y: no y gradient of its own
+    G.mass[entry(G, 1, 2, 3, 2)] = 0.5;
+    const int a = entry(G, 0, 2, 2, 2), b = entry(G, 1, 2, 2, 2);
+    G.velocity_new[a] = G.velocity[a] = Vec3(0.0, 1.0, 0.0);  // sliding along y
+    G.velocity_new[b] = G.velocity[b] = Vec3::Zero();
+    const ContactTotals t =
+        apply_contact(G, friction(0.0, rule), G.velocity_new, ContactPass::step);
+    if (rule == ContactNormal::larger_volume) {
+      BOOST_TEST(t.contact_nodes == 0);
+      BOOST_TEST(G.velocity_new[a] == Vec3(0.0, 1.0, 0.0));
+    } else {  // grad m_1 - grad m_0 = (1, 0.5, 0): the slide has u_n > 0 along it
+      BOOST_TEST(t.contact_nodes == 1);
+      BOOST_TEST(G.velocity_new[a](1) < 1.0);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
