@@ -30,35 +30,40 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
   return g;
 }
 
-// The contact of n >= 2 bodies at one node: each body b has mass m[b], velocity v[b] and mass
-// gradient grad[b]. Writes the velocity correction dv[b] (momentum-conserving: the mass-weighted
-// mean correction removed, zero to round-off for a pair) and the Coulomb work heat[b] >= 0;
-// returns whether any body was corrected.
+// The contact of n >= 2 bodies at one node: each body b has mass m[b], velocity v[b], mass
+// gradient grad[b] and start velocity v0[b] (the slip the step starts from). Writes the velocity
+// correction dv[b] (momentum-conserving: the mass-weighted mean correction removed, zero to
+// round-off for a pair) and the Coulomb work heat[b] >= 0; returns whether any body was corrected.
 struct Bodies {
   int n = 0;
   double m[kMaxFields];
   double volume[kMaxFields];  ///< sum over the body's fields of m_f / rho_f [m^3]
-  Vec3 v[kMaxFields], grad[kMaxFields];
+  Vec3 v[kMaxFields], grad[kMaxFields], v0[kMaxFields];
 };
 
 // The (unnormalised) normal of body b, pointing from it into the others (contact.hpp):
 // grad m_rest - grad m_b, or for a pair with `larger_volume` the surface of the body with more
 // volume at the node.
 Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNormal rule) {
-  if (B.n != 2 || rule == ContactNormal::mass_gradients) return grad_total - 2.0 * B.grad[b];
+  const Vec3 sum = grad_total - 2.0 * B.grad[b];
+  if (B.n != 2 || rule == ContactNormal::mass_gradients) return sum;
   const int larger = B.volume[1] > B.volume[0] ? 1 : 0;
+  // A larger body without a gradient here (no surface of its own): the sum.
+  if (B.grad[larger].squaredNorm() == 0.0) return sum;
   return larger == b ? Vec3(-B.grad[b]) : Vec3(B.grad[larger]);
 }
 
 bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, Vec3* dv, double* heat) {
   double M = 0.0;
-  Vec3 P = Vec3::Zero(), gradM = Vec3::Zero();
+  Vec3 P = Vec3::Zero(), P0 = Vec3::Zero(), gradM = Vec3::Zero();
   for (int b = 0; b < B.n; ++b) {
     M += B.m[b];
     P += B.m[b] * B.v[b];
     gradM += B.grad[b];
+    if (book) P0 += B.m[b] * B.v0[b];
   }
   const Vec3 vcm = P / M;
+  const Vec3 vcm_start = P0 / M;
   Vec3 net = Vec3::Zero();
   bool any = false;
   for (int b = 0; b < B.n; ++b) {
@@ -80,10 +85,11 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, Vec3* dv
       s = std::min(mu * un, ut_norm);
       dv[b] -= s * (ut / ut_norm);
     }
-    // Coulomb work: the friction impulse m s times the slip that remains, |u_t| - s, the
-    // relative tangential velocity the positions then follow (zero in stick). The normal reaction
-    // only keeps u_n = 0 and does no work.
-    if (book) heat[b] = B.m[b] * s * (ut_norm - s);
+    // Coulomb work, only in slip (static friction does no work): the friction impulse m s times
+    // the relative slip at the start of the step along t (contact.hpp). The normal reaction only
+    // keeps u_n = 0 and does no work.
+    if (book && s > 0.0 && s < ut_norm)
+      heat[b] = B.m[b] * s * std::max(0.0, (B.v0[b] - vcm_start).dot(ut / ut_norm));
     net += B.m[b] * dv[b];
     any = true;
   }
@@ -140,7 +146,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       int slot_of_body[kMaxFields];
       for (int b = 0; b < nf; ++b) slot_of_body[b] = -1;
       Bodies B;
-      Vec3 P[kMaxFields];
+      Vec3 P[kMaxFields], P0[kMaxFields];
       for (int a = 0; a < na; ++a) {
         const int e = active[a] * nn + I;
         int& slot = slot_of_body[body_of[active[a]]];
@@ -150,6 +156,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           B.volume[slot] = 0.0;
           B.grad[slot].setZero();
           P[slot].setZero();
+          P0[slot].setZero();
           members[slot] = 0;
         }
         body_index[a] = slot;
@@ -158,11 +165,18 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         B.volume[slot] += G.mass[e] * inverse_density[active[a]];
         B.grad[slot] += grad[a];
         P[slot] += G.mass[e] * v[e];
+        P0[slot] += G.mass[e] * G.velocity[e];
       }
-      for (int b = 0; b < B.n; ++b) B.v[b] = P[b] / B.m[b];
+      for (int b = 0; b < B.n; ++b) {
+        B.v[b] = P[b] / B.m[b];
+        B.v0[b] = P0[b] / B.m[b];
+      }
       for (int a = 0; a < na; ++a) {  // a one-field body keeps its velocity bit for bit
         const int b = body_index[a];
-        if (members[b] == 1) B.v[b] = v[active[a] * nn + I];
+        if (members[b] == 1) {
+          B.v[b] = v[active[a] * nn + I];
+          B.v0[b] = G.velocity[active[a] * nn + I];
+        }
       }
       Vec3 dv[kMaxFields];
       double heat[kMaxFields];
@@ -194,6 +208,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           pair.volume[pair.n] = G.mass[e] * inverse_density[active[a]];
           pair.v[pair.n] = v[e];
           pair.grad[pair.n] = grad[a];
+          pair.v0[pair.n] = G.velocity[e];
           ++pair.n;
         }
         if (!correct(pair, contact.mu, contact.normal, book, dv, heat)) continue;

@@ -2,14 +2,17 @@
 // 2001, CMES 2:509; docs/report_code.md sec. 14). Each material (and each companion field of
 // converted particles) has its own nodal mass and velocity; where two or more fields meet at a
 // node their velocities are corrected towards the centre-of-mass velocity v_cm:
-//   normal      for a pair, the surface of the body with more mass at the node: n = -grad m_b / |.|
-//               for that body b, +grad m_b' / |.| for the other (colinear, n_A = -n_B, so every
-//               correction sums to zero momentum). At the corner of a small body resting on a
-//               large one the larger body's face is the contact surface; the sum of the two mass
-//               gradients used before tilted there towards the small body's side face, saw its
-//               slide as an approach, and took 0.9 m/s in 10 us off a block sliding at 5 m/s on
-//               another, then decelerated it 1.6 times faster than Coulomb's law. Three or more
-//               bodies: n_f = unit(grad m_rest - grad m_f), the mean correction removed (below).
+//   normal      `mass_gradients` (the default): n_f = unit(grad m_rest - grad m_f), the report's
+//               (colinear for a pair, n_A = -n_B, so every correction sums to zero momentum).
+//               `larger_volume`, for a pair: the surface of the body with more volume (m / rho0)
+//               at the node, -grad m_b / |.| for that body b and +grad m_b / |.| for the other
+//               (colinear too); the sum where that body has no gradient, and for three or more
+//               bodies. At the corner of a small body resting on a large one the larger body's
+//               face is the contact surface: the sum of the gradients tilts there towards the
+//               small body's side face, sees its slide as an approach, and took 0.9 m/s in 10 us
+//               off a block sliding at 5 m/s on another, then decelerated it 1.6 times faster
+//               than Coulomb's law. Where two equal bodies' edges meet, the sum is the right one
+//               (docs/mpm.md#velocity-fields-and-contact).
 //   detection   approaching, u_n = (v_f - v_cm) . n_f > 0. Bodies pressed together meet it at
 //               every step (the compressed material pushes its nodes outward), so the friction
 //               they transmit is bounded by the normal impulse of the step: a block resting on
@@ -21,10 +24,10 @@
 //               been removed with its nodal-stress scatter.
 //   correction  Dv = -u_n n - s t, s = min(mu u_n, |u_t|), u = v_f - v_cm, t = u_t / |u_t|:
 //               Coulomb slip, or stick when s = |u_t|.
-//   heat        m_f s (|u_t| - s) >= 0 per field: the friction impulse times the slip that
-//               remains (zero in stick), summed over a pair J |v_t,A - v_t,B| after the step, the
-//               Coulomb work on the relative tangential motion; the wall books the same
-//               (grid/wall.cpp; Nairn, Bardenhagen & Smith 2018, Comput. Part. Mech. 5:285).
+//   heat        only in slip (s < |u_t|; static friction does no work): m_f s (u0_f . t) >= 0
+//               per field, the friction impulse times the relative slip at the start of the step
+//               (u0 = v0_f - v0_cm of the corrected start field) along the slip direction t; the
+//               wall books the same (grid/wall.cpp; docs/mpm.md#ledger).
 // `friction` and `approach` are this one model (the report's Table 2 names both: its approach
 // contact was its friction without the compression rule).
 // Bodies: a material's parent field and the companion field of its converted particles are one
@@ -52,8 +55,8 @@ namespace impact::mpm {
 /// is zero, so it does no work on the motion the bodies make; the kinetic energy it takes from
 /// the nodes returns as the strain energy of the compression the constrained positions impose
 /// (booking it as a loss counted that energy twice: +7.6 % of E0 on the elastic contact blocks).
-/// The friction reaction works on the slip that remains, the Coulomb dissipation
-/// m s (|u_t| - s) >= 0 per field, s = min(mu u_n, |u_t|) the slip it removes (zero in stick).
+/// The friction reaction's Coulomb dissipation is m s (u0 . t) >= 0 per field in slip (s < |u_t|),
+/// s = min(mu u_n, |u_t|) the slip it removes; zero in stick.
 struct ContactTotals {
   double friction_heat = 0.0;  ///< >= 0 [J]
   long contact_nodes = 0;      ///< nodes where a correction was applied

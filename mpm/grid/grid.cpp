@@ -98,7 +98,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
             int& slot = wall_slot[target];
             if (slot < 0) {
               slot = int(wall_all_.size());
-              wall_all_.push_back({target, 0, {}});
+              wall_all_.push_back({target, 0, {}, 0, {}});
             }
             WallNode& node = wall_all_[slot];
             node.face[node.count++] = {axis,
@@ -119,6 +119,16 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   // Wall nodes in ascending storage order: the heat sum runs in the same order on any grid.
   std::sort(wall_all_.begin(), wall_all_.end(),
             [](const WallNode& x, const WallNode& y) { return x.node < y.node; });
+  // A wall node in another wall's ghost layer: that wall's image sets one of its components.
+  std::fill(wall_slot.begin(), wall_slot.end(), -1);
+  for (std::size_t k = 0; k < wall_all_.size(); ++k) wall_slot[wall_all_[k].node] = int(k);
+  for (const WallNode& w : wall_all_)
+    for (int i = 0; i < w.count; ++i) {
+      const int slot = wall_slot[w.face[i].ghost];
+      if (slot < 0) continue;
+      WallNode& g = wall_all_[std::size_t(slot)];
+      g.image[g.images++] = {w.face[i].axis, w.node, w.face[i].bit};
+    }
   for (int face = 0; face < 6; ++face) {
     if (spec_.faces[face] != FaceCondition::wall) continue;
     const int axis = face / 2;
@@ -128,7 +138,6 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   }
   if (has_wall) {
     wall_touch.assign(e, 0);
-    wall_held_.assign(std::size_t(fields_) * wall_all_.size(), 0);
   }
   bx_ = (nx_ + kBlock - 1) / kBlock;
   by_ = (ny_ + kBlock - 1) / kBlock;
@@ -224,8 +233,7 @@ std::size_t Grid::bytes() const {
        (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite) +
        (mirror_after_walls_all_.capacity() + mirror_after_walls_active_.capacity()) *
            sizeof(MirrorWrite) +
-       (wall_all_.capacity() + wall_active_.capacity()) * sizeof(WallNode) + wall_touch.size() +
-       wall_held_.size();
+       (wall_all_.capacity() + wall_active_.capacity()) * sizeof(WallNode) + wall_touch.size();
   return b;
 }
 

@@ -59,12 +59,23 @@ struct WallFace {
   int inner;
 };
 
+/// A component of a wall node that another wall's ghost image sets (the node lies in that wall's
+/// ghost layer): `axis`, and the face node (storage index) and face bit whose touch decides it.
+struct WallImage {
+  int axis;
+  int face_node;
+  std::uint8_t bit;
+};
+
 /// A face-layer node of the `wall` faces: on one face, two on an edge, three at a corner; its
-/// faces are projected together (Grid::apply_walls).
+/// faces are projected together (Grid::apply_walls). `image`: the components other walls' ghost
+/// images set (up to two, beyond a corner of three walls).
 struct WallNode {
   int node;
   int count = 0;
   std::array<WallFace, 3> face;
+  int images = 0;
+  std::array<WallImage, 2> image;
 };
 
 /// A `wall` face's plane for the touch test (Grid::wall_touch): the particles whose domain reaches
@@ -239,10 +250,10 @@ class Grid {
   /// wall this step (wall_touch) and moves into it, the normal component is zeroed; the held
   /// faces of an edge or corner node are projected together, then one Coulomb correction (step
   /// pass) takes up to sum mu_f j_f off what remains tangential. A node that does not touch, or
-  /// moves away, is left free (the wall never pulls). The ghost node outside a held face is the
-  /// mirror image of the first interior node, in `start` (the step's v_I, step pass) and `end`;
-  /// outside a free one it keeps its own velocity. Step pass: adds the Coulomb heat to `heat` (if
-  /// allocated) and returns its sum [J].
+  /// moves away, is left free (the wall never pulls). The ghost node outside a touched face moves
+  /// inward at the first interior node's normal speed |n . v|, in `start` (the step's v_I, step
+  /// pass) and `end`; elsewhere it keeps its own velocity. Step pass: adds the Coulomb heat
+  /// to `heat` (if allocated) and returns its sum [J].
   double apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallPass pass);
   bool has_walls() const {
     return !wall_all_.empty();
@@ -285,9 +296,8 @@ class Grid {
   std::vector<MirrorWrite> mirror_active_;  ///< those whose target is in an active block
   /// Mirror writes whose source lies on a wall's layers: applied after the walls.
   std::vector<MirrorWrite> mirror_after_walls_all_, mirror_after_walls_active_;
-  std::vector<WallNode> wall_all_;       ///< face-layer nodes of the wall faces, ascending
-  std::vector<WallNode> wall_active_;    ///< those in an active block
-  std::vector<std::uint8_t> wall_held_;  ///< per field and active wall node: the held faces' bits
+  std::vector<WallNode> wall_all_;     ///< face-layer nodes of the wall faces, ascending
+  std::vector<WallNode> wall_active_;  ///< those in an active block
   std::vector<WallPlane> wall_planes_;
   std::array<bool, 6> constrained_{};
   int bx_ = 0, by_ = 0, bz_ = 0;  ///< blocks per axis

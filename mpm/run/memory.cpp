@@ -73,8 +73,8 @@ double estimated_grid_bytes(const Scene& scene) {
   }
   // Boundary nodes (constrained faces: face and ghost layers), their free increments, the active
   // subset's positions and the mirror's writes (all and active: Grid::apply_mirror).
-  // A wall's face layer is a list of its own (all and active, and the held faces per field), its
-  // ghost layer none (grid/wall.cpp).
+  // A wall's face layer is a list of its own (all and active), its ghost layer none
+  // (grid/wall.cpp).
   double boundary = 0.0, mirrored = 0.0, walled = 0.0;
   const double n[3] = {nx, ny, nz};
   for (int face = 0; face < 6; ++face) {
@@ -85,7 +85,7 @@ double estimated_grid_bytes(const Scene& scene) {
     (g.faces[face] == FaceCondition::wall ? walled : mirrored) += layer;
   }
   bytes += boundary * (4.0 + 4.0 + fields * 24.0) + 2.0 * mirrored * 2.0 * sizeof(MirrorWrite) +
-           walled * (2.0 * sizeof(WallNode) + fields);
+           walled * 2.0 * sizeof(WallNode);
   return bytes;
 }
 

@@ -9,7 +9,8 @@
 // Handing the particles the first pass too (the increment from the uncorrected p_I/m_I) removes the
 // same approach velocity again at every step, because the particles keep carrying it to the grid:
 // the sphere-cylinder lost 26 % of E0 in 10 us that way (docs/mpm.md#velocity-fields-and-contact).
-// The faces are a mirror on the start and end velocities alike: a stationary wall does no work
+// The mirror faces act on the start and end velocities alike: a stationary wall does no work; a
+// `wall` holds the end velocity of the face nodes its body touches (grid/wall.cpp)
 // (docs/mpm.md#ledger).
 #include <omp.h>
 

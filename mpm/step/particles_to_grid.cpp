@@ -63,7 +63,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
         }
       }
     }
-    if (touch) {  // the nodes this particle weighs, where it reaches a wall
+    if (touch && m > 0.0) {  // the nodes this particle weighs, where it reaches a wall
       const std::uint8_t bits =
           G.touched_walls(P.x[p], P.v[p], G.particle_half_width[P.object[p]], dt);
       if (bits == 0) return;

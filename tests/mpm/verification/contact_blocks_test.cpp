@@ -27,11 +27,11 @@
 //   past each other (0.08 cell in 8 us); measured max |Dp_y|/p_y0 = 0.24 %. (With the normal
 //   `larger_volume`, the heavier block's own edge tilts it: 61 %; that normal is for a small body
 //   on a large flat one, contact_friction_test.cpp.)
-// approach with mu = 0: the ledger closes, |energy_error| < 2 % of E0 at the end; friction: the
-//   residual is first order in dt (the Coulomb work on the step's slip): below 12 % at multiplier
-//   0.5 and 1 % at 0.1 (measured +10.0 % and -0.16 %). A separating pair is never pulled back
-//   (mpm/contact/contact.cpp, detection).
-// friction: friction_heat (the Coulomb work on the slip that remains, m s (|u_t| - s) per node)
+// approach with mu = 0: the ledger closes, |energy_error| < 2 % of E0 at the end; friction:
+//   below 3 % at multipliers 0.5 and 0.1 (measured -2.4 % at both), and the friction heat
+//   converged in dt: within 1 % between multipliers 0.1 and 0.05 (measured 1.590 and 1.589 % of
+//   E0). A separating pair is never pulled back (mpm/contact/contact.cpp, detection).
+// friction: friction_heat (the Coulomb work in slip, m s (u0 . t) per node and field)
 //   never decreases, step by step, is positive (the blocks slip: 10 m/s relative along y), and
 //   stays below the kinetic energy of the relative tangential motion, 1/2 m1 m2/(m1 + m2)
 //   |v_t1 - v_t2|^2 = 0.2 E0, which is all that friction can take; approach (mu = 0) books none
@@ -178,13 +178,17 @@ BOOST_AUTO_TEST_CASE(friction_conserves_momentum_obeys_coulomb_and_the_blocks_re
   const Measured m = collide("friction", mu, 8e-6);
   BOOST_TEST(m.worst_momentum <= 1e-12);
   BOOST_TEST(m.worst_coulomb <= 1e-9);
-  // The Coulomb work is booked on the slip that remains after the step's correction, first order
-  // in dt on this violent oblique impact: energy_error +10.0 / +3.3 / -0.16 % at multipliers
-  // 0.5 / 0.25 / 0.1 (booked on the start field's slip it stayed near -2 % at every step size,
-  // counted heat in stick, and disagreed with the wall's convention).
-  BOOST_TEST(std::abs(m.energy_error) < 0.12);
+  // The Coulomb work in slip, m s (u0 . t) on the start slip, converges with dt: 0.87 / 1.53 /
+  // 1.590 / 1.589 % of E0 at multipliers 0.5 / 0.2 / 0.1 / 0.05. Booked on the slip that remains
+  // after the correction it was 13.2 / 7.2 / 3.8 % at 0.5 / 0.25 / 0.1 (first order, too much),
+  // and on the start slip without the stick test it also counted heat in stick. What remains of
+  // energy_error, -2.4 % at every step size, is the projection of the fields onto their centre
+  // of mass at the contact nodes (a grid-scale loss; approach with mu 0 below: -0.1 %).
+  BOOST_TEST(std::abs(m.energy_error) < 0.03);
   const Measured fine = collide("friction", mu, 8e-6, 0.1);
-  BOOST_TEST(std::abs(fine.energy_error) < 0.01);
+  const Measured finer = collide("friction", mu, 8e-6, 0.05);
+  BOOST_TEST(std::abs(fine.heat_fraction / finer.heat_fraction - 1.0) < 0.01);
+  BOOST_TEST(std::abs(fine.energy_error) < 0.03);
   BOOST_TEST(m.has_friction_column);
   BOOST_TEST(m.heat_decrease == 0.0);
   BOOST_TEST(m.heat_fraction > 0.0);

@@ -23,16 +23,28 @@
 //    approach; the continuum sticks at first contact wherever mu >= (c_s / c_L)(v_t / v_n) = 0.51
 //    (the shear wave that stops the slip needs a traction rho c_s v_t, the normal wave gives
 //    rho c_L v_n), so the Coulomb heat is what the discrete catch lets slip and falls with h.
-//    Asserted: friction heat below 5 % of E0 at h = 0.5 mm and falling at least 2-fold when h
-//    halves (measured 3.6 %, 1.1 %; 0.47 % at h/4); worst |energy_error| below 0.35 and falling
-//    1.5-fold (0.28, 0.15); the motion symmetric about the bisector (p_x = p_z to 1e-12 of
-//    |p0|). Face by face, the edge nodes' friction acted on the other face's normal velocity,
-//    and without the touch test the faces held early: 55-57 % of E0 booked as heat at every h,
-//    energy_error +0.21, +0.30, +0.88 at h, h/2, h/4.
+//    Asserted: friction heat below 0.5 % of E0 at h = 0.5 mm and falling at least 2-fold when h
+//    halves (measured 0.057 %, 0.0070 %); worst |energy_error| below 0.35 and falling 1.5-fold
+//    (0.28, 0.15); the motion symmetric about the bisector (p_x = p_z to 1e-12 of |p0|). Face by
+//    face, the edge nodes' friction acted on the other face's normal velocity, and without the
+//    touch test the faces held early: 55-57 % of E0 booked as heat at every h, energy_error
+//    +0.21, +0.30, +0.88 at h, h/2, h/4. Friction on the components beyond the other wall, which
+//    its ghost image then overwrote, booked 3.6 % and 1.1 %.
 // 4. A block resting in that corner, gravity g = 1e5 m/s^2 along the bisector, sliding along the
 //    edge at v0 = 5 m/s, mu = 0.25 on both faces: each face carries M g / sqrt 2, so Coulomb's law
 //    gives v_y = v0 - mu sqrt(2) g t, and the heat equals the kinetic energy lost. Asserted: v_y
-//    within 0.02 v0 of the law over 120 us (measured 0.012), heat within 3 % of the loss (0.3 %).
+//    within 0.02 v0 of the law over 120 us (measured 0.012), heat within 3 % of the loss (0.26 %).
+// 5. The Taylor rod of taylor_rod.json (shot H8, L0/D0 = 2 at 328 m/s, 6061-T6, failure off) at
+//    6 cells per radius on an x- wall, through its rebound (80 us): no particle crosses the
+//    wall's plane, the rod leaves with a little momentum (a plastic impact) that the wall takes
+//    little of back (final p_x at least 0.6 of its largest), |energy_error| below 4 % (measured
+//    3.0 %; p_x 5.0 % of p0 at most, 3.6 % at the end: some pull remains while the interior node
+//    is slower than the particles crossing the plane). With the ghost released whenever its face
+//    node was (v*_n >= 0) rather than while the body touches, the light ghost under the face's
+//    GPa compression kicked a face particle through the wall at step 554 (at 656 m/s; the
+//    campaign's fit_all set at 6 cells per radius stopped 15 of 23 shots the same way). With the
+//    ghost the mirror image of the leaving body, the particles still crossing the plane were
+//    pulled back: the rod's rebound momentum peaked at 5 % of p0 and fell to 0.3 %.
 #include <boost/test/unit_test.hpp>
 
 #include "../verification_helpers.hpp"
@@ -195,7 +207,7 @@ BOOST_AUTO_TEST_CASE(a_bisector_impact_into_a_corner_books_only_the_slip_it_make
     BOOST_TEST(std::abs(p(0) - p(2)) < 1e-12 * p0.norm());  // symmetric about the bisector
     BOOST_TEST(p.norm() < p0.norm());                       // restitution below 1
   }
-  BOOST_TEST(heat[0] < 0.05);
+  BOOST_TEST(heat[0] < 0.005);
   BOOST_TEST(heat[1] < heat[0] / 2.0);
   BOOST_TEST(error[0] < 0.35);
   BOOST_TEST(error[1] < error[0] / 1.5);
@@ -231,6 +243,36 @@ BOOST_AUTO_TEST_CASE(a_block_sliding_along_a_corner_follows_coulombs_law_on_both
                      << worst << " v0; heat " << heat << " J against " << lost << " J lost");
   BOOST_TEST(worst < 0.02);
   BOOST_TEST(std::abs(heat / lost - 1.0) < 0.03);
+}
+
+BOOST_AUTO_TEST_CASE(a_taylor_rod_rebounds_from_a_wall_anvil_whole) {
+  // Case 5 (header).
+  const Scene scene =
+      test::verification_scene("taylor_rod.json", {{"grid",
+                                                    {{"cells", {26, 14, 14}},
+                                                     {"boundary", {{"x-", "wall"}}},
+                                                     {"wall_friction", {{"x-", 0.0}}}}},
+                                                   {"physics", {{"erosion", "none"}}},
+                                                   {"time", {{"max_time", 8.0e-5}}}});
+  Simulation sim(scene);
+  const double p0 = std::abs(sim.ledger().row().momentum(0));
+  double worst = 0.0, lowest = 1e30, rebound = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    worst = std::max(worst, std::abs(sim.ledger().row().energy_error));
+    for (const Vec3& x : sim.particles().x) lowest = std::min(lowest, x(0));
+    rebound = std::max(rebound, sim.ledger().row().momentum(0));
+  }
+  const double px = sim.ledger().row().momentum(0);
+  BOOST_TEST_MESSAGE("Taylor rod on a wall: "
+                     << sim.steps() << " steps, worst |energy_error| " << worst << ", final p_x "
+                     << px / p0 << " of |p0|, lowest particle x " << lowest
+                     << " m, largest rebound momentum " << rebound / p0 << " p0");
+  BOOST_TEST(lowest >= 0.0);       // no particle crossed the wall's plane
+  BOOST_TEST(px > 0.0);            // it rebounds
+  BOOST_TEST(px < 0.1 * p0);       // a plastic impact returns little
+  BOOST_TEST(px > 0.6 * rebound);  // the wall takes little of the rebound back
+  BOOST_TEST(worst < 0.04);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -111,10 +111,9 @@ BOOST_AUTO_TEST_CASE(an_upper_face_wall_follows_the_same_law) {
 
 BOOST_AUTO_TEST_CASE(the_books_close_at_either_time_step) {
   // energy_error is the numerical residual of the friction step. Measured over the first 120 us:
-  // +0.08 % of E0 at multiplier 0.5, -0.06 % at 0.25 (+0.64 % at 240 us). Before the touch test
-  // and the ghost that is released with its face (grid/wall.cpp) it was +0.88 % and +0.25 %
-  // (+2.9 % at 240 us), falling with the step, so the residual came from the time integration
-  // of the wall's hold; what remains is below it at both steps. Asserted: below 0.2 % at both.
+  // +0.13 % of E0 at multiplier 0.5, -0.01 % at 0.25 (+0.51 % at 240 us). Before the touch test
+  // (grid/wall.cpp) it was +0.88 % and +0.25 % (+2.9 % at 240 us). Asserted: below 0.2 % at
+  // both.
   double error[2];
   for (const int k : {0, 1}) {
     const Scene scene = test::verification_scene(
