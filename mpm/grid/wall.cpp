@@ -5,7 +5,9 @@
 // infinite mass at rest):
 //   touch      a particle of the field with the node in its stencil reaches the wall's plane
 //              within the step: its domain (half-width l, uGIMP's) at its start velocity,
-//              n . (x_p - x_wall) - l + dt min(0, n . v_p) <= 0, n the inward normal (Grid::
+//              n . (x_p - x_wall) - l + dt min(0, n . v_p) <= 0, n the inward normal; l is fixed
+//              at creation (as uGIMP's), so a particle compressed along n is held up to
+//              l (1 - F_nn) before its deformed domain would touch, within a cell (Grid::
 //              wall_touch, marked by particles-to-grid). Velocities alone held a body that was
 //              still up to a cell and a half away, and one that had left but still vibrated
 //              within that reach: an elastic block started half a cell from the wall at 50 m/s
