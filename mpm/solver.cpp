@@ -409,55 +409,19 @@ void Simulation::agree_on_failure(const std::optional<std::string>& message) con
 }
 
 void Simulation::reduce(StepTotals& t) const {
-  ParticleTotals& p = t.particles;
-  StressTotals& st = t.stress;
-  GridUpdate& g = t.grid;
-  // One reduction of every summed total, in a fixed order.
-  std::vector<double> v = {p.kinetic_energy,
-                           p.momentum(0),
-                           p.momentum(1),
-                           p.momentum(2),
-                           p.friction_heat,
-                           p.outflow_mass,
-                           p.outflow_momentum(0),
-                           p.outflow_momentum(1),
-                           p.outflow_momentum(2),
-                           p.outflow_kinetic_energy,
-                           double(p.removed),
-                           st.strain_energy_increment,
-                           st.viscous_work,
-                           st.eroded_energy,
-                           double(st.failed),
-                           double(st.converted),
-                           g.boundary_impulse(0),
-                           g.boundary_impulse(1),
-                           g.boundary_impulse(2),
-                           g.contact.friction_heat,
-                           double(g.contact.contact_nodes),
-                           g.wall_friction_heat,
-                           g.external_impulse(0),
-                           g.external_impulse(1),
-                           g.external_impulse(2),
-                           g.external_work};
-  v = comm_->sum(v);
-  std::size_t k = 0;
-  for (double* d : {&p.kinetic_energy, &p.momentum(0), &p.momentum(1), &p.momentum(2),
-                    &p.friction_heat, &p.outflow_mass, &p.outflow_momentum(0),
-                    &p.outflow_momentum(1), &p.outflow_momentum(2), &p.outflow_kinetic_energy})
-    *d = v[k++];
-  p.removed = static_cast<long>(v[k++]);
-  for (double* d : {&st.strain_energy_increment, &st.viscous_work, &st.eroded_energy}) *d = v[k++];
-  st.failed = static_cast<long>(v[k++]);
-  st.converted = static_cast<long>(v[k++]);
-  for (double* d : {&g.boundary_impulse(0), &g.boundary_impulse(1), &g.boundary_impulse(2),
-                    &g.contact.friction_heat})
-    *d = v[k++];
-  g.contact.contact_nodes = static_cast<long>(v[k++]);
-  for (double* d : {&g.wall_friction_heat, &g.external_impulse(0), &g.external_impulse(1),
-                    &g.external_impulse(2), &g.external_work})
-    *d = v[k++];
-  p.max_speed = comm_->max(p.max_speed);
-  st.max_signal_speed = comm_->max(st.max_signal_speed);
+  // One reduction of every summed total and one of every largest, in table order
+  // (mpm/ledger/totals.hpp).
+  for (const Merge merge : {Merge::sum, Merge::max}) {
+    std::vector<double> v;
+    append_fields(t.particles, merge, v);
+    append_fields(t.stress, merge, v);
+    append_fields(t.grid, merge, v);
+    v = merge == Merge::sum ? comm_->sum(v) : comm_->max(v);
+    std::size_t k = 0;
+    extract_fields(t.particles, merge, v, k);
+    extract_fields(t.stress, merge, v, k);
+    extract_fields(t.grid, merge, v, k);
+  }
 }
 
 std::string Simulation::describe(const Failure& f, long step, double time) const {

@@ -226,10 +226,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
     partial[omp_get_thread_num()] = sum;
   }
   ContactTotals total;
-  for (int t = 0; t < nt; ++t) {  // thread order: deterministic
-    total.friction_heat += partial[t].friction_heat;
-    total.contact_nodes += partial[t].contact_nodes;
-  }
+  for (int t = 0; t < nt; ++t) merge_into(total, partial[t]);  // thread order: deterministic
   return total;
 }
 

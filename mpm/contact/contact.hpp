@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "mpm/grid/grid.hpp"
+#include "mpm/ledger/totals.hpp"
 #include "mpm/scene/scene.hpp"
 
 namespace impact::mpm {
@@ -60,6 +61,9 @@ namespace impact::mpm {
 struct ContactTotals {
   double friction_heat = 0.0;  ///< >= 0 [J]
   long contact_nodes = 0;      ///< nodes where a correction was applied
+  /// How each total combines over threads and ranks (mpm/ledger/totals.hpp).
+  static constexpr auto kFields =
+      std::tuple{summed(&ContactTotals::friction_heat), summed(&ContactTotals::contact_nodes)};
 };
 
 /// Which correction: `start` on the start velocities (the start the step's forces act from; the

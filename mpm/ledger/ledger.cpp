@@ -6,55 +6,56 @@ namespace impact::mpm {
 
 int Ledger::add_sink_column(std::string name, bool in_balance) {
   sink_names_.push_back(std::move(name));
-  sinks_.push_back(0.0);
+  s_.sinks.push_back(0.0);
   in_balance_.push_back(in_balance);
-  return static_cast<int>(sinks_.size()) - 1;
+  return static_cast<int>(s_.sinks.size()) - 1;
 }
 
 void Ledger::start(double time, double kinetic_energy, const Vec3& momentum) {
-  time_ = time;
-  kinetic_ = kinetic_energy;
-  initial_energy_ = kinetic_energy;  // the initial strain energy is zero: stress-free start
-  momentum_ = momentum;
-  p0_ = momentum;
+  s_.time = time;
+  s_.kinetic = kinetic_energy;
+  s_.initial_energy = kinetic_energy;  // the initial strain energy is zero: stress-free start
+  s_.momentum = momentum;
+  s_.p0 = momentum;
 }
 
 void Ledger::record_step(double time, double kinetic_energy, const Vec3& momentum,
                          double strain_energy_increment, const Vec3& boundary_impulse,
                          const Vec3& external_impulse, double external_work) {
-  time_ = time;
-  kinetic_ = kinetic_energy;
-  momentum_ = momentum;
-  strain_ += strain_energy_increment;
-  boundary_impulse_ += boundary_impulse;
-  external_impulse_ += external_impulse;
-  external_work_ += external_work;
+  s_.time = time;
+  s_.kinetic = kinetic_energy;
+  s_.momentum = momentum;
+  s_.strain += strain_energy_increment;
+  s_.boundary_impulse += boundary_impulse;
+  s_.external_impulse += external_impulse;
+  s_.external_work += external_work;
 }
 
 LedgerRow Ledger::row() const {
   LedgerRow r;
-  r.time = time_;
-  r.kinetic_energy = kinetic_;
-  r.strain_energy = strain_;
-  r.total_energy = kinetic_ + strain_;
-  r.momentum = momentum_;
-  r.boundary_impulse = boundary_impulse_;
-  r.sinks = sinks_;
-  r.outflow_mass = outflow_mass_;
-  r.outflow_momentum = outflow_momentum_;
-  r.outflow_kinetic_energy = outflow_kinetic_;
-  r.external_impulse = external_impulse_;
-  r.external_work = external_work_;
-  const double scale = initial_energy_ > 0.0 ? initial_energy_ : 1.0;
+  r.time = s_.time;
+  r.kinetic_energy = s_.kinetic;
+  r.strain_energy = s_.strain;
+  r.total_energy = s_.kinetic + s_.strain;
+  r.momentum = s_.momentum;
+  r.boundary_impulse = s_.boundary_impulse;
+  r.sinks = s_.sinks;
+  r.outflow_mass = s_.outflow_mass;
+  r.outflow_momentum = s_.outflow_momentum;
+  r.outflow_kinetic_energy = s_.outflow_kinetic;
+  r.external_impulse = s_.external_impulse;
+  r.external_work = s_.external_work;
+  const double scale = s_.initial_energy > 0.0 ? s_.initial_energy : 1.0;
   r.energy_error = energy_excess() / scale;
   return r;
 }
 
 double Ledger::energy_excess() const {
   double sunk = 0.0;
-  for (std::size_t i = 0; i < sinks_.size(); ++i)
-    if (in_balance_[i]) sunk += sinks_[i];
-  return (kinetic_ + strain_) + sunk + outflow_kinetic_ - initial_energy_ - external_work_;
+  for (std::size_t i = 0; i < s_.sinks.size(); ++i)
+    if (in_balance_[i]) sunk += s_.sinks[i];
+  return (s_.kinetic + s_.strain) + sunk + s_.outflow_kinetic - s_.initial_energy -
+         s_.external_work;
 }
 
 std::vector<std::string> Ledger::columns() const {
@@ -106,42 +107,12 @@ std::vector<double> Ledger::values(const LedgerRow& r) const {
   return v;
 }
 
-Ledger::State Ledger::state() const {
-  State s;
-  s.time = time_;
-  s.kinetic = kinetic_;
-  s.strain = strain_;
-  s.external_work = external_work_;
-  s.initial_energy = initial_energy_;
-  s.outflow_mass = outflow_mass_;
-  s.outflow_kinetic = outflow_kinetic_;
-  s.momentum = momentum_;
-  s.p0 = p0_;
-  s.boundary_impulse = boundary_impulse_;
-  s.external_impulse = external_impulse_;
-  s.outflow_momentum = outflow_momentum_;
-  s.sinks = sinks_;
-  return s;
-}
-
 void Ledger::restore(const State& s) {
-  if (s.sinks.size() != sinks_.size()) {
+  if (s.sinks.size() != s_.sinks.size()) {
     throw std::invalid_argument("ledger: " + std::to_string(s.sinks.size()) + " sink columns for " +
-                                std::to_string(sinks_.size()));
+                                std::to_string(s_.sinks.size()));
   }
-  time_ = s.time;
-  kinetic_ = s.kinetic;
-  strain_ = s.strain;
-  external_work_ = s.external_work;
-  initial_energy_ = s.initial_energy;
-  outflow_mass_ = s.outflow_mass;
-  outflow_kinetic_ = s.outflow_kinetic;
-  outflow_momentum_ = s.outflow_momentum;
-  momentum_ = s.momentum;
-  p0_ = s.p0;
-  boundary_impulse_ = s.boundary_impulse;
-  external_impulse_ = s.external_impulse;
-  sinks_ = s.sinks;
+  s_ = s;
 }
 
 }  // namespace impact::mpm

@@ -18,9 +18,11 @@
 #pragma once
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "models/core/tensor.hpp"
+#include "mpm/ledger/totals.hpp"
 
 namespace impact::mpm {
 
@@ -61,22 +63,22 @@ class Ledger {
   void record_step(double time, double kinetic_energy, const Vec3& momentum,
                    double strain_energy_increment, const Vec3& boundary_impulse,
                    const Vec3& external_impulse, double external_work);
-  void add_sink(int index, double energy) { sinks_[index] += energy; }
+  void add_sink(int index, double energy) { s_.sinks[std::size_t(index)] += energy; }
   /// Particles removed at the grid's edge this step (grid.outflow = remove).
   void add_outflow(double mass, const Vec3& momentum, double kinetic_energy) {
-    outflow_mass_ += mass;
-    outflow_momentum_ += momentum;
-    outflow_kinetic_ += kinetic_energy;
+    s_.outflow_mass += mass;
+    s_.outflow_momentum += momentum;
+    s_.outflow_kinetic += kinetic_energy;
   }
 
   LedgerRow row() const;
   /// The energy that entered so far: E0 + external_work [J].
-  double energy_input() const { return initial_energy_ + external_work_; }
+  double energy_input() const { return s_.initial_energy + s_.external_work; }
   /// kinetic + strain + balance sinks + outflow - energy_input() [J]: the numerator
   /// of energy_error (no allocation: the solver's energy-growth check calls it every step).
   double energy_excess() const;
-  double initial_energy() const { return initial_energy_; }
-  const Vec3& initial_momentum() const { return p0_; }
+  double initial_energy() const { return s_.initial_energy; }
+  const Vec3& initial_momentum() const { return s_.p0; }
 
   /// CSV header: "time [s]", "kinetic_energy [J]", ..., "energy_error [-]" (the solver's original
   /// names with their units).
@@ -85,28 +87,36 @@ class Ledger {
   bool with_external() const { return with_external_; }
   bool with_outflow() const { return with_outflow_; }
 
-  /// Every accumulator, for a checkpoint (mpm/run/checkpoint.cpp): restore() on a ledger with the
-  /// same columns continues bit for bit.
+  /// Every accumulator: what a checkpoint saves (mpm/run/checkpoint.cpp walks kFields, then
+  /// the sinks); restore() on a ledger with the same columns continues bit for bit.
   struct State {
     double time = 0.0, kinetic = 0.0, strain = 0.0, external_work = 0.0, initial_energy = 0.0;
     double outflow_mass = 0.0, outflow_kinetic = 0.0;
     Vec3 momentum = Vec3::Zero(), p0 = Vec3::Zero(), boundary_impulse = Vec3::Zero();
     Vec3 external_impulse = Vec3::Zero(), outflow_momentum = Vec3::Zero();
-    std::vector<double> sinks;
+    std::vector<double> sinks;  ///< one per sink column, sized by add_sink_column()
+    /// The checkpoint record, in file order (mpm/ledger/totals.hpp).
+    static constexpr auto kFields = std::tuple{saved(&State::time),
+                                               saved(&State::kinetic),
+                                               saved(&State::strain),
+                                               saved(&State::external_work),
+                                               saved(&State::initial_energy),
+                                               saved(&State::outflow_mass),
+                                               saved(&State::outflow_kinetic),
+                                               saved(&State::momentum),
+                                               saved(&State::p0),
+                                               saved(&State::boundary_impulse),
+                                               saved(&State::external_impulse),
+                                               saved(&State::outflow_momentum)};
   };
-  State state() const;
+  const State& state() const { return s_; }
   /// Throws std::invalid_argument when the number of sink columns differs.
   void restore(const State& s);
 
  private:
   bool with_external_, with_outflow_;
-  double time_ = 0.0, kinetic_ = 0.0, strain_ = 0.0, external_work_ = 0.0;
-  double initial_energy_ = 0.0;
-  double outflow_mass_ = 0.0, outflow_kinetic_ = 0.0;
-  Vec3 momentum_ = Vec3::Zero(), p0_ = Vec3::Zero(), boundary_impulse_ = Vec3::Zero();
-  Vec3 external_impulse_ = Vec3::Zero(), outflow_momentum_ = Vec3::Zero();
+  State s_;
   std::vector<std::string> sink_names_;
-  std::vector<double> sinks_;
   std::vector<bool> in_balance_;
 };
 

@@ -195,14 +195,10 @@ void Simulation::save(CheckpointWriter& out) const {
   out.value(static_cast<std::int64_t>(converted_));
   out.value(static_cast<std::int64_t>(faulted_));
   out.value(static_cast<std::int64_t>(removed_));
-  const Ledger::State l = ledger_.state();
-  out.section("ledger", 1, 7 * sizeof(double) + 5 * sizeof(Vec3));
-  for (const double d : {l.time, l.kinetic, l.strain, l.external_work, l.initial_energy,
-                         l.outflow_mass, l.outflow_kinetic})
-    out.value(d);
-  for (const Vec3* v :
-       {&l.momentum, &l.p0, &l.boundary_impulse, &l.external_impulse, &l.outflow_momentum})
-    out.value(*v);
+  const Ledger::State& l = ledger_.state();
+  const std::vector<double> record = all_fields(l);  // Ledger::State::kFields order
+  out.section("ledger", 1, std::uint32_t(record.size() * sizeof(double)));
+  for (const double d : record) out.value(d);
   out.array("ledger_sinks", l.sinks);
 }
 
@@ -266,13 +262,10 @@ void Simulation::load(CheckpointReader& in) {
   faulted_ = static_cast<long>(in.value<std::int64_t>());
   removed_ = static_cast<long>(in.value<std::int64_t>());
   Ledger::State l;
-  in.section("ledger", 7 * sizeof(double) + 5 * sizeof(Vec3), 1);
-  for (double* d : {&l.time, &l.kinetic, &l.strain, &l.external_work, &l.initial_energy,
-                    &l.outflow_mass, &l.outflow_kinetic})
-    *d = in.value<double>();
-  for (Vec3* v :
-       {&l.momentum, &l.p0, &l.boundary_impulse, &l.external_impulse, &l.outflow_momentum})
-    *v = in.value<Vec3>();
+  std::vector<double> record(field_count<Ledger::State>());
+  in.section("ledger", std::uint32_t(record.size() * sizeof(double)), 1);
+  for (double& d : record) d = in.value<double>();
+  set_all_fields(l, record);
   in.array("ledger_sinks", l.sinks, ledger_.sink_names().size());
   ledger_.restore(l);
 }

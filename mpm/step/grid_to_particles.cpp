@@ -127,14 +127,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
   }
   ParticleTotals total;
   for (int t = 0; t < nt; ++t) {  // thread order: deterministic
-    total.kinetic_energy += partial[t].kinetic_energy;
-    total.momentum += partial[t].momentum;
-    total.max_speed = std::max(total.max_speed, partial[t].max_speed);
-    total.friction_heat += partial[t].friction_heat;
-    total.outflow_mass += partial[t].outflow_mass;
-    total.outflow_momentum += partial[t].outflow_momentum;
-    total.outflow_kinetic_energy += partial[t].outflow_kinetic_energy;
-    total.removed += partial[t].removed;
+    merge_into(total, partial[t]);
     merge_failure(failure, failures[t]);
   }
   return total;

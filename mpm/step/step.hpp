@@ -6,11 +6,13 @@
 
 #include <optional>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
 #include "mpm/contact/contact.hpp"
 #include "mpm/grid/grid.hpp"
+#include "mpm/ledger/totals.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/shape/shape.hpp"
 #include "mpm/step/scatter_order.hpp"
@@ -82,6 +84,11 @@ struct GridUpdate {
   double wall_friction_heat = 0.0;  ///< Coulomb heat of the wall faces (grid/wall.cpp) [J]
   Vec3 external_impulse = Vec3::Zero();
   double external_work = 0.0;
+  /// How each total combines over ranks (mpm/ledger/totals.hpp).
+  static constexpr auto kFields =
+      std::tuple{summed(&GridUpdate::boundary_impulse), summed(&GridUpdate::contact),
+                 summed(&GridUpdate::wall_friction_heat), summed(&GridUpdate::external_impulse),
+                 summed(&GridUpdate::external_work)};
 };
 GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradient,
                        const ContactSpec* contact);
@@ -98,6 +105,15 @@ struct ParticleTotals {
   Vec3 outflow_momentum = Vec3::Zero();
   double outflow_kinetic_energy = 0.0;
   long removed = 0;
+  /// How each total combines over threads and ranks (mpm/ledger/totals.hpp).
+  static constexpr auto kFields = std::tuple{summed(&ParticleTotals::kinetic_energy),
+                                             summed(&ParticleTotals::momentum),
+                                             largest(&ParticleTotals::max_speed),
+                                             summed(&ParticleTotals::friction_heat),
+                                             summed(&ParticleTotals::outflow_mass),
+                                             summed(&ParticleTotals::outflow_momentum),
+                                             summed(&ParticleTotals::outflow_kinetic_energy),
+                                             summed(&ParticleTotals::removed)};
 };
 
 /// Per material: whether a particle retains heat (adiabatic heating on) and its c_p [J/(kg K)].
@@ -164,6 +180,14 @@ struct StressTotals {
   long converted = 0;             ///< particles moved to a companion field this step
   /// fail_particle: the particles flagged this step and why (ascending index).
   std::vector<Failure> faulted;
+  /// How each total combines over threads and ranks (mpm/ledger/totals.hpp); `faulted` is a
+  /// list, joined in thread order by update_stress.
+  static constexpr auto kFields = std::tuple{summed(&StressTotals::strain_energy_increment),
+                                             summed(&StressTotals::viscous_work),
+                                             summed(&StressTotals::eroded_energy),
+                                             largest(&StressTotals::max_signal_speed),
+                                             summed(&StressTotals::failed),
+                                             summed(&StressTotals::converted)};
 };
 StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, double dt,
                            std::optional<Failure>& failure);

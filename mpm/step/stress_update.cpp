@@ -191,12 +191,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   }
   StressTotals total;
   for (int t = 0; t < nt; ++t) {  // thread order: deterministic
-    total.strain_energy_increment += partial[t].strain_energy_increment;
-    total.viscous_work += partial[t].viscous_work;
-    total.eroded_energy += partial[t].eroded_energy;
-    total.max_signal_speed = std::max(total.max_signal_speed, partial[t].max_signal_speed);
-    total.failed += partial[t].failed;
-    total.converted += partial[t].converted;
+    merge_into(total, partial[t]);
     // Thread t's particles follow thread t-1's (static schedule): ascending indices.
     for (Failure& f : partial[t].faulted) total.faulted.push_back(std::move(f));
     merge_failure(failure, failures[t]);
