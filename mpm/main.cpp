@@ -4,6 +4,7 @@
 //   mpm run --restart DIR [--threads N]
 //   mpm check SCENE.json [--threads N] [--set JSON]...
 //   mpm study SCENE_DIR --out DIR [--threads N] [--cases LIST] [--no-plot]
+//   mpm plot RUN [--out FIG]
 // Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path; a refused restart),
 // 3 run failure (numerical fault), 4 memory estimate above the available memory, 128 + signal
 // after a checkpoint on SIGINT (130) or SIGTERM (143).
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/plot/run_plot.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
@@ -31,6 +33,8 @@ const char* kFooter =
     "exceeds the available memory. Under mpirun -np N (or srun), with a build that has MPI, the\n"
     "grid is split into N boxes (solver.ranks_per_axis, or the split cutting the fewest node\n"
     "faces); check --ranks N plans it. Rank 0 writes every file (docs/mpi.md).\n"
+    "plot RUN draws RUN's energy books, energy error, momentum and observables into\n"
+    "RUN/run.png (or --out FIG; python3 + matplotlib).\n"
     "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused\n"
     "restart), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
 
@@ -78,6 +82,12 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "validate a scene; particles, mass, memory");
   CLI::App* study =
       app.add_subcommand("study", "the report's Table 2 study: every case of a folder");
+  CLI::App* plot =
+      app.add_subcommand("plot", "draw one run's energy books, momentum and observables");
+  std::string plot_run, plot_figure;
+  plot->add_option("RUN", plot_run, "a directory mpm run wrote")->required();
+  plot->add_option("-o,--out", plot_figure, "figure file (.png, .pdf, .svg; default RUN/run.png)")
+      ->type_name("FIG");
   for (CLI::App* c : {run, check, study}) {
     c->add_option("--threads", options.threads, "OpenMP threads (default: all; study: 2)")
         ->type_name("N")
@@ -116,8 +126,9 @@ int main(int argc, char** argv) {
   // mpm --help lists the commands; each command's --help its options, the common ones included.
   app.footer(kFooter);
   app.set_version_flag("--version", std::string("mpm ") + IMPACT_VERSION);
-  for (CLI::App* c : {run, check, study}) impact::cli::describe(*c, kFooter, verbosity);
+  for (CLI::App* c : {run, check, study, plot}) impact::cli::describe(*c, kFooter, verbosity);
   if (const auto code = impact::cli::parse(app, argc, argv, verbosity)) return *code;
+  if (plot->parsed()) return impact::mpm::plot_run(plot_run, plot_figure);
 
   for (const auto& text : fault_texts) {
     const auto fault = impact::mpm::parse_fault_injection(text);
