@@ -160,6 +160,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
       }
       // A signal reaches every rank (mpirun forwards it); they stop at the same step.
       int signal = pending_interrupt();
+      if (signal == 0 && options.poll_interrupt) signal = options.poll_interrupt();
       if (comm) signal = static_cast<int>(comm->max(double(signal)));
       if (signal != 0 && !sim.finished()) {
         std::ostringstream m;

@@ -3,6 +3,7 @@
 // mpm/run/ (run.cpp is the loop that calls them).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@ struct RunOptions {
   bool progress = false;  ///< a progress line on stderr
   /// SIGINT/SIGTERM write a checkpoint and stop the run cleanly (mpm run; not mpm study).
   bool handle_signals = false;
+  /// Asked after every step when set: a signal number (SIGINT, SIGTERM) stops the run as that
+  /// signal would (checkpoint, status "interrupted", 128 + signal); 0 goes on. The Python module
+  /// polls its own signal handling with it (Ctrl-C in a notebook).
+  std::function<int()> poll_interrupt;
   std::vector<FaultInjection> faults;  ///< --inject-fault
   /// The ranks (docs/mpi.md); null or one rank: this process alone.
   const Communicator* comm = nullptr;

@@ -37,6 +37,16 @@ Json experiment_json(const fit::Experiment& e) {
           {"stress", e.stress}};
 }
 
+/// The configuration's warnings and its experiment files' (likely unit slips), as the commands
+/// print them.
+template <class Config>
+Json warnings_of(const Config& config, const std::vector<fit::Experiment>& experiments) {
+  Json out = config.warnings;
+  for (const fit::Experiment& e : experiments)
+    for (const std::string& w : e.warnings) out.push_back(w);
+  return out;
+}
+
 /// Strength: fit_report.json plus "fitted_material" and "curves"; damage: the damage report
 /// (written to the configuration's output directory, as the command does).
 std::string run_fit(const fit::FitConfig& config) {
@@ -56,6 +66,7 @@ std::string run_fit(const fit::FitConfig& config) {
     result = fit::fit_strength(config);
   }
   Json report = fit::fit_report_json(config, result);
+  report["warnings"] = warnings_of(config, result.experiments);
   report["fitted_material"] = fit::fitted_material(config, result);
   report["converged"] = result.lsq.status == 0;
   Json curves = Json::array();
@@ -75,7 +86,9 @@ std::string run_check(const fit::CheckConfig& config) {
     check = fit::check_curves(config);
   }
   Json report = check.report;
-  report["warnings"] = check.warnings;
+  Json warnings = warnings_of(config, check.experiments);
+  for (const std::string& w : check.warnings) warnings.push_back(w);
+  report["warnings"] = warnings;
   Json curves = Json::array();
   for (std::size_t e = 0; e < check.experiments.size(); ++e) {
     curves.push_back({{"data", experiment_json(check.experiments[e])},

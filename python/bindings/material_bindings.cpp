@@ -4,7 +4,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,24 +23,51 @@ namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// The scalar history fields of PointState, by their names in a state dict.
+/// The scalar history fields of PointState, by their names in a state dict, with the values a
+/// state may hold: a NaN temperature or a negative plastic strain would not stop the update, it
+/// would return nonsense.
 struct ScalarField {
   const char* name;
   double PointState::*member;
+  bool (*admissible)(double);
+  const char* expected;
 };
-constexpr std::array<ScalarField, 6> kScalars{
-    {{"plastic_strain", &PointState::plastic_strain},
-     {"plastic_strain_rate", &PointState::plastic_strain_rate},
-     {"temperature", &PointState::temperature},
-     {"internal_energy", &PointState::internal_energy},
-     {"damage", &PointState::damage},
-     {"porosity", &PointState::porosity}}};
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::array<ScalarField, 7> kScalars{
+    {{"plastic_strain", &PointState::plastic_strain, [](double v) { return v >= 0.0 && v < kInf; },
+      "a plastic strain >= 0 [-]"},
+     {"plastic_strain_rate", &PointState::plastic_strain_rate,
+      [](double v) { return v >= 0.0 && v < kInf; }, "a plastic strain rate >= 0 [1/s]"},
+     {"temperature", &PointState::temperature, [](double v) { return v > 0.0 && v < kInf; },
+      "a temperature > 0 [K]"},
+     {"internal_energy", &PointState::internal_energy, [](double v) { return std::isfinite(v); },
+      "a finite specific internal energy [J/kg]"},
+     // Johnson-Cook's D goes on past 1 (failure at D >= 1): no upper bound.
+     {"damage", &PointState::damage, [](double v) { return v >= 0.0 && v < kInf; },
+      "a damage >= 0 [-]"},
+     // TEPLA's void fraction, kept below 1 by the library (1 - f divides).
+     {"porosity", &PointState::porosity, [](double v) { return v >= 0.0 && v < 1.0; },
+      "a porosity in [0, 1) [-]"},
+     {"flow_internal", &PointState::flow_internal, [](double v) { return std::isfinite(v); },
+      "a finite internal variable of the flow-stress law [Pa]"}}};
 struct TensorField {
   const char* name;
   Mat3 PointState::*member;
+  bool (*admissible)(const Mat3&);
+  const char* expected;
 };
 constexpr std::array<TensorField, 3> kTensors{
-    {{"stress", &PointState::stress}, {"F", &PointState::F}, {"R", &PointState::R}}};
+    {{"stress", &PointState::stress, [](const Mat3& s) { return s.allFinite(); },
+      "a finite stress [Pa]"},
+     {"F", &PointState::F, [](const Mat3& F) { return F.allFinite() && F.determinant() > 0.0; },
+      "a deformation gradient with det F > 0"},
+     {"R", &PointState::R,
+      [](const Mat3& R) {
+        return R.allFinite() &&
+               (R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
+               R.determinant() > 0.0;
+      },
+      "a rotation (R^T R = I to 1e-6, det R = 1)"}}};
 struct FlagField {
   const char* name;
   bool PointState::*member;
@@ -45,18 +76,62 @@ constexpr std::array<FlagField, 3> kFlags{{{"melted", &PointState::melted},
                                            {"failed", &PointState::failed},
                                            {"failed_in_tension", &PointState::failed_in_tension}}};
 
+/// Every key a state dict may have.
+std::vector<std::string> state_keys() {
+  std::vector<std::string> keys;
+  for (const auto& f : kTensors) keys.emplace_back(f.name);
+  for (const auto& f : kScalars) keys.emplace_back(f.name);
+  for (const auto& f : kFlags) keys.emplace_back(f.name);
+  keys.emplace_back("failure_cause");
+  keys.emplace_back("instability");
+  return keys;
+}
+
 std::string shape_text(const py::array& a) {
   std::string s = "(";
   for (py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
   return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
+std::string number_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+/// Refuses `what` when points fail `admissible`: names the first of them, its value (`shown`)
+/// and how many there are.
+template <class Admissible, class Shown>
+void refuse_inadmissible(const std::string& what, py::ssize_t n, const char* expected,
+                         Admissible admissible, Shown shown) {
+  py::ssize_t first = -1, count = 0;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    if (admissible(i)) continue;
+    if (first < 0) first = i;
+    ++count;
+  }
+  if (first < 0) return;
+  throw InputError({what + "[" + std::to_string(first) + "]: expected " + expected + ", got " +
+                    shown(first) + " (" + std::to_string(count) + " of " + std::to_string(n) +
+                    " points)"});
+}
+
+std::string tensor_text(const Mat3& t) {
+  std::string s = "[";
+  for (int r = 0; r < 3; ++r) {
+    s += r ? ", [" : "[";
+    for (int c = 0; c < 3; ++c) s += (c ? ", " : "") + number_text(t(r, c));
+    s += "]";
+  }
+  return s + "]";
+}
+
 /// `a` as N 3x3 tensors; `what` names it in the error.
 Array tensors(const py::handle& h, py::ssize_t n, const std::string& what) {
   Array a = Array::ensure(h);
   if (!a || a.ndim() != 3 || a.shape(0) != n || a.shape(1) != 3 || a.shape(2) != 3) {
-    throw py::value_error(what + ": expected an array of shape (" + std::to_string(n) +
-                          ", 3, 3), got " + (a ? shape_text(a) : std::string("no array")));
+    throw InputError({what + ": expected an array of shape (" + std::to_string(n) +
+                      ", 3, 3), got " + (a ? shape_text(a) : std::string("no numeric array"))});
   }
   return a;
 }
@@ -75,43 +150,76 @@ std::vector<Mat3> tensor_list(const Array& a) {
 Array scalars(const py::dict& state, const char* name, py::ssize_t n) {
   Array a = Array::ensure(state[name]);
   if (!a || a.ndim() != 1 || a.shape(0) != n)
-    throw py::value_error(std::string("state['") + name + "']: expected an array of shape (" +
-                          std::to_string(n) + ",)");
+    throw InputError({std::string("state['") + name + "']: expected an array of shape (" +
+                      std::to_string(n) + ",), got " +
+                      (a ? shape_text(a) : std::string("no numeric array"))});
   return a;
 }
 
+/// state[name] as N whole numbers in [0, max]; `expected` says what they are.
+std::vector<int> codes(const py::dict& state, const char* name, py::ssize_t n, int max,
+                       const char* expected) {
+  const auto v = scalars(state, name, n).unchecked<1>();
+  refuse_inadmissible(
+      std::string("state['") + name + "']", n, expected,
+      [&](py::ssize_t i) { return v(i) >= 0.0 && v(i) <= max && v(i) == std::floor(v(i)); },
+      [&](py::ssize_t i) { return number_text(v(i)); });
+  std::vector<int> out(static_cast<std::size_t>(n));
+  for (py::ssize_t i = 0; i < n; ++i) out[i] = static_cast<int>(v(i));
+  return out;
+}
+
 /// The N points of a state dict. A key not given keeps the material's initial state at its room
-/// temperature (so {"temperature": T} alone is a batch at rest at T).
+/// temperature (so {"temperature": T} alone is a batch at rest at T); an unknown key (a typo that
+/// would silently leave its field at rest) and inadmissible values are refused.
 std::vector<PointState> read_states(const ElasticPlastic& model, const py::dict& state,
                                     py::ssize_t n) {
+  const std::vector<std::string> known = state_keys();
+  for (const auto& item : state) {
+    const std::string key = py::str(item.first);
+    if (py::isinstance<py::str>(item.first) &&
+        std::find(known.begin(), known.end(), key) != known.end())
+      continue;
+    std::string message = "state[" + std::string(py::repr(item.first)) + "]: unknown key";
+    if (const auto near = nearest_name(key, known)) message += " (did you mean " + *near + "?)";
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw InputError({message + "; known: " + list});
+  }
   std::vector<PointState> out(static_cast<std::size_t>(n),
                               model.initial_state(model.params().room_temperature));
   for (const auto& f : kTensors) {
     if (!state.contains(f.name)) continue;
-    const auto t = tensor_list(tensors(state[f.name], n, std::string("state['") + f.name + "']"));
+    const std::string what = std::string("state['") + f.name + "']";
+    const auto t = tensor_list(tensors(state[f.name], n, what));
+    refuse_inadmissible(
+        what, n, f.expected, [&](py::ssize_t i) { return f.admissible(t[i]); },
+        [&](py::ssize_t i) { return tensor_text(t[i]); });
     for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = t[i];
   }
   for (const auto& f : kScalars) {
     if (!state.contains(f.name)) continue;
     const auto v = scalars(state, f.name, n).unchecked<1>();
+    refuse_inadmissible(
+        std::string("state['") + f.name + "']", n, f.expected,
+        [&](py::ssize_t i) { return f.admissible(v(i)); },
+        [&](py::ssize_t i) { return number_text(v(i)); });
     for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = v(i);
   }
   for (const auto& f : kFlags) {
     if (!state.contains(f.name)) continue;
-    const auto v = scalars(state, f.name, n).unchecked<1>();
-    for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = v(i) != 0.0;
+    const auto v = codes(state, f.name, n, 1, "0 or 1 (False or True)");
+    for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = v[i] != 0;
   }
   if (state.contains("failure_cause")) {
-    const auto v = scalars(state, "failure_cause", n).unchecked<1>();
-    for (py::ssize_t i = 0; i < n; ++i) {
-      if (v(i) < 0.0 || v(i) > static_cast<double>(FailureCause::becker))
-        throw py::value_error("state['failure_cause']: expected codes 0-4 (impact.failure_causes)");
-      out[i].failure_cause = static_cast<FailureCause>(static_cast<int>(v(i)));
-    }
+    const auto v = codes(state, "failure_cause", n, static_cast<int>(FailureCause::becker),
+                         "codes 0-4 (impact.failure_causes)");
+    for (py::ssize_t i = 0; i < n; ++i) out[i].failure_cause = static_cast<FailureCause>(v[i]);
   }
   if (state.contains("instability")) {
-    const auto v = scalars(state, "instability", n).unchecked<1>();
-    for (py::ssize_t i = 0; i < n; ++i) out[i].instability = static_cast<std::uint8_t>(v(i));
+    const auto v = codes(state, "instability", n, kDruckerFired | kBeckerFired,
+                         "bits 0-3 (1 Drucker fired, 2 Becker fired)");
+    for (py::ssize_t i = 0; i < n; ++i) out[i].instability = static_cast<std::uint8_t>(v[i]);
   }
   return out;
 }
@@ -179,21 +287,30 @@ py::dict write_reports(const std::vector<StepReport>& r) {
 /// One step of N points: (new state, report). F1 defaults to exp(L dt) F0 per point.
 py::tuple update(const Material& material, const py::dict& state, const py::handle& L_in, double dt,
                  const py::object& F1_in) {
-  if (!(dt > 0.0)) throw py::value_error("dt: expected a time step > 0 [s]");
+  if (!(dt > 0.0 && dt < kInf))
+    throw InputError({"dt: expected a time step > 0 [s], got " + number_text(dt)});
   const Array L0 = Array::ensure(L_in);
   if (!L0 || L0.ndim() != 3)
-    throw py::value_error("L: expected velocity gradients of shape (N, 3, 3) [1/s]");
+    throw InputError({"L: expected velocity gradients of shape (N, 3, 3) [1/s], got " +
+                      (L0 ? shape_text(L0) : std::string("no numeric array"))});
   const py::ssize_t n = L0.shape(0);
   const Array L = tensors(L0, n, "L");
   const ElasticPlastic& model = material.model;
   std::vector<PointState> s0 = read_states(model, state, n), s1 = s0;
   const std::vector<Mat3> Ls = tensor_list(L);
+  refuse_inadmissible(
+      "L", n, "a finite velocity gradient [1/s]", [&](py::ssize_t i) { return Ls[i].allFinite(); },
+      [&](py::ssize_t i) { return tensor_text(Ls[i]); });
   std::vector<Mat3> F1s(n);
   if (F1_in.is_none()) {
     for (py::ssize_t i = 0; i < n; ++i)
       F1s[i] = advance_deformation_gradient(s0[i].F, Ls[i], dt, FIntegration::exponential);
   } else {
     F1s = tensor_list(tensors(F1_in, n, "F1"));
+    refuse_inadmissible(
+        "F1", n, "a deformation gradient with det F1 > 0",
+        [&](py::ssize_t i) { return F1s[i].allFinite() && F1s[i].determinant() > 0.0; },
+        [&](py::ssize_t i) { return tensor_text(F1s[i]); });
   }
   std::vector<StepReport> reports(n);
   {

@@ -41,6 +41,7 @@ py::dict run(const pd::Path& path) {
   out["failure"] = std::string(to_string(result.failure));
   out["failure_time"] = result.failure_time;
   out["error"] = result.error;
+  out["replay"] = result.replay ? result.replay->dump() : std::string();  // repeats a failed step
   out["warnings"] = path.warnings;
   return out;
 }

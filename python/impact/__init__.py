@@ -4,19 +4,25 @@ and checking flow-stress laws, and MPM scenes (docs/python.md).
 Everything is in SI units; tables carry each column's unit (``Table.units``). Inputs are the
 files the programs read, or the same documents as dicts; ``patches`` are RFC 7396 merge patches
 applied in order before validation. Bad input raises ``impact.InputError`` (a ``ValueError``)
-whose message names the file, the JSON key path and what was expected.
+whose message names the file, the JSON key path and what was expected; a run that fails or is
+refused raises ``impact.RunError``; inputs read with a warning (a likely unit slip) issue an
+``impact.InputWarning`` through ``warnings.warn``. Types: the stub ``__init__.pyi`` beside this
+file.
 """
-import csv
 import json
 import os
 
 import numpy as np
 
-from ._impact import InputError  # noqa: F401  (public)
+from ._errors import InputError, InputWarning, RunError, warn_input, writable_directory
+from ._run import Run, Snapshot, read_run
+from ._table import Table, read_history
+from ._table import table as _make_table
 from . import _impact
 
-__all__ = ["InputError", "Material", "Table", "load_material", "update", "run_path", "fit",
-           "check", "run_scene", "check_scene", "read_history", "data_path", "failure_causes",
+__all__ = ["InputError", "RunError", "InputWarning", "Material", "Table", "Run", "Snapshot",
+           "load_material", "update", "run_path", "fit", "check", "run_scene", "resume_scene",
+           "check_scene", "read_history", "read_run", "data_path", "failure_causes",
            "update_statuses", "__version__"]
 
 __version__ = getattr(_impact, "__version__", "unknown")
@@ -43,37 +49,6 @@ def data_path(*relative):
         except ImportError:
             pass
     raise FileNotFoundError("impact: no shipped data found beside " + here)
-
-
-class Table(dict):
-    """Named columns (NumPy arrays) with their SI units in ``units`` (``units["time"] == "s"``).
-    Other results of the run are attributes (``completed``, ``error``, ...)."""
-
-    def __init__(self, columns, units, **info):
-        super().__init__(columns)
-        self.units = units
-        self.__dict__.update(info)
-
-    def __repr__(self):
-        return (f"Table({len(self)} columns x {len(next(iter(self.values()), []))} rows: "
-                + ", ".join(f"{k} [{u}]" for k, u in list(self.units.items())[:6]) + ", ...)")
-
-
-def _split_header(cell):
-    """'stress_xx [Pa]' -> ('stress_xx', 'Pa'); a cell without a unit gets ''."""
-    cell = cell.strip()
-    if cell.endswith("]") and " [" in cell:
-        name, unit = cell[:-1].rsplit(" [", 1)
-        return name, unit
-    return cell, ""
-
-
-def _table(named_columns, **info):
-    columns, units = {}, {}
-    for cell, values in named_columns.items():
-        name, unit = _split_header(cell)
-        columns[name], units[name] = np.asarray(values), unit
-    return Table(columns, units, **info)
 
 
 def _patches(patches):
@@ -104,14 +79,18 @@ class Material:
             self._m = _impact.read_material(json.dumps(doc), _label(base_dir, "material"))
         else:
             self._m = _impact.load_material(os.fspath(source), _patches(patches))
+        warn_input(self._m.warnings, stacklevel=2)
 
-    name = property(lambda self: self._m.name)
-    file = property(lambda self: self._m.file)
-    warnings = property(lambda self: list(self._m.warnings))
+    name = property(lambda self: self._m.name, doc="the material's name")
+    file = property(lambda self: self._m.file, doc="the file it was read from ('' for a dict)")
+    warnings = property(lambda self: list(self._m.warnings),
+                        doc="the warnings its reading gave (also issued as InputWarning)")
     density = property(lambda self: self._m.density, doc="reference density [kg/m^3]")
-    room_temperature = property(lambda self: self._m.room_temperature, doc="[K]")
+    room_temperature = property(lambda self: self._m.room_temperature,
+                                doc="room temperature [K]")
 
     def to_dict(self):
+        """The resolved material document (what material_check prints)."""
         return json.loads(self._m.to_json())
 
     def initial_state(self, temperature=None, n=1):
@@ -135,20 +114,44 @@ def load_material(source, patches=None, base_dir=None):
     return Material(source, patches, base_dir)
 
 
+_TENSOR_KEYS = ("stress", "F", "R")
+
+
+def _shape(a):
+    return "(" + ", ".join(str(k) for k in a.shape) + ("," if a.ndim == 1 else "") + ")"
+
+
 def update(material, state, L, dt, F1=None):
     """One constitutive step of N points (the solver's batched update, bit for bit the one-point
     update): ``state`` is a dict of arrays with leading dimension N (``Material.initial_state``;
     missing keys start at rest), ``L`` the velocity gradients (N, 3, 3) [1/s], ``dt`` [s], ``F1``
     the end-of-step deformation gradients (default exp(L dt) F). A single point may be given
-    without the leading dimension. Returns (new state, report): the report's ``status`` and
-    ``failure`` are names ("ok", "none", ...), the rest arrays (``plastic_work`` in J/m^3)."""
+    without the leading dimension (``L`` (3, 3), scalars and (3, 3) tensors in ``state``); the
+    result then has none either. Returns (new state, report): the report's ``status`` and
+    ``failure`` are names ("ok", "none", ...), the rest arrays (``plastic_work`` in J/m^3).
+    Raises InputError naming the argument or ``state`` key (and the first point) for a wrong
+    shape, an unknown key, or a value no state can hold (NaN, a temperature <= 0, a negative
+    plastic strain, a negative damage, det F <= 0, ...)."""
     mat = material if isinstance(material, Material) else Material(material)
     L = np.asarray(L, dtype=float)
+    if L.ndim not in (2, 3) or L.shape[-2:] != (3, 3):
+        raise InputError(f"L: expected velocity gradients of shape (N, 3, 3), or (3, 3) for one "
+                         f"point [1/s], got {_shape(L)}")
     single = L.ndim == 2
+    if not isinstance(state, dict):
+        raise InputError(f"state: expected a dict of arrays (Material.initial_state), got "
+                         f"{type(state).__name__}")
     if single:
         L = L[None]
-        state = {k: np.asarray(v)[None] for k, v in state.items()}
-        F1 = None if F1 is None else np.asarray(F1, dtype=float)[None]
+        batched = {}
+        for key, value in state.items():
+            a = np.asarray(value)
+            # A point's own shape gets the leading dimension; (1, ...) arrays are kept.
+            batched[key] = a[None] if a.ndim == (2 if key in _TENSOR_KEYS else 0) else a
+        state = batched
+        if F1 is not None:
+            F1 = np.asarray(F1, dtype=float)
+            F1 = F1[None] if F1.ndim == 2 else F1
     new, report = _impact.update(mat._m, state, L, float(dt), F1)
     report["status"] = np.array(_impact.update_status_names)[report["status"]]
     report["failure"] = np.array(_impact.failure_cause_names)[report["failure"]]
@@ -162,7 +165,9 @@ def run_path(path, patches=None, base_dir=None):
     """Runs a point-driver path (file or dict; docs/pointdriver.md) and returns its rows as a
     Table of the CSV's columns (``time`` [s], ``stress_xx`` [Pa], ``plastic_strain`` [-], ...),
     with ``completed``, ``steps``, ``end_time``, ``failure``, ``failure_time``, ``error`` and
-    ``warnings``. A run that cannot finish returns what it computed, ``completed`` False."""
+    ``warnings`` (also issued as InputWarning). A step the driver cannot solve raises RunError
+    (``pointdriver run`` exits 3): its ``reason`` says which step and why, its ``result`` is the
+    Table computed up to it and ``result.replay`` a path document repeating the failed step."""
     if isinstance(path, dict):
         doc = path
         for p in _patches(patches):
@@ -171,7 +176,12 @@ def run_path(path, patches=None, base_dir=None):
     else:
         r = _impact.run_path_file(os.fspath(path), _patches(patches))
     columns = r.pop("columns")
-    return _table(columns, **r)
+    warn_input(r["warnings"], stacklevel=2)
+    replay = r.pop("replay")
+    result = _make_table(columns, replay=json.loads(replay) if replay else None, **r)
+    if not result.completed:
+        raise RunError(result.error, _impact.exit_run_failed, result=result)
+    return result
 
 
 def _with_arrays(report):
@@ -193,7 +203,9 @@ def fit(config, base_dir=None):
         text = _impact.fit_document(json.dumps(config), _label(base_dir, "fit"))
     else:
         text = _impact.fit_file(os.fspath(config))
-    return _with_arrays(json.loads(text))
+    report = _with_arrays(json.loads(text))
+    warn_input(report.get("warnings", []), stacklevel=2)
+    return report
 
 
 def check(config, base_dir=None):
@@ -204,7 +216,9 @@ def check(config, base_dir=None):
         text = _impact.check_document(json.dumps(config), _label(base_dir, "check"))
     else:
         text = _impact.check_file(os.fspath(config))
-    return _with_arrays(json.loads(text))
+    report = _with_arrays(json.loads(text))
+    warn_input(report.get("warnings", []), stacklevel=2)
+    return report
 
 
 def _scene_source(scene, base_dir):
@@ -220,33 +234,70 @@ def _scene_source(scene, base_dir):
 
 def check_scene(scene, patches=None, threads=0, base_dir=None):
     """``mpm check``: the validated scene (``resolved``), ``warnings``, and unless the memory
-    estimate refuses it (``refusal``) the ``report`` (particles, nodes, time step, memory)."""
+    estimate refuses it (``refusal``) the ``report`` (particles, nodes, time step, memory). The
+    warnings are also issued as InputWarning."""
     file, text, label = _scene_source(scene, base_dir)
-    return json.loads(_impact.check_scene(file, text, label, _patches(patches), int(threads)))
-
-
-def read_history(directory):
-    """history.csv of a run directory as a Table (``time`` [s], energies [J], momentum ...)."""
-    with open(os.path.join(directory, "history.csv"), newline="") as f:
-        rows = list(csv.reader(f))
-    header, body = rows[0], rows[1:]
-    columns = {cell: np.array([float(r[k]) for r in body]) for k, cell in enumerate(header)}
-    return _table(columns)
+    checked = json.loads(_impact.check_scene(file, text, label, _patches(patches), int(threads)))
+    warn_input(checked["warnings"], stacklevel=2)
+    return checked
 
 
 def run_scene(scene, out, patches=None, threads=0, progress=False, base_dir=None):
     """``mpm run``: runs a scene (file or dict) to its end time, writing into ``out`` what the
-    program writes. Returns a dict: ``exit_code`` (0 done, 3 a numerical fault, 4 refused for
-    memory; docs/mpm.md), ``directory``, ``warnings``, ``summary`` (summary.json) and
-    ``history`` (history.csv as a Table)."""
+    program writes (``read_run(out)`` reads it back). Returns a dict: ``exit_code`` (0),
+    ``directory``, ``warnings`` (also issued as InputWarning before the run starts), ``status``
+    (status.json), ``summary`` (summary.json) and ``history`` (history.csv as a Table).
+
+    Raises InputError for bad input and for an ``out`` that cannot be written; RunError when the
+    run fails (a numerical fault, energy growth: exit code 3, the partial outputs in ``out``) or
+    is refused (the memory estimate above the available memory: exit code 4, nothing written);
+    Ctrl-C (SIGINT, a notebook's interrupt) stops the run after the step under way, writes a
+    checkpoint and raises KeyboardInterrupt, whose message says how to continue
+    (``resume_scene(out)``)."""
     file, text, label = _scene_source(scene, base_dir)
-    code, directory, warnings = _impact.run_scene(file, text, label, _patches(patches),
-                                                  os.fspath(out), int(threads), bool(progress))
-    result = {"exit_code": code, "directory": directory, "warnings": list(warnings)}
-    summary = os.path.join(directory, "summary.json")
-    if os.path.exists(summary):
-        with open(summary) as f:
-            result["summary"] = json.load(f)
+    out = writable_directory(out, "out")
+    code, directory, warnings, message, interrupt = _impact.run_scene(
+        file, text, label, _patches(patches), out, int(threads), bool(progress),
+        lambda w: warn_input(w, stacklevel=3))
+    return _finish(code, directory, list(warnings), message, interrupt)
+
+
+def resume_scene(directory, threads=0, progress=False):
+    """``mpm run --restart``: continues the run in ``directory`` from its checkpoint (written
+    every ``output.checkpoint_interval_steps`` and on Ctrl-C), bit for bit as if it had not
+    stopped, writing into the same directory. Returns and raises as run_scene; a checkpoint that
+    is missing or does not belong to the directory's scene.json raises InputError."""
+    directory = os.fspath(directory)
+    code, message, interrupt = _impact.resume_scene(directory, int(threads), bool(progress))
+    return _finish(code, directory, [], message, interrupt)
+
+
+def _finish(code, directory, warnings, message, interrupt):
+    """run_scene's result, or the exception of a run that did not complete."""
+    result = {"exit_code": code, "directory": directory, "warnings": warnings}
+    for name, read in (("status", _read_json), ("summary", _read_json)):
+        value = read(os.path.join(directory, name + ".json"))
+        if value is not None:
+            result[name] = value
     if os.path.exists(os.path.join(directory, "history.csv")):
         result["history"] = read_history(directory)
-    return result
+    if code == 0:
+        return result
+    # The reason as `mpm run` prints it: the exception a run threw, the refusal, else the
+    # message status.json keeps.
+    reason = message or result.get("status", {}).get("message") or f"exit code {code}"
+    if interrupt is not None:
+        note = f"{reason}; from Python: impact.resume_scene({directory!r})"
+        if isinstance(interrupt, KeyboardInterrupt) and not interrupt.args:
+            interrupt.args = (note,)
+        else:
+            interrupt.add_note(note)
+        raise interrupt
+    raise RunError(reason, code, directory, result)
+
+
+def _read_json(path):
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)

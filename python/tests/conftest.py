@@ -36,3 +36,10 @@ def workdir(tmp_path, monkeypatch):
 
 def pytest_report_header(config):
     return f"impact {impact.__version__} from {os.path.dirname(impact.__file__)}"
+
+
+@pytest.fixture
+def test_data():
+    """A file of the repository's tests/data (hostile and suspicious inputs)."""
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "data")
+    return lambda *relative: os.path.normpath(os.path.join(root, *relative))

@@ -86,7 +86,7 @@ def test_shape_errors_name_the_argument(data):
     m = impact.Material(data("materials", "al6061_t6.json"))
     with pytest.raises(ValueError, match=r"state\['stress'\]: expected an array of shape \(2, 3, 3\)"):
         impact.update(m, {"stress": np.zeros((3, 3, 3))}, np.zeros((2, 3, 3)), 1e-7)
-    with pytest.raises(ValueError, match=r"state\['failure_cause'\]: expected codes 0-4"):
+    with pytest.raises(ValueError, match=r"state\['failure_cause'\]\[0\]: expected codes 0-4"):
         impact.update(m, {"failure_cause": np.array([9])}, np.zeros((1, 3, 3)), 1e-7)
     assert impact.failure_causes[0] == "none" and impact.update_statuses[0] == "ok"
     with pytest.raises(ValueError, match="dt: expected a time step > 0"):

@@ -1,0 +1,93 @@
+"""Errors as exceptions, warnings through `warnings`: what a notebook, which never shows the C++
+side's stderr, gets from a failed, refused or badly placed run and from a likely unit slip."""
+import os
+
+import numpy as np
+import pytest
+
+import impact
+
+
+def test_failed_run_raises_run_error_with_the_reason(data, workdir):
+    """time.min_dt above the block's stable step (dx 5 mm / c ~ 5.4 km/s ~ 1e-6 s): the first
+    step stops the run (mpm run exits 3) with the solver's message."""
+    scene = {"extends": data("scenes", "verification", "rigid_translation.json"),
+             "time": {"max_time": 2e-5, "min_dt": 1e-3, "max_dt": 1e-3}}
+    with pytest.raises(impact.RunError) as caught:
+        impact.run_scene(scene, out="failed", threads=1)
+    e = caught.value
+    assert e.exit_code == 3 and e.directory == "failed"
+    assert "below time.min_dt = 0.001 s" in e.reason and e.reason in str(e)
+    # What the run wrote up to the failure comes with it: the row at t = 0 of a run at rest.
+    assert e.result["status"]["status"] == "failed"
+    assert e.result["status"]["message"] == e.reason
+    assert e.result["history"]["time"][0] == 0.0
+
+
+def test_refused_run_raises_run_error_and_writes_nothing(test_data, workdir):
+    """1200^3 cells: the memory estimate refuses the scene (exit 4) before anything is seeded,
+    allocated or written."""
+    with pytest.raises(impact.RunError, match=r"^refusing to start: estimated memory") as caught:
+        impact.run_scene(test_data("mpm_runs", "huge_grid.json"), out="huge", threads=1)
+    assert caught.value.exit_code == 4
+    assert os.listdir("huge") == []
+
+
+def test_unwritable_out_raises_input_error_naming_it(data, workdir):
+    (workdir / "a_file").write_text("not a directory\n")
+    out = os.path.join("a_file", "run")
+    with pytest.raises(impact.InputError, match=r"^out: a_file/run: expected a directory the "
+                                                r"run can write into, got "):
+        impact.run_scene(data("scenes", "verification", "rigid_translation.json"), out=out)
+    with pytest.raises(impact.InputError, match=r"^out: a_file: expected a directory"):
+        impact.run_scene(data("scenes", "verification", "rigid_translation.json"), out="a_file")
+
+
+def test_unit_slips_are_warnings_at_the_callers_line(test_data, workdir):
+    with pytest.warns(impact.InputWarning, match=r"/density: 2.7 looks like g/cm\^3") as record:
+        m = impact.Material(test_data("unit_warnings", "materials", "density_in_g_per_cc.json"))
+    assert record[0].filename == __file__ and m.warnings  # the list is kept too
+    with pytest.warns(impact.InputWarning, match=r"/objects/block/velocity/0: 1.47e\+06 looks "
+                                                 r"like mm/s") as record:
+        impact.check_scene(test_data("unit_warnings", "scenes", "velocity_in_mm_per_s.json"))
+    assert record[0].filename == __file__
+    with pytest.warns(impact.InputWarning, match=r"/temperature: 21 looks like degC") as record:
+        impact.run_path(test_data("unit_warnings", "paths", "temperature_in_celsius.json"))
+    assert record[0].filename == __file__
+    with pytest.warns(impact.InputWarning, match=r"/tolerance/max: 50 looks like MPa"):
+        impact.check(test_data("unit_warnings", "fits", "check_tolerance_in_mpa.json"))
+    # As errors on request, as Python's warnings go.
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", impact.InputWarning)
+        with pytest.raises(impact.InputWarning):
+            impact.Material(test_data("unit_warnings", "materials", "modulus_in_gpa.json"))
+
+
+def test_unsolvable_path_raises_run_error_with_what_it_computed(data):
+    """One Newton iteration with the elastic Jacobian and no cut-back cannot solve a plastic
+    stress-controlled step (tests/pointdriver/driver/replay_test.cpp): pointdriver run exits 3."""
+    path = {"material": data("materials", "al6061_t6.json"), "temperature": 294.0,
+            "legs": [{"type": "uniaxial_stress", "strain": 0.02, "strain_rate": 1000.0,
+                      "steps": 20}],
+            "solver": {"max_iterations": 1, "max_cutbacks": 0, "jacobian": "elastic"}}
+    with pytest.raises(impact.RunError, match="did not converge") as caught:
+        impact.run_path(path)
+    e = caught.value
+    assert e.exit_code == 3 and e.directory is None
+    table = e.result
+    assert not table.completed and table.error == e.reason
+    # The rows up to the failed step: elastic (eps_p = 0), time increasing from 0.
+    assert len(table["time"]) == table.steps + 1 and table.steps >= 1
+    assert table["time"][0] == 0.0 and np.all(np.diff(table["time"]) > 0.0)
+    assert np.all(table["plastic_strain"] == 0.0)
+    # The replay path repeats the failed step and fails the same way.
+    assert table.replay is not None
+    with pytest.raises(impact.RunError, match="did not converge"):
+        impact.run_path(table.replay)
+
+
+def test_input_error_is_documented_and_a_value_error():
+    assert issubclass(impact.InputError, ValueError)
+    assert "JSON key path" in impact.InputError.__doc__
+    assert issubclass(impact.RunError, RuntimeError)
