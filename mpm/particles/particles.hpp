@@ -107,6 +107,10 @@ Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
 std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3& lower,
                               const Vec3& upper);
 
+/// Whether seed_particles() gives object `object` at least one particle (the scene check refuses
+/// a body that would get none); stops at the first point found.
+bool seeds_a_point(const Scene& scene, std::size_t object);
+
 /// x inside the closed box [lower, upper] (the gauges' and the seed count's membership test).
 inline bool in_box(const Vec3& x, const Vec3& lower, const Vec3& upper) {
   return (x.array() >= lower.array()).all() && (x.array() <= upper.array()).all();

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include "mpm/particles/particles.hpp"
@@ -50,7 +51,8 @@ namespace {
 // Calls add(x, i) for every seed point x of object `oi` in the grid cells that the box [lo, hi]
 // overlaps, i its cell column along x: the ppc^3 sub-cell centres inside the object's geometry and
 // not inside an earlier object, columns outermost. The points of a cell do not depend on the box,
-// so a smaller box gives a subset of the same doubles in the same order.
+// so a smaller box gives a subset of the same doubles in the same order. An add that returns bool
+// stops the walk by returning false.
 template <class Add>
 void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3& hi,
                          Add&& add) {
@@ -87,7 +89,11 @@ void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, con
                   scene.objects.begin(), scene.objects.begin() + oi,
                   [&](const SceneObject& earlier) { return inside(earlier.geometry, x); });
               if (claimed) continue;
-              add(x, i);
+              if constexpr (std::is_same_v<std::invoke_result_t<Add&, const Vec3&, int>, bool>) {
+                if (!add(x, i)) return;
+              } else {
+                add(x, i);
+              }
             }
 }
 
@@ -241,6 +247,17 @@ std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3
   for_each_seed_point(scene, object, lower, upper,
                       [&](const Vec3& x, int) { n += in_box(x, lower, upper) ? 1 : 0; });
   return n;
+}
+
+bool seeds_a_point(const Scene& scene, std::size_t object) {
+  // Stops at the first point: a body the run will seed costs a few cells, not its whole walk.
+  bool found = false;
+  const auto [lo, hi] = bounds(scene.objects[object].geometry);
+  for_each_seed_point(scene, object, lo, hi, [&](const Vec3&, int) {
+    found = true;
+    return false;
+  });
+  return found;
 }
 
 }  // namespace impact::mpm

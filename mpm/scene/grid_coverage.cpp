@@ -1,0 +1,66 @@
+#include "mpm/scene/grid_coverage.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace impact::mpm {
+
+namespace {
+
+bool in_grid(const GridSpec& grid, const Vec3& x) {
+  return (x.array() >= grid.lower.array()).all() && (x.array() <= grid.upper.array()).all();
+}
+
+}  // namespace
+
+GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& grid) {
+  GridCoverage c;
+  const auto [lo, hi] = bounds(geometry);
+  const double v = std::min(volume(geometry), (hi - lo).prod());
+  if (!lo.allFinite() || !hi.allFinite() || !(v > 0.0)) return c;  // nothing to measure
+  if (in_grid(grid, lo) && in_grid(grid, hi)) return c;            // wholly inside
+  const Vec3 overlap = hi.cwiseMin(grid.upper) - lo.cwiseMax(grid.lower);
+  const double box_inside = (overlap.array() > 0.0).all() ? overlap.prod() : 0.0;
+  c.inside_bound = std::min(1.0, box_inside / v);
+  if (box_inside == 0.0) {
+    c.inside = 0.0;
+    c.lost = 1.0;
+    return c;
+  }
+  // Cell centres of an n^3 lattice on the bounding box: each point of the body is inside, the
+  // mirror image of a point inside (beyond symmetric faces only), or lost.
+  constexpr int n = kCoverageLattice;
+  const Vec3 step = (hi - lo) / n;
+  std::size_t body = 0, in = 0, lost = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const Vec3 x = lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5));
+        if (!inside(geometry, x)) continue;
+        ++body;
+        if (in_grid(grid, x)) {
+          ++in;
+          continue;
+        }
+        Vec3 mirror = x;
+        std::array<bool, 6> beyond{};
+        for (int d = 0; d < 3; ++d) {
+          const int face = x(d) < grid.lower(d) ? 2 * d : x(d) > grid.upper(d) ? 2 * d + 1 : -1;
+          if (face < 0) continue;
+          beyond[std::size_t(face)] = true;
+          const double plane = face % 2 == 0 ? grid.lower(d) : grid.upper(d);
+          if (grid.faces[std::size_t(face)] == FaceCondition::symmetric)
+            mirror(d) = 2.0 * plane - x(d);
+        }
+        if (in_grid(grid, mirror) && inside(geometry, mirror)) continue;  // modelled by symmetry
+        ++lost;
+        for (std::size_t f = 0; f < 6; ++f) c.lost_through[f] = c.lost_through[f] || beyond[f];
+      }
+  if (body == 0) return c;  // thinner than the lattice: left to the seed count (scene.cpp)
+  c.sampled = true;
+  c.inside = double(in) / double(body);
+  c.lost = double(lost) / double(body);
+  return c;
+}
+
+}  // namespace impact::mpm
