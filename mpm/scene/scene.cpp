@@ -53,6 +53,12 @@ Json load_with_extends(const std::string& file, std::vector<std::string>& chain)
   const fs::path base_path = fs::path(named).is_relative() ? dir / named : fs::path(named);
   const std::string base = base_path.lexically_normal().string();
   std::error_code ec;
+  if (fs::exists(base_path, ec) && !fs::is_regular_file(base_path, ec)) {
+    // A FIFO or a device (/dev/zero) would block or stream forever: refused unread.
+    throw InputError({file + ": /extends: the base scene '" + named +
+                      "' is not a regular file (a directory, FIFO, socket or device); expected a "
+                      "scene file"});
+  }
   if (!fs::is_regular_file(base_path, ec)) {
     throw InputError({file + ": /extends: cannot open the base scene '" + named + "' (looked for " +
                       base + ", relative to the file that names it)"});
