@@ -1,5 +1,5 @@
 // mpm: the explicit MPM solver's command line.
-//   mpm run SCENE.json [--out DIR] [--threads N] [--set JSON]... [--progress]
+//   mpm run SCENE.json [--out DIR] [--threads N] [--set JSON]... [--progress] [--overwrite]
 //           [--inject-fault KIND:STEP[:PARTICLE]]...
 //   mpm run --restart DIR [--threads N]
 //   mpm check SCENE.json [--threads N] [--set JSON]...
@@ -29,14 +29,17 @@ const char* kFooter =
     "DIR/particles.pvd (ParaView), DIR/summary.json, DIR/scene.json (resolved), DIR/status.json\n"
     "and DIR/checkpoint.bin (every output.checkpoint_interval_steps steps, and on SIGINT or\n"
     "SIGTERM, after which the run stops with 128 + the signal number). DIR defaults to the\n"
-    "scene's output.directory. run and check refuse (exit 4) a scene whose memory estimate\n"
-    "exceeds the available memory. Under mpirun -np N (or srun), with a build that has MPI, the\n"
-    "grid is split into N boxes (solver.ranks_per_axis, or the split cutting the fewest node\n"
-    "faces); check --ranks N plans it. Rank 0 writes every file (docs/mpi.md).\n"
+    "scene's output.directory; a new run first removes a previous run's files there (it refuses\n"
+    "to replace an unfinished run's checkpoint without --overwrite; --restart keeps them). run\n"
+    "and check refuse (exit 4) a scene whose memory estimate exceeds the available memory. Under\n"
+    "mpirun -np N (or srun), with a build that has MPI, the grid is split into N boxes\n"
+    "(solver.ranks_per_axis, or the split cutting the fewest node faces); check --ranks N plans\n"
+    "it. Rank 0 writes every file (docs/mpi.md).\n"
     "plot RUN draws RUN's energy books, energy error, momentum and observables into\n"
     "RUN/run.png (or --out FIG; python3 + matplotlib).\n"
     "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused\n"
-    "restart), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
+    "restart or replacement), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM\n"
+    "(checkpoint written).\n";
 
 /// Comma-separated, no empty items.
 bool parse_list(const std::string& text, std::vector<std::string>& items) {
@@ -116,6 +119,8 @@ int main(int argc, char** argv) {
   run->add_option("--restart", restart_dir,
                   "continue DIR's run from DIR/checkpoint.bin (bit-identical; no SCENE.json)")
       ->type_name("DIR");
+  run->add_flag("--overwrite", options.overwrite,
+                "start over in a DIR that holds an unfinished run's checkpoint (deletes it)");
   run->add_option("--inject-fault", fault_texts,
                   "developer: nan|nan_velocity|outside|jacobian:STEP:P, sigterm|sigint:STEP")
       ->type_name("KIND:STEP[:P]")
@@ -151,6 +156,7 @@ int main(int argc, char** argv) {
     if (!options.out_dir.empty()) return usage_error("--restart writes into DIR: no --out");
     if (!patches.empty())
       return usage_error("--restart continues DIR/scene.json as it is: no --set");
+    if (options.overwrite) return usage_error("--restart continues DIR: no --overwrite");
   } else if (scene_file.empty()) {
     return usage_error("run: missing SCENE.json (or --restart DIR)");
   }
@@ -164,6 +170,7 @@ int main(int argc, char** argv) {
     }
     options.progress = progress;
     options.handle_signals = true;
+    options.report = comm.root();  // one rank prints the outcome
     if (!restart_dir.empty()) return impact::mpm::restart(restart_dir, options);
     impact::Json document = impact::mpm::load_scene_document(scene_file);
     for (const impact::Json& patch : patches) document.merge_patch(patch);

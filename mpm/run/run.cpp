@@ -14,6 +14,7 @@
 #include "mpm/run/checkpoint.hpp"
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
+#include "mpm/run/output_directory.hpp"
 #include "mpm/run/progress.hpp"
 #include "mpm/run/run_outputs.hpp"
 #include "mpm/run/run_status.hpp"
@@ -72,6 +73,20 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   }
   const std::string scene_text = scene.resolved.dump(2) + '\n';
   const std::uint64_t scene_hash = fnv1a(scene_text.data(), scene_text.size());
+  if (!resume) {
+    // Every rank looks, and they agree (a collective call: none looks after rank 0 removed).
+    std::string unfinished = options.overwrite ? "" : unfinished_run(dir);
+    if (comm && comm->max(unfinished.empty() ? 0.0 : 1.0) > 0.0 && unfinished.empty())
+      unfinished = dir.string() + ": holds an unfinished run (rank 0 says which)";
+    if (!unfinished.empty()) throw InputError({unfinished});
+    // The previous run's files go before the Simulation's first collective call, so no other
+    // rank writes into the directory before they are gone.
+    const std::size_t removed = root ? clear_previous_run(dir) : 0;
+    if (removed > 0 && options.report) {
+      std::cerr << "mpm: replacing the previous run in " << dir.string() << " (" << removed
+                << " file(s) removed)\n";
+    }
+  }
   if (root) {
     fs::create_directories(dir);
     if (!resume)
@@ -114,6 +129,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     }
     paths_start = sim.time();
     status_file.checkpointed(sim.steps(), sim.time());
+    // Snapshots a killed run wrote after the checkpoint: the continued .pvd will not name them.
+    if (root) remove_unlisted_snapshots(dir, resumed.snapshots);
+    if (comm) comm->barrier();  // gone before any rank writes a piece of the same name
   }
   outputs.open(scene, dir, sim.particles(), sim.ledger(), resume ? &resumed : nullptr);
   const auto write_outputs = [&](bool snapshot, long index) {

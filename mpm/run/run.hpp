@@ -22,6 +22,12 @@ struct RunOptions {
   /// polls its own signal handling with it (Ctrl-C in a notebook).
   std::function<int()> poll_interrupt;
   std::vector<FaultInjection> faults;  ///< --inject-fault
+  /// A new run into a directory that holds an unfinished run's checkpoint replaces it (else
+  /// refused, InputError: continue it with --restart); `mpm run --overwrite`.
+  bool overwrite = false;
+  /// The command line's note on stderr when a previous run's files were replaced (mpm run; not
+  /// mpm study, not Python).
+  bool report = false;
   /// The ranks (docs/mpi.md); null or one rank: this process alone.
   const Communicator* comm = nullptr;
 };
@@ -34,17 +40,20 @@ inline constexpr int kExitSignalBase = 128;
 
 /// Runs a scene to its end time writing history.csv, snapshots, summary.json, the resolved scene
 /// and (output.checkpoint_interval_steps, or on SIGINT/SIGTERM with handle_signals) checkpoints.
-/// Returns 0; kExitRunFailed after a SolverFailure (reported on stderr, final snapshot written,
-/// status.json "failed"); kExitMemory when the memory estimate exceeds the available memory
-/// (nothing is allocated or written); 128 + signal after a checkpoint on SIGINT/SIGTERM
-/// (status.json "interrupted").
+/// The files of a previous run in the directory are removed first (output_directory.hpp); one
+/// that can still be continued is refused (InputError) unless options.overwrite. Returns 0;
+/// kExitRunFailed after a SolverFailure (reported on stderr, final snapshot written, status.json
+/// "failed"); kExitMemory when the memory estimate exceeds the available memory (nothing is
+/// allocated or written); 128 + signal after a checkpoint on SIGINT/SIGTERM (status.json
+/// "interrupted").
 int run(const Scene& scene, const RunOptions& options);
 
 /// Continues the run in `dir` from dir/checkpoint.bin with dir/scene.json (mpm run --restart
 /// DIR), writing into `dir`; options.out_dir is ignored. Throws InputError when the checkpoint is
 /// missing, of another format version, corrupt, or does not belong to dir/scene.json, or when the
 /// thread count it gets differs from the checkpoint's without options.threads asking for it
-/// (then a warning: not bit-identical). Returns as run().
+/// (then a warning: not bit-identical). Snapshots the checkpoint does not list (a killed run's
+/// after it) are removed; every other file stays. Returns as run().
 int restart(const std::string& dir, const RunOptions& options);
 
 /// The thread count a run gets: `requested` if > 0, else OpenMP's default (at most kMaxThreads).

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """What `mpm run` and `mpm check` write, against numbers derived here from the scene.
 
-  cli_outputs_test.py MPM WORK_DIR run|check|set
+  cli_outputs_test.py MPM WORK_DIR run|check|set|rerun|unfinished
 
 run: the rigid translation (data/scenes/verification/rigid_translation.json: a 20 mm aluminium
   cube, 2 particles per cell per axis in 5 mm cells, at (30, -20, 10) m/s on a free grid) to
@@ -24,6 +24,16 @@ check: `mpm check` on Case 1 of the sphere-cylinder. Per object the particles ar
 set: `mpm run --set '{"time": {"max_time": 1e-6}}'` on the rigid translation (2e-4 s in its
   file): the run stops at the patched time (the last history row and status.json at 1e-6 s; the
   scene.json written to the output directory carries the patch).
+rerun: a second run into the directory of a first (the rigid translation with snapshots every
+  5e-5 s, a checkpoint every 100 steps and a particle path; then 2e-6 s with snapshots every
+  1e-6 s, no checkpoint, no path): every file under particles/ is one the new particles.pvd names,
+  no checkpoint.bin and no paths/ of the first run is left, summary.json is the second run's, two
+  files not written by mpm stay; stderr counts the removed files (those of the first run).
+unfinished: a run stopped by SIGTERM (injected at step 5, checkpoint written) is not replaced by
+  a new run into its directory (exit 2 naming --restart and --overwrite; the checkpoint unchanged
+  byte for byte); `--restart` continues it and removes a snapshot the checkpoint does not list
+  (planted: step_999999.vtu) and nothing else; after a second SIGTERM, `--overwrite` starts over
+  (no checkpoint left, every snapshot named by the .pvd).
 """
 import json
 import math
@@ -197,8 +207,96 @@ def check_set(mpm, work):
     assert written["time"]["max_time"] == 1e-6, written["time"]
 
 
+def run_mpm_code(mpm, args):
+    done = subprocess.run([mpm] + args, capture_output=True, text=True)
+    return done.returncode, done.stdout, done.stderr
+
+
+def snapshot_files(out):
+    """The files under particles/ and the files particles.pvd names."""
+    on_disk = sorted(os.listdir(os.path.join(out, "particles")))
+    pvd = ET.parse(os.path.join(out, "particles.pvd")).getroot()
+    named = sorted(os.path.basename(d.get("file")) for d in pvd.findall("./Collection/DataSet"))
+    return on_disk, named
+
+
+def check_rerun(mpm, work):
+    out = os.path.join(work, "rerun")
+    shutil.rmtree(out, ignore_errors=True)
+    first = {"output": {"snapshots": True, "interval": 5e-5, "checkpoint_interval_steps": 100,
+                        "particle_paths": {"corner": {"object": "block",
+                                                      "position": [0.02, 0.02, 0.02]}}}}
+    run_mpm(mpm, ["run", RIGID, "--out", out, "--threads", "1", "--set", json.dumps(first)])
+    before, _ = snapshot_files(out)
+    owned = len(before) + len(os.listdir(os.path.join(out, "paths")))
+    owned += sum(os.path.exists(os.path.join(out, f)) for f in (
+        "history.csv", "summary.json", "status.json", "scene.json", "particles.pvd",
+        "checkpoint.bin"))
+    assert os.path.exists(os.path.join(out, "checkpoint.bin")), os.listdir(out)
+    for foreign in ("notes.txt", os.path.join("particles", "README")):
+        with open(os.path.join(out, foreign), "w") as f:
+            f.write("not written by mpm\n")
+    second = {"time": {"max_time": 2e-6}, "output": {"snapshots": True, "interval": 1e-6}}
+    code, _, stderr = run_mpm_code(
+        mpm, ["run", RIGID, "--out", out, "--threads", "1", "--set", json.dumps(second)])
+    assert code == 0, (code, stderr)
+    print(f"first run: {len(before)} snapshots, {owned} files; second run stderr: {stderr.strip()}")
+    on_disk, named = snapshot_files(out)
+    assert on_disk == sorted(named + ["README"]), (on_disk, named)
+    assert len(named) == 3, named  # t = 0, 1e-6, 2e-6 s
+    assert not os.path.exists(os.path.join(out, "checkpoint.bin"))
+    assert not os.path.exists(os.path.join(out, "paths"))
+    assert os.path.exists(os.path.join(out, "notes.txt"))
+    assert f"mpm: replacing the previous run in {out} ({owned} file(s) removed)" in stderr, stderr
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    with open(os.path.join(out, "status.json")) as f:
+        status = json.load(f)
+    assert summary["time [s]"] == 2e-6 and summary["steps"] == status["step"], summary
+
+
+def check_unfinished(mpm, work):
+    out = os.path.join(work, "unfinished")
+    shutil.rmtree(out, ignore_errors=True)
+    snapshots = ["--set", json.dumps({"output": {"snapshots": True, "interval": 1e-6}})]
+    stop = ["run", RIGID, "--out", out, "--threads", "1", "--inject-fault", "sigterm:5"] + snapshots
+    code, _, stderr = run_mpm_code(mpm, stop)
+    assert code == 143, (code, stderr)
+    checkpoint = os.path.join(out, "checkpoint.bin")
+    with open(checkpoint, "rb") as f:
+        saved = f.read()
+    code, _, stderr = run_mpm_code(mpm, ["run", RIGID, "--out", out, "--threads", "1"] + snapshots)
+    print(f"new run over an interrupted one: exit {code}: {stderr.strip()}")
+    assert code == 2, (code, stderr)
+    assert (f"{checkpoint}: the checkpoint of a run that has not finished (status.json: "
+            f"\"interrupted\", checkpoint at step 5): continue it with 'mpm run --restart {out}', "
+            f"or start a new run over it with --overwrite") in stderr, stderr
+    with open(checkpoint, "rb") as f:
+        assert f.read() == saved
+    planted = os.path.join(out, "particles", "step_999999.vtu")
+    shutil.copy(os.path.join(out, "particles", "step_000000.vtu"), planted)
+    kept, _ = snapshot_files(out)
+    code, _, stderr = run_mpm_code(mpm, ["run", "--restart", out])
+    assert code == 0, (code, stderr)
+    on_disk, named = snapshot_files(out)
+    print(f"restart: {len(kept)} snapshot files before (one planted), {len(on_disk)} after, "
+          f"{len(named)} named by the .pvd")
+    assert not os.path.exists(planted)
+    assert on_disk == named, (on_disk, named)
+    assert set(kept) - {"step_999999.vtu"} <= set(on_disk), (kept, on_disk)
+    code, _, stderr = run_mpm_code(mpm, stop)  # over a completed run: no refusal
+    assert code == 143, (code, stderr)
+    code, _, stderr = run_mpm_code(mpm, ["run", RIGID, "--out", out, "--threads", "1",
+                                         "--overwrite"] + snapshots)
+    assert code == 0, (code, stderr)
+    assert not os.path.exists(checkpoint)
+    on_disk, named = snapshot_files(out)
+    assert on_disk == named, (on_disk, named)
+
+
 if __name__ == "__main__":
     mpm_program, work_dir, what = sys.argv[1:4]
     os.makedirs(work_dir, exist_ok=True)
-    {"run": check_run, "check": check_check, "set": check_set}[what](mpm_program, work_dir)
+    {"run": check_run, "check": check_check, "set": check_set, "rerun": check_rerun,
+     "unfinished": check_unfinished}[what](mpm_program, work_dir)
     print("OK")
