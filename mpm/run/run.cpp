@@ -256,6 +256,15 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   write_file_atomically(dir / "summary.json",
                         [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
   status_file.write(sim, seconds, status, message);  // last: every file is then in place
+  if (options.report && status == "completed") {
+    std::ostringstream line;
+    line.precision(4);
+    line << "mpm run: completed " << sim.steps() << " steps to t = " << sim.time() << " s in "
+         << seconds << " s wall, energy_error " << sim.ledger().row().energy_error
+         << "; results in " << dir.string() << " (summary.json, history.csv"
+         << (scene.output.snapshots ? ", particles.pvd" : "") << ")\n";
+    std::cout << line.str() << std::flush;
+  }
   return code;
 }
 

@@ -25,8 +25,8 @@ struct RunOptions {
   /// A new run into a directory that holds an unfinished run's checkpoint replaces it (else
   /// refused, InputError: continue it with --restart); `mpm run --overwrite`.
   bool overwrite = false;
-  /// The command line's note on stderr when a previous run's files were replaced (mpm run; not
-  /// mpm study, not Python).
+  /// The command line's own lines: the outcome line on stdout at the end of a completed run, and
+  /// a note when a previous run's files were replaced (mpm run; not mpm study, not Python).
   bool report = false;
   /// The ranks (docs/mpi.md); null or one rank: this process alone.
   const Communicator* comm = nullptr;

@@ -28,7 +28,9 @@ rerun: a second run into the directory of a first (the rigid translation with sn
   5e-5 s, a checkpoint every 100 steps and a particle path; then 2e-6 s with snapshots every
   1e-6 s, no checkpoint, no path): every file under particles/ is one the new particles.pvd names,
   no checkpoint.bin and no paths/ of the first run is left, summary.json is the second run's, two
-  files not written by mpm stay; stderr counts the removed files (those of the first run).
+  files not written by mpm stay; stderr counts the removed files (those of the first run); stdout
+  is one line whose steps, time, energy error and directory are those of status.json and
+  summary.json.
 unfinished: a run stopped by SIGTERM (injected at step 5, checkpoint written) is not replaced by
   a new run into its directory (exit 2 naming --restart and --overwrite; the checkpoint unchanged
   byte for byte); `--restart` continues it and removes a snapshot the checkpoint does not list
@@ -38,6 +40,7 @@ unfinished: a run stopped by SIGTERM (injected at step 5, checkpoint written) is
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -237,7 +240,7 @@ def check_rerun(mpm, work):
         with open(os.path.join(out, foreign), "w") as f:
             f.write("not written by mpm\n")
     second = {"time": {"max_time": 2e-6}, "output": {"snapshots": True, "interval": 1e-6}}
-    code, _, stderr = run_mpm_code(
+    code, stdout, stderr = run_mpm_code(
         mpm, ["run", RIGID, "--out", out, "--threads", "1", "--set", json.dumps(second)])
     assert code == 0, (code, stderr)
     print(f"first run: {len(before)} snapshots, {owned} files; second run stderr: {stderr.strip()}")
@@ -253,6 +256,19 @@ def check_rerun(mpm, work):
     with open(os.path.join(out, "status.json")) as f:
         status = json.load(f)
     assert summary["time [s]"] == 2e-6 and summary["steps"] == status["step"], summary
+    line = stdout.strip()
+    print(f"stdout: {line}")
+    assert "\n" not in line, stdout
+    m = re.fullmatch(r"mpm run: completed (\d+) steps to t = (\S+) s in (\S+) s wall, "
+                     r"energy_error (\S+); results in (.+) \(summary.json, history.csv, "
+                     r"particles.pvd\)", line)
+    assert m, line
+    assert int(m.group(1)) == status["step"], (m.group(1), status)
+    assert close(float(m.group(2)), 2e-6, 1e-3), m.group(2)
+    assert close(float(m.group(3)), status["wall_time [s]"], 1e-3), (m.group(3), status)
+    error = summary["final"]["energy_error [-]"]
+    assert abs(float(m.group(4)) - error) <= 1e-3 * abs(error) + 1e-300, (m.group(4), error)
+    assert m.group(5) == out, m.group(5)
 
 
 def check_unfinished(mpm, work):
@@ -286,12 +302,13 @@ def check_unfinished(mpm, work):
     assert set(kept) - {"step_999999.vtu"} <= set(on_disk), (kept, on_disk)
     code, _, stderr = run_mpm_code(mpm, stop)  # over a completed run: no refusal
     assert code == 143, (code, stderr)
-    code, _, stderr = run_mpm_code(mpm, ["run", RIGID, "--out", out, "--threads", "1",
-                                         "--overwrite"] + snapshots)
+    code, stdout, stderr = run_mpm_code(mpm, ["run", RIGID, "--out", out, "--threads", "1",
+                                              "--overwrite"] + snapshots)
     assert code == 0, (code, stderr)
     assert not os.path.exists(checkpoint)
     on_disk, named = snapshot_files(out)
     assert on_disk == named, (on_disk, named)
+    assert stdout.startswith("mpm run: completed "), stdout
 
 
 if __name__ == "__main__":
