@@ -66,6 +66,15 @@ int command_run(const std::vector<std::string>& args) {
       o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
   std::filesystem::path stem = out;
   stem.replace_extension();
+  if (out.has_parent_path()) {  // -o DIR/OUT.csv into a new DIR, as mpm run --out makes its DIR
+    std::error_code ec;
+    std::filesystem::create_directories(out.parent_path(), ec);
+    if (ec) {
+      std::cerr << "pointdriver run: cannot create " << out.parent_path().string() << ": "
+                << ec.message() << '\n';
+      return 2;
+    }
+  }
   RunResult r;
   try {
     CsvWriter csv(out.string(), path.material.model.params());
