@@ -4,8 +4,10 @@
   plot.py OUT.csv [MORE.csv ...] --x COL --y COL [--y COL ...] -o FIG.png
           [--title T] [--logx] [--logy] [--label NAME ...]
       One line per (file, y column). Columns are named as in the CSV header, with or without the
-      unit suffix: `stress_xx` matches `stress_xx [Pa]`. Axis labels carry the units. Several files
-      are overlaid with a legend (labels: the file names, or --label, one per file).
+      unit suffix: `stress_xx` matches `stress_xx [Pa]`. Axis labels carry the units; y columns of
+      different units go on separate panels (one per unit, stacked, sharing x), never on one
+      axis. Several files are overlaid with a legend (labels: the file names, or --label, one per
+      file).
 
   plot.py --convergence convergence.csv OUTDIR
       The accuracy-versus-cost figures of `pointdriver convergence`:
@@ -47,7 +49,8 @@ class InputError(Exception):
 def read_csv(path):
     """Header cells and columns (lists of floats; non-numeric cells become NaN)."""
     try:
-        with open(path, newline="") as f:
+        # utf-8-sig: a spreadsheet's byte-order mark would otherwise stick to the first column name.
+        with open(path, newline="", encoding="utf-8-sig") as f:
             rows = list(csv.reader(f))
     except OSError as e:
         raise InputError(f"{path}: cannot read: {e.strerror}")
@@ -84,40 +87,69 @@ def find_column(header, name, path):
     raise InputError(f"{path}: no column '{name}'{hint}; columns: {', '.join(header)}")
 
 
+def unit_of(name):
+    """The unit in a column name's brackets ("stress_xx [Pa]" -> "Pa"); "" without brackets."""
+    m = re.search(r"\[([^\]]*)\]\s*$", name)
+    return m.group(1).strip() if m else ""
+
+
+def unit_panels(columns):
+    """The y columns grouped by unit, in the order the units first appear: one axis each, since
+    a stress in Pa and a temperature in K on one axis make one of them a flat line at zero."""
+    panels = {}
+    for c in columns:
+        panels.setdefault(unit_of(c), []).append(c)
+    return list(panels.values())
+
+
 def plot_columns(args):
     files = args.csv
     if args.label and len(args.label) != len(files):
         raise InputError(f"--label given {len(args.label)} times for {len(files)} files")
     data = [(f,) + read_csv(f) for f in files]
-    plt = import_pyplot()
-    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    # Resolve every column first, so that a missing one is an input error before matplotlib loads.
+    resolved = []  # (path, columns, x index, [y indices])
     x_label = None
-    y_labels = []
-    for k, (path, header, columns) in enumerate(data):
+    for path, header, columns in data:
         ix = find_column(header, args.x, path)
         x_label = x_label or header[ix]
+        resolved.append((path, header, columns, ix, [find_column(header, y, path) for y in args.y]))
+    y_names = []
+    for _, header, _, _, iys in resolved:
+        for iy in iys:
+            if header[iy] not in y_names:
+                y_names.append(header[iy])
+    panels = unit_panels(y_names)
+    plt = import_pyplot()
+    height = 4.6 if len(panels) == 1 else 2.0 + 2.2 * len(panels)
+    fig, axes = plt.subplots(len(panels), 1, sharex=True, squeeze=False, figsize=(6.4, height))
+    axes = [a[0] for a in axes]
+    panel_of = {name: k for k, names in enumerate(panels) for name in names}
+    for k, (path, header, columns, ix, iys) in enumerate(resolved):
         name = args.label[k] if args.label else os.path.basename(path)
-        for y in args.y:
-            iy = find_column(header, y, path)
-            if header[iy] not in y_labels:
-                y_labels.append(header[iy])
+        for j, iy in enumerate(iys):
             parts = []
             if len(files) > 1:
                 parts.append(name)
             if len(args.y) > 1:
                 parts.append(strip_unit(header[iy]))
-            ax.plot(columns[ix], columns[iy], label=", ".join(parts) or None)
-    ax.set_xlabel(x_label)
-    ax.set_ylabel(y_labels[0] if len(y_labels) == 1 else "; ".join(y_labels))
-    if args.logx:
-        ax.set_xscale("log")
-    if args.logy:
-        ax.set_yscale("log")
+            ax = axes[panel_of[header[iy]]]
+            # One colour per file (per column for one file), one line style per column.
+            colour = f"C{k % 10}" if len(files) > 1 else f"C{j % 10}"
+            style = ["-", "--", ":", "-."][j % 4] if len(files) > 1 else "-"
+            ax.plot(columns[ix], columns[iy], style, color=colour, label=", ".join(parts) or None)
+    for ax, names in zip(axes, panels):
+        ax.set_ylabel("; ".join(names))
+        if args.logx:
+            ax.set_xscale("log")
+        if args.logy:
+            ax.set_yscale("log")
+        if len(files) > 1 or len(names) > 1:
+            ax.legend(fontsize="small")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[-1].set_xlabel(x_label)
     if args.title:
-        ax.set_title(args.title)
-    if len(files) > 1 or len(args.y) > 1:
-        ax.legend(fontsize="small")
-    ax.grid(True, which="both", alpha=0.3)
+        axes[0].set_title(args.title)
     fig.tight_layout()
     save(fig, args.output)
     plt.close(fig)
@@ -138,7 +170,7 @@ def plot_convergence(table, outdir):
     """Error versus wall time and versus dt; one series per (path, variant); runs that were not
     solved or gave non-finite output are drawn as crosses (in the path's colour) on the top edge."""
     read_csv(table)  # reports a missing or empty file as an InputError
-    with open(table, newline="") as f:
+    with open(table, newline="", encoding="utf-8-sig") as f:
         rows = list(csv.DictReader(f))
     if not rows:
         raise InputError(f"{table}: no runs")
