@@ -9,6 +9,7 @@
 
 #include "models/damage/johnson_cook_damage.hpp"
 #include "models/material/material.hpp"
+#include "pointdriver/fit/byte_order_mark.hpp"
 
 namespace impact::pointdriver::fit {
 
@@ -46,6 +47,12 @@ FractureData read_fracture_data(const std::string& file) {
   bool header = false;
   while (std::getline(in, line)) {
     ++number;
+    if (number == 1) {
+      if (const auto wrong = strip_byte_order_mark(line)) {
+        add(1, *wrong);
+        throw InputError(problems);  // the rest would be a misleading error per line
+      }
+    }
     const std::string t = trim(line);
     if (t.empty()) continue;
     if (t[0] == '#') {

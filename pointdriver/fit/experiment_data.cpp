@@ -1,4 +1,5 @@
 #include "pointdriver/fit/experiment_data.hpp"
+#include "pointdriver/fit/byte_order_mark.hpp"
 #include "pointdriver/output/text_format.hpp"
 
 #include <algorithm>
@@ -182,6 +183,12 @@ Experiment parse_experiment(std::istream& in, const std::string& file,
   std::vector<Point> points;
   while (std::getline(in, line)) {
     ++number;
+    if (number == 1) {
+      if (const auto wrong = strip_byte_order_mark(line)) {
+        problems.add(1, *wrong);
+        problems.throw_if_any();  // the rest would be a misleading error per line
+      }
+    }
     const std::string t = trim(line);
     if (t.empty()) continue;
     if (t.front() == '#') {

@@ -90,4 +90,18 @@ BOOST_AUTO_TEST_CASE(bad_rows_name_the_file_and_line) {
              std::string::npos);
 }
 
+// The fracture-strain reader reads past a UTF-8 byte-order mark (a spreadsheet's "CSV UTF-8"):
+// the citation on the marked first line is kept, the points are those of the unmarked file.
+BOOST_AUTO_TEST_CASE(a_utf8_byte_order_mark_is_read_past) {
+  const std::string file = (std::filesystem::temp_directory_path() / "bom_fracture.csv").string();
+  std::ofstream(file) << "\xEF\xBB\xBF# source: test\n"
+                         "triaxiality [-],strain_rate [1/s],temperature [K],fracture_strain [-]\n"
+                         "0.33,1e-3,294,0.4\n0.5,1e-3,294,0.3\n";
+  const FractureData d = read_fracture_data(file);
+  BOOST_TEST(d.source == "test");
+  BOOST_TEST_REQUIRE(d.points.size() == 2u);
+  BOOST_TEST(d.points[1].triaxiality == 0.5);
+  BOOST_TEST(d.points[1].fracture_strain == 0.3);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -58,6 +58,30 @@ BOOST_AUTO_TEST_CASE(a_good_curve_reads) {
   BOOST_TEST(e.conversions.empty());
 }
 
+// A spreadsheet saving "CSV UTF-8" starts the file with the UTF-8 byte-order mark EF BB BF. The
+// file is valid UTF-8 and reads exactly as without the mark (before, the mark made the first
+// "# key: value" line a column header, and every header key was reported missing or misnamed).
+BOOST_AUTO_TEST_CASE(a_utf8_byte_order_mark_is_read_past) {
+  const std::string text =
+      header + "true_plastic_strain [-],true_stress [Pa]\n0.01,3.3e8\n0.05,3.5e8\n";
+  const Experiment plain = parse(text);
+  const Experiment marked = parse("\xEF\xBB\xBF" + text);
+  BOOST_TEST(marked.strain_rate == plain.strain_rate);
+  BOOST_TEST(marked.temperature == plain.temperature);
+  BOOST_TEST(marked.source == "test");
+  BOOST_TEST(marked.plastic_strain == plain.plastic_strain);
+  BOOST_TEST(marked.stress == plain.stress);
+}
+
+// UTF-16 (Excel's "Unicode text") cannot be read line by line: one error saying how to save the
+// file, at line 1, instead of an error on every line.
+BOOST_AUTO_TEST_CASE(utf16_text_is_refused_with_what_to_do) {
+  const std::string m = error_of(std::string("\xFF\xFE#\0 \0t\0", 8) + "\n");
+  BOOST_TEST(contains(m, "curve.csv:1: the file is UTF-16 text"));
+  BOOST_TEST(contains(m, "save it as UTF-8"));
+  BOOST_TEST(!contains(m, "missing header line"));
+}
+
 BOOST_AUTO_TEST_CASE(empty_file) {
   const std::string m = error_of("");
   BOOST_TEST(contains(m, "curve.csv"));
