@@ -28,17 +28,23 @@ const CommandSpec fit_command{
     "Prints the report and writes DIR/fit_report.json, DIR/<material>_fitted.json (a material\n"
     "file the driver and MPM read) and one figure per temperature group (DIR/fit_<T>K.png).\n"
     "DIR: --out, else output.directory of FIT.json (default: fit).",
-    "FIT.json", 1, "Exit codes: 0 done, 1 usage, 2 input error, 3 the fit did not converge.\n"};
+    "FIT.json", 1,
+    "A free parameter that ends on one of its bounds is flagged in the report (AT LOWER/UPPER\n"
+    "BOUND, fit_report.json parameters_at_bounds) and warned about; a start value on or outside\n"
+    "its bounds is moved inside with a warning.\n"
+    "Exit codes: 0 done, 1 usage, 2 input error, 3 the fit did not converge (or, with\n"
+    "--fail-at-bound, a free parameter ended on a bound).\n"};
 
 }  // namespace
 
 int command_fit(const std::vector<std::string>& args) {
   Options o;
-  if (const auto exit_code =
-          parse_command(fit_command, o, args,
-                        {{"-o|--out", 1, "output directory", "DIR"},
-                         {"--set", 1, "JSON merge patch over FIT.json (repeatable)", "JSON"},
-                         {"--no-figures", 0, "no overlay figures"}})) {
+  if (const auto exit_code = parse_command(
+          fit_command, o, args,
+          {{"-o|--out", 1, "output directory", "DIR"},
+           {"--set", 1, "JSON merge patch over FIT.json (repeatable)", "JSON"},
+           {"--no-figures", 0, "no overlay figures"},
+           {"--fail-at-bound", 0, "exit 3 when a free parameter ends on one of its bounds"}})) {
     return *exit_code;
   }
   if (o.positional.size() != 1) {
@@ -52,12 +58,18 @@ int command_fit(const std::vector<std::string>& args) {
     for (const auto& w : config.warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
     if (o.has("--out")) config.output_directory = o.get("--out", "fit");
     if (o.has("--no-figures")) config.figures = false;
+    if (o.has("--fail-at-bound")) config.fail_at_bound = true;
     fs::create_directories(config.output_directory);
     if (config.mode == "damage") return fit::run_damage_fit(config, std::cout);
     const fit::StrengthFit result = fit::fit_strength(config);
     for (const auto& e : result.experiments) {
       for (const auto& w : e.warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
     }
+    // Also on stderr, where a CI log or a user redirecting the report sees them.
+    for (const auto& w : result.start_warnings)
+      std::cerr << "pointdriver fit: warning: " << w << '\n';
+    const std::vector<std::string> at_bound = result.at_bound_messages();
+    for (const auto& m : at_bound) std::cerr << "pointdriver fit: warning: " << m << '\n';
     fit::print_fit_report(std::cout, config, result);
     const fs::path dir = config.output_directory;
     std::ofstream(dir / "fit_report.json") << fit::fit_report_json(config, result).dump(2) << '\n';
@@ -75,7 +87,13 @@ int command_fit(const std::vector<std::string>& args) {
         std::cerr << "pointdriver fit: " << e.what() << '\n';
       }
     }
-    return result.lsq.status == 0 ? 0 : 3;
+    if (result.lsq.status != 0) return 3;
+    if (config.fail_at_bound && !at_bound.empty()) {
+      std::cerr << "pointdriver fit: " << at_bound.size()
+                << " parameter(s) ended on a bound (--fail-at-bound): exit 3\n";
+      return 3;
+    }
+    return 0;
   } catch (const InputError& e) {
     std::cerr << e.what() << '\n';
     return 2;

@@ -10,6 +10,8 @@
 #include "models/damage/johnson_cook_damage.hpp"
 #include "models/material/material.hpp"
 #include "pointdriver/fit/byte_order_mark.hpp"
+#include "pointdriver/fit/parameter_bounds.hpp"
+#include "pointdriver/output/text_format.hpp"
 
 namespace impact::pointdriver::fit {
 
@@ -177,12 +179,16 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
   }
   const std::array<double, 5> material_values{base.D1, base.D2, base.D3, base.D4, base.D5};
   std::vector<Parameter> parameters;
+  std::vector<std::string> warnings;  // start values moved, parameters ended on a bound
   for (std::size_t i = 0; i < 5; ++i) {
     const ParameterSpec& s = config.parameters[i];
     Parameter p{kNames[i], s.start ? *s.start : material_values[i], s.free, s.lower, s.upper};
-    if (p.free) {
-      const double margin = 1e-3 * (p.upper - p.lower);
-      p.value = std::clamp(p.value, p.lower + margin, p.upper - margin);
+    if (const auto moved = p.free ? move_inside_bounds(p, p.value) : std::nullopt) {
+      warnings.push_back("start value of " + p.name + " (" + format_number(p.value) + ", " +
+                         (s.start ? "the configuration's" : "the material's") +
+                         ") is on or outside its bounds [" + format_number(p.lower) + ", " +
+                         format_number(p.upper) + "]: moved to " + format_number(*moved));
+      p.value = *moved;
     }
     parameters.push_back(p);
   }
@@ -190,6 +196,16 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
   std::vector<double> start;
   for (const auto& p : parameters) start.push_back(p.value);
   const LeastSquaresResult lsq = fit_damage(points, base, parameters, config.solver, weights);
+  std::array<BoundSide, 5> side{};
+  int on_bound = 0;
+  for (std::size_t i = 0; i < 5; ++i) {
+    if (!parameters[i].free) continue;
+    side[i] = at_bound(parameters[i], lsq.values[i]);
+    if (side[i] == BoundSide::none) continue;
+    ++on_bound;
+    warnings.push_back(at_bound_message(parameters[i], side[i], lsq.values[i], "-"));
+  }
+  for (const auto& w : warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
   auto rms_of = [&](const std::vector<double>& v, double& max) {
     const auto e = predict(v);
     double ss = 0;
@@ -216,7 +232,12 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
     out << std::left << std::setw(5) << kNames[i] << std::right << std::setprecision(5)
         << std::setw(11) << material_values[i] << std::setw(12) << start[i] << std::setw(12)
         << lsq.values[i] << std::setw(12) << std::setprecision(3) << lsq.std_errors[i] << "  "
-        << (parameters[i].free ? "free" : "fixed") << '\n';
+        << (!parameters[i].free           ? "fixed"
+            : side[i] == BoundSide::lower ? "AT LOWER BOUND"
+            : side[i] == BoundSide::upper ? "AT UPPER BOUND"
+                                          : "free")
+        << " [" << parameters[i].lower << ", " << parameters[i].upper << "]\n";
+  for (const auto& w : warnings) out << "WARNING: " << w << '\n';
   out << "correlation:\n" << std::setprecision(3) << lsq.correlation << '\n';
   out << "fracture strain RMS: fitted " << rms_fit << " (max " << max_fit << "), material's set "
       << rms_mat << " (max " << max_mat << ")\n";
@@ -226,11 +247,20 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
   report["configuration"] = config.file;
   report["sources"] = sources;
   for (std::size_t i = 0; i < 5; ++i)
-    report["parameters"][kNames[i]] = {{"material", material_values[i]},
-                                       {"start", start[i]},
-                                       {"fitted", lsq.values[i]},
-                                       {"std_error", lsq.std_errors[i]},
-                                       {"free", parameters[i].free}};
+    report["parameters"][kNames[i]] = {
+        {"material", material_values[i]},
+        {"start", start[i]},
+        {"fitted", lsq.values[i]},
+        {"std_error", lsq.std_errors[i]},
+        {"free", parameters[i].free},
+        {"lower", parameters[i].lower},
+        {"upper", parameters[i].upper},
+        {"at_bound", side[i] == BoundSide::none ? Json() : Json(to_string(side[i]))}};
+  Json at_bounds = Json::array();
+  for (std::size_t i = 0; i < 5; ++i)
+    if (side[i] != BoundSide::none) at_bounds.push_back(kNames[i]);
+  report["parameters_at_bounds"] = at_bounds;
+  report["warnings"] = warnings;
   Json corr = Json::array();
   for (long i = 0; i < 5; ++i) {
     Json row = Json::array();
@@ -257,7 +287,13 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
   std::ofstream(dir / config.output_material) << doc.dump(2) << '\n';
   out << "wrote " << (dir / "damage_fit_report.json").string() << ", "
       << (dir / config.output_material).string() << '\n';
-  return lsq.status == 0 ? 0 : 3;
+  if (lsq.status != 0) return 3;
+  if (config.fail_at_bound && on_bound > 0) {
+    std::cerr << "pointdriver fit: " << on_bound
+              << " parameter(s) ended on a bound (--fail-at-bound): exit 3\n";
+    return 3;
+  }
+  return 0;
 }
 
 }  // namespace impact::pointdriver::fit

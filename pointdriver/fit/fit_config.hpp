@@ -53,6 +53,8 @@ struct FitConfig {
   std::string output_directory = "fit";
   std::string output_material;  ///< file name in the output directory
   bool figures = true;
+  /// `pointdriver fit --fail-at-bound`: exit 3 when a free parameter ends on a bound.
+  bool fail_at_bound = false;
   std::vector<std::string> warnings;  ///< "file: /key/path: why", the material's included
 };
 

@@ -78,6 +78,7 @@ void print_fit_report(std::ostream& out, const FitConfig& config, const Strength
     out << "Start: the configuration's start values, else the material's (the staged guess is "
            "Johnson-Cook's)\n";
   }
+  for (const auto& w : fit.start_warnings) out << "WARNING: " << w << '\n';
   out << "\nGlobal refinement (GSL multifit_nlinear, LM with geodesic acceleration, through the "
          "driver):\n  "
       << fit.lsq.iterations << " iterations, " << fit.lsq.residual_evaluations
@@ -100,15 +101,21 @@ void print_fit_report(std::ostream& out, const FitConfig& config, const Strength
           << std::setw(12) << num(shown(u, fit.material_values[i]), 5) << std::setw(12)
           << num(shown(u, fit.start[i]), 5) << std::setw(12) << num(shown(u, fit.fitted[i]), 6);
       if (p.free) {
+        // A parameter the bound stopped is flagged in capitals: its value is the bound's.
+        const BoundSide side = i < fit.at_bound.size() ? fit.at_bound[i] : BoundSide::none;
         out << std::setw(12) << num(shown(u, fit.lsq.std_errors[i]), 3) << std::setw(9)
-            << num(100 * fit.lsq.std_errors[i] / std::abs(fit.fitted[i]), 3) << "  free ["
-            << num(shown(u, p.lower)) << ", " << num(shown(u, p.upper)) << "]\n";
+            << num(100 * fit.lsq.std_errors[i] / std::abs(fit.fitted[i]), 3) << "  "
+            << (side == BoundSide::lower   ? "AT LOWER BOUND"
+                : side == BoundSide::upper ? "AT UPPER BOUND"
+                                           : "free")
+            << " [" << num(shown(u, p.lower)) << ", " << num(shown(u, p.upper)) << "]\n";
       } else {
         out << std::setw(12) << "" << std::setw(9) << ""
             << "  fixed\n";
       }
     }
   }
+  for (const auto& m : fit.at_bound_messages()) out << "WARNING: " << m << '\n';
   out << "\nCorrelation matrix (free parameters; from J at the optimum):\n" << std::setw(22) << "";
   for (const std::size_t j : free) out << std::setw(8) << fit.parameters[j].name.substr(0, 7);
   out << '\n';
@@ -176,10 +183,12 @@ Json fit_report_json(const FitConfig& config, const StrengthFit& fit) {
   }
   j["staged_guess"] = stages;
   Json params = Json::object();
+  Json at_bounds = Json::array();
   std::vector<std::string> order;
   for (std::size_t i = 0; i < fit.parameters.size(); ++i) {
     const Parameter& p = fit.parameters[i];
     order.push_back(p.name);
+    const BoundSide side = i < fit.at_bound.size() ? fit.at_bound[i] : BoundSide::none;
     params[p.name] = {{"unit", fit.units[i]},
                       {"material", fit.material_values[i]},
                       {"start", fit.start[i]},
@@ -187,13 +196,16 @@ Json fit_report_json(const FitConfig& config, const StrengthFit& fit) {
                       {"std_error", fit.lsq.std_errors[i]},
                       {"free", p.free},
                       {"lower", p.lower},
-                      {"upper", p.upper}};
+                      {"upper", p.upper},
+                      {"at_bound", side == BoundSide::none ? Json() : Json(to_string(side))}};
+    if (side != BoundSide::none) at_bounds.push_back(p.name);
     if (fit.staged_run) {
       const auto k = std::find(jc_names.begin(), jc_names.end(), p.name) - jc_names.begin();
       if (k < 5) params[p.name]["staged"] = fit.staged.values[std::size_t(k)];
     }
   }
   j["parameters"] = params;
+  j["parameters_at_bounds"] = at_bounds;
   Json corr = Json::array();
   const long np = static_cast<long>(fit.parameters.size());
   for (long i = 0; i < np; ++i) {
@@ -219,7 +231,10 @@ Json fit_report_json(const FitConfig& config, const StrengthFit& fit) {
   for (const auto& e : fit.experiments)
     if (!e.conversions.empty()) conv[e.name] = e.conversions;
   j["conversions"] = conv;
-  j["warnings"] = fit.warnings;
+  Json warnings = fit.start_warnings;
+  for (const auto& m : fit.at_bound_messages()) warnings.push_back(m);
+  for (const auto& w : fit.warnings) warnings.push_back(w);
+  j["warnings"] = warnings;
   j["wall_time [s]"] = fit.wall_time;
   return j;
 }

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "pointdriver/output/text_format.hpp"
+
 namespace impact::pointdriver::fit {
 
 CurveErrors curve_errors(const Experiment& e, const std::vector<double>& model, bool adiabatic) {
@@ -38,6 +40,14 @@ OverallErrors overall(const std::vector<CurveErrors>& errors) {
   }
   o.rms = o.points ? std::sqrt(ss / o.points) : 0.0;
   return o;
+}
+
+std::vector<std::string> StrengthFit::at_bound_messages() const {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < at_bound.size(); ++i)
+    if (at_bound[i] != BoundSide::none)
+      out.push_back(at_bound_message(parameters[i], at_bound[i], fitted[i], units[i]));
+  return out;
 }
 
 CurveModel make_curve_model(const std::string& material_file, const Json& overrides,
@@ -106,9 +116,22 @@ StrengthFit fit_strength(const CurveModel& model, const FitConfig& config) {
   for (std::size_t i = 0; i < names.size(); ++i) {
     Parameter& p = out.parameters[i];
     p.value = start[i];
-    // A start on or outside a bound is moved just inside it.
-    const double margin = 1e-3 * (p.upper - p.lower);
-    if (p.free) p.value = std::clamp(p.value, p.lower + margin, p.upper - margin);
+    // A start on or outside a bound is moved inside it, and the user told: the solver cannot
+    // start on a bound, and a silent move hides a start the user (or the staged guess) chose.
+    if (const auto moved = p.free ? move_inside_bounds(p, p.value) : std::nullopt) {
+      const ParameterSpec* s = find_parameter(config, names[i]);
+      const bool staged = out.staged_run && !(s && s->start) &&
+                          std::find(jc_names.begin(), jc_names.end(), names[i]) != jc_names.end();
+      const std::string unit = out.units[i] == "-" ? "" : " " + out.units[i];
+      out.start_warnings.push_back(
+          "start value of " + p.name + " (" + format_number(p.value) + unit + ", " +
+          (s && s->start ? "the configuration's"
+           : staged      ? "the staged guess"
+                         : "the material's") +
+          ") is on or outside its bounds [" + format_number(p.lower) + ", " +
+          format_number(p.upper) + "]" + unit + ": moved to " + format_number(*moved) + unit);
+      p.value = *moved;
+    }
     start[i] = p.value;
   }
   out.start = start;
@@ -130,6 +153,9 @@ StrengthFit fit_strength(const CurveModel& model, const FitConfig& config) {
   };
   out.lsq = least_squares(parameters, residual, config.solver);
   out.fitted = out.lsq.values;
+  out.at_bound.assign(names.size(), BoundSide::none);
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (parameters[i].free) out.at_bound[i] = at_bound(parameters[i], out.fitted[i]);
 
   out.curves = model.curves({out.fitted, out.material_values});
   for (std::size_t s = 0; s < 2; ++s) {

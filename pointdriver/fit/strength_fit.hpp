@@ -15,6 +15,7 @@
 #include "pointdriver/fit/experiment_data.hpp"
 #include "pointdriver/fit/fit_config.hpp"
 #include "pointdriver/fit/least_squares.hpp"
+#include "pointdriver/fit/parameter_bounds.hpp"
 #include "pointdriver/fit/staged_guess.hpp"
 
 namespace impact::pointdriver::fit {
@@ -58,8 +59,14 @@ struct StrengthFit {
   StagedGuess staged;
   bool staged_run = false;
   ParameterValues start;
+  /// Start values that lay on or outside their bounds and were moved inside: one message each.
+  std::vector<std::string> start_warnings;
   LeastSquaresResult lsq;
   ParameterValues fitted;
+  /// Per parameter: the bound a free one ended on (none for the fixed ones).
+  std::vector<BoundSide> at_bound;
+  /// The free parameters that ended on a bound, with at_bound_message's text.
+  std::vector<std::string> at_bound_messages() const;
   std::vector<CurveErrors> errors_fitted, errors_material;
   OverallErrors overall_fitted, overall_material;
   std::vector<std::vector<Curve>> curves;  ///< [0] fitted, [1] material: full driver curves
