@@ -1,5 +1,6 @@
-// pointdriver cards MATERIAL.json: a Johnson-Cook material (a fitted one, typically) as LS-DYNA
-// and Abaqus cards in a consistent unit system (pointdriver/export/solver_cards.hpp).
+// pointdriver cards MATERIAL.json: a Johnson-Cook or Swift x Cowper-Symonds material (a fitted
+// one, typically) as LS-DYNA and Abaqus cards in a consistent unit system
+// (pointdriver/export/solver_cards.hpp).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -17,13 +18,15 @@ namespace fs = std::filesystem;
 const CommandSpec cards_command{
     "cards",
     "Writes a Johnson-Cook material as LS-DYNA *MAT_JOHNSON_COOK with its *EOS card and as an\n"
-    "Abaqus *MATERIAL block (*PLASTIC, HARDENING=JOHNSON COOK; *RATE DEPENDENT) in a consistent\n"
-    "unit system (docs/fitting.md): SI (m, kg, s: Pa; the default), mm-s-tonne (MPa), mm-ms-kg\n"
-    "(GPa) or mm-ms-g (MPa); temperatures in K. Prints both; with --out DIR writes\n"
-    "DIR/<material>.k and DIR/<material>.inp instead.",
+    "Abaqus *MATERIAL block (*PLASTIC, HARDENING=JOHNSON COOK; *RATE DEPENDENT), or a Swift x\n"
+    "Cowper-Symonds (cowper_symonds) material as *MAT_POWER_LAW_PLASTICITY and an Abaqus block\n"
+    "with tabulated *PLASTIC and *RATE DEPENDENT, TYPE=POWER LAW, in a consistent unit system\n"
+    "(docs/fitting.md): SI (m, kg, s: Pa; the default), mm-s-tonne (MPa), mm-ms-kg (GPa) or\n"
+    "mm-ms-g (MPa); temperatures in K. Prints both; with --out DIR writes DIR/<material>.k and\n"
+    "DIR/<material>.inp instead.",
     "MATERIAL.json", 1,
-    "Exit codes: 0 done, 1 usage, 2 input error (a bad material, a law other than Johnson-Cook,\n"
-    "an unknown unit system).\n"};
+    "Exit codes: 0 done, 1 usage, 2 input error (a bad material, another law, an unknown unit\n"
+    "system).\n"};
 
 }  // namespace
 

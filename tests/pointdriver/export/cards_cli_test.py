@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""`pointdriver cards MATERIAL --units mm-ms-kg` writes cards holding the material in mm-ms-kg.
+"""`pointdriver cards MATERIAL --units mm-ms-kg` writes cards holding the material in mm-ms-kg
+(Johnson-Cook as shipped, then with Swift x Cowper-Symonds hardening, below).
 
   cards_cli_test.py POINTDRIVER OUT_DIR
 
@@ -103,7 +104,47 @@ def main(pointdriver, out):
             same(g, w, f"Abaqus {keyword} [{i}]")
     print(f"LS-DYNA: {len(expected) + 7} values, Abaqus: "
           f"{sum(len(w) for w in checks.values())} values as converted here")
+    swift_cowper_symonds(pointdriver, out, m, E, nu)
     print("OK")
+
+
+# The same material with Swift hardening and Cowper-Symonds rate scaling (Bodner & Symonds'
+# aluminium D = 6500 /s, q = 4 on an illustrative Swift K = 420 MPa, eps0 = 0.005, n = 0.08), as
+# LS-DYNA's *MAT_POWER_LAW_PLASTICITY: sigma_y = k (eps_yp + ep)^N [1 + (rate / SRC)^(1/SRP)],
+# SIGY < 0.02 being eps_yp itself. So k = K, N = n, SRC = D, SRP = q and SIGY = eps0 (a strain,
+# unconverted), VP = 1; Abaqus: *PLASTIC's first row (K eps0^n, 0) and *RATE DEPENDENT,
+# TYPE=POWER LAW (D, q).
+SWIFT = {"type": "cowper_symonds", "K": 420e6, "eps0": 0.005, "n": 0.08, "D": 6500.0, "q": 4.0}
+
+
+def swift_cowper_symonds(pointdriver, out, m, E, nu):
+    fs = m["constitutive_model"]["flow_stress"]
+    patch = {k: None for k in fs if k not in SWIFT}
+    patch.update(SWIFT)
+    done = subprocess.run([pointdriver, "cards", MATERIAL, "--units", "mm-ms-kg", "--out", out,
+                           "--set", json.dumps({"constitutive_model": {"flow_stress": patch}})],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, (done.returncode, done.stderr)
+    with open(os.path.join(out, "al6061_t6.k")) as f:
+        k = f.read()
+    mat = ls_dyna_fields(k, "*MAT_POWER_LAW_PLASTICITY")
+    expected = {"ro": m["density"] * DENSITY, "e": E, "pr": nu, "k": SWIFT["K"] * STRESS,
+                "n": SWIFT["n"], "src": SWIFT["D"] * RATE, "srp": SWIFT["q"],
+                "sigy": SWIFT["eps0"], "vp": 1.0}
+    for name, want in expected.items():
+        same(mat[name], want, f"LS-DYNA *MAT_POWER_LAW_PLASTICITY {name}")
+    assert "*EOS" not in k, k
+    with open(os.path.join(out, "al6061_t6.inp")) as f:
+        a = abaqus_lines(f.read())
+    first_yield = SWIFT["K"] * SWIFT["eps0"] ** SWIFT["n"] * STRESS
+    checks = {"*PLASTIC": [first_yield, 0.0],
+              "*RATE DEPENDENT, TYPE=POWER LAW": [SWIFT["D"] * RATE, SWIFT["q"]]}
+    for keyword, want in checks.items():
+        assert keyword in a and len(a[keyword]) == len(want), (keyword, a.get(keyword))
+        for i, (g, w) in enumerate(zip(a[keyword], want)):
+            same(g, w, f"Abaqus {keyword} [{i}]")
+    print(f"Swift x Cowper-Symonds: LS-DYNA {len(expected)} values, Abaqus 4 values as converted "
+          "here")
 
 
 if __name__ == "__main__":
