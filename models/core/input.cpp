@@ -56,6 +56,62 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+/// SAX events of nlohmann::json that track the key path, to name where parsing stopped: the
+/// value after the last key of an object, or after the last element of an array.
+class NumberLocator {
+ public:
+  std::string pointer;  ///< of the value that stopped the parse ("" for the top level)
+  std::string token;    ///< its text, e.g. 1e999
+
+  bool null() { return value(); }
+  bool boolean(bool) { return value(); }
+  bool number_integer(Json::number_integer_t) { return value(); }
+  bool number_unsigned(Json::number_unsigned_t) { return value(); }
+  bool number_float(Json::number_float_t, const Json::string_t&) { return value(); }
+  bool string(Json::string_t&) { return value(); }
+  bool binary(Json::binary_t&) { return value(); }
+  bool start_object(std::size_t) {
+    value();
+    frames_.push_back({false, "", -1});
+    return true;
+  }
+  bool key(Json::string_t& k) {
+    frames_.back().key = k;
+    return true;
+  }
+  bool end_object() {
+    frames_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) {
+    value();
+    frames_.push_back({true, "", -1});
+    return true;
+  }
+  bool end_array() {
+    frames_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string& last_token, const Json::exception&) {
+    value();  // the value being read when the parse stopped
+    for (const Frame& f : frames_) pointer += "/" + (f.array ? std::to_string(f.index) : f.key);
+    token = last_token;
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::string key;
+    long index;
+  };
+  bool value() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return true;
+  }
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 InputError::InputError(std::vector<std::string> problems)
@@ -306,18 +362,31 @@ Json load_json_file(const std::string& file) {
   if (!std::filesystem::is_regular_file(status))
     throw InputError({file + ": not a regular file (a directory, FIFO, socket or device); expected "
                              "a JSON file"});
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError({file + ": cannot open the file (does it exist, and is it readable?)"});
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError({file + ": cannot read the file"});
+  return parse_json_text(text.str(), file);
+}
+
+Json parse_json_text(const std::string& text, const std::string& what) {
   try {
-    return Json::parse(in, nullptr, true, /*ignore_comments=*/false);
+    return Json::parse(text, nullptr, true, /*ignore_comments=*/false);
   } catch (const Json::parse_error& e) {
-    throw InputError({file + ": JSON syntax error at byte " + std::to_string(e.byte) + ": " +
+    throw InputError({what + ": JSON syntax error at byte " + std::to_string(e.byte) + ": " +
                       std::string(e.what())});
-  } catch (const Json::out_of_range& e) {  // e.g. a number beyond the double range (1e999)
-    throw InputError({file + ": JSON number out of range: " + std::string(e.what())});
-  } catch (const std::ios_base::failure& e) {  // e.g. a directory: opens, then cannot be read
-    throw InputError({file + ": cannot read the file (" + std::string(e.what()) + ")"});
+  } catch (const Json::out_of_range&) {  // a number beyond the double range (1e999)
   }
+  // Parsed again, without building it, only to find where the number is.
+  NumberLocator locator;
+  Json::sax_parse(text, &locator);
+  std::string number = locator.token;
+  if (number.size() > 32)
+    number = number.substr(0, 16) + "... (" + std::to_string(number.size()) + " characters)";
+  throw InputError({what + ": " + (locator.pointer.empty() ? "/" : locator.pointer) +
+                    ": the number " + (number.empty() ? "" : number + " ") +
+                    "is beyond the range of a double (magnitude at most 1.8e308)"});
 }
 
 std::optional<std::string> nearest_name(std::string_view word,

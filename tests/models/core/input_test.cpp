@@ -8,6 +8,7 @@
 
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
+#include <fstream>
 
 using namespace impact;
 using impact::testing::problems_text;
@@ -76,6 +77,52 @@ BOOST_AUTO_TEST_CASE(syntax_errors_and_missing_files_name_the_file) {
   BOOST_CHECK_EXCEPTION(load_json_file("/nonexistent/x.json"), InputError, [](const InputError& e) {
     return contains(e.what(), "/nonexistent/x.json: cannot open the file");
   });
+}
+
+// A number no double holds (1e999, -1e400, a 400-digit integer) is valid JSON that nlohmann::json
+// refuses with out_of_range: before, it escaped every --set (SIGABRT) and the Python patches
+// (RuntimeError). It is an InputError naming what was parsed and the key path of the number.
+BOOST_AUTO_TEST_CASE(a_number_beyond_the_double_range_names_its_key_path) {
+  const auto message = [](const std::string& text) {
+    try {
+      const Json parsed = parse_json_text(text, "--set patch 2");
+      return "no error: " + parsed.dump();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  const std::string range = "is beyond the range of a double (magnitude at most 1.8e308)";
+  BOOST_TEST(message(R"({"density": 1e999})") ==
+             "--set patch 2: /density: the number 1e999 " + range);
+  BOOST_TEST(message(R"({"a": {"b": [1, {"c": 2}, -1e400]}, "d": 1})") ==
+             "--set patch 2: /a/b/2: the number -1e400 " + range);
+  BOOST_TEST(message("1e999") == "--set patch 2: /: the number 1e999 " + range);
+  BOOST_TEST(message(R"({"n": 1)" + std::string(400, '0') + "}") ==
+             "--set patch 2: /n: the number 1000000000000000... (401 characters) " + range);
+  // Still numbers: the largest double, an integer beyond int64 but within the double range, an
+  // underflow to 0.
+  BOOST_TEST(parse_json_text(R"({"a": 1.7976931348623157e308})", "x")["a"].get<double>() ==
+             1.7976931348623157e308);
+  BOOST_TEST(parse_json_text(R"({"a": 1)" + std::string(30, '0') + "}", "x")["a"].get<double>() ==
+             1e30);
+  BOOST_TEST(parse_json_text(R"({"a": 1e-400})", "x")["a"].get<double>() == 0.0);
+  BOOST_TEST(contains(message(R"({"a": 1,})"), "--set patch 2: JSON syntax error at byte 9"));
+}
+
+BOOST_AUTO_TEST_CASE(a_file_with_an_out_of_range_number_names_file_and_key) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("input_test_range_" + std::to_string(::getpid()) + ".json");
+  {
+    std::ofstream out(file);
+    out << R"({"density": 2700, "constitutive_model": {"flow_stress": {"A": 1e999}}})";
+  }
+  BOOST_CHECK_EXCEPTION(load_json_file(file.string()), InputError, [&](const InputError& e) {
+    return std::string(e.what()) == file.string() +
+                                        ": /constitutive_model/flow_stress/A: the number 1e999 "
+                                        "is beyond the range of a double (magnitude at most "
+                                        "1.8e308)";
+  });
+  std::filesystem::remove(file);
 }
 
 // A FIFO given as a material file used to block the run forever (the open waits for a writer);
