@@ -60,9 +60,7 @@ int usage_error(const std::string& message) {
   return impact::cli::kExitUsage;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run_main(int argc, char** argv) {
   // Under mpirun or srun: one rank of a domain decomposition (docs/mpi.md); else no MPI at all.
   if (impact::mpm::started_by_launcher() && !impact::mpm::mpi_available()) {
     // Each process would run the whole scene into the same directory.
@@ -150,18 +148,19 @@ int main(int argc, char** argv) {
     return usage_error("--cases needs a comma-separated list of case names, e.g. case01,case04");
   if (options.threads > 0) study_options.threads = options.threads;
   study_options.plot = !no_plot;
-  const std::vector<impact::Json> patches = impact::cli::patches_of(set_texts);
   if (!restart_dir.empty()) {
     if (!scene_file.empty())
       return usage_error("--restart takes the scene from DIR/scene.json: no SCENE.json");
     if (!options.out_dir.empty()) return usage_error("--restart writes into DIR: no --out");
-    if (!patches.empty())
+    if (!set_texts.empty())
       return usage_error("--restart continues DIR/scene.json as it is: no --set");
     if (options.overwrite) return usage_error("--restart continues DIR: no --overwrite");
   } else if (scene_file.empty()) {
     return usage_error("run: missing SCENE.json (or --restart DIR)");
   }
+  std::vector<impact::Json> patches;
   try {
+    patches = impact::cli::patches_of(set_texts);
     if (study->parsed()) {
       study_options.patches = patches;
       study_options.scene_dir = scene_file;
@@ -176,7 +175,9 @@ int main(int argc, char** argv) {
     impact::Json document = impact::mpm::load_scene_document(scene_file);
     for (const impact::Json& patch : patches) document.merge_patch(patch);
     const impact::mpm::Scene scene = impact::mpm::read_scene(document, scene_file);
-    for (const std::string& w : scene.warnings) std::cerr << "mpm: warning: " << w << '\n';
+    for (const std::string& w :
+         impact::cli::set_origins(scene_file, patches).attribute(scene.warnings))
+      std::cerr << "mpm: warning: " << w << '\n';
     if (verbosity.verbose) std::cerr << scene.resolved.dump(2) << '\n';
     if (check->parsed()) {
       std::cout << scene.resolved.dump(2) << '\n';
@@ -191,10 +192,16 @@ int main(int argc, char** argv) {
     }
     return impact::mpm::run(scene, options);
   } catch (const impact::InputError& e) {
-    std::cerr << e.what() << '\n';
+    std::cerr << impact::cli::set_origins(scene_file, patches).attribute(e).what() << '\n';
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "mpm: " << e.what() << '\n';
     return 3;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return impact::cli::stdout_checked(run_main(argc, argv), "mpm");
 }

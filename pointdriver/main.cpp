@@ -2,7 +2,8 @@
 // checks flow-stress laws, and plots. `pointdriver <command> --help` gives each command's options
 // (pointdriver/commands/, on the programs' convention: support/command_line.hpp).
 // Exit codes: 0 success, 1 usage error, 2 input error, 3 a step could not be solved, a check or a
-// verification case failed, or a fit did not converge.
+// verification case failed, a fit did not converge, or an output (a file, stdout) could not be
+// written.
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -42,7 +43,8 @@ void print_usage(std::ostream& out) {
     out << "  " << std::left << std::setw(14) << c.name << c.summary << '\n';
   out << "\nEvery command takes --help, --version, -q/--quiet and -v/--verbose.\n"
          "Exit codes: 0 success, 1 usage, 2 input error, 3 unsolved step, failed check or\n"
-         "verification, fit not converged.\n";
+         "verification, fit not converged, an output not written; 4 run refused (the estimated\n"
+         "CSV or memory does not fit).\n";
 }
 
 }  // namespace
@@ -62,7 +64,10 @@ int main(int argc, char** argv) {
     return 0;
   }
   for (const auto& c : commands()) {
-    if (args[0] == c.name) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+    if (args[0] == c.name) {
+      const int code = c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+      return impact::cli::stdout_checked(code, std::string("pointdriver ") + c.name);
+    }
   }
   std::cerr << "pointdriver: unknown command '" << args[0] << "'\n";
   print_usage(std::cerr);

@@ -4,11 +4,15 @@
 //   --quiet (nothing on stdout: results go to files, warnings and errors still to stderr),
 //   --verbose (the resolved input and timings on stderr), --help generated from the options.
 // Exit codes are the programs' own; a usage error (unknown option, missing or malformed value)
-// is always 1, --help and --version exit 0.
+// is always 1, --help and --version exit 0. A --set number no double holds (1e999) is an input
+// error (2) naming "--set patch N" and the key; problems at keys a patch set name the patch.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <optional>
 #include <streambuf>
@@ -16,10 +20,14 @@
 #include <vector>
 
 #include "models/core/input.hpp"
+#include "support/patch_origins.hpp"
 
 namespace impact::cli {
 
 inline constexpr int kExitUsage = 1;
+inline constexpr int kExitInput = 2;
+inline constexpr int kExitFailed = 3;   ///< a failed run or check, an output that cannot be written
+inline constexpr int kExitRefused = 4;  ///< a run that would not fit (memory, output); not started
 
 #ifndef IMPACT_VERSION
 #define IMPACT_VERSION "unknown"
@@ -66,13 +74,16 @@ inline void describe(CLI::App& app, const std::string& footer, Verbosity& verbos
   app.get_formatter()->column_width(34);
 }
 
-/// Accepts a JSON text, else says why (a CLI11 check: a malformed --set is a usage error).
+/// Accepts a JSON text, else says why (a CLI11 check: a malformed --set is a usage error). A
+/// number no double holds (1e999) is valid JSON: patches_of reports it as an input error.
 inline std::string json_text_error(const std::string& text) {
   try {
     const Json parsed = Json::parse(text);
     return std::string(parsed.is_discarded() ? "invalid JSON" : "");
   } catch (const Json::parse_error& e) {
     return std::string("invalid JSON: ") + e.what();
+  } catch (const Json::exception&) {
+    return "";
   }
 }
 
@@ -85,11 +96,24 @@ inline CLI::Option* add_set(CLI::App& app, std::vector<std::string>& patches,
       ->allow_extra_args(false);  // one patch per --set: "--set P SCENE.json" keeps the scene
 }
 
-/// The patches of add_set, parsed (they were checked).
+/// What messages call the k-th --set patch (from 0): "--set patch 1".
+inline std::string set_patch_name(std::size_t k) {
+  return "--set patch " + std::to_string(k + 1);
+}
+
+/// The patches of add_set, parsed. Throws InputError for a number no double holds, naming the
+/// patch and the key ("--set patch 2: /density: the number 1e999 is beyond ...": exit 2).
 inline std::vector<Json> patches_of(const std::vector<std::string>& texts) {
   std::vector<Json> out;
-  for (const auto& t : texts) out.push_back(Json::parse(t));
+  for (std::size_t k = 0; k < texts.size(); ++k)
+    out.push_back(parse_json_text(texts[k], set_patch_name(k)));
   return out;
+}
+
+/// Problems and warnings of `file` read with `patches` merged in, attributed to the --set patch
+/// that set the key ("--set patch 1 (over FILE): /key: ...").
+inline PatchOrigins set_origins(const std::string& file, const std::vector<Json>& patches) {
+  return PatchOrigins(file, patches, set_patch_name);
 }
 
 /// Parses `args` (in order, without the program name). Returns nothing to go on; 0 after --help
@@ -120,6 +144,20 @@ inline std::optional<int> parse(CLI::App& app, std::vector<std::string> args,
 
 inline std::optional<int> parse(CLI::App& app, int argc, char** argv, Verbosity& verbosity) {
   return parse(app, std::vector<std::string>(argv + 1, argv + argc), verbosity);
+}
+
+/// `code`, after making sure that what was printed on stdout reached it: when it did not (a full
+/// disk, /dev/full), says so on stderr and turns a success into kExitFailed.
+inline int stdout_checked(int code, const std::string& program) {
+  errno = 0;
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  if (!failed) return code;
+  const int error = errno;
+  std::cerr << program << ": cannot write the standard output"
+            << (error != 0 ? std::string(" (") + std::strerror(error) + ")" : std::string())
+            << '\n';
+  return code == 0 ? kExitFailed : code;
 }
 
 }  // namespace impact::cli

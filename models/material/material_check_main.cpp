@@ -17,15 +17,20 @@ int main(int argc, char** argv) {
   std::vector<std::string> patches;
   app.add_option("MATERIAL.json", file, "material file (docs/models.md)")->required();
   impact::cli::add_set(app, patches, "the material");
-  impact::cli::describe(app, "Exit codes: 0 valid, 1 usage error, 2 input error.", verbosity);
+  impact::cli::describe(
+      app, "Exit codes: 0 valid, 1 usage error, 2 input error, 3 the output could not be written.",
+      verbosity);
   if (const auto code = impact::cli::parse(app, argc, argv, verbosity)) return *code;
+  std::vector<impact::Json> parsed;  // a problem at a key a --set patch set names the patch
   try {
-    const impact::Material m = impact::load_material(file, impact::cli::patches_of(patches));
-    for (const auto& w : m.warnings) std::cerr << "material_check: warning: " << w << '\n';
+    parsed = impact::cli::patches_of(patches);
+    const impact::Material m = impact::load_material(file, parsed);
+    for (const auto& w : impact::cli::set_origins(file, parsed).attribute(m.warnings))
+      std::cerr << "material_check: warning: " << w << '\n';
     std::cout << impact::to_json(m).dump(2) << '\n';
-    return 0;
   } catch (const impact::InputError& e) {
-    std::cerr << e.what() << '\n';
+    std::cerr << impact::cli::set_origins(file, parsed).attribute(e).what() << '\n';
     return 2;
   }
+  return impact::cli::stdout_checked(0, "material_check");
 }

@@ -2,6 +2,8 @@
 // columns then the gauges' (mpm/output/observables.hpp), values at 17 significant digits so a
 // reader can check the ledger closure to round-off.
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <stdexcept>
@@ -25,7 +27,7 @@ std::string header_line(const Ledger& ledger, const std::vector<std::string>& ex
 
 HistoryCsv::HistoryCsv(const std::string& path, const Ledger& ledger,
                        const std::vector<std::string>& extra_columns)
-    : out_(path), extra_columns_(extra_columns.size()) {
+    : out_(path), path_(path), extra_columns_(extra_columns.size()) {
   if (!out_) throw std::runtime_error("cannot write " + path);
   const std::string header = header_line(ledger, extra_columns);
   out_ << header << std::setprecision(17);
@@ -35,7 +37,7 @@ HistoryCsv::HistoryCsv(const std::string& path, const Ledger& ledger,
 HistoryCsv::HistoryCsv(const std::string& path, const Ledger& ledger,
                        const std::vector<std::string>& extra_columns, std::uint64_t bytes,
                        std::uint64_t rows)
-    : extra_columns_(extra_columns.size()), bytes_(bytes), rows_(rows) {
+    : path_(path), extra_columns_(extra_columns.size()), bytes_(bytes), rows_(rows) {
   namespace fs = std::filesystem;
   const auto fail = [&](const std::string& why) {
     throw std::runtime_error(path + ": " + why + ": not the history.csv of this checkpoint");
@@ -74,8 +76,13 @@ void HistoryCsv::write(const Ledger& ledger, const std::vector<double>& extra) {
   for (std::size_t i = 0; i < v.size(); ++i) out_ << (i ? "," : "") << v[i];
   for (const double x : extra) out_ << ',' << x;
   out_ << '\n';
+  errno = 0;
   out_.flush();
-  if (!out_) throw std::runtime_error("history.csv: write failed");
+  if (!out_) {
+    const int error = errno;
+    throw std::runtime_error("cannot write " + path_ + ": write failed" +
+                             (error != 0 ? " (" + std::string(std::strerror(error)) + ")" : ""));
+  }
   bytes_ = static_cast<std::uint64_t>(out_.tellp());
   ++rows_;
 }

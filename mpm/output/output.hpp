@@ -34,6 +34,7 @@ class HistoryCsv {
 
  private:
   std::ofstream out_;
+  std::string path_;
   std::size_t extra_columns_ = 0;
   std::uint64_t bytes_ = 0, rows_ = 0;
 };

@@ -5,7 +5,7 @@
 #include <type_traits>
 
 #include "models/material/material.hpp"
-#include "mpm/output/atomic_file.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::mpm {
 

@@ -13,8 +13,8 @@
 #include <filesystem>
 #include <functional>
 
-#include "mpm/output/atomic_file.hpp"
 #include "mpm/output/output.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::mpm {
 

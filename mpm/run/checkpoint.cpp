@@ -6,8 +6,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "mpm/output/atomic_file.hpp"
 #include "mpm/solver.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::mpm {
 

@@ -9,6 +9,7 @@
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/shape/shape.hpp"
+#include "support/system_resources.hpp"
 
 namespace impact::mpm {
 
@@ -16,26 +17,6 @@ namespace {
 
 constexpr double kProgramBytes = 16e6;
 constexpr double kMB = 1e6;
-
-// "Key:   123 kB" of a /proc file, in bytes.
-std::optional<double> proc_field(const char* file, const std::string& key) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.compare(0, key.size() + 1, key + ":") != 0) continue;
-    std::istringstream s(line.substr(key.size() + 1));
-    double kb = 0.0;
-    if (s >> kb) return kb * 1024.0;
-  }
-  return std::nullopt;
-}
-
-std::optional<double> read_number(const char* file) {
-  std::ifstream in(file);
-  double v = 0.0;
-  if (in >> v) return v;  // "max" (no limit) fails here
-  return std::nullopt;
-}
 
 }  // namespace
 
@@ -127,18 +108,11 @@ Json MemoryEstimate::json() const {
 }
 
 std::optional<double> available_memory() {
-  std::optional<double> available = proc_field("/proc/meminfo", "MemAvailable");
-  const std::optional<double> limit = read_number("/sys/fs/cgroup/memory.max");
-  const std::optional<double> used = read_number("/sys/fs/cgroup/memory.current");
-  if (limit && used) {
-    const double left = std::max(*limit - *used, 0.0);
-    available = available ? std::min(*available, left) : left;
-  }
-  return available;
+  return impact::available_memory();
 }
 
 std::optional<double> peak_resident_memory() {
-  return proc_field("/proc/self/status", "VmHWM");
+  return impact::peak_resident_memory();
 }
 
 std::string memory_refusal(const Scene& scene) {
@@ -154,7 +128,8 @@ std::string memory_refusal(const Scene& scene) {
     << " cells and " << scene.field_count() << " velocity field(s), output " << e.output_bytes / 1e6
     << " MB, program " << e.program_bytes / 1e6 << " MB) exceeds the available memory "
     << *available / 1e6
-    << " MB (MemAvailable in /proc/meminfo, or the cgroup's memory.max); coarsen grid.cells or "
+    << " MB (MemAvailable in /proc/meminfo, or less under the cgroup's memory.max or ulimit -v); "
+       "coarsen grid.cells or "
        "objects.*.particles_per_cell";
   return m.str();
 }

@@ -44,7 +44,7 @@ double estimated_particle_count(const Scene& scene);
 double estimated_grid_bytes(const Scene& scene);
 
 /// What this process may still allocate [bytes]: MemAvailable of /proc/meminfo, or less when a
-/// cgroup (v2) memory.max leaves less; nullopt when neither can be read.
+/// cgroup (v2) memory.max, ulimit -v or ulimit -d leaves less; nullopt when none can be read.
 std::optional<double> available_memory();
 /// Peak resident set size of this process so far (VmHWM of /proc/self/status) [bytes].
 std::optional<double> peak_resident_memory();

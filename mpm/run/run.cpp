@@ -10,7 +10,6 @@
 #include <sstream>
 
 #include "models/core/input.hpp"
-#include "mpm/output/atomic_file.hpp"
 #include "mpm/run/checkpoint.hpp"
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
@@ -20,6 +19,7 @@
 #include "mpm/run/run_status.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/step/parallel.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::mpm {
 
@@ -88,7 +88,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     }
   }
   if (root) {
-    fs::create_directories(dir);
+    create_output_directory(dir);
     if (!resume)
       write_file_atomically(dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
   }

@@ -1,7 +1,7 @@
 #include "mpm/run/run_status.hpp"
 
-#include "mpm/output/atomic_file.hpp"
 #include "mpm/run/checkpoint.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::mpm {
 

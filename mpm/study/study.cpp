@@ -16,6 +16,8 @@
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/solver.hpp"
+#include "support/atomic_file.hpp"
+#include "support/command_line.hpp"
 #include "support/python_launcher.hpp"
 #include "support/shipped_file.hpp"
 
@@ -118,15 +120,17 @@ int run_study(const StudyOptions& options) {
   std::vector<Scene> scenes;
   std::vector<std::string> problems;
   for (const auto& f : files) {
+    const PatchOrigins origins = cli::set_origins(f, options.patches);
     try {
       Json document = load_scene_document(f);
       for (const Json& patch : options.patches) document.merge_patch(patch);
       scenes.push_back(read_scene(document, f));
-      for (const std::string& w : scenes.back().warnings)
+      for (const std::string& w : origins.attribute(scenes.back().warnings))
         std::cerr << "mpm study: warning: " << w << '\n';
       scenes.back().output.snapshots = false;  // the study needs the ledger only; VTUs are GBs
     } catch (const InputError& e) {
-      problems.insert(problems.end(), e.problems().begin(), e.problems().end());
+      const InputError attributed = origins.attribute(e);
+      problems.insert(problems.end(), attributed.problems().begin(), attributed.problems().end());
     }
   }
   if (!problems.empty()) throw InputError(problems);
@@ -138,7 +142,7 @@ int run_study(const StudyOptions& options) {
               << " processors available: using " << threads << '\n';
 
   const fs::path out(options.out_dir);
-  fs::create_directories(out);
+  create_output_directory(out);
   Json record = Json::array();
   std::vector<std::string> failed;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -167,9 +171,10 @@ int run_study(const StudyOptions& options) {
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!fs::exists(dir / "summary.json")) {  // run() did not get as far as its summary
-      std::ofstream(dir / "summary.json")
-          << Json{{"status", "failed"}, {"message", message}, {"wall_time [s]", wall}}.dump(2)
+      write_file_atomically(dir / "summary.json", [&](std::ostream& o) {
+        o << Json{{"status", "failed"}, {"message", message}, {"wall_time [s]", wall}}.dump(2)
           << '\n';
+      });
     } else if (code != 0) {
       std::ifstream in(dir / "summary.json");
       const Json summary = Json::parse(in, nullptr, false);
@@ -187,7 +192,7 @@ int run_study(const StudyOptions& options) {
   }
   const Json study = {
       {"scene_directory", options.scene_dir}, {"threads", threads}, {"cases", record}};
-  std::ofstream(out / "study.json") << study.dump(2) << '\n';
+  write_file_atomically(out / "study.json", [&](std::ostream& o) { o << study.dump(2) << '\n'; });
   std::cerr << "mpm study: " << scenes.size() - failed.size() << " of " << scenes.size()
             << " cases completed";
   for (std::size_t i = 0; i < failed.size(); ++i)

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -18,6 +17,7 @@
 #include "pointdriver/output/csv_writer.hpp"
 #include "pointdriver/output/text_format.hpp"
 #include "pointdriver/study/batch.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -40,7 +40,8 @@ const CommandSpec batch_command{
     "Names: the file stems; an inline patch is set<k>, k its position in --materials.",
     "", 0,
     "Exit codes: 0 every run completed, 1 usage, 2 input error, 3 a step could not be solved in\n"
-    "some run (its error is in the summary).\n"};
+    "some run or its CSV could not be written (the error is in the summary), or the summary\n"
+    "could not be written.\n"};
 
 struct MaterialEntry {
   std::string name;
@@ -56,12 +57,7 @@ std::string unique(const std::string& base, std::map<std::string, int>& seen) {
 MaterialEntry read_material_entry(const std::string& arg, int index) {
   MaterialEntry e;
   if (!arg.empty() && arg.front() == '{') {
-    try {
-      e.patch = Json::parse(arg);
-    } catch (const Json::parse_error& err) {
-      throw InputError(
-          {"--materials: inline JSON #" + std::to_string(index + 1) + ": " + err.what()});
-    }
+    e.patch = parse_json_text(arg, "--materials: inline JSON #" + std::to_string(index + 1));
     if (!e.patch.is_object()) throw InputError({"--materials: inline JSON must be an object"});
     e.name = "set" + std::to_string(index + 1);
     return e;
@@ -124,15 +120,6 @@ int command_batch(const std::vector<std::string>& args) {
       return 1;
     }
   }
-  std::vector<Json> sets;
-  for (const auto& s : o.all("--set")) {
-    try {
-      sets.push_back(Json::parse(s));
-    } catch (const Json::parse_error& e) {
-      std::cerr << "pointdriver batch: --set: invalid JSON: " << e.what() << '\n';
-      return 1;
-    }
-  }
   const fs::path out_dir = o.get("--out", "batch");
   const bool write_csv = !o.has("--no-csv");
 
@@ -143,7 +130,10 @@ int command_batch(const std::vector<std::string>& args) {
   std::vector<MaterialEntry> materials;
   std::vector<BatchJob> jobs;
   std::vector<std::pair<std::size_t, std::size_t>> job_index;  // (path, material)
+  std::vector<Json> sets;
+  std::string path_file;  // the one being read: problems at keys a --set set name the patch
   try {
+    sets = cli::patches_of(o.all("--set"));
     std::map<std::string, int> seen_materials, seen_paths;
     const auto& mats = o.all("--materials");
     for (std::size_t i = 0; i < mats.size(); ++i) {
@@ -155,10 +145,11 @@ int command_batch(const std::vector<std::string>& args) {
       }
     }
     for (const auto& f : o.all("--paths")) {
+      path_file = f;
       Json doc = load_json_file(f);
       for (const Json& p : sets) doc.merge_patch(p);
       paths.push_back(std::make_unique<Path>(read_path(doc, f)));
-      for (const auto& w : paths.back()->warnings)
+      for (const auto& w : cli::set_origins(f, sets).attribute(paths.back()->warnings))
         std::cerr << "pointdriver batch: warning: " << w << '\n';
       path_names.push_back(unique(fs::path(f).stem().string(), seen_paths));
       std::vector<std::unique_ptr<Path>> row;
@@ -170,8 +161,8 @@ int command_batch(const std::vector<std::string>& args) {
       patched.push_back(std::move(row));
     }
   } catch (const InputError& e) {
-    std::cerr << e.what() << '\n';
-    return 2;
+    std::cerr << cli::set_origins(path_file, sets).attribute(e).what() << '\n';
+    return cli::kExitInput;
   }
   if (materials.empty()) material_names.push_back("path_material");
   for (std::size_t p = 0; p < paths.size(); ++p) {
@@ -191,33 +182,36 @@ int command_batch(const std::vector<std::string>& args) {
     }
   }
 
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec) {
-    std::cerr << "pointdriver batch: cannot create " << out_dir.string() << ": " << ec.message()
-              << '\n';
-    return 2;
-  }
   BatchOptions options;
   options.threads = threads;
-  if (write_csv) {
-    options.make_sink = [&](std::size_t i, const BatchJob& job) -> RowSink {
-      const auto [p, m] = job_index[i];
-      const fs::path file = out_dir / (path_names[p] + "__" + material_names[m] + ".csv");
-      auto csv = std::make_shared<CsvWriter>(file.string(), job.model->params());
-      return [csv](const Row& row) { csv->write(row); };
-    };
+  std::vector<std::unique_ptr<CsvWriter>> csvs(jobs.size());  // slot i: job i's worker only
+  std::unique_ptr<AtomicFile> summary_file;
+  try {
+    create_output_directory(out_dir);
+    if (write_csv) {
+      options.make_sink = [&](std::size_t i, const BatchJob& job) -> RowSink {
+        const auto [p, m] = job_index[i];
+        const fs::path file = out_dir / (path_names[p] + "__" + material_names[m] + ".csv");
+        csvs[i] = std::make_unique<CsvWriter>(file.string(), job.model->params());
+        CsvWriter* csv = csvs[i].get();
+        return [csv](const Row& row) { csv->write(row); };
+      };
+      options.close_sink = [&](std::size_t i) {
+        csvs[i]->close();
+        csvs[i].reset();
+      };
+    }
+    summary_file = std::make_unique<AtomicFile>(out_dir / "batch_summary.csv");
+  } catch (const OutputError& e) {
+    std::cerr << "pointdriver batch: " << e.what() << '\n';
+    return cli::kExitFailed;
   }
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<BatchResult> results = run_batch_jobs(jobs, options);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const fs::path summary = out_dir / "batch_summary.csv";
-  std::ofstream s(summary);
-  if (!s) {
-    std::cerr << "pointdriver batch: cannot write " << summary.string() << '\n';
-    return 2;
-  }
+  const fs::path summary = summary_file->path();
+  std::ostream& s = summary_file->stream();
   s << "path,material,steps,completed,failure cause,failure time [s],final stress_xx [Pa],"
        "final plastic strain [-],final temperature [K],wall time [s],error\n";
   bool all_completed = true;
@@ -247,9 +241,15 @@ int command_batch(const std::vector<std::string>& args) {
       std::min<std::size_t>(std::max<std::size_t>(results.size(), 1),
                             threads > 0 ? static_cast<std::size_t>(threads)
                                         : std::max(1u, std::thread::hardware_concurrency()));
+  try {
+    summary_file->commit();
+  } catch (const OutputError& e) {
+    std::cerr << "pointdriver batch: " << e.what() << '\n';
+    return cli::kExitFailed;
+  }
   std::cout << results.size() << " runs, " << steps << " steps in " << std::setprecision(3) << total
             << " s (" << workers << " threads) -> " << summary.string() << '\n';
-  return all_completed ? 0 : 3;
+  return all_completed ? 0 : cli::kExitFailed;
 }
 
 }  // namespace impact::pointdriver

@@ -2,12 +2,12 @@
 // one, typically) as LS-DYNA and Abaqus cards in a consistent unit system
 // (pointdriver/export/solver_cards.hpp).
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "pointdriver/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/export/solver_cards.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -26,7 +26,7 @@ const CommandSpec cards_command{
     "DIR/<material>.inp instead.",
     "MATERIAL.json", 1,
     "Exit codes: 0 done, 1 usage, 2 input error (a bad material, another law, an unknown unit\n"
-    "system).\n"};
+    "system), 3 a card file (or stdout) could not be written.\n"};
 
 }  // namespace
 
@@ -43,33 +43,44 @@ int command_cards(const std::vector<std::string>& args) {
     std::cerr << "pointdriver cards: expected one MATERIAL.json (pointdriver cards --help)\n";
     return 1;
   }
+  std::vector<Json> patches;
+  const std::string& file = o.positional[0];
   try {
     const UnitSystem& units = unit_system(o.get("--units", "SI"));
-    const Material material = load_material(o.positional[0], cli::patches_of(o.all("--set")));
+    patches = cli::patches_of(o.all("--set"));
+    const Material material = load_material(file, patches);
     if (o.verbosity.verbose) std::cerr << to_json(material).dump(2) << '\n';
     const std::string dyna = ls_dyna_cards(material, units);
     const std::string abaqus = abaqus_cards(material, units);
     if (!o.has("--out")) {
-      std::cout << dyna << '\n' << abaqus;
+      std::cout << dyna << '\n' << abaqus;  // checked by main (stdout_checked)
       return 0;
     }
     const fs::path dir = o.get("--out", ".");
-    fs::create_directories(dir);
-    const std::string stem = fs::path(o.positional[0]).stem().string();
-    std::ofstream(dir / (stem + ".k")) << "*KEYWORD\n" << dyna << "*END\n";
-    std::ofstream(dir / (stem + ".inp")) << abaqus;
+    create_output_directory(dir);
+    const std::string stem = fs::path(file).stem().string();
+    // Both written before either is renamed into place: a failure leaves the previous pair.
+    AtomicFile k(dir / (stem + ".k")), inp(dir / (stem + ".inp"));
+    k.stream() << "*KEYWORD\n" << dyna << "*END\n";
+    inp.stream() << abaqus;
+    for (AtomicFile* f : {&k, &inp}) {
+      f->stream().flush();
+      f->check();
+    }
+    k.commit();
+    inp.commit();
     std::cout << "wrote " << (dir / (stem + ".k")).string() << ", "
               << (dir / (stem + ".inp")).string() << " (units " << units.name << ")\n";
     return 0;
   } catch (const InputError& e) {
-    std::cerr << e.what() << '\n';
-    return 2;
-  } catch (const Json::parse_error& e) {
-    std::cerr << "pointdriver cards: --set: not JSON: " << e.what() << '\n';
-    return 2;
+    std::cerr << cli::set_origins(file, patches).attribute(e).what() << '\n';
+    return cli::kExitInput;
   } catch (const std::invalid_argument& e) {
     std::cerr << "pointdriver cards: " << e.what() << '\n';
-    return 2;
+    return cli::kExitInput;
+  } catch (const OutputError& e) {
+    std::cerr << "pointdriver cards: " << e.what() << '\n';
+    return cli::kExitFailed;
   }
 }
 

@@ -2,7 +2,6 @@
 // users' CI): per-curve RMS, max and mean signed errors, overlay figures, exit 3 when a tolerance
 // is exceeded.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "pointdriver/commands.hpp"
@@ -11,6 +10,7 @@
 #include "pointdriver/fit/fit_config.hpp"
 #include "pointdriver/fit/fit_report.hpp"
 #include "pointdriver/output/junit.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -27,7 +27,8 @@ const CommandSpec check_command{
     "--junit FILE: one JUnit test case per curve (failed when one of its tolerances is exceeded)\n"
     "and one for the overall RMS.",
     "CHECK.json", 1,
-    "Exit codes: 0 within every tolerance, 1 usage, 2 input error, 3 a tolerance exceeded.\n"};
+    "Exit codes: 0 within every tolerance, 1 usage, 2 input error, 3 a tolerance exceeded or an\n"
+    "output could not be written.\n"};
 
 }  // namespace
 
@@ -45,14 +46,17 @@ int command_check(const std::vector<std::string>& args) {
     std::cerr << "pointdriver check: expected one CHECK.json (pointdriver check --help)\n";
     return 1;
   }
+  std::vector<Json> patches;
   try {
-    const Json document = patched_json_file(o.positional[0], o.all("--set"));
+    patches = cli::patches_of(o.all("--set"));
+    const Json document = patched_json_file(o.positional[0], patches);
     if (o.verbosity.verbose) std::cerr << document.dump(2) << '\n';
     fit::CheckConfig config = fit::read_check_config(document, o.positional[0]);
-    for (const auto& w : config.warnings) std::cerr << "pointdriver check: warning: " << w << '\n';
+    for (const auto& w : cli::set_origins(o.positional[0], patches).attribute(config.warnings))
+      std::cerr << "pointdriver check: warning: " << w << '\n';
     if (o.has("--out")) config.output_directory = o.get("--out", "check");
     if (o.has("--no-figures")) config.figures = false;
-    fs::create_directories(config.output_directory);
+    create_output_directory(config.output_directory);
     const fit::CurveCheck check = fit::check_curves(config);
     for (const auto& e : check.experiments) {
       for (const auto& w : e.warnings) std::cerr << "pointdriver check: warning: " << w << '\n';
@@ -66,23 +70,25 @@ int command_check(const std::vector<std::string>& args) {
     // The verdict goes to stderr, so that a CI log shows it beside any error.
     for (const auto& f : check.exceeded) std::cerr << "EXCEEDED: " << f << '\n';
     std::cerr << (check.exceeded.empty() ? "all within tolerance\n" : "tolerance exceeded\n");
-    std::ofstream(fs::path(config.output_directory) / "check_report.json")
-        << check.report.dump(2) << '\n';
+    write_file_atomically(fs::path(config.output_directory) / "check_report.json",
+                          [&](std::ostream& out) { out << check.report.dump(2) << '\n'; });
     if (config.figures) {
       try {
         fit::write_figures(config.output_directory, "check", check.experiments, check.curves, {},
                            fs::path(config.material_file).filename().string(), "");
-      } catch (const std::runtime_error& e) {
+      } catch (const OutputError&) {
+        throw;
+      } catch (const std::runtime_error& e) {  // no python3 or matplotlib: the figures only
         std::cerr << "pointdriver check: " << e.what() << '\n';
       }
     }
-    return check.exceeded.empty() ? 0 : 3;
+    return check.exceeded.empty() ? 0 : cli::kExitFailed;
   } catch (const InputError& e) {
-    std::cerr << e.what() << '\n';
-    return 2;
-  } catch (const std::runtime_error& e) {  // the JUnit file could not be written
+    std::cerr << cli::set_origins(o.positional[0], patches).attribute(e).what() << '\n';
+    return cli::kExitInput;
+  } catch (const std::runtime_error& e) {  // an output (report, JUnit file) cannot be written
     std::cerr << "pointdriver check: " << e.what() << '\n';
-    return 2;
+    return cli::kExitFailed;
   }
 }
 

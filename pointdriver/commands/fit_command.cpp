@@ -1,7 +1,6 @@
 // pointdriver fit FIT.json: flow-stress parameters (any law, by name) from measured curves, through
 // the driver (pointdriver/fit/, docs/fitting.md).
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "pointdriver/commands.hpp"
@@ -10,6 +9,7 @@
 #include "pointdriver/fit/fit_config.hpp"
 #include "pointdriver/fit/fit_report.hpp"
 #include "pointdriver/fit/strength_fit.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -32,8 +32,8 @@ const CommandSpec fit_command{
     "A free parameter that ends on one of its bounds is flagged in the report (AT LOWER/UPPER\n"
     "BOUND, fit_report.json parameters_at_bounds) and warned about; a start value on or outside\n"
     "its bounds is moved inside with a warning.\n"
-    "Exit codes: 0 done, 1 usage, 2 input error, 3 the fit did not converge (or, with\n"
-    "--fail-at-bound, a free parameter ended on a bound).\n"};
+    "Exit codes: 0 done, 1 usage, 2 input error, 3 the fit did not converge, an output could not\n"
+    "be written (or, with --fail-at-bound, a free parameter ended on a bound).\n"};
 
 }  // namespace
 
@@ -51,15 +51,18 @@ int command_fit(const std::vector<std::string>& args) {
     std::cerr << "pointdriver fit: expected one FIT.json (pointdriver fit --help)\n";
     return 1;
   }
+  std::vector<Json> patches;
   try {
-    const Json document = patched_json_file(o.positional[0], o.all("--set"));
+    patches = cli::patches_of(o.all("--set"));
+    const Json document = patched_json_file(o.positional[0], patches);
     if (o.verbosity.verbose) std::cerr << document.dump(2) << '\n';
     fit::FitConfig config = fit::read_fit_config(document, o.positional[0]);
-    for (const auto& w : config.warnings) std::cerr << "pointdriver fit: warning: " << w << '\n';
+    for (const auto& w : cli::set_origins(o.positional[0], patches).attribute(config.warnings))
+      std::cerr << "pointdriver fit: warning: " << w << '\n';
     if (o.has("--out")) config.output_directory = o.get("--out", "fit");
     if (o.has("--no-figures")) config.figures = false;
     if (o.has("--fail-at-bound")) config.fail_at_bound = true;
-    fs::create_directories(config.output_directory);
+    create_output_directory(config.output_directory);
     if (config.mode == "damage") return fit::run_damage_fit(config, std::cout);
     const fit::StrengthFit result = fit::fit_strength(config);
     for (const auto& e : result.experiments) {
@@ -72,9 +75,12 @@ int command_fit(const std::vector<std::string>& args) {
     for (const auto& m : at_bound) std::cerr << "pointdriver fit: warning: " << m << '\n';
     fit::print_fit_report(std::cout, config, result);
     const fs::path dir = config.output_directory;
-    std::ofstream(dir / "fit_report.json") << fit::fit_report_json(config, result).dump(2) << '\n';
+    const Json report = fit::fit_report_json(config, result);
     const Json material = fit::fitted_material(config, result);
-    std::ofstream(dir / config.output_material) << material.dump(2) << '\n';
+    write_file_atomically(dir / "fit_report.json",
+                          [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+    write_file_atomically(dir / config.output_material,
+                          [&](std::ostream& out) { out << material.dump(2) << '\n'; });
     std::cout << "wrote " << (dir / "fit_report.json").string() << ", "
               << (dir / config.output_material).string() << '\n';
     if (config.figures) {
@@ -83,23 +89,28 @@ int command_fit(const std::vector<std::string>& args) {
             config.output_directory, "fit", result.experiments, result.curves[0], result.curves[1],
             "fitted",
             "material's set (" + fs::path(config.material_file).filename().string() + ")");
-      } catch (const std::runtime_error& e) {
+      } catch (const OutputError&) {
+        throw;
+      } catch (const std::runtime_error& e) {  // no python3 or matplotlib: the figures only
         std::cerr << "pointdriver fit: " << e.what() << '\n';
       }
     }
-    if (result.lsq.status != 0) return 3;
+    if (result.lsq.status != 0) return cli::kExitFailed;
     if (config.fail_at_bound && !at_bound.empty()) {
       std::cerr << "pointdriver fit: " << at_bound.size()
                 << " parameter(s) ended on a bound (--fail-at-bound): exit 3\n";
-      return 3;
+      return cli::kExitFailed;
     }
     return 0;
   } catch (const InputError& e) {
-    std::cerr << e.what() << '\n';
-    return 2;
+    std::cerr << cli::set_origins(o.positional[0], patches).attribute(e).what() << '\n';
+    return cli::kExitInput;
   } catch (const std::invalid_argument& e) {
     std::cerr << "pointdriver fit: " << e.what() << '\n';
-    return 2;
+    return cli::kExitInput;
+  } catch (const OutputError& e) {
+    std::cerr << "pointdriver fit: " << e.what() << '\n';
+    return cli::kExitFailed;
   }
 }
 

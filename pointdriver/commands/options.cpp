@@ -26,9 +26,9 @@ const std::vector<std::string>& Options::all(const std::string& name) const {
   return it == values.end() ? none : it->second;
 }
 
-Json patched_json_file(const std::string& file, const std::vector<std::string>& patches) {
+Json patched_json_file(const std::string& file, const std::vector<Json>& patches) {
   Json document = load_json_file(file);
-  for (const auto& p : cli::patches_of(patches)) document.merge_patch(p);
+  for (const auto& p : patches) document.merge_patch(p);
   return document;
 }
 

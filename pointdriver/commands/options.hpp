@@ -44,8 +44,8 @@ std::optional<int> parse_command(const CommandSpec& command, Options& out,
                                  const std::vector<std::string>& args,
                                  const std::vector<OptionSpec>& specs);
 
-/// A JSON file with --set patches applied in order (throws InputError naming the file when it
-/// cannot be read or parsed).
-Json patched_json_file(const std::string& file, const std::vector<std::string>& patches);
+/// A JSON file with --set patches (cli::patches_of) applied in order (throws InputError naming the
+/// file when it cannot be read or parsed).
+Json patched_json_file(const std::string& file, const std::vector<Json>& patches);
 
 }  // namespace impact::pointdriver

@@ -1,6 +1,5 @@
 // pointdriver run: one path, one CSV row per step, a summary beside it, a replay file on failure.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "pointdriver/commands.hpp"
@@ -8,6 +7,9 @@
 #include "pointdriver/driver/driver.hpp"
 #include "pointdriver/output/csv_writer.hpp"
 #include "pointdriver/output/junit.hpp"
+#include "pointdriver/output/run_estimate.hpp"
+#include "support/atomic_file.hpp"
+#include "support/system_resources.hpp"
 
 namespace impact::pointdriver {
 
@@ -22,7 +24,9 @@ const CommandSpec run_command{
     "reference CSV) are evaluated after the run and printed.",
     "PATH.json", 1,
     "Exit codes: 0 done (including a failure stopped by the failure policy), 1 usage, 2 input\n"
-    "error, 3 a step could not be solved or a check failed.\n"};
+    "error, 3 a step could not be solved, a check failed or an output could not be written, 4\n"
+    "refused before the run: the estimated CSV exceeds the free space (or ulimit -f), or the\n"
+    "estimated memory the available memory.\n"};
 
 const char* cause_name(FailureCause c) {
   return to_string(c).data();
@@ -45,43 +49,50 @@ int command_run(const std::vector<std::string>& args) {
   }
   const std::string file = o.positional[0];
   std::vector<Json> patches;
-  for (const auto& s : o.all("--set")) {
-    try {
-      patches.push_back(Json::parse(s));
-    } catch (const Json::parse_error& e) {
-      std::cerr << "pointdriver run: --set: invalid JSON: " << e.what() << '\n';
-      return 1;
-    }
-  }
   Path path;
   try {
+    patches = cli::patches_of(o.all("--set"));
     path = load_path(file, patches);
   } catch (const InputError& e) {
-    std::cerr << e.what() << '\n';
-    return 2;
+    std::cerr << cli::set_origins(file, patches).attribute(e).what() << '\n';
+    return cli::kExitInput;
   }
-  for (const auto& w : path.warnings) std::cerr << "pointdriver run: warning: " << w << '\n';
+  for (const auto& w : cli::set_origins(file, patches).attribute(path.warnings))
+    std::cerr << "pointdriver run: warning: " << w << '\n';
   if (o.verbosity.verbose) std::cerr << path.resolved.dump(2) << '\n';
   const std::filesystem::path out =
       o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
   std::filesystem::path stem = out;
   stem.replace_extension();
   if (out.has_parent_path()) {  // -o DIR/OUT.csv into a new DIR, as mpm run --out makes its DIR
-    std::error_code ec;
-    std::filesystem::create_directories(out.parent_path(), ec);
-    if (ec) {
-      std::cerr << "pointdriver run: cannot create " << out.parent_path().string() << ": "
-                << ec.message() << '\n';
-      return 2;
+    try {
+      create_output_directory(out.parent_path());
+    } catch (const OutputError& e) {
+      std::cerr << "pointdriver run: " << e.what() << '\n';
+      return cli::kExitFailed;
     }
+  }
+  // Refused before anything is written when it cannot fit (a leg of 1e9 steps: 440 GB of CSV).
+  const RunEstimate estimate = estimate_run(path);
+  if (o.verbosity.verbose) {
+    std::cerr << "pointdriver run: estimated " << estimate.rows << " rows, CSV "
+              << estimate.csv_bytes / 1e6 << " MB, memory " << estimate.memory_bytes / 1e6
+              << " MB\n";
+  }
+  const std::string refusal =
+      run_refusal(estimate, out.string(), available_output_bytes(out), available_memory());
+  if (!refusal.empty()) {
+    std::cerr << "pointdriver run: " << refusal << '\n';
+    return cli::kExitRefused;
   }
   RunResult r;
   try {
     CsvWriter csv(out.string(), path.material.model.params());
     r = run_path(path, [&](const Row& row) { csv.write(row); });
-  } catch (const std::runtime_error& e) {
+    csv.close();
+  } catch (const std::runtime_error& e) {  // the CSV cannot be written: no partial file is left
     std::cerr << "pointdriver run: " << e.what() << '\n';
-    return 2;
+    return cli::kExitFailed;
   }
 
   Json summary = {{"path_file", file},
@@ -95,7 +106,12 @@ int command_run(const std::vector<std::string>& args) {
                   {"columns", csv_columns()},
                   {"resolved_path", path.resolved}};
   const std::string summary_file = stem.string() + ".summary.json";
-  std::ofstream(summary_file) << summary.dump(2) << '\n';
+  try {
+    write_file_atomically(summary_file, [&](std::ostream& s) { s << summary.dump(2) << '\n'; });
+  } catch (const OutputError& e) {
+    std::cerr << "pointdriver run: " << e.what() << '\n';
+    return cli::kExitFailed;
+  }
   // The path's checks, on what the run wrote (also after a failure: its rows up to it).
   const std::vector<CheckOutcome> checks = evaluate_checks(path.checks, out.string());
   bool checks_passed = true;
@@ -113,12 +129,17 @@ int command_run(const std::vector<std::string>& args) {
       write_junit(o.get("--junit", ""), "pointdriver run " + file, cases);
     } catch (const std::runtime_error& e) {
       std::cerr << "pointdriver run: " << e.what() << '\n';
-      return 2;
+      return cli::kExitFailed;
     }
   }
   if (!r.completed) {
     const std::string replay_file = stem.string() + ".replay.json";
-    std::ofstream(replay_file) << r.replay->dump(2) << '\n';
+    try {
+      write_file_atomically(replay_file, [&](std::ostream& s) { s << r.replay->dump(2) << '\n'; });
+    } catch (const OutputError& e) {
+      std::cerr << "pointdriver run: " << e.what() << '\n';
+      return cli::kExitFailed;
+    }
     std::cerr << "pointdriver run: " << file << ": " << r.error
               << "\n  rows up to the last solved step are in " << out.string()
               << "; the state at the start of the failed step is in " << replay_file

@@ -13,6 +13,7 @@
 #include "pointdriver/output/junit.hpp"
 #include "pointdriver/output/text_format.hpp"
 #include "pointdriver/verify/verification_suite.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -27,7 +28,9 @@ const CommandSpec verify_command{
     "of the driver's own rows), with a stated tolerance. Prints the table (case, quantity,\n"
     "expected, got, error, tolerance, pass), writes it to DIR/verification.csv with the figure\n"
     "data (CSV) of the cases and, when python3 and matplotlib are installed, the figures (PNG).",
-    "", 0, "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed.\n"};
+    "", 0,
+    "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed (a figure data file that\n"
+    "cannot be written fails its case) or an output could not be written.\n"};
 
 std::string fmt(double v, const char* f = "%.6g") {
   char buf[40];
@@ -168,12 +171,11 @@ int command_verify(const std::vector<std::string>& args) {
   }
 
   const fs::path out = o.get("--out", "pointdriver_verify");
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) {
-    std::cerr << "pointdriver verify: cannot create " << out.string() << ": " << ec.message()
-              << '\n';
-    return 1;
+  try {
+    create_output_directory(out);
+  } catch (const OutputError& e) {
+    std::cerr << "pointdriver verify: " << e.what() << '\n';
+    return cli::kExitFailed;
   }
   const SuiteContext ctx = default_suite_context(out.string());
 
@@ -192,16 +194,18 @@ int command_verify(const std::vector<std::string>& args) {
   }
 
   const fs::path table = out / "verification.csv";
-  std::ofstream csv(table);
-  csv << "case,quantity,expected,got,error,tolerance,pass\n";
-  for (const Check& k : all) {
-    csv << csv_cell(k.case_name) << ',' << csv_cell(k.quantity) << ',' << fmt(k.expected, "%.15g")
-        << ',' << fmt(k.got, "%.15g") << ',' << fmt(k.error, "%.6g") << ','
-        << fmt(k.tolerance, "%.6g") << ',' << (k.pass ? "yes" : "no") << '\n';
-  }
-  if (!csv) {
-    std::cerr << "pointdriver verify: cannot write " << table.string() << '\n';
-    return 1;
+  try {
+    write_file_atomically(table, [&](std::ostream& csv) {
+      csv << "case,quantity,expected,got,error,tolerance,pass\n";
+      for (const Check& k : all) {
+        csv << csv_cell(k.case_name) << ',' << csv_cell(k.quantity) << ','
+            << fmt(k.expected, "%.15g") << ',' << fmt(k.got, "%.15g") << ',' << fmt(k.error, "%.6g")
+            << ',' << fmt(k.tolerance, "%.6g") << ',' << (k.pass ? "yes" : "no") << '\n';
+      }
+    });
+  } catch (const OutputError& e) {
+    std::cerr << "pointdriver verify: " << e.what() << '\n';
+    return cli::kExitFailed;
   }
   if (o.has("--junit")) {
     std::vector<JunitCase> junit;
@@ -216,7 +220,7 @@ int command_verify(const std::vector<std::string>& args) {
       write_junit(o.get("--junit", ""), "pointdriver verify", junit);
     } catch (const std::runtime_error& e) {
       std::cerr << "pointdriver verify: " << e.what() << '\n';
-      return 1;
+      return cli::kExitFailed;
     }
   }
   draw_figures(out);

@@ -22,20 +22,31 @@ Mat3 rotation(const Vec3& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis).toRotationMatrix();
 }
 
-/// Step sizes of a leg: uniform, or geometric with ratio `growth`; the last one closes the leg
-/// exactly so that legs end on their prescribed time.
-std::vector<double> step_sizes(const Leg& leg) {
-  std::vector<double> h(static_cast<std::size_t>(leg.steps));
-  const double g = leg.growth;
-  const double h0 = g == 1.0 ? leg.duration / leg.steps
-                             : leg.duration * (g - 1.0) / (std::pow(g, leg.steps) - 1.0);
-  double t = 0.0;
-  for (int k = 0; k < leg.steps; ++k) {
-    h[static_cast<std::size_t>(k)] = k + 1 == leg.steps ? leg.duration - t : h0 * std::pow(g, k);
-    t += h[static_cast<std::size_t>(k)];
+/// Step sizes of a leg, one at a time (a leg may have 1e9 steps: no array of them): uniform, or
+/// geometric with ratio `growth`; the last one closes the leg exactly so that legs end on their
+/// prescribed time.
+class StepSizes {
+ public:
+  explicit StepSizes(const Leg& leg)
+      : steps_(leg.steps),
+        duration_(leg.duration),
+        g_(leg.growth),
+        h0_(g_ == 1.0 ? leg.duration / leg.steps
+                      : leg.duration * (g_ - 1.0) / (std::pow(g_, leg.steps) - 1.0)) {}
+  bool done() const { return k_ >= steps_; }
+  double next() {
+    const double h = k_ + 1 == steps_ ? duration_ - t_ : h0_ * std::pow(g_, k_);
+    t_ += h;
+    ++k_;
+    return h;
   }
-  return h;
-}
+
+ private:
+  int steps_;
+  double duration_, g_, h0_;
+  int k_ = 0;
+  double t_ = 0.0;
+};
 
 /// What one (possibly cut-back) step produced.
 struct Advance {
@@ -178,7 +189,8 @@ RunResult run_path(const Path& path, const ElasticPlastic& model, const RowSink&
         leg.thermal == Thermal::adiabatic ? adiabatic_twin : isothermal_twin;
     const LegRunner runner(path, leg, plan, m, twin, s.temperature);
     double t_leg = 0.0;
-    for (double dt : step_sizes(leg)) {
+    for (StepSizes sizes(leg); !sizes.done();) {
+      const double dt = sizes.next();
       ++step;
       Advance a;
       if (frozen) {

@@ -12,6 +12,7 @@
 #include "pointdriver/fit/byte_order_mark.hpp"
 #include "pointdriver/fit/parameter_bounds.hpp"
 #include "pointdriver/output/text_format.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver::fit {
 
@@ -271,7 +272,8 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
   report["rms"] = {{"fitted", rms_fit}, {"material", rms_mat}};
   report["max"] = {{"fitted", max_fit}, {"material", max_mat}};
   report["solver"] = {{"iterations", lsq.iterations}, {"stop_reason", lsq.stop_reason}};
-  std::ofstream(dir / "damage_fit_report.json") << report.dump(2) << '\n';
+  write_file_atomically(dir / "damage_fit_report.json",
+                        [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   Json doc = load_json_file(config.material_file);
   Json& dmg = doc["constitutive_model"]["damage"];
   dmg["type"] = "johnson_cook";
@@ -284,7 +286,8 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
       "everything else from " +
       config.material_file + ": " + doc.value("description", std::string());
   read_material(doc, "fitted material");
-  std::ofstream(dir / config.output_material) << doc.dump(2) << '\n';
+  write_file_atomically(dir / config.output_material,
+                        [&](std::ostream& o) { o << doc.dump(2) << '\n'; });
   out << "wrote " << (dir / "damage_fit_report.json").string() << ", "
       << (dir / config.output_material).string() << '\n';
   if (lsq.status != 0) return 3;

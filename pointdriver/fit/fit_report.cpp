@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -12,6 +11,7 @@
 
 #include "models/material/material.hpp"
 #include "pointdriver/commands/plot_script.hpp"
+#include "support/atomic_file.hpp"
 #include "support/shipped_file.hpp"
 
 namespace impact::pointdriver::fit {
@@ -328,7 +328,7 @@ std::vector<std::string> write_figures(const std::string& directory, const std::
     files.push_back(file);
   }
   const fs::path spec_file = fs::path(directory) / (prefix + "_figures.json");
-  std::ofstream(spec_file) << spec.dump(1) << '\n';
+  write_file_atomically(spec_file, [&](std::ostream& o) { o << spec.dump(1) << '\n'; });
   // The plotting helper runs fit_plot.py (shipped beside the binary, or in the source tree).
   const char* old = std::getenv("POINTDRIVER_PLOT_SCRIPT");
   const std::string saved = old ? old : "";

@@ -4,6 +4,8 @@
 #include <charconv>
 #include <stdexcept>
 
+#include "support/atomic_file.hpp"
+
 namespace impact::pointdriver {
 
 const std::vector<std::string>& csv_columns() {
@@ -93,11 +95,18 @@ std::vector<double> csv_values(const Row& r, const ElasticPlasticParams& p) {
 }
 
 CsvWriter::CsvWriter(const std::string& file, ElasticPlasticParams params)
-    : out_(file), params_(std::move(params)) {
-  if (!out_) throw std::runtime_error(file + ": cannot open for writing");
+    : out_(std::make_unique<AtomicFile>(file)), params_(std::move(params)) {
   const auto& c = csv_columns();
-  for (std::size_t i = 0; i < c.size(); ++i) out_ << (i ? "," : "") << c[i];
-  out_ << '\n';
+  std::ostream& out = out_->stream();
+  for (std::size_t i = 0; i < c.size(); ++i) out << (i ? "," : "") << c[i];
+  out << '\n';
+  out_->check();
+}
+
+CsvWriter::~CsvWriter() = default;
+
+void CsvWriter::close() {
+  out_->commit();
 }
 
 void CsvWriter::write(const Row& row) {
@@ -113,7 +122,8 @@ void CsvWriter::write(const Row& row) {
     line.append(buf, res.ptr);
   }
   line += '\n';
-  out_ << line;
+  out_->stream() << line;
+  out_->check();  // a full disk stops the run at this row, not after it
 }
 
 }  // namespace impact::pointdriver

@@ -3,12 +3,16 @@
 // here from the row, not by the driver.
 #pragma once
 
-#include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "models/material/elastic_plastic.hpp"
 #include "pointdriver/driver/driver.hpp"
+
+namespace impact {
+class AtomicFile;
+}
 
 namespace impact::pointdriver {
 
@@ -23,14 +27,23 @@ double triaxiality(const Mat3& stress);  ///< sigma_m / sigma_eq (0 for a purely
 double lode_parameter(const Mat3& stress);  ///< (2 s2 - s1 - s3) / (s1 - s3), s1 >= s2 >= s3
 Mat3 log_strain(const Mat3& F);             ///< Hencky strain ln V = ln(F F^T) / 2
 
+/// The CSV of one run, written as `file.tmp` and put in place by close() (support/atomic_file.hpp):
+/// a previous `file` stays whole until then, and a run whose writes fail leaves no partial file.
 class CsvWriter {
  public:
-  /// Opens `file` (throws std::runtime_error naming it when it cannot) and writes the header.
+  /// Opens the file and writes the header; std::runtime_error naming `file` when it cannot.
   CsvWriter(const std::string& file, ElasticPlasticParams params);
+  CsvWriter(const CsvWriter&) = delete;
+  CsvWriter& operator=(const CsvWriter&) = delete;
+  /// Without close(): the rows written are dropped (the temporary is removed).
+  ~CsvWriter();
+  /// One row; std::runtime_error naming the file as soon as a write fails (a full disk).
   void write(const Row& row);
+  /// Flushes, closes and renames the file into place; std::runtime_error when it cannot.
+  void close();
 
  private:
-  std::ofstream out_;
+  std::unique_ptr<AtomicFile> out_;
   ElasticPlasticParams params_;
 };
 

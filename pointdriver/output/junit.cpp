@@ -1,7 +1,6 @@
 #include "pointdriver/output/junit.hpp"
 
-#include <fstream>
-#include <stdexcept>
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver {
 
@@ -37,8 +36,8 @@ std::string escaped(const std::string& s) {
 
 void write_junit(const std::string& file, const std::string& suite,
                  const std::vector<JunitCase>& cases) {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write the JUnit file " + file);
+  AtomicFile junit(file);
+  std::ostream& out = junit.stream();
   int failures = 0;
   double seconds = 0.0;
   for (const JunitCase& c : cases) {
@@ -57,6 +56,7 @@ void write_junit(const std::string& file, const std::string& suite,
     out << "    </testcase>\n";
   }
   out << "  </testsuite>\n</testsuites>\n";
+  junit.commit();
 }
 
 }  // namespace impact::pointdriver

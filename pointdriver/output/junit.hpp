@@ -16,7 +16,8 @@ struct JunitCase {
   std::string output;                  ///< <system-out>: what was compared
 };
 
-/// Writes `cases` as one test suite; std::runtime_error naming the file if it cannot be written.
+/// Writes `cases` as one test suite (whole or not at all: support/atomic_file.hpp);
+/// std::runtime_error naming the file if it cannot be written.
 void write_junit(const std::string& file, const std::string& suite,
                  const std::vector<JunitCase>& cases);
 

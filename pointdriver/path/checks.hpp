@@ -38,6 +38,10 @@ struct CheckOutcome {
   std::string message;  ///< what was compared, and the worst difference
 };
 
+/// The columns of the run's CSV that evaluate_checks reads back and holds (time [s] and each
+/// checked column, once; none without checks).
+std::vector<std::string> checked_columns(const std::vector<ColumnCheck>& checks);
+
 /// Evaluates every check against the run's CSV `csv_file`; a missing column or an unreadable
 /// reference is a failed check naming it.
 std::vector<CheckOutcome> evaluate_checks(const std::vector<ColumnCheck>& checks,

@@ -376,9 +376,16 @@ Path read_path(const Json& document, const std::string& file) {
         origins.push_back(where);
       }
     }
+    double total_steps = 0.0;
     for (std::size_t i = 0; i < resolved_legs.size(); ++i) {
       JsonReader lr(resolved_legs[i], origins[i], problems);
       path.legs.push_back(read_leg(lr, resolved_legs[i], default_thermal));
+      total_steps += path.legs.back().steps;
+    }
+    // The step counter is an int: at most 1e9 steps in all, as in one leg.
+    if (total_steps > 1e9) {
+      problems.add("/legs", "the legs have " + std::to_string(static_cast<long long>(total_steps)) +
+                                " steps in all; expected at most 1e9");
     }
   }
   root.ignore("checks");

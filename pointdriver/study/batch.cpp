@@ -22,6 +22,7 @@ void run_one(std::size_t index, const BatchJob& job, const BatchOptions& options
       if (options.keep_rows) out.rows.push_back(row);
       if (extra) extra(row);
     });
+    if (extra && options.close_sink) options.close_sink(index);
   } catch (const std::exception& e) {
     out.result.completed = false;
     out.result.error = e.what();

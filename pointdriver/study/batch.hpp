@@ -37,6 +37,9 @@ struct BatchOptions {
   /// Optional extra sink per job (e.g. a CSV writer), made and called on the worker running the
   /// job. Arguments: the job index and the job. Exceptions end that run, not the batch.
   std::function<RowSink(std::size_t, const BatchJob&)> make_sink;
+  /// Optional, called with the job index when a run made by make_sink ends (also unsolved), e.g.
+  /// to put its CSV in place; an exception marks the run not completed with its message.
+  std::function<void(std::size_t)> close_sink;
 };
 
 /// Runs the jobs; result i belongs to job i.

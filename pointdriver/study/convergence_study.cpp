@@ -5,7 +5,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -13,6 +12,7 @@
 #include <stdexcept>
 
 #include "pointdriver/driver/driver.hpp"
+#include "support/atomic_file.hpp"
 #include "support/shipped_file.hpp"
 
 namespace impact::pointdriver {
@@ -318,8 +318,8 @@ ConvergenceResult run_convergence_study(const ConvergenceSettings& settings) {
 }
 
 void write_convergence_csv(const ConvergenceResult& result, const std::string& file) {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file);
+  AtomicFile csv(file);
+  std::ostream& out = csv.stream();
   out << "path,variant,steps,dt [s],wall time [s],error [-],status,final stress error [-],"
          "error vs baseline reference [-],local order [-],newton iterations per step [-],"
          "substeps per step [-],message\n";
@@ -332,12 +332,12 @@ void write_convergence_csv(const ConvergenceResult& result, const std::string& f
         << num(r.iterations_per_step) << ',' << num(r.substeps_per_step) << ','
         << csv_cell(r.message) << '\n';
   }
-  if (!out) throw std::runtime_error("cannot write " + file);
+  csv.commit();
 }
 
 void write_convergence_orders_csv(const ConvergenceResult& result, const std::string& file) {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file);
+  AtomicFile csv(file);
+  std::ostream& out = csv.stream();
   out << "path,variant,reference steps,order [-],final stress order [-],r squared [-],"
          "fit steps min,fit steps max,points\n";
   const auto num = [](double v) { return std::isfinite(v) ? fmt(v, 6) : std::string("nan"); };
@@ -346,7 +346,7 @@ void write_convergence_orders_csv(const ConvergenceResult& result, const std::st
         << num(o.final_order) << ',' << num(o.r_squared) << ',' << o.n_min << ',' << o.n_max << ','
         << o.points << '\n';
   }
-  if (!out) throw std::runtime_error("cannot write " + file);
+  csv.commit();
 }
 
 std::string convergence_markdown(const ConvergenceResult& result) {

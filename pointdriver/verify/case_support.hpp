@@ -1,5 +1,6 @@
 // What the verification cases share (pointdriver/verify/cases/): running a path built in code,
-// recording checks against independent references, and writing figure data.
+// recording checks against independent references, and writing figure data. Internal to the
+// cases (not installed: it uses the programs' support/atomic_file.hpp).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -18,6 +20,7 @@
 #include "pointdriver/driver/driver.hpp"
 #include "pointdriver/verify/closed_forms.hpp"
 #include "pointdriver/verify/verification_suite.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::pointdriver::verify {
 
@@ -134,28 +137,34 @@ class Recorder {
 
 // ---- figure data ----
 
+/// A figure's data, written whole or not at all (support/atomic_file.hpp): close() puts it in
+/// place; a case that stops before close() leaves the previous file. Writes nothing without an
+/// output directory.
 class FigureCsv {
  public:
   FigureCsv(const SuiteContext& ctx, const std::string& name, std::vector<std::string> header) {
     if (ctx.out_dir.empty()) return;
-    const fs::path file = fs::path(ctx.out_dir) / name;
-    out_.open(file);
-    if (!out_) throw std::runtime_error(file.string() + ": cannot open for writing");
-    for (std::size_t i = 0; i < header.size(); ++i) out_ << (i ? "," : "") << header[i];
-    out_ << '\n';
+    out_ = std::make_unique<AtomicFile>(fs::path(ctx.out_dir) / name);
+    for (std::size_t i = 0; i < header.size(); ++i) out_->stream() << (i ? "," : "") << header[i];
+    out_->stream() << '\n';
   }
   void row(const std::vector<double>& v) {
-    if (!out_.is_open()) return;
+    if (!out_) return;
     char buf[32];
     for (std::size_t i = 0; i < v.size(); ++i) {
       std::snprintf(buf, sizeof buf, "%.12g", v[i]);
-      out_ << (i ? "," : "") << buf;
+      out_->stream() << (i ? "," : "") << buf;
     }
-    out_ << '\n';
+    out_->stream() << '\n';
+    out_->check();
+  }
+  /// OutputError (the case then fails, naming the file) when the data cannot be written.
+  void close() {
+    if (out_) out_->commit();
   }
 
  private:
-  std::ofstream out_;
+  std::unique_ptr<AtomicFile> out_;
 };
 
 }  // namespace impact::pointdriver::verify

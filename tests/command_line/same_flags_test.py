@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Every program and command accepts the same flags (support/command_line.hpp): --version and
 --help exit 0, an unknown option is a usage error (1), --out=DIR works as --out DIR, --quiet
-leaves stdout empty, a malformed --set is a usage error wherever a JSON file is read.
+leaves stdout empty, a malformed --set is a usage error wherever a JSON file is read, and a --set
+number no double holds (-1e400) is an input error (2) naming the patch and the key.
 
   same_flags_test.py BIN_DIR SOURCE_DIR WORK_DIR
 """
@@ -38,7 +39,18 @@ def main(bin_dir, source, work):
 
     def run(words, args):
         exe = os.path.join(bin_dir, words[0])
-        return subprocess.run([exe] + words[1:] + args, capture_output=True, text=True, cwd=work)
+        return subprocess.run([exe] + words[1:] + args, capture_output=True, text=True, cwd=work,
+                              timeout=120)
+
+    def number_beyond_double(name, words, args):
+        """A --set number no double holds: exit 2 naming the patch and the key (SIGABRT before)."""
+        r = run(words, args + ["--set", '{"a": 1}', "--set", '{"x": [0, -1e400]}'])
+        patch = args.count("--set") + 2
+        expected = (f"--set patch {patch}: /x/1: the number -1e400 is beyond the range of a "
+                    "double (magnitude at most 1.8e308)")
+        if r.returncode != 2 or expected not in r.stderr:
+            return [f"{name}: --set 1e400 exit {r.returncode}: {r.stderr[-200:]!r}"]
+        return []
 
     for name, words, valid, writes, takes_set in commands:
         out = os.path.join(work, name)
@@ -57,11 +69,22 @@ def main(bin_dir, source, work):
             r = run(words, args + ["--set", "{bad"])
             if r.returncode != 1 or "--set: invalid JSON" not in r.stderr:
                 failures.append(f"{name}: bad --set exit {r.returncode}: {r.stderr[-200:]!r}")
+            failures += number_beyond_double(name, words, args)
         r = run(words, args + ["--quiet"])
         if r.returncode != 0 or r.stdout != "":
             failures.append(f"{name}: --quiet exit {r.returncode}, stdout {r.stdout[:200]!r}")
         if writes and not os.path.exists(out if not name == "run" else out + ".csv"):
             failures.append(f"{name}: --out={out} wrote nothing there")
+    # Commands above that are slow to run when valid: only the --set check.
+    config = os.path.join(data, "fits", "al6061_t6_room_temperature.json")
+    for name, words, args in [
+            ("fit", ["pointdriver", "fit"], [config, "--out", os.path.join(work, "fit")]),
+            ("convergence", ["pointdriver", "convergence"],
+             ["--quick", "--no-plots", "--out", os.path.join(work, "convergence")]),
+            ("mpm_study", ["mpm", "study"],
+             [os.path.join(data, "scenes", "sphere_cylinder"), "--out",
+              os.path.join(work, "study")])]:
+        failures += number_beyond_double(name, words, args)
     if failures:
         sys.exit("FAIL:\n" + "\n".join(failures))
     print(f"OK: {len(commands)} commands take --version, --help, --quiet, --out=DIR, --set")

@@ -45,6 +45,7 @@ std::vector<Check> adiabatic_compression(const SuiteContext& ctx) {
     }
     if (i % 4 == 0) fig.row({r1.state.plastic_strain, vm, r1.state.temperature, T0 + rise});
   }
+  fig.close();
   rec.worst(
       "T - T0 = chi int sigma_eq d eps_p / (rho cp), trapezoid over the rows (rows with eps_p >= "
       "0.05)",

@@ -83,6 +83,7 @@ std::vector<Check> johnson_cook_uniaxial_stress(const SuiteContext& ctx) {
     }
     fig.row(v);
   }
+  fig.close();
   return rec.take();
 }
 

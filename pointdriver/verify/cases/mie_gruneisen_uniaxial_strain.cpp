@@ -71,6 +71,7 @@ std::vector<Check> mie_gruneisen_uniaxial_strain(const SuiteContext& ctx) {
       fig.row({p.density / rho, p1, pH, r1.state.internal_energy, cf::hugoniot_energy(mg, rho)});
     }
   }
+  fig.close();
   rec.worst("pressure = p_H (1 - Gamma0 eta/2) + Gamma0 rho0 e with the driver's own e", pressure,
             1e-8);
   rec.worst("isothermal: e = int -p dv (trapezoid), no heat retained", energy, 1e-6);
@@ -120,6 +121,7 @@ std::vector<Check> mie_gruneisen_uniaxial_strain(const SuiteContext& ctx) {
   FigureCsv hug(ctx, "mie_gruneisen_hugoniot.csv", {"volume_ratio [-]", "pressure [Pa]"});
   for (double x = 1.0; x >= 0.559; x -= 0.005)
     hug.row({x, cf::hugoniot_pressure(mg, p.density / x)});
+  hug.close();
   if (!ctx.hugoniot_file.empty() && fs::is_regular_file(ctx.hugoniot_file)) {
     // McQueen et al. (1970), Mitchell & Nellis (1981), Vaidya & Kennedy (1970), digitized by
     // B. Banerjee (MIT licence): data/experiments/al6061_t6_hugoniot/.
@@ -130,6 +132,7 @@ std::vector<Check> mie_gruneisen_uniaxial_strain(const SuiteContext& ctx) {
     std::sort(points.begin(), points.end(),
               [](const auto& a, const auto& b) { return a[0] > b[0]; });
     for (const auto& [x, pr] : points) exp.row({x, pr});
+    exp.close();
   }
   return rec.take();
 }

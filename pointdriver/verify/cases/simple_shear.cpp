@@ -67,6 +67,7 @@ std::vector<Check> simple_shear(const SuiteContext& ctx) {
                j.state.stress(0, 0), d.xx, z.xx});
     }
   }
+  fig.close();
   const std::string n = std::to_string(steps) + " steps";
   rec.worst("Green-Naghdi, " + n + ": sigma_xy = Dienes (1979) (error / max |sigma|)", gn_xy, 1e-6);
   rec.worst("Green-Naghdi, " + n + ": sigma_xx = Dienes (error / max |sigma|)", gn_xx, 1e-6);

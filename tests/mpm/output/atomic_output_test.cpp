@@ -15,7 +15,7 @@
 #include <sstream>
 
 #include "../verification_helpers.hpp"
-#include "mpm/output/atomic_file.hpp"
+#include "support/atomic_file.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

@@ -1,0 +1,78 @@
+// support/patch_origins.hpp: a problem at a key a --set patch set is the patch's, not the file's.
+// Expected messages are written out by hand from the rule (the last patch that set the key, a key
+// above it or below it; a referenced material's value through the referring object's overrides).
+#include "support/patch_origins.hpp"
+
+#include <boost/test/unit_test.hpp>
+
+using namespace impact;
+
+namespace {
+
+std::string cli_name(std::size_t k) {
+  return "--set patch " + std::to_string(k + 1);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(patch_origins)
+
+BOOST_AUTO_TEST_CASE(the_last_patch_that_set_the_key_is_named) {
+  const PatchOrigins o("s.json",
+                       {Json::parse(R"({"time": {"multiplier": 2}, "grid": {"cells": [1, 2]}})"),
+                        Json::parse(R"({"time": {"multiplier": 3}})")},
+                       cli_name);
+  BOOST_TEST(o.attribute("s.json: /time/multiplier: expected a number in (0, 1.5], got 3") ==
+             "--set patch 2 (over s.json): /time/multiplier: expected a number in (0, 1.5], got 3");
+  // An array replaces the whole value: its elements are the patch's.
+  BOOST_TEST(o.attribute("s.json: /grid/cells/0: expected a positive integer") ==
+             "--set patch 1 (over s.json): /grid/cells/0: expected a positive integer");
+  // A key above one a patch set (a problem about the object holding it).
+  BOOST_TEST(o.attribute("s.json: /time: expected an object") ==
+             "--set patch 2 (over s.json): /time: expected an object");
+  // Warnings too.
+  BOOST_TEST(o.attribute("warning: s.json: /time/multiplier: 3 looks like ...") ==
+             "warning: --set patch 2 (over s.json): /time/multiplier: 3 looks like ...");
+}
+
+BOOST_AUTO_TEST_CASE(problems_the_patches_did_not_touch_stay_the_files) {
+  const PatchOrigins o("s.json", {Json::parse(R"({"time": {"multiplier": 2}})")}, cli_name);
+  for (const std::string m :
+       {"s.json: /time/max_time: expected a number in (0, inf)",  // a sibling of the patched key
+        "s.json: /timer: unknown key (did you mean time?)",       // a key that only starts alike
+        "s.json: /: expected a JSON object",                      // the top of the document
+        "other.json: /time/multiplier: expected ...",             // another file
+        "s.json: cannot open the file"}) {
+    BOOST_TEST(o.attribute(m) == m);
+  }
+  // Without patches nothing changes.
+  const PatchOrigins none("s.json", {}, cli_name);
+  BOOST_TEST(none.attribute("s.json: /time/multiplier: x") == "s.json: /time/multiplier: x");
+}
+
+BOOST_AUTO_TEST_CASE(null_deletes_and_a_whole_document_patch) {
+  const PatchOrigins o("m.json", {Json::parse(R"({"density": null})"), Json::parse("5")}, cli_name);
+  // Patch 2 replaces the whole document: a problem at the top is its.
+  BOOST_TEST(o.attribute("m.json: /: expected a JSON object with the material's properties") ==
+             "--set patch 2 (over m.json): /: expected a JSON object with the material's "
+             "properties");
+  const PatchOrigins d("m.json", {Json::parse(R"({"density": null})")}, cli_name);
+  BOOST_TEST(d.attribute("m.json: /density: missing required number in (0, 30000]") ==
+             "--set patch 1 (over m.json): /density: missing required number in (0, 30000]");
+}
+
+BOOST_AUTO_TEST_CASE(a_referenced_material_value_set_through_overrides) {
+  const PatchOrigins o("scene.json",
+                       {Json::parse(R"({"materials": {"al": {"overrides": {"density": -1}}}})")},
+                       [](std::size_t k) { return "patches[" + std::to_string(k) + "]"; });
+  BOOST_TEST(o.attribute("scene.json: /materials/al/file: in material al.json: /density: "
+                         "expected a number in (0, 30000], got -1") ==
+             "patches[0] (over scene.json): /materials/al/file: in material al.json: /density: "
+             "expected a number in (0, 30000], got -1");
+  // Another value of the same material file is the file's own problem.
+  const std::string own =
+      "scene.json: /materials/al/file: in material al.json: /shear_modulus: expected ...";
+  BOOST_TEST(o.attribute(own) == own);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
