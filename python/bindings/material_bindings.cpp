@@ -329,10 +329,15 @@ py::tuple update(const Material& material, const py::dict& state, const py::hand
 }
 
 Material load(const std::string& file, const std::vector<std::string>& patches) {
-  std::vector<Json> parsed;
-  for (std::size_t k = 0; k < patches.size(); ++k)
-    parsed.push_back(parse_json(patches[k], "patch " + std::to_string(k)));
-  return load_material(file, parsed);
+  const std::vector<Json> parsed = parse_patches(patches);
+  const PatchOrigins origins = patch_origins(file, parsed);
+  try {
+    Material material = load_material(file, parsed);
+    material.warnings = origins.attribute(material.warnings);
+    return material;
+  } catch (const InputError& e) {
+    throw origins.attribute(e);
+  }
 }
 
 }  // namespace

@@ -52,10 +52,16 @@ void bind_path(py::module_& m) {
   m.def(
       "run_path_file",
       [](const std::string& file, const std::vector<std::string>& patches) {
-        std::vector<Json> parsed;
-        for (std::size_t k = 0; k < patches.size(); ++k)
-          parsed.push_back(parse_json(patches[k], "patch " + std::to_string(k)));
-        return run(pd::load_path(file, parsed));
+        const std::vector<Json> parsed = parse_patches(patches);
+        const PatchOrigins origins = patch_origins(file, parsed);
+        pd::Path path;
+        try {
+          path = pd::load_path(file, parsed);
+        } catch (const InputError& e) {
+          throw origins.attribute(e);
+        }
+        path.warnings = origins.attribute(path.warnings);
+        return run(path);
       },
       py::arg("file"), py::arg("patches") = std::vector<std::string>{});
   m.def(

@@ -27,9 +27,16 @@ namespace mpm = impact::mpm;
 mpm::Scene scene_of(const std::string& file, const std::string& text, const std::string& label,
                     const std::vector<std::string>& patches) {
   Json document = file.empty() ? parse_json(text, label) : mpm::load_scene_document(file);
-  for (std::size_t k = 0; k < patches.size(); ++k)
-    document.merge_patch(parse_json(patches[k], "patch " + std::to_string(k)));
-  return mpm::read_scene(document, file.empty() ? label : file);
+  const std::vector<Json> parsed = parse_patches(patches);
+  for (const Json& patch : parsed) document.merge_patch(patch);
+  const PatchOrigins origins = patch_origins(file.empty() ? label : file, parsed);
+  try {
+    mpm::Scene scene = mpm::read_scene(document, file.empty() ? label : file);
+    scene.warnings = origins.attribute(scene.warnings);
+    return scene;
+  } catch (const InputError& e) {
+    throw origins.attribute(e);
+  }
 }
 
 /// Ctrl-C while a run has released the GIL: Python's C-level handler only flags the signal, so

@@ -4,10 +4,11 @@ and checking flow-stress laws, and MPM scenes (docs/python.md).
 Everything is in SI units; tables carry each column's unit (``Table.units``). Inputs are the
 files the programs read, or the same documents as dicts; ``patches`` are RFC 7396 merge patches
 applied in order before validation. Bad input raises ``impact.InputError`` (a ``ValueError``)
-whose message names the file, the JSON key path and what was expected; a run that fails or is
-refused raises ``impact.RunError``; inputs read with a warning (a likely unit slip) issue an
-``impact.InputWarning`` through ``warnings.warn``. Types: the stub ``__init__.pyi`` beside this
-file.
+whose message names the file (or ``patches[k]`` for a value a patch set), the JSON key path and
+what was expected; a run that fails or is refused raises ``impact.RunError``; an output that
+cannot be written raises ``impact.OutputError`` (an ``OSError``) naming the file; inputs read with
+a warning (a likely unit slip) issue an ``impact.InputWarning`` through ``warnings.warn``. Types:
+the stub ``__init__.pyi`` beside this file.
 """
 import json
 import os
@@ -18,9 +19,10 @@ from ._errors import InputError, InputWarning, RunError, warn_input, writable_di
 from ._run import Run, Snapshot, read_run
 from ._table import Table, read_history
 from ._table import table as _make_table
+from ._impact import OutputError  # noqa: F401  (public)
 from . import _impact
 
-__all__ = ["InputError", "RunError", "InputWarning", "Material", "Table", "Run", "Snapshot",
+__all__ = ["InputError", "OutputError", "RunError", "InputWarning", "Material", "Table", "Run", "Snapshot",
            "load_material", "update", "run_path", "fit", "check", "run_scene", "resume_scene",
            "check_scene", "read_history", "read_run", "data_path", "failure_causes",
            "update_statuses", "__version__"]
@@ -73,10 +75,9 @@ class Material:
         if isinstance(source, Material):
             source = source.to_dict()
         if isinstance(source, dict):
-            doc = dict(source)
-            for p in _patches(patches):
-                doc = _merge_patch(doc, json.loads(p))
-            self._m = _impact.read_material(json.dumps(doc), _label(base_dir, "material"))
+            label = _label(base_dir, "material")
+            doc = _patched(dict(source), patches, label)
+            self._m = _impact.read_material(json.dumps(doc), label)
         else:
             self._m = _impact.load_material(os.fspath(source), _patches(patches))
         warn_input(self._m.warnings, stacklevel=2)
@@ -103,10 +104,18 @@ class Material:
         return f"Material({self.name!r}, file={self.file!r})"
 
 
-def _merge_patch(target, patch):
+def _merge_patch(target, patch, target_name="merge_patch target", patch_name="merge_patch patch"):
     """RFC 7396 merge patch, by the library's own (nlohmann::json::merge_patch, as the programs
-    apply --set)."""
-    return json.loads(_impact.merge_patch(json.dumps(target), json.dumps(patch)))
+    apply --set); the names are what an InputError calls the two documents."""
+    return json.loads(_impact.merge_patch(json.dumps(target), json.dumps(patch), target_name,
+                                          patch_name))
+
+
+def _patched(doc, patches, label):
+    """A dict document with ``patches`` merged in order (``patches[k]`` in messages)."""
+    for k, p in enumerate(_patches(patches)):
+        doc = _merge_patch(doc, json.loads(p), label, f"patches[{k}]")
+    return doc
 
 
 def load_material(source, patches=None, base_dir=None):
@@ -169,10 +178,8 @@ def run_path(path, patches=None, base_dir=None):
     (``pointdriver run`` exits 3): its ``reason`` says which step and why, its ``result`` is the
     Table computed up to it and ``result.replay`` a path document repeating the failed step."""
     if isinstance(path, dict):
-        doc = path
-        for p in _patches(patches):
-            doc = _merge_patch(doc, json.loads(p))
-        r = _impact.run_path_document(json.dumps(doc), _label(base_dir, "path"))
+        label = _label(base_dir, "path")
+        r = _impact.run_path_document(json.dumps(_patched(path, patches, label)), label)
     else:
         r = _impact.run_path_file(os.fspath(path), _patches(patches))
     columns = r.pop("columns")
@@ -226,10 +233,11 @@ def _scene_source(scene, base_dir):
     if not isinstance(scene, dict):
         return os.fspath(scene), "", ""
     doc = dict(scene)
+    label = _label(base_dir, "scene")
     if "extends" in doc:
         base = os.path.join(os.path.abspath(base_dir or os.getcwd()), doc.pop("extends"))
-        doc = _merge_patch(json.loads(_impact.scene_document(base)), doc)
-    return "", json.dumps(doc), _label(base_dir, "scene")
+        doc = _merge_patch(json.loads(_impact.scene_document(base)), doc, base, label)
+    return "", json.dumps(doc), label
 
 
 def check_scene(scene, patches=None, threads=0, base_dir=None):

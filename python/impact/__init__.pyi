@@ -21,6 +21,8 @@ __all__: list[str]
 
 class InputError(ValueError): ...
 
+class OutputError(OSError): ...
+
 class RunError(RuntimeError):
     reason: str
     exit_code: int

@@ -6,7 +6,12 @@ import os
 import tempfile
 import warnings
 
-from ._impact import InputError
+from ._impact import InputError, OutputError
+
+OutputError.__doc__ = (
+    "An output that could not be written (a full disk, a file-size limit, a place no file can be "
+    "made during the run): an OSError naming the file and the system's reason; the previous "
+    "complete file, if any, is kept (docs/reliability.md#outputs).")
 
 InputError.__doc__ = (
     "Bad input: a file, a dict or an argument the programs would refuse (exit code 2). A "

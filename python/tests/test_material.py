@@ -22,7 +22,8 @@ def test_material_from_file_dict_and_patch(data):
 def test_bad_material_names_key_path_and_range(data):
     with pytest.raises(impact.InputError) as e:
         impact.Material(data("materials", "al6061_t6.json"), patches={"density": -1.0})
-    assert "al6061_t6.json: /density:" in str(e.value)
+    assert str(e.value).startswith("patches[0] (over ")
+    assert "al6061_t6.json): /density:" in str(e.value)
     assert "(0, 30000]" in str(e.value)
     assert isinstance(e.value, ValueError)
 
@@ -91,3 +92,23 @@ def test_shape_errors_name_the_argument(data):
     assert impact.failure_causes[0] == "none" and impact.update_statuses[0] == "ok"
     with pytest.raises(ValueError, match="dt: expected a time step > 0"):
         impact.update(m, m.initial_state(), np.zeros((1, 3, 3)), 0.0)
+
+
+def test_a_number_no_double_holds_is_an_input_error(data, workdir):
+    """A Python int beyond the double range (10**400) in a patch or a document: impact.InputError
+    naming the patch and the key (it was a RuntimeError from the JSON parser)."""
+    material = data("materials", "al6061_t6.json")
+    with pytest.raises(impact.InputError,
+                       match=r"^patches\[1\]: /density: the number 1000000000000000\.\.\. "
+                             r"\(401 characters\) is beyond the range of a double") as e:
+        impact.Material(material, patches=[{"name": "x"}, {"density": 10**400}])
+    assert isinstance(e.value, ValueError)
+    doc = impact.Material(material).to_dict()
+    with pytest.raises(impact.InputError, match=r"^patches\[0\]: /density: the number"):
+        impact.Material(doc, patches={"density": -10**400})
+    doc["density"] = 10**400
+    with pytest.raises(impact.InputError, match=r"<material dict>: /density: the number"):
+        impact.Material(doc)
+    with pytest.raises(impact.InputError, match=r"^patches\[0\]: /temperature: the number"):
+        impact.run_path(data("paths", "uniaxial_stress_1000.json"),
+                        patches={"temperature": 10**400})

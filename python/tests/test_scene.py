@@ -30,5 +30,16 @@ def test_patches_and_check(data, workdir):
     checked = impact.check_scene(scene, patches={"grid": {"cells": [24, 24, 24]}})
     assert checked["resolved"]["grid"]["cells"] == [24, 24, 24]
     assert checked["refusal"] == "" and checked["report"]["particles"] > 0
-    with pytest.raises(impact.InputError, match=r"rigid_translation.json: /time/max_time"):
+    with pytest.raises(impact.InputError,
+                       match=r"^patches\[0\] \(over .*rigid_translation.json\): /time/max_time"):
         impact.check_scene(scene, patches={"time": {"max_time": -1.0}})
+
+
+def test_an_output_that_cannot_be_written_is_refused_before_the_run(data, workdir):
+    """run_scene into a place no directory can be made: refused before the run starts, as an
+    InputError naming `out` (docs/python.md); a file that cannot be written during a run is an
+    impact.OutputError, an OSError."""
+    scene = data("scenes", "verification", "rigid_translation.json")
+    with pytest.raises(impact.InputError, match=r"out: /proc/x/run: expected a directory"):
+        impact.run_scene(scene, out="/proc/x/run", threads=1)
+    assert issubclass(impact.OutputError, OSError)
