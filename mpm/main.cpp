@@ -21,6 +21,7 @@
 #include "mpm/solver.hpp"
 #include "mpm/study/study.hpp"
 #include "support/command_line.hpp"
+#include "support/omp_wait_policy.hpp"
 
 namespace {
 
@@ -203,5 +204,8 @@ int run_main(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // OpenMP threads sleep at barriers unless OMP_WAIT_POLICY says otherwise: a busy core must not
+  // stall the run (support/omp_wait_policy.hpp). First, before OpenMP and MPI start.
+  impact::cli::wait_passively_unless_asked(argv);
   return impact::cli::stdout_checked(run_main(argc, argv), "mpm");
 }

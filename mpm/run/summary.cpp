@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 
 #include "mpm/parallel/decomposition_plan.hpp"
 #include "mpm/run/memory.hpp"
@@ -93,7 +94,11 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
                  {"memory_estimate", memory.json()},
                  {"memory_per_particle [B]", Particles::bytes_per_particle()},
                  {"velocity_fields", scene.field_count()},
-                 {"threads", threads}};
+                 {"threads", threads},
+                 // How idle OpenMP threads wait (support/omp_wait_policy.hpp): "passive" unless
+                 // the user set OMP_WAIT_POLICY.
+                 {"omp_wait_policy", std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY")
+                                                                    : "libgomp default"}};
   if (const auto available = available_memory()) report["available_memory [MB]"] = *available / 1e6;
   if (!scene.output.gauges.empty()) {
     Json gauges = Json::object();

@@ -13,7 +13,12 @@ the stub ``__init__.pyi`` beside this file.
 import json
 import os
 
-import numpy as np
+# OpenMP threads sleep at barriers unless the caller chose otherwise: libgomp reads the policy when
+# it is loaded, so before _impact (and NumPy) are. A busy core otherwise stalls every run on all
+# cores (docs/performance.md#threads; the mpm program does the same, support/omp_wait_policy.hpp).
+os.environ.setdefault("OMP_WAIT_POLICY", "passive")
+
+import numpy as np  # noqa: E402
 
 from ._errors import InputError, InputWarning, RunError, warn_input, writable_directory
 from ._run import Run, Snapshot, read_run
