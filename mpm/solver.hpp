@@ -83,7 +83,7 @@ class Simulation {
   /// it shares with its neighbours, and every total (ledger, time step, failures) is reduced over
   /// the ranks, so the ledger and the time step are the same on every rank.
   explicit Simulation(const Scene& scene, int threads = 0, const Communicator* comm = nullptr);
-  Simulation(const Simulation&) = delete;  // models_ points into scene_
+  Simulation(const Simulation&) = delete;  // stress_settings_.models points into scene_
   Simulation& operator=(const Simulation&) = delete;
 
   /// Re-reads E0, p0 and the signal speed after a caller changed particle fields at t = 0 (tests

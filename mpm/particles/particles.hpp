@@ -92,7 +92,7 @@ SeedCounts seed_counts_per_column(
 
 /// What seed_particles() creates in the cell columns [first, end) only, in the same order, with
 /// the same doubles, and each with its seed index (Particles::id: its index in seed_particles());
-/// `counts`: seed_counts_per_column(scene). One rank's slab, seeded without the rest.
+/// `counts`: seed_counts_per_column(scene). One x range of cell columns, seeded without the rest.
 Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts& counts);
 
 /// What seed_particles() creates in the cells [first_d, end_d) per axis only (one rank's box), as

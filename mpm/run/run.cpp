@@ -58,7 +58,7 @@ class WallClock {
 
 // The run of run() and restart() (`resume`: from dir/checkpoint.bin): set-up, the step loop with
 // its outputs, checkpoints, signals and reports, then the summary. On several ranks every rank
-// steps its slab and writes its snapshot piece and checkpoint; the gauges, observables and the
+// steps its box and writes its snapshot piece and checkpoint; the gauges, observables and the
 // summary are reduced over the ranks, and rank 0 writes history.csv, the .pvtu/.pvd and the
 // summary. No rank ever holds another's particles.
 int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume) {

@@ -2,7 +2,8 @@
 // which runs the driver on paths built in code and compares what it computes with a reference
 // derived independently (closed_forms.hpp, or an integral of the driver's own rows computed here),
 // with a stated tolerance. A case returns its checks and may write figure data (CSV) into an
-// output directory. Cases and the measured numbers are listed in docs/verification_pointdriver.md.
+// output directory. Cases and the measured numbers are listed in docs/verification.md (point
+// driver verification).
 #pragma once
 
 #include <functional>

@@ -19,7 +19,7 @@ std::vector<Check> johnson_cook_damage(const SuiteContext& ctx) {
   // Erosion KeepStress: failure detection on (TEPLA), and the failed point keeps its stress, so
   // the step on which it fails can still meet the stress ratios. (With the file's AllowNoTension
   // the tensile cases cannot be solved on that step: the eroded stress is a pure deviator, which
-  // no velocity gradient brings to the prescribed ratios; see docs/verification_pointdriver.md.)
+  // no velocity gradient brings to the prescribed ratios; see docs/verification.md.)
   const Json patch = model_patch(Json{{"erosion", Json{{"algorithm", "KeepStress"}}}});
   for (double eta : {-1.0 / 3.0, 0.0, 1.0 / 3.0, 2.0 / 3.0}) {
     const std::string l = "triaxiality " + num(eta) + ": ";
