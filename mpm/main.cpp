@@ -207,5 +207,6 @@ int main(int argc, char** argv) {
   // OpenMP threads sleep at barriers unless OMP_WAIT_POLICY says otherwise: a busy core must not
   // stall the run (support/omp_wait_policy.hpp). First, before OpenMP and MPI start.
   impact::cli::wait_passively_unless_asked(argv);
+  impact::cli::report_file_size_limits();
   return impact::cli::stdout_checked(run_main(argc, argv), "mpm");
 }

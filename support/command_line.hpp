@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -144,6 +145,13 @@ inline std::optional<int> parse(CLI::App& app, std::vector<std::string> args,
 
 inline std::optional<int> parse(CLI::App& app, int argc, char** argv, Verbosity& verbosity) {
   return parse(app, std::vector<std::string>(argv + 1, argv + argc), verbosity);
+}
+
+/// Call first in main. Under a file-size limit (`ulimit -f`) the write that passes it raises
+/// SIGXFSZ, which kills the program with no word and leaves a .tmp behind; ignored, the write
+/// fails with EFBIG and the checked writers report it (exit 3, the file named).
+inline void report_file_size_limits() {
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 /// `code`, after making sure that what was printed on stdout reached it: when it did not (a full

@@ -17,7 +17,8 @@
 namespace impact::cli {
 
 /// Call first thing in main, before any OpenMP or MPI call. Returns only if nothing was done (the
-/// policy was set, or this is not the program itself: under valgrind /proc/self/exe is the tool)
+/// policy was set, or this is not the program itself, by its name or a link to it: under valgrind
+/// /proc/self/exe is the tool)
 /// or the re-execution failed (then the run goes on with libgomp's default).
 inline void wait_passively_unless_asked(char** argv) {
   if (std::getenv("OMP_WAIT_POLICY") != nullptr || argv == nullptr || argv[0] == nullptr) return;
@@ -29,7 +30,10 @@ inline void wait_passively_unless_asked(char** argv) {
     const std::size_t slash = path.rfind('/');
     return slash == std::string::npos ? path : path.substr(slash + 1);
   };
-  if (base(exe) != base(argv[0])) return;
+  // The program itself (by name, or through a link to it), not a tool that runs it.
+  char target[PATH_MAX];
+  const bool linked = realpath(argv[0], target) != nullptr && std::string(target) == exe;
+  if (base(exe) != base(argv[0]) && !linked) return;
   if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
   execv(exe, argv);
 }

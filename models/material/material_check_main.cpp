@@ -10,6 +10,7 @@
 #include "support/command_line.hpp"
 
 int main(int argc, char** argv) {
+  impact::cli::report_file_size_limits();
   CLI::App app{"Validates a material file and prints its resolved parameters (SI units).",
                "material_check"};
   impact::cli::Verbosity verbosity;

@@ -69,6 +69,10 @@ std::string unfinished_run(const fs::path& dir) {
 }
 
 std::size_t clear_previous_run(const fs::path& dir) {
+  // Only where a run was: status.json as mpm writes it (a directory of the user's own files, one
+  // named summary.json among them, is left alone).
+  const Json status = read_json_or_null(dir / "status.json");
+  if (!status.is_object() || !status.contains("status") || !status["status"].is_string()) return 0;
   // The particle paths are named by the previous run's scene: only those files go.
   std::set<std::string> paths;
   const Json scene = read_json_or_null(dir / "scene.json");

@@ -132,8 +132,11 @@ int command_run(const std::vector<std::string>& args) {
       return cli::kExitFailed;
     }
   }
-  if (!r.completed) {
-    const std::string replay_file = stem.string() + ".replay.json";
+  const std::string replay_file = stem.string() + ".replay.json";
+  if (r.completed) {  // a replay of an earlier failed run beside this one's rows would mislead
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(replay_file, ec)) std::filesystem::remove(replay_file, ec);
+  } else {
     try {
       write_file_atomically(replay_file, [&](std::ostream& s) { s << r.replay->dump(2) << '\n'; });
     } catch (const OutputError& e) {

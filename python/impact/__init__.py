@@ -11,6 +11,7 @@ a warning (a likely unit slip) issue an ``impact.InputWarning`` through ``warnin
 the stub ``__init__.pyi`` beside this file.
 """
 import json
+import math
 import os
 
 # OpenMP threads sleep at barriers unless the caller chose otherwise: libgomp reads the policy when
@@ -58,12 +59,54 @@ def data_path(*relative):
     raise FileNotFoundError("impact: no shipped data found beside " + here)
 
 
+def _json_value(value):
+    """NumPy scalars and arrays and path objects as JSON values (a notebook's usual types)."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    raise TypeError(f"a {type(value).__name__} is not a JSON value")
+
+
+def _non_finite(value, where):
+    """The key path of the first NaN or infinite number in a document, or None."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return where or "/"
+    if isinstance(value, dict):
+        items = value.items()
+    elif isinstance(value, (list, tuple)):
+        items = enumerate(value)
+    else:
+        return None
+    for key, item in items:
+        found = _non_finite(item, f"{where}/{key}")
+        if found:
+            return found
+    return None
+
+
+def _dumps(doc, name):
+    """A document (dict) as JSON text: NumPy values converted; NaN or inf refused naming the key
+    (JSON has no such numbers); another type refused naming the document."""
+    try:
+        plain = json.loads(json.dumps(doc, default=_json_value))
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{name}: {e}") from None
+    bad = _non_finite(plain, "")
+    if bad:
+        raise InputError(f"{name}: {bad}: expected a finite number, got a NaN or an infinity "
+                         "(JSON has neither)")
+    return json.dumps(plain)
+
+
 def _patches(patches):
     if patches is None:
         return []
-    if isinstance(patches, dict):
+    if isinstance(patches, (dict, str)):  # one patch: a document or its JSON text
         patches = [patches]
-    return [json.dumps(p) for p in patches]
+    return [p if isinstance(p, str) else _dumps(p, f"patches[{k}]") for k, p in enumerate(patches)]
 
 
 def _label(base_dir, kind):
@@ -82,7 +125,7 @@ class Material:
         if isinstance(source, dict):
             label = _label(base_dir, "material")
             doc = _patched(dict(source), patches, label)
-            self._m = _impact.read_material(json.dumps(doc), label)
+            self._m = _impact.read_material(_dumps(doc, label), label)
         else:
             self._m = _impact.load_material(os.fspath(source), _patches(patches))
         warn_input(self._m.warnings, stacklevel=2)
@@ -112,8 +155,8 @@ class Material:
 def _merge_patch(target, patch, target_name="merge_patch target", patch_name="merge_patch patch"):
     """RFC 7396 merge patch, by the library's own (nlohmann::json::merge_patch, as the programs
     apply --set); the names are what an InputError calls the two documents."""
-    return json.loads(_impact.merge_patch(json.dumps(target), json.dumps(patch), target_name,
-                                          patch_name))
+    return json.loads(_impact.merge_patch(_dumps(target, target_name), _dumps(patch, patch_name),
+                                          target_name, patch_name))
 
 
 def _patched(doc, patches, label):
@@ -184,7 +227,7 @@ def run_path(path, patches=None, base_dir=None):
     Table computed up to it and ``result.replay`` a path document repeating the failed step."""
     if isinstance(path, dict):
         label = _label(base_dir, "path")
-        r = _impact.run_path_document(json.dumps(_patched(path, patches, label)), label)
+        r = _impact.run_path_document(_dumps(_patched(path, patches, label), label), label)
     else:
         r = _impact.run_path_file(os.fspath(path), _patches(patches))
     columns = r.pop("columns")
@@ -212,7 +255,7 @@ def fit(config, base_dir=None):
     Material), ``converged`` and ``series`` (per experiment: ``data``, ``fitted``, ``material``,
     each with ``plastic_strain`` [-] and ``stress`` [Pa] arrays, for plotting)."""
     if isinstance(config, dict):
-        text = _impact.fit_document(json.dumps(config), _label(base_dir, "fit"))
+        text = _impact.fit_document(_dumps(config, _label(base_dir, "fit")), _label(base_dir, "fit"))
     else:
         text = _impact.fit_file(os.fspath(config))
     report = _with_arrays(json.loads(text))
@@ -225,7 +268,8 @@ def check(config, base_dir=None):
     dict). Returns check_report.json as a dict (``passed``, ``exceeded``, per-curve errors in
     Pa, under ``curves``) with ``series`` as in fit."""
     if isinstance(config, dict):
-        text = _impact.check_document(json.dumps(config), _label(base_dir, "check"))
+        text = _impact.check_document(_dumps(config, _label(base_dir, "check")),
+                                      _label(base_dir, "check"))
     else:
         text = _impact.check_file(os.fspath(config))
     report = _with_arrays(json.loads(text))
@@ -242,7 +286,7 @@ def _scene_source(scene, base_dir):
     if "extends" in doc:
         base = os.path.join(os.path.abspath(base_dir or os.getcwd()), doc.pop("extends"))
         doc = _merge_patch(json.loads(_impact.scene_document(base)), doc, base, label)
-    return "", json.dumps(doc), label
+    return "", _dumps(doc, label), label
 
 
 def check_scene(scene, patches=None, threads=0, base_dir=None):
@@ -292,7 +336,9 @@ def _finish(code, directory, warnings, message, interrupt):
         value = read(os.path.join(directory, name + ".json"))
         if value is not None:
             result[name] = value
-    if os.path.exists(os.path.join(directory, "history.csv")):
+    # Regular files only: a device in a file's place (the run failed writing it) would be read
+    # without end.
+    if os.path.isfile(os.path.join(directory, "history.csv")):
         result["history"] = read_history(directory)
     if code == 0:
         return result
@@ -310,7 +356,7 @@ def _finish(code, directory, warnings, message, interrupt):
 
 
 def _read_json(path):
-    if not os.path.exists(path):
+    if not os.path.isfile(path):
         return None
     with open(path) as f:
         return json.load(f)

@@ -4,6 +4,8 @@ import os
 
 import numpy as np
 
+from ._impact import InputError
+
 
 class Table(dict):
     """Named columns (NumPy arrays) with their SI units in ``units`` (``units["time"] == "s"``).
@@ -41,7 +43,11 @@ def read_history(directory):
     """history.csv of a run directory as a Table (``time`` [s], energies [J], momentum [kg m/s],
     the gauges' observables in their units). A last row cut short (a run killed while writing
     it) is left out."""
-    with open(os.path.join(os.fspath(directory), "history.csv"), newline="") as f:
+    file = os.path.join(os.fspath(directory), "history.csv")
+    if not os.path.isfile(file):  # a device or a FIFO in its place would be read without end
+        raise InputError(f"{file}: expected the history.csv file mpm run writes, found "
+                         + ("nothing" if not os.path.lexists(file) else "no regular file"))
+    with open(file, newline="") as f:
         rows = list(csv.reader(f))
     header, body = rows[0], rows[1:]
     if body:

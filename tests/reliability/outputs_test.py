@@ -18,10 +18,11 @@ import subprocess
 import sys
 
 
-def limited(fsize=None, address_space=None):
+def limited(fsize=None, address_space=None, ignore_sigxfsz=True):
     """A preexec_fn: the limits for the child only (SIGXFSZ ignored: inherited across exec)."""
     def apply():
-        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        if ignore_sigxfsz:
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
         if fsize is not None:
             resource.setrlimit(resource.RLIMIT_FSIZE, (fsize, resource.RLIM_INFINITY))
         if address_space is not None:
@@ -149,7 +150,40 @@ def run_refused_for_memory(bin_dir, source, work):
     assert os.listdir(out) == [], os.listdir(out)
 
 
+def file_size_limit_as_a_shell_sets_it(bin_dir, source, work):
+    """`ulimit -f` in a shell leaves SIGXFSZ at its default, which kills a program whose write
+    passes the limit (exit 153, no word, a .tmp left). The programs ignore it themselves, so the
+    write fails with EFBIG and is reported: exit 3 naming the file, no .tmp."""
+    out = os.path.join(work, "cards")
+    material = os.path.join(source, "data", "materials", "al6061_t6.json")
+    done = run([os.path.join(bin_dir, "pointdriver"), "cards", material, "--out", out], 3,
+               preexec_fn=limited(fsize=512, ignore_sigxfsz=False))
+    assert "cannot write " + os.path.join(out, "al6061_t6.") in done.stderr, done.stderr
+    assert not [f for f in os.listdir(out) if f.endswith(".tmp")], os.listdir(out)
+    scene = os.path.join(source, "data", "scenes", "verification", "rigid_translation.json")
+    run_dir = os.path.join(work, "mpm")
+    done = run([os.path.join(bin_dir, "mpm"), "run", scene, "--out", run_dir, "--threads", "1"], 3,
+               preexec_fn=limited(fsize=512, ignore_sigxfsz=False))
+    assert "(File too large)" in done.stderr, done.stderr
+
+
+def replay_of_a_failed_run_goes_with_the_next_success(bin_dir, source, work):
+    """pointdriver run that fails leaves OUT.replay.json; a run into the same OUT that completes
+    removes it (else the replay beside complete rows says the last run failed)."""
+    path = os.path.join(source, "data", "paths", "uniaxial_stress_1000.json")
+    out = os.path.join(work, "p.csv")
+    leg = {"velocity_gradient": {"xx": 1000}, "stress": {"yy": 0, "zz": 0}}
+    cmd = [os.path.join(bin_dir, "pointdriver"), "run", path, "-o", out, "--set"]
+    failing = json.dumps({"legs": [dict(leg, duration=1, steps=2)]})  # strain 500 in 2 steps
+    run(cmd + [failing], 3)
+    assert os.path.isfile(os.path.join(work, "p.replay.json")), os.listdir(work)
+    run(cmd + [json.dumps({"legs": [dict(leg, duration=1e-5, steps=10)]})], 0)
+    assert not os.path.exists(os.path.join(work, "p.replay.json")), os.listdir(work)
+
+
 CASES = {f.__name__: f for f in (cards_full_disk, fit_full_disk, stdout_full,
+                                 replay_of_a_failed_run_goes_with_the_next_success,
+                                 file_size_limit_as_a_shell_sets_it,
                                  run_refused_for_the_csv, run_refused_for_memory)}
 
 if __name__ == "__main__":

@@ -269,6 +269,19 @@ def check_rerun(mpm, work):
     error = summary["final"]["energy_error [-]"]
     assert abs(float(m.group(4)) - error) <= 1e-3 * abs(error) + 1e-300, (m.group(4), error)
     assert m.group(5) == out, m.group(5)
+    # A directory that never held a run (no status.json of mpm's): the user's files there stay,
+    # even one named like a run's file.
+    mine = os.path.join(work, "mine")
+    shutil.rmtree(mine, ignore_errors=True)
+    os.makedirs(mine)
+    with open(os.path.join(mine, "particles.pvd"), "w") as f:  # a run without snapshots
+        f.write("my notes\n")                                       # writes no particles.pvd
+    code, _, stderr = run_mpm_code(mpm, ["run", RIGID, "--out", mine, "--threads", "1", "--set",
+                                         json.dumps({"time": {"max_time": 1e-6}})])
+    assert code == 0, (code, stderr)
+    assert "replacing the previous run" not in stderr, stderr
+    with open(os.path.join(mine, "particles.pvd")) as f:
+        assert f.read() == "my notes\n"
 
 
 def check_unfinished(mpm, work):

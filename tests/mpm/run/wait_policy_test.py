@@ -15,12 +15,14 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.a
 SCENE = os.path.join(ROOT, "data", "scenes", "verification", "rigid_translation.json")
 
 
-def policy(mpm, value):
+def policy(mpm, value, name=None):
+    """The policy `mpm check` reports; `name`: argv[0] (as `exec -a NAME` sets it)."""
     env = dict(os.environ)
     env.pop("OMP_WAIT_POLICY", None)
     if value is not None:
         env["OMP_WAIT_POLICY"] = value
-    done = subprocess.run([mpm, "check", SCENE], capture_output=True, text=True, env=env)
+    done = subprocess.run([name or mpm, "check", SCENE], executable=mpm, capture_output=True,
+                          text=True, env=env)
     assert done.returncode == 0, (value, done.returncode, done.stderr)
     text = done.stdout
     return json.loads(text[text.rindex("\n{") + 1:] if "\n{" in text else text)["omp_wait_policy"]
@@ -32,6 +34,18 @@ def main():
     assert got[None] == "passive", got  # not set: mpm chooses passive
     assert got["active"] == "active", got  # set: kept
     assert got["passive"] == "passive", got
+    # Through a link to it the program still re-executes itself; under a name that is neither
+    # (a tool's, `exec -a`) it does not, and libgomp's default stays: what every case above would
+    # report without the re-execution.
+    link = os.path.join(os.environ.get("TMPDIR", "/tmp"), f"mpm-link-{os.getpid()}")
+    os.symlink(os.path.abspath(mpm), link)
+    try:
+        got["link"] = policy(link, None)
+    finally:
+        os.remove(link)
+    got["other name"] = policy(mpm, None, name="not-mpm")
+    assert got["link"] == "passive", got
+    assert got["other name"] == "libgomp default", got
     print("ok:", got)
 
 
