@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "mpm/particles/particles.hpp"
+#include "support/scene_error.hpp"
 
 using namespace impact;
 using namespace impact::mpm;
@@ -25,14 +26,7 @@ Json base() {
   return load_scene_document(kScenes + "verification/rigid_translation.json");
 }
 
-std::string error_of(const Json& doc) {
-  try {
-    read_scene(doc, "test.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using impact::testing::scene_error_of;
 
 GridSpec grid_of(const char* face_condition) {
   Json doc = base();
@@ -109,7 +103,7 @@ BOOST_AUTO_TEST_CASE(a_body_wholly_outside_the_grid_is_refused_with_its_key_path
   Json doc = base();
   doc["objects"]["block"]["geometry"] = {
       {"type", "box"}, {"lower", {0.1, 0.1, 0.1}}, {"upper", {0.12, 0.12, 0.12}}};
-  std::string e = error_of(doc);
+  std::string e = scene_error_of(doc);
   BOOST_TEST_MESSAGE(e);
   BOOST_TEST(e.find("test.json: /objects/block/geometry: lies wholly outside the grid [0, 0, 0] "
                     "to [0.06, 0.06, 0.06] m (its bounding box [0.1, 0.1, 0.1] to [0.12, 0.12, "
@@ -118,7 +112,7 @@ BOOST_AUTO_TEST_CASE(a_body_wholly_outside_the_grid_is_refused_with_its_key_path
   // the corner, has nothing there (the lattice finds no point).
   doc["objects"]["block"]["geometry"] = {
       {"type", "sphere"}, {"center", {-0.007, -0.007, -0.007}}, {"radius", 0.01}};
-  e = error_of(doc);
+  e = scene_error_of(doc);
   BOOST_TEST(e.find("/objects/block/geometry: lies wholly outside the grid") != std::string::npos);
 }
 
@@ -131,7 +125,7 @@ BOOST_AUTO_TEST_CASE(a_body_typed_in_millimetres_on_a_grid_in_metres_is_refused)
   const GridCoverage c =
       grid_coverage(Geometry{Box{Vec3::Zero(), Vec3::Constant(40.0)}}, valid.grid);
   BOOST_TEST(c.inside_bound == 3.375e-9, tt::tolerance(1e-12));
-  const std::string e = error_of(doc);
+  const std::string e = scene_error_of(doc);
   BOOST_TEST_MESSAGE(e);
   BOOST_TEST(e.find("test.json: /objects/block/geometry: at most 3.38e-09 of its volume (6.4e+04 "
                     "m^3) lies inside the grid [0, 0, 0] to [0.06, "
@@ -146,7 +140,7 @@ BOOST_AUTO_TEST_CASE(a_body_that_would_get_no_particle_is_refused) {
   Json doc = base();
   doc["objects"]["block"]["geometry"] = {
       {"type", "box"}, {"lower", {0.0201, 0.0201, 0.0201}}, {"upper", {0.0202, 0.0202, 0.0202}}};
-  std::string e = error_of(doc);
+  std::string e = scene_error_of(doc);
   BOOST_TEST_MESSAGE(e);
   BOOST_TEST(e.find("test.json: /objects/block/geometry: no particle would be seeded: none of the "
                     "seed points (sub-cell centres, spacing [0.0025, 0.0025, 0.0025] m)") !=
@@ -155,7 +149,7 @@ BOOST_AUTO_TEST_CASE(a_body_that_would_get_no_particle_is_refused) {
   doc["objects"]["inner"] = doc["objects"]["block"];
   doc["objects"]["inner"]["geometry"] = {
       {"type", "box"}, {"lower", {0.025, 0.025, 0.025}}, {"upper", {0.03, 0.03, 0.03}}};
-  e = error_of(doc);
+  e = scene_error_of(doc);
   BOOST_TEST(e.find("/objects/inner/geometry: no particle would be seeded") != std::string::npos);
   BOOST_TEST(e.find("/objects/block/") == std::string::npos);
 }

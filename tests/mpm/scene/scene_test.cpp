@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "mpm/particles/particles.hpp"
+#include "support/scene_error.hpp"
 
 using namespace impact;
 using namespace impact::mpm;
@@ -16,15 +17,7 @@ namespace {
 
 const std::string kScenes = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/";
 
-// Every problem line of the InputError raised by reading `doc`.
-std::string error_of(const Json& doc) {
-  try {
-    read_scene(doc, "test.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using impact::testing::scene_error_of;
 
 Json base() {
   return load_scene_document(kScenes + "verification/rigid_translation.json");
@@ -114,7 +107,7 @@ BOOST_AUTO_TEST_CASE(errors_name_the_key_path_and_what_was_expected) {
   doc["time"]["multiplier"] = 2.0;               // out of range
   doc["objects"]["block"]["velocity"] = "fast";  // wrong type
   doc["solver"]["scheme"] = "usf";               // unknown name
-  const std::string e = error_of(doc);
+  const std::string e = scene_error_of(doc);
   BOOST_TEST_MESSAGE(e);
   BOOST_TEST(e.find("test.json: /grid/cell: unknown key (did you mean cells?)") !=
              std::string::npos);
@@ -139,15 +132,15 @@ BOOST_AUTO_TEST_CASE(ranks_per_axis_is_all_positive_or_all_zero_or_a_rule) {
   doc["solver"]["ranks_per_axis"] = "fewest_cut_faces";
   BOOST_TEST((read_scene(doc, "test.json").solver.split == SplitRule::fewest_cut_faces));
   doc["solver"]["ranks_per_axis"] = "balanced";
-  std::string e = error_of(doc);
+  std::string e = scene_error_of(doc);
   BOOST_TEST(e.find("/solver/ranks_per_axis: unknown name \"balanced\"; known: fewest_cut_faces, "
                     "least_loaded") != std::string::npos);
   doc["solver"]["ranks_per_axis"] = {2, 0, 1};
-  e = error_of(doc);
+  e = scene_error_of(doc);
   BOOST_TEST(e.find("/solver/ranks_per_axis: expected three integers >= 1, [0, 0, 0] for the "
                     "automatic split, or \"least_loaded\"") != std::string::npos);
   doc["solver"]["ranks_per_axis"] = {2, -1, 1};
-  e = error_of(doc);
+  e = scene_error_of(doc);
   BOOST_TEST(e.find("/solver/ranks_per_axis: expected integers in [0, 1048576]") !=
              std::string::npos);
 }
@@ -167,21 +160,21 @@ BOOST_AUTO_TEST_CASE(a_multiplier_above_one_is_read_with_a_warning) {
   BOOST_TEST_MESSAGE(s.warnings[0]);
   BOOST_TEST(s.warnings[0].find("test.json: /time/multiplier: 1.2 is above 1") == 0u);
   doc["time"]["max_energy_growth"] = 0.0;
-  BOOST_TEST(error_of(doc).find("/time/max_energy_growth: expected a number in (0, inf)") !=
+  BOOST_TEST(scene_error_of(doc).find("/time/max_energy_growth: expected a number in (0, inf)") !=
              std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(an_unknown_material_reference_lists_the_known_ones) {
   Json doc = base();
   doc["objects"]["block"]["material"] = "steel";
-  BOOST_TEST(error_of(doc).find("/objects/block/material: unknown material \"steel\"; known: "
-                                "elastic_al") != std::string::npos);
+  BOOST_TEST(scene_error_of(doc).find("/objects/block/material: unknown material \"steel\"; known: "
+                                      "elastic_al") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_bad_material_override_names_the_scene_entry_and_the_material_key) {
   Json doc = base();
   doc["materials"]["elastic_al"]["overrides"]["density"] = -2700.0;
-  const std::string e = error_of(doc);
+  const std::string e = scene_error_of(doc);
   BOOST_TEST(e.find("/materials/elastic_al/file") != std::string::npos);
   BOOST_TEST(e.find("/density") != std::string::npos);
 }
@@ -201,12 +194,12 @@ BOOST_AUTO_TEST_CASE(more_than_64_contact_fields_are_refused) {
   };
   BOOST_TEST(read_scene(with_materials(64, false), "test.json").field_count() == 64);
   BOOST_TEST(read_scene(with_materials(32, true), "test.json").field_count() == 64);
-  std::string e = error_of(with_materials(65, false));
+  std::string e = scene_error_of(with_materials(65, false));
   BOOST_TEST_MESSAGE(e);
   BOOST_TEST(e.find("test.json: /materials: 65 materials make 65 velocity fields under "
                     "physics.contact.type \"friction\": expected at most 64 fields (64 "
                     "materials), or contact \"single_velocity\" (one field)") != std::string::npos);
-  e = error_of(with_materials(33, true));
+  e = scene_error_of(with_materials(33, true));
   BOOST_TEST_MESSAGE(e);
   BOOST_TEST(e.find("test.json: /materials: 33 materials make 66 velocity fields (each with a "
                     "companion field: physics.create_new_particles) under physics.contact.type "

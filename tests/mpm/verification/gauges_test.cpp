@@ -20,6 +20,7 @@
 
 #include "../verification_helpers.hpp"
 #include "mpm/output/observables.hpp"
+#include "support/scene_error.hpp"
 
 using namespace impact;
 using namespace impact::mpm;
@@ -69,14 +70,7 @@ Csv read_csv(const std::filesystem::path& file) {
   return csv;
 }
 
-std::string error_of(const Json& doc) {
-  try {
-    read_scene(doc, "test.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using impact::testing::scene_error_of;
 
 Json rigid_document() {
   return load_scene_document(std::string(IMPACT_SOURCE_DIR) +
@@ -251,7 +245,7 @@ BOOST_AUTO_TEST_CASE(gauge_and_crater_errors_name_the_key_path) {
                              {"flipped", gauge("velocity", "x", hi, lo)}};
   doc["output"]["gauges"]["p"]["region"]["centre"] = {0, 0, 0};
   doc["output"]["crater"] = {{"object", "plate"}, {"face", 0.02}};
-  const std::string e = error_of(doc);
+  const std::string e = scene_error_of(doc);
   BOOST_TEST_MESSAGE(e);
   for (const char* expected :
        {"test.json: /output/gauges/tip/object: unknown object \"blok\"; known: block",
@@ -266,7 +260,7 @@ BOOST_AUTO_TEST_CASE(gauge_and_crater_errors_name_the_key_path) {
   }
   Json crater = rigid_document();
   crater["output"]["crater"] = {{"object", "block"}, {"face", 0.05}, {"axis", {1, 0, 0}}};
-  const std::string c = error_of(crater);
+  const std::string c = scene_error_of(crater);
   BOOST_TEST(c.find("/output/crater/face: no particle of object \"block\" within one cell") !=
              std::string::npos);
   BOOST_TEST(c.find("/output/crater/axis: unknown key") != std::string::npos);
