@@ -12,7 +12,7 @@
 #                    scene on RANKS (default 2) ranks of one thread (docs/mpi.md; results in
 #                    out/recommended-mpi/recommended/)
 #   ./run.sh mpi-bench [RANKS]  ranks against threads on the 2.25x sphere-cylinder grid, slabs
-#                    and (2 ranks) boxes cut across y and across z (mpm/benchmark/mpi_scaling.py;
+#                    and (2 ranks) boxes cut across y and across z (campaigns/benchmark/mpi_scaling.py;
 #                    figures in docs/mpi.md; about 12 min once built)
 #   ./run.sh bench   build and run the benchmarks (figures in docs/performance.md)
 #   ./run.sh study   build and regenerate the accuracy-versus-cost study (docs/figures/)
@@ -24,7 +24,7 @@
 #                    (docs/figures/materials_*.png, docs/models.md)
 #   ./run.sh paraview  install ParaView's Python (python3-paraview, xvfb) when missing and draw the
 #                    main job's last snapshot coloured by plastic strain with pvpython
-#                    (mpm/plot/paraview_snapshot.py -> out/recommended/plastic_strain.png)
+#                    (campaigns/plot/paraview_snapshot.py -> out/recommended/plastic_strain.png)
 #   ./run.sh taylor [OUT] [OPTIONS]  build and run the House et al. Taylor shots against the
 #                    experiments (docs/taylor.md; OUT defaults to docs/figures/taylor/)
 set -euo pipefail
@@ -75,7 +75,7 @@ case "${1:-}" in
     # then the energy/momentum figure and the summary table beside it.
     build/bin/mpm run data/scenes/sphere_cylinder/recommended.json \
       --out out/recommended/recommended --threads "$(nproc)"
-    /usr/bin/python3 mpm/study/study_plot.py out/recommended
+    /usr/bin/python3 campaigns/study/study_plot.py out/recommended
     ;;
   test)
     install_missing_packages "${FUZZ_PACKAGES[@]}" "${TEST_TOOL_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
@@ -96,13 +96,13 @@ case "${1:-}" in
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
       mpirun -np "${2:-2}" --oversubscribe build/bin/mpm run \
       data/scenes/sphere_cylinder/recommended.json --out out/recommended-mpi/recommended --threads 1
-    /usr/bin/python3 mpm/study/study_plot.py out/recommended-mpi
+    /usr/bin/python3 campaigns/study/study_plot.py out/recommended-mpi
     ;;
   mpi-bench)
     install_missing_packages "${MPI_PACKAGES[@]}"
     build release -DIMPACT_MPI=ON
     if [ "${2:-2}" = 2 ]; then splits=(--splits 1x2x1 1x1x2); else splits=(); fi
-    /usr/bin/python3 mpm/benchmark/mpi_scaling.py build/bin/mpm build/mpi-bench --ranks "${2:-2}" \
+    /usr/bin/python3 campaigns/benchmark/mpi_scaling.py build/bin/mpm build/mpi-bench --ranks "${2:-2}" \
       "${splits[@]}"
     ;;
   paraview)
@@ -112,7 +112,7 @@ case "${1:-}" in
       echo "run.sh paraview: no out/recommended/recommended/particles.pvd: run ./run.sh main first" >&2
       exit 1
     fi
-    xvfb-run -a pvpython mpm/plot/paraview_snapshot.py out/recommended/recommended \
+    xvfb-run -a pvpython campaigns/plot/paraview_snapshot.py out/recommended/recommended \
       --out out/recommended/plastic_strain.png
     ;;
   fuzz)
@@ -131,7 +131,7 @@ case "${1:-}" in
     # Scaling, feature cost and box size of the explicit step (CSV + figures in
     # docs/figures/performance/; best of 3-5 repeats: 6 min on the 2-core VM).
     build/bin/mpm_benchmark --out docs/figures/performance
-    /usr/bin/python3 mpm/benchmark/plot_benchmark.py docs/figures/performance
+    /usr/bin/python3 campaigns/benchmark/plot_benchmark.py docs/figures/performance
     ;;
   study)
     install_missing_packages
@@ -152,7 +152,7 @@ case "${1:-}" in
     # the 2-core VM at half speed (2026-11-24), the 3x grid 33 min of it. Options after
     # `accuracy` go to the script, e.g. --levels 1,1.5,2.25 (no 3x grid), --max-level-others 1.5
     # (the 2.25x grid for gimp/MUSL only) or --jobs 2 --threads 1.
-    /usr/bin/python3 mpm/study/accuracy_study.py docs/figures/accuracy --mpm build/bin/mpm \
+    /usr/bin/python3 campaigns/study/accuracy_study.py docs/figures/accuracy --mpm build/bin/mpm \
       --threads 2 "${@:2}"
     ;;
   quarter)
@@ -160,7 +160,7 @@ case "${1:-}" in
     build release
     # The centred impact as a quarter with symmetric planes against the full model, 40 us
     # (docs/performance.md, "Quarter model with symmetric planes").
-    /usr/bin/python3 mpm/study/quarter_model.py docs/figures/quarter_model --mpm build/bin/mpm \
+    /usr/bin/python3 campaigns/study/quarter_model.py docs/figures/quarter_model --mpm build/bin/mpm \
       --threads 1 "${@:2}"
     ;;
   taylor)
@@ -171,7 +171,7 @@ case "${1:-}" in
     # runs at a time (docs/taylor.md). Options after OUT go to the script and override these,
     # e.g. the failure study: ./run.sh taylor docs/figures/taylor_failure --sets fit_all
     #   --cells-per-radius 4 --failure off,shipped,compression_aware
-    /usr/bin/python3 mpm/taylor/taylor.py "${2:-docs/figures/taylor}" --runs build/taylor \
+    /usr/bin/python3 campaigns/taylor/taylor.py "${2:-docs/figures/taylor}" --runs build/taylor \
       --sets table1,fit_all --cells-per-radius 6 --jobs "$(nproc)" --threads 1 "${@:3}"
     ;;
   laws)
@@ -186,7 +186,7 @@ case "${1:-}" in
     build release
     # 112 variants (multiplier x interpolation x contact x AV x velocity) + the report's case 2
     # row, 10 us each, classified stable / energy-drifting / unstable (docs/accuracy.md).
-    /usr/bin/python3 mpm/study/stability_map.py --out docs/figures/stability --mpm build/bin/mpm \
+    /usr/bin/python3 campaigns/study/stability_map.py --out docs/figures/stability --mpm build/bin/mpm \
       --threads 2 "${@:2}"
     ;;
   *)

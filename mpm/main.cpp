@@ -14,12 +14,13 @@
 #include <string>
 #include <vector>
 
-#include "mpm/plot/run_plot.hpp"
+#include "mpm/input/scene_reader.hpp"
+#include "campaigns/plot/run_plot.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
-#include "mpm/solver.hpp"
-#include "mpm/study/study.hpp"
+#include "mpm/simulation/simulation.hpp"
+#include "campaigns/study/study.hpp"
 #include "support/command_line.hpp"
 #include "support/omp_wait_policy.hpp"
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "mpm/step/parallel.hpp"
+#include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
 

@@ -1,7 +1,7 @@
 // The background grid: cells_d + 1 nodes per axis plus one ghost layer on each side (node index
 // -1 and cells_d + 1), which uGIMP reaches from a particle next to a face; on a rank of a domain
 // decomposition, only the nodes of its box and halo (NodeBox). Node data are
-// stored once; the scatters write them race-free by coloured slabs (mpm/step/scatter_order.hpp), in
+// stored once; the scatters write them race-free by coloured bands (mpm/step/scatter_order.hpp), in
 // an order that does not depend on the thread count. All per-node arrays are allocated once (no
 // allocation in a step).
 // Velocity fields (multi-material contact): every per-node array holds `fields` consecutive

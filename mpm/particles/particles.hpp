@@ -10,6 +10,7 @@
 
 #include "models/core/point_state.hpp"
 #include "mpm/scene/scene.hpp"
+#include "mpm/scene/seed_points.hpp"
 
 namespace impact::mpm {
 
@@ -100,23 +101,5 @@ Particles seed_columns(const Scene& scene, int first, int end, const SeedCounts&
 /// stores only its own, in exactly reserved arrays (no more than the box's share at any time).
 Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
                    const std::array<int, 3>& end, const SeedCounts& counts);
-
-/// The number of seed points of object `object` (what seed_particles() would create) inside the
-/// closed box [lower, upper]: seeds only the cells the box overlaps (scene validation of the
-/// output gauges).
-std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3& lower,
-                              const Vec3& upper);
-
-/// Whether seed_particles() gives object `object` at least one particle (the scene check refuses
-/// a body that would get none); stops at the first point found.
-bool seeds_a_point(const Scene& scene, std::size_t object);
-
-/// x inside the closed box [lower, upper] (the gauges' and the seed count's membership test).
-inline bool in_box(const Vec3& x, const Vec3& lower, const Vec3& upper) {
-  return (x.array() >= lower.array()).all() && (x.array() <= upper.array()).all();
-}
-
-/// Per object: GIMP half-width l_d = 1/(2 ppc_d) in cells (fixed at creation, as in the report).
-std::vector<Vec3> half_widths(const Scene& scene);
 
 }  // namespace impact::mpm

@@ -37,65 +37,7 @@ std::size_t Particles::bytes_per_particle() {
          sizeof(double) + 3 * sizeof(std::uint16_t);
 }
 
-std::vector<Vec3> half_widths(const Scene& scene) {
-  std::vector<Vec3> l;
-  for (const SceneObject& o : scene.objects) {
-    l.emplace_back(0.5 / o.particles_per_cell[0], 0.5 / o.particles_per_cell[1],
-                   0.5 / o.particles_per_cell[2]);
-  }
-  return l;
-}
-
 namespace {
-
-// Calls add(x, i) for every seed point x of object `oi` in the grid cells that the box [lo, hi]
-// overlaps, i its cell column along x: the ppc^3 sub-cell centres inside the object's geometry and
-// not inside an earlier object, columns outermost. The points of a cell do not depend on the box,
-// so a smaller box gives a subset of the same doubles in the same order. An add that returns bool
-// stops the walk by returning false.
-template <class Add>
-void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3& hi,
-                         Add&& add) {
-  const GridSpec& g = scene.grid;
-  const Vec3 h = g.spacing();
-  const SceneObject& o = scene.objects[oi];
-  // Only the cells of the object's bounding box can hold its points: a gauge region that spans a
-  // fine grid (or 1e300) costs what seeding the object costs, not a walk over the whole box.
-  const auto [blo, bhi] = bounds(o.geometry);
-  const Vec3 box_lo = lo.cwiseMax(blo);
-  const Vec3 box_hi = hi.cwiseMin(bhi);
-  // Clamped in double before the conversion: a box far outside the grid (a scene's gauge region
-  // of 1e300) would overflow int (undefined behaviour); NaN (inf / inf) gives an empty range.
-  const auto cell = [&](double x, int d) {
-    return x > 0.0 ? static_cast<int>(std::min(x, static_cast<double>(g.cells[d]))) : 0;
-  };
-  std::array<int, 3> c0{}, c1{};
-  for (int d = 0; d < 3; ++d) {
-    c0[d] = cell(std::floor((box_lo(d) - g.lower(d)) / h(d)), d);
-    c1[d] = cell(std::ceil((box_hi(d) - g.lower(d)) / h(d)), d);
-  }
-  const auto& ppc = o.particles_per_cell;
-  for (int i = c0[0]; i < c1[0]; ++i)
-    for (int j = c0[1]; j < c1[1]; ++j)
-      for (int k = c0[2]; k < c1[2]; ++k)
-        for (int a = 0; a < ppc[0]; ++a)
-          for (int b = 0; b < ppc[1]; ++b)
-            for (int e = 0; e < ppc[2]; ++e) {
-              const Vec3 x =
-                  g.lower + h.cwiseProduct(Vec3(i + (a + 0.5) / ppc[0], j + (b + 0.5) / ppc[1],
-                                                k + (e + 0.5) / ppc[2]));
-              if (!inside(o.geometry, x)) continue;
-              const bool claimed = std::any_of(
-                  scene.objects.begin(), scene.objects.begin() + oi,
-                  [&](const SceneObject& earlier) { return inside(earlier.geometry, x); });
-              if (claimed) continue;
-              if constexpr (std::is_same_v<std::invoke_result_t<Add&, const Vec3&, int>, bool>) {
-                if (!add(x, i)) return;
-              } else {
-                add(x, i);
-              }
-            }
-}
 
 // Appends object oi's seed points in the cells the box [lo, hi] overlaps for which keep(x) holds
 // to p, at rest in their initial state. keep sees every point, in seed order.
@@ -239,25 +181,6 @@ Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
     for (const std::size_t column : counts[oi]) object_start += column;
   }
   return p;
-}
-
-std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3& lower,
-                              const Vec3& upper) {
-  std::size_t n = 0;
-  for_each_seed_point(scene, object, lower, upper,
-                      [&](const Vec3& x, int) { n += in_box(x, lower, upper) ? 1 : 0; });
-  return n;
-}
-
-bool seeds_a_point(const Scene& scene, std::size_t object) {
-  // Stops at the first point: a body the run will seed costs a few cells, not its whole walk.
-  bool found = false;
-  const auto [lo, hi] = bounds(scene.objects[object].geometry);
-  for_each_seed_point(scene, object, lo, hi, [&](const Vec3&, int) {
-    found = true;
-    return false;
-  });
-  return found;
 }
 
 }  // namespace impact::mpm

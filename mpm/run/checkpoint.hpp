@@ -19,12 +19,11 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <istream>
-#include <ostream>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "mpm/output/checkpoint_stream.hpp"
 
 namespace impact::mpm {
 
@@ -38,75 +37,6 @@ inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 /// Rank r's checkpoint in DIR: checkpoint.bin for rank 0 (and a one-rank run),
 /// checkpoint.rank<r>.bin for the others.
 std::filesystem::path checkpoint_file(const std::filesystem::path& dir, int rank);
-
-/// 64-bit FNV-1a of a byte string (scene.json fingerprint, checkpoint trailer).
-inline constexpr std::uint64_t kHashSeed = 0xcbf29ce484222325ULL;  ///< FNV-1a offset basis
-std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = kHashSeed);
-
-/// Writes values and tagged arrays, hashing every byte.
-class CheckpointWriter {
- public:
-  explicit CheckpointWriter(std::ostream& out) : out_(out) {}
-  void bytes(const void* data, std::size_t size);
-  template <class T>
-  void value(const T& v) {
-    bytes(&v, sizeof v);
-  }
-  void text(const std::string& s);
-  /// Tag, count, element size, elements (T trivially copyable, written as stored).
-  template <class T>
-  void array(const std::string& tag, const std::vector<T>& v) {
-    section(tag, v.size(), sizeof(T));
-    bytes(v.data(), v.size() * sizeof(T));
-  }
-  void section(const std::string& tag, std::uint64_t count, std::uint32_t element_size);
-  /// The trailer: the hash of everything written so far.
-  void finish();
-
- private:
-  std::ostream& out_;
-  std::uint64_t hash_ = kHashSeed;
-};
-
-/// Reads what CheckpointWriter wrote; throws CheckpointError naming the file and the section.
-class CheckpointReader {
- public:
-  CheckpointReader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
-  void bytes(void* data, std::size_t size);
-  template <class T>
-  T value() {
-    T v;
-    bytes(&v, sizeof v);
-    return v;
-  }
-  std::string text();
-  /// Reads a section written by array(): the tag must match and the element size be sizeof(T);
-  /// `expected_count` (if not npos) must match too.
-  template <class T>
-  void array(const std::string& tag, std::vector<T>& v, std::uint64_t expected_count = npos) {
-    v.resize(section(tag, sizeof(T), expected_count));
-    bytes(v.data(), v.size() * sizeof(T));
-  }
-  std::uint64_t section(const std::string& tag, std::uint32_t element_size,
-                        std::uint64_t expected_count = npos);
-  /// Checks the trailer hash and that nothing follows it.
-  void finish();
-  [[noreturn]] void fail(const std::string& why) const;
-  const std::string& file() const { return file_; }
-
-  static constexpr std::uint64_t npos = ~std::uint64_t(0);
-
- private:
-  std::istream& in_;
-  std::string file_;
-  std::uint64_t hash_ = kHashSeed;
-};
-
-/// A checkpoint that cannot be used (missing, another version, corrupt, another scene).
-class CheckpointError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// The header: what a restart checks before building anything.
 struct CheckpointHeader {

@@ -7,7 +7,7 @@
 
 #include <chrono>
 
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm {
 

@@ -1,3 +1,4 @@
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/run.hpp"
 
 #include <omp.h>
@@ -18,7 +19,7 @@
 #include "mpm/run/run_outputs.hpp"
 #include "mpm/run/run_status.hpp"
 #include "mpm/run/summary.hpp"
-#include "mpm/step/parallel.hpp"
+#include "mpm/threads/threads.hpp"
 #include "support/atomic_file.hpp"
 
 namespace impact::mpm {

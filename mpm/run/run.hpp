@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm {
 

@@ -10,7 +10,7 @@
 #include "mpm/output/output.hpp"
 #include "mpm/output/particle_paths.hpp"
 #include "mpm/run/checkpoint.hpp"
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm {
 

@@ -6,7 +6,7 @@
 
 #include "mpm/output/observables.hpp"
 #include "mpm/output/particle_paths.hpp"
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm {
 

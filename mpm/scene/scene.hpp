@@ -1,6 +1,6 @@
-// A scene file (data/scenes/*.json, every key in docs/scenes.md) read into a validated Scene: the
-// only place that touches the scene JSON. `extends` names a base scene; the file's own content is
-// applied over it as an RFC 7396 JSON merge patch, recursively. Errors name file + key path.
+// What a scene is (data/scenes/*.json, every key in docs/scenes.md): grid, time, solver, physics,
+// outputs, materials and objects, as validated values. mpm/input/scene_reader.hpp reads a file
+// into one; nothing else touches the scene JSON.
 #pragma once
 
 #include <algorithm>
@@ -221,15 +221,6 @@ struct Scene {
   int parent_field(int material) const;
   int companion_field(int material) const;
 };
-
-/// Reads `file`, resolves `extends` chains (relative paths are relative to the file naming them;
-/// a missing base or a cycle is an InputError naming the file that extends and the chain), then
-/// validates. Throws InputError with every problem; warnings go to Scene::warnings.
-Scene load_scene(const std::string& file);
-/// The merged document only (extends resolved, material file paths made relative to the cwd).
-Json load_scene_document(const std::string& file);
-/// Validates an already-merged document; `file` is used in messages.
-Scene read_scene(const Json& document, const std::string& file);
 
 /// The VTU point-data fields known to the writer.
 inline const std::vector<std::string>& known_output_fields() {

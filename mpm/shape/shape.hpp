@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "mpm/particles/particles.hpp"
+#include "mpm/scene/seed_points.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "mpm/shape/linear.hpp"
 

@@ -7,7 +7,8 @@
 #include "models/thermal/adiabatic_heating.hpp"
 
 #include "mpm/parallel/halo_exchange.hpp"
-#include "mpm/step/parallel.hpp"
+#include "mpm/step/step.hpp"
+#include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
 

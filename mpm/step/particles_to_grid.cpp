@@ -1,12 +1,13 @@
 // Stencils once per step, and particles to grid, Sulsky, Chen & Schreyer (1994) eqs. 20-22 (mass,
-// momentum, internal force). The threads scatter into one grid buffer, one colour of slabs at a
+// momentum, internal force). The threads scatter into one grid buffer, one colour of bands at a
 // time (step/scatter_order.hpp: the same bits on any thread count). With active blocks the
 // scatter also marks the blocks the stencils touch; Grid::activate turns the marks into the
 // step's node list.
 #include <tuple>
 
 #include "mpm/parallel/halo_exchange.hpp"
-#include "mpm/step/parallel.hpp"
+#include "mpm/step/step.hpp"
+#include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
 

@@ -1,15 +1,15 @@
 // The order of the scatters (particles to grid, the MUSL re-map): the particles grouped by the
-// slab of kSlab node planes in x that their stencil starts in, and the slabs in two colours, even
-// and odd. A stencil reaches at most into the next slab, so the slabs of one colour, a slab apart,
+// band of kBand node planes in x that their stencil starts in, and the bands in two colours, even
+// and odd. A stencil reaches at most into the next band, so the bands of one colour, a band apart,
 // write disjoint nodes: the threads scatter one colour at a time into one grid buffer, with no
 // per-thread copies of the grid and no reduction.
 //
 // Each node's sum is then taken in one fixed order whatever the thread count and schedule: the
-// even slab's particles, then the odd one's, each by particle index. The scatters give the same
+// even band's particles, then the odd one's, each by particle index. The scatters give the same
 // bits on 1 or N threads (docs/mpm.md#threads-and-determinism). The grouping is a counting sort of
 // indices each step (the particle arrays are not moved, so a particle keeps its index in output,
-// faults and restarts). Why slabs in x: the seeded order is x-major (and the particles keep it),
-// so a slab's particles are long runs of the arrays and its nodes are swept plane by plane as in
+// faults and restarts). Why bands in x: the seeded order is x-major (and the particles keep it),
+// so a band's particles are long runs of the arrays and its nodes are swept plane by plane as in
 // index order; smaller tiles (4 x 4 nodes in x and y) re-load their halo nodes in another colour's
 // pass and cost 9 % of a GIMP step (docs/performance.md).
 #pragma once
@@ -23,31 +23,31 @@
 namespace impact::mpm {
 
 struct ScatterOrder {
-  /// Node planes per slab: more than the stencil's reach (2 nodes beyond its base), and whole
-  /// blocks of the active-block marks, so that the slabs of one colour mark disjoint blocks too.
-  static constexpr int kSlab = 8;
-  static_assert(kSlab >= 3 && kSlab % Grid::kBlock == 0);
+  /// Node planes per band: more than the stencil's reach (2 nodes beyond its base), and whole
+  /// blocks of the active-block marks, so that the bands of one colour mark disjoint blocks too.
+  static constexpr int kBand = 8;
+  static_assert(kBand >= 3 && kBand % Grid::kBlock == 0);
 
-  std::vector<int> particles;               ///< indices grouped by slab, ascending within one
-  std::vector<int> start;                   ///< slab s holds particles[start[s], start[s + 1])
-  std::array<std::vector<int>, 2> colours;  ///< the non-empty even and odd slabs, ascending
-  std::vector<int> slab_of, next;           ///< scratch: each particle's slab, fill positions
+  std::vector<int> particles;               ///< indices grouped by band, ascending within one
+  std::vector<int> start;                   ///< band s holds particles[start[s], start[s + 1])
+  std::array<std::vector<int>, 2> colours;  ///< the non-empty even and odd bands, ascending
+  std::vector<int> band_of, next;           ///< scratch: each particle's band, fill positions
 };
 
-/// Groups the particles by the slab of their stencil's base node (every step, after the stencils).
+/// Groups the particles by the band of their stencil's base node (every step, after the stencils).
 template <int N>
 void order_for_scatter(const std::vector<Stencil<N>>& S, const Grid& G, ScatterOrder& order);
 
-/// body(p) for every particle, one colour after the other, the slabs of a colour shared among the
+/// body(p) for every particle, one colour after the other, the bands of a colour shared among the
 /// threads (called inside no parallel region).
 template <class Body>
 void scatter_by_colour(const ScatterOrder& order, int threads, Body&& body) {
 #pragma omp parallel num_threads(threads)
-  for (const std::vector<int>& slabs : order.colours) {
-    const int n = static_cast<int>(slabs.size());
+  for (const std::vector<int>& bands : order.colours) {
+    const int n = static_cast<int>(bands.size());
 #pragma omp for schedule(dynamic, 1)
     for (int i = 0; i < n; ++i) {
-      const int s = slabs[i];
+      const int s = bands[i];
       for (int k = order.start[s]; k < order.start[s + 1]; ++k) body(order.particles[k]);
     }  // the loop's barrier: a colour is complete before the next starts
   }

@@ -1,7 +1,7 @@
 // The phases of one explicit MPM step, each a free function templated on the shape (a shape of
-// the catalogue, mpm/shape/shape.hpp); advance() in mpm/solver.cpp strings them together on one
-// screen.
-// Notation: p particles, I nodes, S_Ip weights, grad S_Ip gradients (at the start-of-step x_p).
+// the catalogue, mpm/shape/shape.hpp); advance() in mpm/simulation/advance.hpp strings them
+// together on one screen. Notation: p particles, I nodes, S_Ip weights, grad S_Ip gradients (at the
+// start-of-step x_p).
 #pragma once
 
 #include <optional>

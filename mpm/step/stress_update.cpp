@@ -15,7 +15,8 @@
 #include "models/kinematics/deformation_gradient.hpp"
 #include "models/material/update_batch.hpp"
 #include "models/thermal/adiabatic_heating.hpp"
-#include "mpm/step/parallel.hpp"
+#include "mpm/step/step.hpp"
+#include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"

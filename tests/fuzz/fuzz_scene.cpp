@@ -2,6 +2,7 @@
 // material files resolve inside the scratch mirror, where the input sits beside links to every
 // repository scene (so "extends": "case01.json" and "../../materials/al6061_t6.json" work).
 // Property: the loader returns a scene or throws InputError (tests/fuzz/fuzz_support.hpp).
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/scene/scene.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/scene/scene.hpp"
 #include "pointdriver/driver/driver.hpp"

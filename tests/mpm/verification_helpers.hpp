@@ -4,8 +4,9 @@
 
 #include <string>
 
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/run.hpp"
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm::test {
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "models/core/input.hpp"
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/scene/scene.hpp"
 
 namespace impact::testing {

@@ -5,7 +5,7 @@
 
 `mpm run` on the verification Taylor rod (House H8, 3 cells per radius, the material's failure
 stack as shipped but with stability_check.outcome = report) for 3 us, with a snapshot at the end.
-From the last snapshot (read with mpm/study/vtu.py) the failed particles are counted per
+From the last snapshot (read with campaigns/study/vtu.py) the failed particles are counted per
 failure_cause code (1 melting, 2 tepla, 3 drucker, 4 becker), failed with a tensile mean stress
 (failed_in_tension), and flagged by a stability check without failing (instability bits: 1
 Drucker, 2 Becker). Every count must equal summary.json's failed_by_cause entry, the causes must

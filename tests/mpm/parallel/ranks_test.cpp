@@ -30,10 +30,11 @@
 #include <cmath>
 #include <limits>
 
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/halo_exchange.hpp"
 #include "mpm/parallel/split_search.hpp"
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

@@ -11,7 +11,7 @@ run: the rigid translation (data/scenes/verification/rigid_translation.json: a 2
   15.12 J and the momentum m v = (0.648, -0.432, 0.216) kg m/s (m = 2700 kg/m^3 x (0.02 m)^3 =
   0.0216 kg) to 1e-9 relative, the strain energy below 1e-9 J (the cube translates unstrained).
   particles.pvd: well-formed XML naming one snapshot per history row at the history's times; each
-  .vtu read back (mpm/study/vtu.py, its byte counts checked against NumberOfPoints) holds the
+  .vtu read back (campaigns/study/vtu.py, its byte counts checked against NumberOfPoints) holds the
   8^3 = 512 particles, each at its seed position (sub-cell centres) plus v t to 1e-12 m and moving
   at v.
 check: `mpm check` on Case 1 of the sphere-cylinder. Per object the particles are counted here by

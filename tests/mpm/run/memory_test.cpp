@@ -15,6 +15,7 @@
 #include <filesystem>
 
 #include "../verification_helpers.hpp"
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/memory.hpp"
 
 using namespace impact;

@@ -27,6 +27,7 @@
 #include <sstream>
 
 #include "../verification_helpers.hpp"
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/checkpoint.hpp"
 #include "support/mts_illustrative.hpp"
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Richardson extrapolation of mpm/study/accuracy_study.py against a closed form.
+"""Richardson extrapolation of campaigns/study/accuracy_study.py against a closed form.
 
 A sequence f(h) = f_inf + C h^p (h = 1 / level) has, on the equal-ratio levels 1, 1.5, 2.25,
 the observed order p and the limit f_inf exactly; a finer run (level 3) on the same curve must
@@ -11,7 +11,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
-                                "mpm", "study"))
+                                "campaigns", "study"))
 import accuracy_study as study  # noqa: E402
 
 failures = []

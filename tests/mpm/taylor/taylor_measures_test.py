@@ -3,9 +3,9 @@
 
   taylor_measures_test.py MPM WORK_DIR
 
-For three House shots at 3, 4 and 6 cells per radius, mpm/taylor/taylor.py writes the scene and
-`mpm run` seeds it (the t = 0 snapshot, read with mpm/study/vtu.py); the measures of
-mpm/taylor/taylor.py (final length Lf, impact-face diameter Dm) applied to the seeded particles
+For three House shots at 3, 4 and 6 cells per radius, campaigns/taylor/taylor.py writes the scene and
+`mpm run` seeds it (the t = 0 snapshot, read with campaigns/study/vtu.py); the measures of
+campaigns/taylor/taylor.py (final length Lf, impact-face diameter Dm) applied to the seeded particles
 must give L0 and D0 to 1e-12 relative: the seed offsets are what makes them exact at t = 0 (the
 plain half-spacing rule reads a 6-cells-per-radius rod 3 % too thick). Also checked: the
 profile's radius is D0/2 all along, and a rod lifted 2 mm off the anvil (a rebound from a `wall`
@@ -21,8 +21,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "mpm", "taylor"))
-sys.path.insert(0, os.path.join(ROOT, "mpm", "study"))
+sys.path.insert(0, os.path.join(ROOT, "campaigns", "taylor"))
+sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
 import taylor  # noqa: E402
 import vtu  # noqa: E402
 

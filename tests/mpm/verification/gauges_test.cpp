@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "../verification_helpers.hpp"
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/output/observables.hpp"
 #include "support/scene_error.hpp"
 

@@ -23,7 +23,8 @@
 #include <chrono>
 #include <sstream>
 
-#include "mpm/solver.hpp"
+#include "mpm/input/scene_reader.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

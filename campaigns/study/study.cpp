@@ -1,7 +1,8 @@
 // `mpm study` (docs/mpm.md#table-2-study-mpm-study): the cases run one after another, each with
 // all the threads it is given (the machine has few cores; running cases side by side would only
 // share them), then study_plot.py draws the figures and writes the table.
-#include "mpm/study/study.hpp"
+#include "mpm/input/scene_reader.hpp"
+#include "campaigns/study/study.hpp"
 
 #include <omp.h>
 
@@ -15,7 +16,7 @@
 
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
-#include "mpm/solver.hpp"
+#include "mpm/simulation/simulation.hpp"
 #include "support/atomic_file.hpp"
 #include "support/command_line.hpp"
 #include "support/python_launcher.hpp"
@@ -31,7 +32,7 @@ namespace fs = std::filesystem;
 /// (support/shipped_file.hpp).
 std::string plot_script_path() {
   if (const char* env = std::getenv("MPM_STUDY_PLOT_SCRIPT"); env && *env) return env;
-  return shipped_file("mpm/study/study_plot.py").string();
+  return shipped_file("campaigns/study/study_plot.py").string();
 }
 
 /// Runs study_plot.py on OUT. Never changes the study's result: a missing interpreter or a failing
@@ -42,7 +43,7 @@ void run_plot(const fs::path& out, bool figures) {
       "python3 " + script + " " + out.string() + (figures ? "" : " --no-figures");
   if (!fs::is_regular_file(script)) {
     std::cerr << "mpm study: warning: plotting script not found: " << script
-              << " (set MPM_STUDY_PLOT_SCRIPT to mpm/study/study_plot.py); no table or figures\n";
+              << " (set MPM_STUDY_PLOT_SCRIPT to campaigns/study/study_plot.py); no table or figures\n";
     return;
   }
   const PythonInterpreter python = find_python();

@@ -1,7 +1,8 @@
 // The solver: a Simulation owns particles, grid and ledger and advances them one explicit step at
-// a time (advance() in solver.cpp is the whole step on one screen); mpm/run/run.hpp drives it to
-// the end time with outputs, checkpoints and failure handling. No global state: everything hangs
-// off the Scene.
+// a time (advance() in mpm/simulation/advance.hpp is the whole step on one screen; step() books it
+// and asks the ranks, mpm/parallel/ranks.hpp, for what several ranks must agree on);
+// mpm/run/run.hpp drives it to the end time with outputs, checkpoints and failure handling. No
+// global state: everything hangs off the Scene.
 #pragma once
 
 #include <optional>
@@ -14,10 +15,12 @@
 #include "mpm/parallel/box_decomposition.hpp"
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/halo_exchange.hpp"
-#include "mpm/parallel/split_search.hpp"
+#include "mpm/parallel/ranks.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/scene/scene.hpp"
 #include "mpm/shape/shape.hpp"
+#include "mpm/simulation/fault_injection.hpp"
+#include "mpm/simulation/step_totals.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
@@ -30,50 +33,6 @@ class SolverFailure : public std::runtime_error {
 
 class CheckpointWriter;
 class CheckpointReader;
-
-/// A fault planted on purpose (mpm run --inject-fault KIND:STEP[:PARTICLE], a developer option;
-/// docs/mpm.md#fault-injection): shows that the detection and the clean stop work.
-struct FaultInjection {
-  enum class Kind {
-    nan,           ///< the stress PARTICLE's update returns in step STEP is replaced by NaN
-    nan_velocity,  ///< PARTICLE's velocity is set to NaN at the start of step STEP
-    outside,       ///< PARTICLE is moved one cell beyond the grid's x+ face at the start of STEP
-    jacobian,      ///< PARTICLE's F gets det F < 0 (first column negated) at the start of STEP
-    sigterm,       ///< SIGTERM is raised after step STEP (mpm run's handler: checkpoint, stop)
-    sigint,        ///< SIGINT likewise
-  };
-  Kind kind = Kind::nan;
-  long step = 1;
-  std::size_t particle = 0;
-};
-/// Parses "nan:STEP:PARTICLE", "nan_velocity:..", "outside:..", "jacobian:..", "sigterm:STEP",
-/// "sigint:STEP" (STEP >= 1); nullopt when malformed.
-std::optional<FaultInjection> parse_fault_injection(const std::string& text);
-
-/// Wall time of each phase of the last step [s] (omp_get_wtime; for the benchmark's profile).
-struct PhaseTimes {
-  double particles_to_grid = 0, grid_update = 0, grid_to_particles = 0, remap = 0, stress = 0;
-
-  /// Each phase with its name, in step order (for summaries).
-  static constexpr std::pair<const char*, double PhaseTimes::*> kPhases[] = {
-      {"particles_to_grid", &PhaseTimes::particles_to_grid},
-      {"grid_update", &PhaseTimes::grid_update},
-      {"grid_to_particles", &PhaseTimes::grid_to_particles},
-      {"remap", &PhaseTimes::remap},
-      {"stress", &PhaseTimes::stress}};
-  PhaseTimes& operator+=(const PhaseTimes& o) {
-    for (const auto& [name, phase] : kPhases) this->*phase += o.*phase;
-    return *this;
-  }
-};
-
-/// One step's totals, for the ledger and for tests.
-struct StepTotals {
-  GridUpdate grid;
-  ParticleTotals particles;
-  StressTotals stress;
-  PhaseTimes seconds;
-};
 
 class Simulation {
  public:
@@ -108,10 +67,10 @@ class Simulation {
   bool finished() const { return time_ >= scene_.time.max_time * (1.0 - 1e-12); }
   int threads() const { return grid_.threads(); }
   /// This process's rank and the boxes (one rank: rank 0 and one box).
-  int rank() const { return comm_ ? comm_->rank() : 0; }
-  int ranks() const { return comm_ ? comm_->size() : 1; }
+  int rank() const { return ranks_.rank(); }
+  int ranks() const { return ranks_.size(); }
   /// The ranks this run is on: null on one rank.
-  const Communicator* communicator() const { return comm_ && comm_->size() > 1 ? comm_ : nullptr; }
+  const Communicator* communicator() const { return ranks_.communicator(); }
   const BoxDecomposition& boxes() const { return boxes_; }
   /// Particles that moved to another rank in the last step.
   std::size_t migrated() const { return migrated_; }
@@ -145,23 +104,10 @@ class Simulation {
   void resize_particles(std::size_t n);
 
  private:
-  /// The seed points per cell column of each object (ids) and per cell along each axis
-  /// (balance): what several ranks seed their boxes from.
-  struct SeedCensus {
-    SeedCounts columns;
-    SeedAxisCounts per_axis;
-    /// This rank's block's points per cell, for the "least_loaded" search (else empty).
-    std::vector<CellCount> cells;
-  };
-  static SeedCensus census(const Scene& scene, const Communicator& comm);
-  /// The boxes of the ranks (solver.ranks_per_axis), balanced by the census.
-  static BoxDecomposition split(const Scene& scene, const SeedCensus& census,
-                                const Communicator& comm);
-
   Scene scene_;
-  const Communicator* comm_ = nullptr;  ///< null on one rank
-  SeedCensus census_;                   ///< while seeding (several ranks), then emptied
-  BoxDecomposition boxes_;              ///< before the particles and the grid: both follow it
+  Ranks ranks_;               ///< what several ranks agree on; the identity on one rank
+  Ranks::SeedCensus census_;  ///< while seeding (several ranks), then emptied
+  BoxDecomposition boxes_;    ///< before the particles and the grid: both follow it
   Particles particles_;
   Grid grid_;
   AnyShape shape_;
@@ -176,27 +122,28 @@ class Simulation {
   } sinks_;
   long failed_ = 0, converted_ = 0, faulted_ = 0, removed_ = 0;
   std::vector<FaultInjection> injections_;
-  /// The particle loops' start-of-step check (positions inside the grid, velocities finite).
-  void check_particles() const;
-  /// Throws SolverFailure on every rank when any rank has a failure message: the lowest such
-  /// rank's, which names the rank (one rank: throws `message` if any).
-  void agree_on_failure(const std::optional<std::string>& message) const;
-  /// Sums (and maxima) of a step's totals over the ranks.
-  void reduce(StepTotals& t) const;
   std::optional<HaloExchange> halo_;
   std::size_t migrated_ = 0;
   long rebalances_ = 0;
-  /// The nodes this rank's grid stores: its box's cells [c0, c1) per axis and the halo its
-  /// particles' stencils, the shared-layer sums and the contact gradients reach,
-  /// [c0 - kHaloPlanes, c1 + kHaloPlanes] (the whole grid on one rank).
-  std::optional<NodeBox> stored_box() const;
+
+  /// The particle loops' start-of-step check: the first particle outside the grid or with a
+  /// velocity that is not finite, described (nullopt: none).
+  std::optional<std::string> particle_outside_or_not_finite() const;
+  /// The stable dt of the coming step, landing on max_time; a diagnosis naming the particle with
+  /// the fastest signal when it falls below time.min_dt (every rank gets the same dt).
+  double checked_dt() const;
+  /// The step itself (advance() with this Simulation's shape); `failure` set when a particle
+  /// failed.
+  StepTotals advance_step(double dt, std::optional<Failure>& failure);
+  /// Books the step's totals: time, ledger row and sinks, outflow, failure counters.
+  void book(double dt);
+  /// Throws SolverFailure with the message every rank agreed on, if any.
+  void stop_if(const std::optional<std::string>& message) const;
   /// Builds this rank's grid for the current boxes (after a re-balance or a restart), keeping
-  /// the settings the constructor gave it; sets the owned nodes (own_box).
+  /// the settings the constructor gave it; sets the owned nodes.
   void rebuild_grid();
-  /// This rank's nodes for the ledger (Grid::set_owned) from boxes_.
-  void own_box();
-  /// New boxes balanced by the current particle counts when the largest rank holds more than
-  /// solver.rebalance_above times the mean, and the particles moved to them.
+  /// New boxes when the ranks' particle counts drifted (solver.rebalance_above), and the
+  /// particles moved to them.
   void rebalance_if_needed();
   /// Applies the injections of the coming step.
   void apply_injections();

@@ -175,7 +175,7 @@ def box_table(rows):
 
 
 def write_tables(out):
-    lines = ["<!-- written by mpm/benchmark/plot_benchmark.py from the CSVs beside it -->", ""]
+    lines = ["<!-- written by campaigns/benchmark/plot_benchmark.py from the CSVs beside it -->", ""]
     for name, table in (("scaling", scaling_table), ("features", features_table),
                         ("box", box_table)):
         rows = read(os.path.join(out, name + ".csv"))

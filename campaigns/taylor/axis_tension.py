@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Peak hydrostatic tension on the axis of a Taylor rod in the first microseconds, by resolution.
 
-  python3 mpm/taylor/axis_tension.py [--shot H8] [--cells-per-radius 3,4,6,8] [--mpm build/bin/mpm]
+  python3 campaigns/taylor/axis_tension.py [--shot H8] [--cells-per-radius 3,4,6,8] [--mpm build/bin/mpm]
 
-Runs the shot's quarter-model scene (mpm/taylor/taylor.py, failure off) to 3 us with a snapshot
+Runs the shot's quarter-model scene (campaigns/taylor/taylor.py, failure off) to 3 us with a snapshot
 every 50 ns and prints, over the core particles (initial radius <= R0/2), the largest tensile and
 compressive mean stress seen. The release waves from the free surface converge on the axis behind
 the impact face and put it in tension (docs/taylor.md, "What fails in the rod"): this shows whether

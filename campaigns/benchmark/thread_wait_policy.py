@@ -2,7 +2,7 @@
 """OpenMP threads against a busy core: the wall time of one run at 1 and all threads under each
 OpenMP wait policy, on an idle machine and with one core held by another process.
 
-  python3 mpm/benchmark/thread_wait_policy.py build/bin/mpm [--scene SCENE] [--repeats N]
+  python3 campaigns/benchmark/thread_wait_policy.py build/bin/mpm [--scene SCENE] [--repeats N]
 
 Policies: `passive` (mpm's default since issue 38: support/omp_wait_policy.hpp), `active` and
 libgomp's own default (OMP_WAIT_POLICY set to an empty string, which mpm keeps and libgomp reads as

@@ -1,5 +1,5 @@
 // `mpm plot RUN`: one run's energy books, energy error, momentum and observables, drawn by
-// mpm/plot/run_plot.py (python3 + matplotlib) from what `mpm run` wrote into RUN.
+// campaigns/plot/run_plot.py (python3 + matplotlib) from what `mpm run` wrote into RUN.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Helpers shared by the particle loops: the per-thread partial sums' bound (the loops partition
+// The OpenMP threads of the particle loops: the per-thread partial sums' bound (the loops partition
 // [0, n) statically, so their sums are deterministic for a given thread count) and the
 // first-failure merge.
 #pragma once
@@ -7,8 +7,6 @@
 
 #include <optional>
 
-#include "mpm/step/step.hpp"
-
 namespace impact::mpm {
 
 /// Per-thread partial sums live in fixed arrays of this size (no allocation in a step); the
@@ -16,6 +14,7 @@ namespace impact::mpm {
 inline constexpr int kMaxThreads = 256;
 
 /// Keeps the failure with the lowest particle index (deterministic whichever thread saw it).
+template <class Failure>
 inline void merge_failure(std::optional<Failure>& into, const std::optional<Failure>& f) {
   if (f && (!into || f->particle < into->particle)) into = f;
 }

@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """Converts the House et al. (1995) Taylor-impact table into the project's SI data file.
 
-  python3 mpm/taylor/convert_house1995.py SOURCE_CSV data/experiments/taylor/house1995.csv
+  python3 campaigns/taylor/convert_house1995.py SOURCE_CSV data/experiments/taylor/house1995.csv
 
 SOURCE_CSV: the 23 shots of 6061-T6 rods as transcribed in B. Banerjee's public collection of
 high-rate test data (HighRateExptData, TaylorData; MIT licence, copyright 2017 Biswajit Banerjee),
 columns shot, L0_over_D0, D0_mm, L0_mm, U0_m_per_s, T0_K, rho0_kg_per_m3, Lf_mm, Xf_mm, Dm_mm.
 The output has the same shots with lengths in metres (SI) and unit-bearing headers; nothing else is
-changed. `mpm/taylor/taylor.py` (./run.sh taylor) reads it.
+changed. `campaigns/taylor/taylor.py` (./run.sh taylor) reads it.
 """
 
 import csv

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Tables and figures of a Taylor-impact campaign (mpm/taylor/taylor.py OUT).
+"""Tables and figures of a Taylor-impact campaign (campaigns/taylor/taylor.py OUT).
 
-  python3 mpm/taylor/taylor_report.py OUT
+  python3 campaigns/taylor/taylor_report.py OUT
 
 Reads OUT/results.csv and OUT/profiles/, writes OUT/results.md and the figures
 OUT/lf_dm_vs_speed.png, OUT/profiles.png, OUT/failure_causes_<set>_<failure>.png (failure modes
@@ -277,7 +277,7 @@ def figures(out, rows):
 def report(out):
     rows = load(out)
     lines = ["# Taylor impact campaign", "",
-             "Written by mpm/taylor/taylor_report.py from results.csv (errors: simulation / "
+             "Written by campaigns/taylor/taylor_report.py from results.csv (errors: simulation / "
              "experiment - 1; lengths in mm in the tables, SI in results.csv).", ""]
     anvils = sorted({r.get("anvil") or "mirror" for r in rows})
     lines += [f"Anvil: {', '.join(anvils)} (mirror: the symmetric x- face, rigid and frictionless; "

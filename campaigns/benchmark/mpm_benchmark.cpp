@@ -28,7 +28,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/solver.hpp"
+#include "mpm/input/scene_reader.hpp"
+#include "mpm/simulation/simulation.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

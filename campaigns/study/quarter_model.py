@@ -148,7 +148,7 @@ def main():
 
     with open(os.path.join(a.out, "quarter.md"), "w") as f:
         f.write(f"Centred impact, {a.max_time * 1e6:g} us, {a.threads} threads "
-                f"(`mpm/study/quarter_model.py`).\n\n")
+                f"(`campaigns/study/quarter_model.py`).\n\n")
         f.write("| run | particles | steps | wall time [s] |\n|---|---:|---:|---:|\n")
         for name, (p, s, t) in cost.items():
             f.write(f"| {name} | {p} | {s} | {t:.1f} |\n")

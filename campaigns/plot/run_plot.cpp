@@ -1,4 +1,4 @@
-#include "mpm/plot/run_plot.hpp"
+#include "campaigns/plot/run_plot.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,7 +14,7 @@ namespace {
 
 std::string plot_script_path() {
   if (const char* env = std::getenv("MPM_PLOT_SCRIPT"); env && *env) return env;
-  return shipped_file("mpm/plot/run_plot.py").string();
+  return shipped_file("campaigns/plot/run_plot.py").string();
 }
 
 constexpr const char* kInstall = "apt-get install -y python3 python3-matplotlib";
@@ -34,7 +34,7 @@ int plot_run(const std::string& run, const std::string& figure) {
   const std::string script = plot_script_path();
   if (!fs::is_regular_file(script, ec)) {
     std::cerr << "mpm plot: plotting script not found: " << script
-              << " (set MPM_PLOT_SCRIPT to mpm/plot/run_plot.py)\n";
+              << " (set MPM_PLOT_SCRIPT to campaigns/plot/run_plot.py)\n";
     return 1;
   }
   const PythonInterpreter python = find_python();

@@ -3,7 +3,7 @@ multi-rank run), goes to the last snapshot (or --time T [s]), draws the particle
 Gaussian splats coloured by plastic strain (or --field NAME), clipped to the half y >= 0 so the
 crater and the cylinder's inside show, and writes a PNG.
 
-  pvpython mpm/plot/paraview_snapshot.py DIR --out FIG.png [--field plastic_strain] [--time T]
+  pvpython campaigns/plot/paraview_snapshot.py DIR --out FIG.png [--field plastic_strain] [--time T]
   xvfb-run -a pvpython ...   (without a display)
 
 Run by `./run.sh paraview` on the main job's output (README.md, docs/mpm.md#output). Every field is SI

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Taylor impact of 6061-T6 rods (House et al. 1995): predicted shapes against the experiments.
 
-  python3 mpm/taylor/taylor.py OUT [--sets table1,fit_all] [--failure off]
+  python3 campaigns/taylor/taylor.py OUT [--sets table1,fit_all] [--failure off]
                               [--cells-per-radius 4] [--shots H1,H8] [--anvil mirror]
                               [--jobs J] [--threads T]
                               [--mpm build/bin/mpm] [--pointdriver build/bin/pointdriver]

@@ -1,0 +1,85 @@
+// The seed points of a scene: the ppc^3 sub-cell centres of the grid cells inside each object's
+// geometry and not inside an earlier object (the report's seeding). What a scene is (its bodies
+// and grid) fixes them; mpm/particles/seeding.cpp creates particles at them, and the scene reader
+// counts them to refuse a body that would get none.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#include "mpm/scene/scene.hpp"
+
+namespace impact::mpm {
+
+// Calls add(x, i) for every seed point x of object `oi` in the grid cells that the box [lo, hi]
+// overlaps, i its cell column along x: the ppc^3 sub-cell centres inside the object's geometry and
+// not inside an earlier object, columns outermost. The points of a cell do not depend on the box,
+// so a smaller box gives a subset of the same doubles in the same order. An add that returns bool
+// stops the walk by returning false.
+template <class Add>
+inline void for_each_seed_point(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3& hi,
+                                Add&& add) {
+  const GridSpec& g = scene.grid;
+  const Vec3 h = g.spacing();
+  const SceneObject& o = scene.objects[oi];
+  // Only the cells of the object's bounding box can hold its points: a gauge region that spans a
+  // fine grid (or 1e300) costs what seeding the object costs, not a walk over the whole box.
+  const auto [blo, bhi] = bounds(o.geometry);
+  const Vec3 box_lo = lo.cwiseMax(blo);
+  const Vec3 box_hi = hi.cwiseMin(bhi);
+  // Clamped in double before the conversion: a box far outside the grid (a scene's gauge region
+  // of 1e300) would overflow int (undefined behaviour); NaN (inf / inf) gives an empty range.
+  const auto cell = [&](double x, int d) {
+    return x > 0.0 ? static_cast<int>(std::min(x, static_cast<double>(g.cells[d]))) : 0;
+  };
+  std::array<int, 3> c0{}, c1{};
+  for (int d = 0; d < 3; ++d) {
+    c0[d] = cell(std::floor((box_lo(d) - g.lower(d)) / h(d)), d);
+    c1[d] = cell(std::ceil((box_hi(d) - g.lower(d)) / h(d)), d);
+  }
+  const auto& ppc = o.particles_per_cell;
+  for (int i = c0[0]; i < c1[0]; ++i)
+    for (int j = c0[1]; j < c1[1]; ++j)
+      for (int k = c0[2]; k < c1[2]; ++k)
+        for (int a = 0; a < ppc[0]; ++a)
+          for (int b = 0; b < ppc[1]; ++b)
+            for (int e = 0; e < ppc[2]; ++e) {
+              const Vec3 x =
+                  g.lower + h.cwiseProduct(Vec3(i + (a + 0.5) / ppc[0], j + (b + 0.5) / ppc[1],
+                                                k + (e + 0.5) / ppc[2]));
+              if (!inside(o.geometry, x)) continue;
+              const bool claimed = std::any_of(
+                  scene.objects.begin(), scene.objects.begin() + oi,
+                  [&](const SceneObject& earlier) { return inside(earlier.geometry, x); });
+              if (claimed) continue;
+              if constexpr (std::is_same_v<std::invoke_result_t<Add&, const Vec3&, int>, bool>) {
+                if (!add(x, i)) return;
+              } else {
+                add(x, i);
+              }
+            }
+}
+
+/// The number of seed points of object `object` (what seed_particles() would create) inside the
+/// closed box [lower, upper]: seeds only the cells the box overlaps (scene validation of the
+/// output gauges).
+std::size_t count_seed_points(const Scene& scene, std::size_t object, const Vec3& lower,
+                              const Vec3& upper);
+
+/// Whether seed_particles() gives object `object` at least one particle (the scene check refuses
+/// a body that would get none); stops at the first point found.
+bool seeds_a_point(const Scene& scene, std::size_t object);
+
+/// x inside the closed box [lower, upper] (the gauges' and the seed count's membership test).
+inline bool in_box(const Vec3& x, const Vec3& lower, const Vec3& upper) {
+  return (x.array() >= lower.array()).all() && (x.array() <= upper.array()).all();
+}
+
+/// Per object: GIMP half-width l_d = 1/(2 ppc_d) in cells (fixed at creation, as in the report).
+std::vector<Vec3> half_widths(const Scene& scene);
+
+}  // namespace impact::mpm

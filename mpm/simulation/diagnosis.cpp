@@ -1,0 +1,119 @@
+#include "mpm/simulation/diagnosis.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "mpm/simulation/simulation.hpp"
+
+namespace impact::mpm {
+
+// The energy-growth check. An unstable explicit step shows itself
+// first as kinetic + strain energy growing far beyond what entered, many steps before a NaN or a
+// particle leaving the grid. Reference: the energy that entered, E_in = E0 + external_work (at
+// least E0); growth = (kinetic + strain + booked sinks + outflow - E_in) / E_ref, equal to
+// energy_error whenever no work enters through gravity. Nothing is checked while no
+// energy has entered (E_ref = 0: a body at rest). Names the fastest particle: where the
+// instability runs away.
+std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t) {
+  const double reference = std::max(ledger.initial_energy(), ledger.energy_input());
+  const double excess = ledger.energy_excess();
+  if (!(reference > 0.0) || !(excess > t.max_energy_growth * reference)) return std::nullopt;
+  std::size_t fastest = 0;
+  double speed2 = -1.0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.v[p].squaredNorm() > speed2) {
+      speed2 = P.v[p].squaredNorm();
+      fastest = p;
+    }
+  }
+  const LedgerRow r = ledger.row();
+  std::ostringstream m;
+  m.precision(6);
+  m << "kinetic + strain energy " << r.total_energy << " J (kinetic " << r.kinetic_energy
+    << " J, strain " << r.strain_energy << " J) against " << ledger.energy_input()
+    << " J that entered (E0 " << ledger.initial_energy() << " J, external work " << r.external_work
+    << " J): growth " << std::showpos << excess / reference << std::noshowpos << " (energy_error "
+    << std::showpos << r.energy_error << std::noshowpos
+    << ") above time.max_energy_growth = " << t.max_energy_growth
+    << "; this particle is the fastest, |v| = " << std::sqrt(speed2)
+    << " m/s: the explicit step is unstable (time.multiplier " << t.multiplier << "; lower it)";
+  return Failure{fastest, "energy", m.str()};
+}
+
+double Simulation::checked_dt() const {
+  const double dt = next_dt();
+  if (!(dt >= scene_.time.min_dt) || !std::isfinite(dt) || !(dt > 0.0)) {
+    // The step collapses when one particle's signal speed c + |v| runs away: name it.
+    std::size_t fastest = 0;
+    double signal = -1.0;
+    for (std::size_t p = 0; p < particles_.size(); ++p) {
+      const double c = particles_.wave_speed[p] + particles_.v[p].norm();
+      if (c > signal || std::isnan(c)) {
+        signal = c;
+        fastest = p;
+        if (std::isnan(c)) break;
+      }
+    }
+    std::ostringstream m;
+    m.precision(6);
+    m << "stable time step " << dt << " s below time.min_dt = " << scene_.time.min_dt
+      << " s; this particle has the fastest signal, c + |v| = " << signal << " m/s";
+    stop_if(ranks_.first_failure(
+        describe(Failure{fastest, "time step", m.str(), std::nullopt}, steps_ + 1, time_)));
+  }
+  return std::min(dt, scene_.time.max_time - time_);  // land on max_time
+}
+
+std::string Simulation::describe(const Failure& f, long step, double time) const {
+  static const Eigen::IOFormat kRow(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+  const Particles& P = particles_;
+  std::ostringstream m;
+  m.precision(9);
+  m << "step " << step << ", time " << time << " s: ";
+  if (ranks_.several()) m << "rank " << ranks_.rank() << ", ";
+  m << "particle " << (f.particle < P.id.size() ? P.id[f.particle] : f.particle);
+  if (f.particle < P.size()) {
+    const std::size_t p = f.particle;
+    const PointState& s = f.state ? *f.state : P.state[p];
+    const Mat3& t = s.stress;
+    m.precision(6);
+    m << " (material " << scene_.materials[P.material[p]].name << ", object "
+      << scene_.objects[P.object[p]].name << ", x = [" << P.x[p].transpose().format(kRow)
+      << "] m, v = [" << P.v[p].transpose().format(kRow) << "] m/s, stress xx yy zz xy yz zx = ["
+      << t(0, 0) << ' ' << t(1, 1) << ' ' << t(2, 2) << ' ' << t(0, 1) << ' ' << t(1, 2) << ' '
+      << t(0, 2) << "] Pa, eps_p = " << s.plastic_strain << ", T = " << s.temperature
+      << " K, J = " << s.F.determinant() << ", damage = " << s.damage << ")";
+  }
+  m << ": " << f.field << ": " << f.message;
+  return m.str();
+}
+
+std::optional<std::string> Simulation::particle_outside_or_not_finite() const {
+  // Every particle inside the grid with a finite velocity: what the stencils and the scatter
+  // need. grid_to_particles checks the same at the end of every step, so in a run this finds
+  // only what came in from outside the step (an injected fault).
+  const Particles& P = particles_;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
+  const Vec3 lower = scene_.grid.lower, upper = scene_.grid.upper;
+  const auto bad = [&](std::ptrdiff_t p) {
+    return !((P.x[p].array() >= lower.array()).all() && (P.x[p].array() <= upper.array()).all() &&
+             P.v[p].allFinite());
+  };
+  bool any = false;
+#pragma omp parallel for schedule(static) reduction(|| : any) num_threads(grid_.threads())
+  for (std::ptrdiff_t p = 0; p < n; ++p) any = any || bad(p);
+  if (!any) return std::nullopt;
+  for (std::ptrdiff_t p = 0; p < n; ++p) {
+    if (!bad(p)) continue;
+    const bool inside =
+        (P.x[p].array() >= lower.array()).all() && (P.x[p].array() <= upper.array()).all();
+    const Failure f = inside ? Failure{std::size_t(p), "velocity",
+                                       "not finite at the start of the step", std::nullopt}
+                             : Failure{std::size_t(p), "position",
+                                       "outside the grid at the start of the step", std::nullopt};
+    return describe(f, steps_ + 1, time_);
+  }
+  return std::nullopt;
+}
+
+}  // namespace impact::mpm

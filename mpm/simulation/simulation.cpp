@@ -1,0 +1,238 @@
+#include "mpm/simulation/simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mpm/simulation/advance.hpp"
+#include "mpm/simulation/diagnosis.hpp"
+#include "mpm/threads/threads.hpp"
+
+namespace impact::mpm {
+
+namespace {
+
+AnyStencils make_stencils(const AnyShape& shape) {
+  return std::visit(
+      [](const auto& s) -> AnyStencils { return Stencils<std::decay_t<decltype(s)>>{}; }, shape);
+}
+
+int thread_count(int requested) {
+  if (requested > 0) omp_set_num_threads(std::min(requested, kMaxThreads));
+  return std::min(omp_get_max_threads(), kMaxThreads);
+}
+
+}  // namespace
+
+Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
+    : scene_(scene),
+      ranks_(comm),
+      // On several ranks every rank counts the seed points per cell (census_), splits the grid
+      // the same way, and seeds and stores only its box: no rank ever holds the whole scene or
+      // the whole grid.
+      census_(ranks_.census(scene)),
+      boxes_(ranks_.split(scene, census_)),
+      particles_(ranks_.seed(scene, boxes_, census_)),
+      grid_(scene.grid, thread_count(threads), scene.field_count(),
+            scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction &&
+                scene.physics.contact.mu > 0.0,
+            ranks_.stored_box(boxes_, scene.grid.cells)),
+      shape_(make_shape(scene)),
+      stencils_(make_stencils(shape_)),
+      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove) {
+  census_ = {};  // needed for seeding only
+  if (ranks_.several()) {
+    grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
+    halo_.emplace(*ranks_.communicator(), boxes_);
+  }
+  const PhysicsSpec& ph = scene_.physics;
+  StressUpdateSettings& st = stress_settings_;
+  bool erosion = false;
+  for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
+    const ElasticPlastic& model = scene_.materials[m].material.model;
+    st.models.push_back(&model);
+    heat_capacity_.push_back({model.params().heating.enabled, model.params().specific_heat});
+    erosion = erosion || model.params().erosion != Erosion::none;
+    if (ph.create_new_particles && scene_.companion_field(int(m)) != scene_.parent_field(int(m))) {
+      st.companion_field.push_back(static_cast<std::uint16_t>(scene_.companion_field(int(m))));
+    }
+  }
+  st.f_integration = scene_.solver.f_integration;
+  st.fail_particle = ph.on_numerical_fault == NumericalFaultAction::fail_particle;
+  if (st.fail_particle) particles_.fault.assign(particles_.size(), 0);
+  if (scene_.grid.outflow == Outflow::remove) particles_.removed.assign(particles_.size(), 0);
+  st.mean_spacing = scene_.grid.spacing().sum() / 3.0;
+  if (ph.artificial_viscosity.enabled) {
+    st.viscosity = &scene_.physics.artificial_viscosity;
+    particles_.q.assign(particles_.size(), 0.0);
+  }
+  // The ledger's columns follow the physics the scene switched on.
+  if (st.viscosity) sinks_.viscous = ledger_.add_sink_column("viscous_work");
+  // Contact's normal reaction does no work; friction's Coulomb work is heat (contact.hpp).
+  // So is the Coulomb work of a wall face (grid/wall.cpp): one column for both.
+  if ((grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0) ||
+      scene_.grid.has_wall_friction())
+    sinks_.friction = ledger_.add_sink_column("friction_heat");
+  if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
+  if (grid_.fields() > 1) {  // contact bodies: a material's parent and companion fields
+    grid_.field_body.assign(grid_.fields(), 0);
+    grid_.field_density.assign(grid_.fields(), 1.0);
+    for (int m = 0; m < static_cast<int>(scene_.materials.size()); ++m) {
+      grid_.field_body[scene_.parent_field(m)] = m;
+      grid_.field_body[scene_.companion_field(m)] = m;
+      const double rho = scene_.materials[std::size_t(m)].material.model.params().density;
+      grid_.field_density[scene_.parent_field(m)] = rho;
+      grid_.field_density[scene_.companion_field(m)] = rho;
+    }
+  }
+  double lightest = std::numeric_limits<double>::infinity();
+  for (const double m : particles_.mass) lightest = std::min(lightest, m);
+  lightest = ranks_.min(lightest);
+  if (std::isfinite(lightest)) grid_.light_mass = kLightNodeMassFraction * lightest;
+  // Walls hold only where a particle's domain reaches them (grid/wall.cpp).
+  if (grid_.has_walls())
+    for (const Vec3& l : half_widths(scene_))
+      grid_.particle_half_width.push_back(l.cwiseProduct(scene_.grid.spacing()));
+  restart_ledger();
+}
+
+void Simulation::resize_particles(std::size_t n) {
+  Particles& P = particles_;
+  // Which optional arrays the scene uses (a rank may have held no particle when they were set).
+  const bool q = stress_settings_.viscosity != nullptr;
+  const bool fault = stress_settings_.fail_particle;
+  const bool removed = scene_.grid.outflow == Outflow::remove;
+  const bool id = ranks_.several();
+  P.for_each_array([&](auto& a) { a.resize(n); });
+  if (!q) P.q.clear();
+  if (!fault) P.fault.clear();
+  if (!removed) P.removed.clear();
+  if (!id) P.id.clear();
+}
+
+void Simulation::restart_ledger() {
+  double ke = 0.0;
+  Vec3 p = Vec3::Zero();
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    ke += 0.5 * particles_.mass[i] * particles_.v[i].squaredNorm();
+    p += particles_.mass[i] * particles_.v[i];
+  }
+  // Summed (and the signal speed maximised) over the ranks.
+  const std::vector<double> sum = ranks_.sum({ke, p(0), p(1), p(2)});
+  max_signal_speed_ = ranks_.max(max_signal_speed(particles_));
+  ledger_.start(0.0, sum[0], Vec3(sum[1], sum[2], sum[3]));
+}
+
+double Simulation::next_dt() const {
+  double dt = stable_time_step(grid_.spacing(), max_signal_speed_, scene_.time.multiplier);
+  if (steps_ == 0) dt = std::min(dt, scene_.time.initial_dt);
+  dt = std::min(dt, scene_.time.max_dt);
+  // No signal at all (every particle left the grid, grid.outflow = remove): nothing limits the
+  // step, and nothing is left to integrate.
+  if (std::isinf(dt) && max_signal_speed_ == 0.0) dt = scene_.time.max_time - time_;
+  return dt;
+}
+
+const StepTotals& Simulation::step() {
+  apply_injections();
+  stop_if(ranks_.first_failure(particle_outside_or_not_finite()));  // a failure stops every rank
+  const double dt = checked_dt();
+  std::optional<Failure> failure;
+  last_ = advance_step(dt, failure);
+  phase_totals_ += last_.seconds;
+  stop_if(ranks_.first_failure(failure ? std::optional(describe(*failure, steps_ + 1, time_ + dt))
+                                       : std::nullopt));
+  ranks_.reduce(last_.particles, last_.stress, last_.grid);
+  book(dt);
+  // The step is complete (time, ledger and particles at t^{n+1}): the failure names this step.
+  const std::optional<Failure> grown = energy_growth(ledger_, particles_, scene_.time);
+  stop_if(
+      ranks_.first_failure(grown ? std::optional(describe(*grown, steps_, time_)) : std::nullopt));
+  migrated_ = ranks_.migrate(particles_, boxes_, scene_.grid);  // those that left this box
+  rebalance_if_needed();
+  return last_;
+}
+
+StepTotals Simulation::advance_step(double dt, std::optional<Failure>& failure) {
+  const ContactSpec* contact = grid_.fields() > 1 ? &scene_.physics.contact : nullptr;
+  const StepSetup setup{stress_settings_, scene_.solver, contact, heat_capacity_,
+                        halo_ ? &*halo_ : nullptr};
+  StepTotals t = std::visit(
+      [&](const auto& shape) {
+        using Shape = std::decay_t<decltype(shape)>;
+        return advance(particles_, grid_, shape, std::get<Stencils<Shape>>(stencils_),
+                       scatter_order_, setup, dt, failure);
+      },
+      shape_);
+  stress_settings_.inject_nan_stress = -1;
+  return t;
+}
+
+void Simulation::book(double dt) {
+  time_ += dt;
+  ++steps_;
+  max_signal_speed_ = last_.stress.max_signal_speed;
+  ledger_.record_step(time_, last_.particles.kinetic_energy, last_.particles.momentum,
+                      last_.stress.strain_energy_increment, last_.grid.boundary_impulse,
+                      last_.grid.external_impulse, last_.grid.external_work);
+  if (sinks_.viscous >= 0) ledger_.add_sink(sinks_.viscous, last_.stress.viscous_work);
+  if (sinks_.friction >= 0) {
+    ledger_.add_sink(sinks_.friction,
+                     last_.grid.contact.friction_heat + last_.grid.wall_friction_heat);
+  }
+  if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
+  if (last_.particles.removed > 0) {
+    ledger_.add_outflow(last_.particles.outflow_mass, last_.particles.outflow_momentum,
+                        last_.particles.outflow_kinetic_energy);
+    removed_ += last_.particles.removed;
+  }
+  failed_ += last_.stress.failed;
+  converted_ += last_.stress.converted;
+  faulted_ += ranks_.sum(static_cast<long>(last_.stress.faulted.size()));
+}
+
+void Simulation::stop_if(const std::optional<std::string>& message) const {
+  if (message) throw SolverFailure(*message);
+}
+
+void Simulation::rebuild_grid() {
+  Grid next(scene_.grid, grid_.threads(), grid_.fields(), !grid_.heat.empty(),
+            ranks_.stored_box(boxes_, scene_.grid.cells));
+  next.field_body = grid_.field_body;
+  next.field_density = grid_.field_density;
+  next.light_mass = grid_.light_mass;
+  next.particle_half_width = grid_.particle_half_width;
+  grid_ = std::move(next);
+  grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
+}
+
+void Simulation::rebalance_if_needed() {
+  std::optional<BoxDecomposition> next = ranks_.rebalanced(particles_, boxes_, scene_);
+  if (!next) return;
+  boxes_ = std::move(*next);
+  rebuild_grid();
+  migrated_ += ranks_.migrate(particles_, boxes_, scene_.grid);
+  ++rebalances_;
+}
+
+void Simulation::inject(const FaultInjection& fault) {
+  if (fault.is_signal())
+    throw std::invalid_argument("a signal is raised by run(), not the Simulation");
+  // The particle is its seed index, on any number of ranks (collective on several).
+  const auto total = static_cast<std::size_t>(ranks_.sum(long(particles_.size())));
+  if (fault.particle >= total) {
+    throw std::out_of_range("particle " + std::to_string(fault.particle) + " out of range (" +
+                            std::to_string(total) + " particles)");
+  }
+  injections_.push_back(fault);
+}
+
+void Simulation::apply_injections() {
+  if (injections_.empty()) return;
+  stress_settings_.inject_nan_stress =
+      apply_faults(injections_, steps_ + 1, particles_, scene_.grid);
+}
+
+}  // namespace impact::mpm
