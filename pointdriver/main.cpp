@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "support/command_line.hpp"
 
 namespace {

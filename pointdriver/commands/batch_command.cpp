@@ -12,10 +12,10 @@
 #include <thread>
 
 #include "models/material/material.hpp"
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
+#include "pointdriver/format/text_format.hpp"
 #include "pointdriver/output/csv_writer.hpp"
-#include "pointdriver/output/text_format.hpp"
 #include "pointdriver/study/batch.hpp"
 #include "support/atomic_file.hpp"
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/export/solver_cards.hpp"
 #include "support/atomic_file.hpp"

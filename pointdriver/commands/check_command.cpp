@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/fit/curve_check.hpp"
 #include "pointdriver/fit/fit_config.hpp"

@@ -4,9 +4,9 @@
 #include <iostream>
 
 #include "models/material/material.hpp"
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
-#include "pointdriver/commands/plot_script.hpp"
+#include "pointdriver/plot/plot_script.hpp"
 #include "pointdriver/study/convergence_study.hpp"
 #include "support/atomic_file.hpp"
 #include "support/shipped_file.hpp"

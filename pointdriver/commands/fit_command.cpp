@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/fit/damage_fit.hpp"
 #include "pointdriver/fit/fit_config.hpp"

@@ -1,14 +1,11 @@
 // pointdriver plot: a quick figure from one or more run CSV files, drawn by plot.py (matplotlib).
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
-#include "pointdriver/commands/plot_script.hpp"
-#include "support/python_launcher.hpp"
-#include "support/shipped_file.hpp"
+#include "pointdriver/plot/plot_script.hpp"
 
 namespace impact::pointdriver {
 
@@ -29,49 +26,6 @@ const CommandSpec plot_command{
     "Exit codes: 0 done, 1 usage error or python3/matplotlib missing, 2 input error.\n"};
 
 }  // namespace
-
-std::string plot_script_path() {
-  if (const char* env = std::getenv("POINTDRIVER_PLOT_SCRIPT"); env && *env) return env;
-  return shipped_file("pointdriver/plot/plot.py").string();
-}
-
-PlotRun run_plot_script(const std::vector<std::string>& args) {
-  PlotRun r;
-  const std::string script = plot_script_path();
-  if (!std::filesystem::is_regular_file(script)) {
-    r.status = PlotRun::Status::no_script;
-    r.message = "plotting script not found: " + script +
-                " (set POINTDRIVER_PLOT_SCRIPT to the path of pointdriver/plot/plot.py)";
-    return r;
-  }
-  const PythonInterpreter found = find_python();
-  if (!found.any_runs) {
-    r.status = PlotRun::Status::no_python;
-    r.exit_code = 127;
-    r.message = std::string("python3 is not installed; install it and matplotlib with: ") +
-                plot_install_hint;
-    return r;
-  }
-  if (!found.matplotlib) {
-    r.status = PlotRun::Status::no_matplotlib;
-    r.exit_code = 1;
-    r.message =
-        std::string("python3 cannot import matplotlib; install it with: ") + plot_install_hint;
-    return r;
-  }
-  const std::string& python = found.command;
-  std::vector<std::string> argv{python, script};
-  argv.insert(argv.end(), args.begin(), args.end());
-  r.exit_code = spawn_process(argv, false);
-  if (r.exit_code == 0) return r;
-  r.status = r.exit_code == 2   ? PlotRun::Status::input_error
-             : r.exit_code == 4 ? PlotRun::Status::no_matplotlib
-                                : PlotRun::Status::failed;
-  r.message = r.status == PlotRun::Status::no_matplotlib
-                  ? std::string("matplotlib missing; install it with: ") + plot_install_hint
-                  : "plot.py exited with code " + std::to_string(r.exit_code);
-  return r;
-}
 
 int command_plot(const std::vector<std::string>& args) {
   Options o;

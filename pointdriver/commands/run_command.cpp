@@ -2,7 +2,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/driver/driver.hpp"
 #include "pointdriver/output/csv_writer.hpp"

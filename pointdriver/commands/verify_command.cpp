@@ -7,11 +7,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "pointdriver/commands.hpp"
+#include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
-#include "pointdriver/commands/plot_script.hpp"
+#include "pointdriver/format/text_format.hpp"
 #include "pointdriver/output/junit.hpp"
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/plot/plot_script.hpp"
 #include "pointdriver/verify/verification_suite.hpp"
 #include "support/atomic_file.hpp"
 

@@ -1,5 +1,5 @@
 #include "pointdriver/driver/driver.hpp"
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <utility>
 
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 namespace impact::pointdriver {
 

@@ -11,7 +11,7 @@
 #include "models/material/material.hpp"
 #include "pointdriver/fit/byte_order_mark.hpp"
 #include "pointdriver/fit/parameter_bounds.hpp"
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 #include "support/atomic_file.hpp"
 
 namespace impact::pointdriver::fit {

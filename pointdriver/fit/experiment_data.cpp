@@ -1,6 +1,6 @@
 #include "pointdriver/fit/experiment_data.hpp"
 #include "pointdriver/fit/byte_order_mark.hpp"
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 #include <algorithm>
 #include <array>

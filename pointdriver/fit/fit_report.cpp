@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "models/material/material.hpp"
-#include "pointdriver/commands/plot_script.hpp"
+#include "pointdriver/plot/plot_script.hpp"
 #include "support/atomic_file.hpp"
 #include "support/shipped_file.hpp"
 

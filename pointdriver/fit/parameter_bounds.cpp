@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 namespace impact::pointdriver::fit {
 

@@ -1,5 +1,5 @@
 #include "pointdriver/fit/staged_guess.hpp"
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 #include <algorithm>
 #include <cmath>

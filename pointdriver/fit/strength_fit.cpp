@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 namespace impact::pointdriver::fit {
 

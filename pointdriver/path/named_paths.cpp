@@ -1,5 +1,5 @@
 #include "pointdriver/path/named_paths.hpp"
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "pointdriver/output/text_format.hpp"
+#include "pointdriver/format/text_format.hpp"
 
 #include <cstdio>
 

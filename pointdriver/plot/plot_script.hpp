@@ -1,5 +1,6 @@
-// Running the plotting helper pointdriver/plot/plot.py (python3 + matplotlib) from the commands:
-// `pointdriver plot` hands its arguments over; `pointdriver convergence` draws its figures with it.
+// Running the plotting helper pointdriver/plot/plot.py (python3 + matplotlib) from C++:
+// `pointdriver plot` hands its arguments over; `pointdriver convergence` and `verify` and the fit
+// report (fit/fit_report.cpp) draw their figures with it.
 #pragma once
 
 #include <string>
