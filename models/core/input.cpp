@@ -127,6 +127,14 @@ void InputProblems::warn(std::string_view key_path, std::string_view message) {
   warnings_.push_back(file_ + ": " + where + ": " + std::string(message));
 }
 
+void InputProblems::add_at_line(int line, std::string_view message) {
+  problems_.push_back(line_location(line) + ": " + std::string(message));
+}
+
+std::string InputProblems::line_location(int line) const {
+  return line > 0 ? file_ + ":" + std::to_string(line) : file_;
+}
+
 void InputProblems::check_units(std::string_view key_path, Quantity q, double value) {
   if (auto hint = unit_hint(q, value)) warn(key_path, *hint + "; the value is used as given");
 }

@@ -29,6 +29,8 @@ class InputError : public std::runtime_error {
 };
 
 /// Problems found while reading one document; collected so the user sees all of them in one run.
+/// A JSON document names a problem's place by key path (add), a line-based one by line
+/// (add_at_line).
 /// Warnings (admissible but suspicious values, e.g. a unit slip) are kept apart: they do not stop
 /// the reader, and the loader hands them to its caller, which prints them.
 class InputProblems {
@@ -44,6 +46,12 @@ class InputProblems {
   void add_nested(std::string_view key_path, std::string_view prefix, const InputError& error);
   void warn_nested(std::string_view key_path, std::string_view prefix,
                    const std::vector<std::string>& warnings);
+  /// Records "file:line: message", for a line-based document (a CSV file) where a line, not a
+  /// key path, says where; line 0 means the file as a whole ("file: message").
+  void add_at_line(int line, std::string_view message);
+  /// "file:line" ("file" for line 0): how add_at_line names a place, for a warning or a note
+  /// the caller keeps itself.
+  std::string line_location(int line) const;
   bool empty() const { return problems_.empty(); }
   std::size_t count() const { return problems_.size(); }
   /// Throws InputError with every problem collected so far, followed by the warnings (each

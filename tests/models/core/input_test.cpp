@@ -68,6 +68,20 @@ BOOST_AUTO_TEST_CASE(unknown_key_suggests_the_nearest_known_key) {
   BOOST_TEST(contains(problems_text(problems), "/densty: unknown key (did you mean density?)"));
 }
 
+BOOST_AUTO_TEST_CASE(a_line_based_file_names_the_line_instead_of_a_key_path) {
+  InputProblems problems("curve.csv");
+  problems.add_at_line(7, "column 2 (true_stress [Pa]): empty cell");
+  problems.add_at_line(0, "no data rows (empty curve)");  // the file as a whole
+  problems.add("/x", "at a key path, as before");
+  BOOST_TEST(problems.line_location(3) == "curve.csv:3");
+  BOOST_TEST(problems.line_location(0) == "curve.csv");
+  const std::vector<std::string> expected{"curve.csv:7: column 2 (true_stress [Pa]): empty cell",
+                                          "curve.csv: no data rows (empty curve)",
+                                          "curve.csv: /x: at a key path, as before"};
+  BOOST_CHECK_EXCEPTION(problems.throw_if_any(), InputError,
+                        [&](const InputError& e) { return e.problems() == expected; });
+}
+
 BOOST_AUTO_TEST_CASE(nearest_name_ignores_names_that_are_too_different) {
   BOOST_TEST(!nearest_name("temperature", {"A", "B", "n"}).has_value());
   BOOST_TEST(nearest_name("johnson_cok", {"johnson_cook", "none"}).value() == "johnson_cook");
