@@ -5,11 +5,11 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
 
 #include "models/damage/johnson_cook_damage.hpp"
 #include "models/material/material.hpp"
 #include "pointdriver/fit/byte_order_mark.hpp"
+#include "pointdriver/fit/csv_text.hpp"
 #include "pointdriver/fit/parameter_bounds.hpp"
 #include "pointdriver/format/text_format.hpp"
 #include "support/atomic_file.hpp"
@@ -24,12 +24,6 @@ constexpr std::array<const char*, 5> kNames{"D1", "D2", "D3", "D4", "D5"};
 constexpr std::array<const char*, 4> kColumns{"triaxiality [-]", "strain_rate [1/s]",
                                               "temperature [K]", "fracture_strain [-]"};
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
 }  // namespace
 
 FractureData read_fracture_data(const std::string& file) {
@@ -37,14 +31,8 @@ FractureData read_fracture_data(const std::string& file) {
   if (!in) throw InputError({file + ": cannot open the fracture-strain file"});
   FractureData d;
   d.file = file;
-  std::vector<std::string> problems;
-  auto add = [&](int line, const std::string& m) {
-    std::ostringstream s;
-    s << file;
-    if (line) s << ':' << line;
-    s << ": " << m;
-    problems.push_back(s.str());
-  };
+  InputProblems problems(file);
+  const auto add = [&](int line, const std::string& m) { problems.add_at_line(line, m); };
   std::string line;
   int number = 0;
   bool header = false;
@@ -53,7 +41,7 @@ FractureData read_fracture_data(const std::string& file) {
     if (number == 1) {
       if (const auto wrong = strip_byte_order_mark(line)) {
         add(1, *wrong);
-        throw InputError(problems);  // the rest would be a misleading error per line
+        problems.throw_if_any();  // the rest would be a misleading error per line
       }
     }
     const std::string t = trim(line);
@@ -73,13 +61,7 @@ FractureData read_fracture_data(const std::string& file) {
       continue;
     }
     // Cells split at every comma, so that "0.3,,294,0.5" has an empty second cell.
-    std::vector<std::string> cells(1);
-    for (char ch : t) {
-      if (ch == ',')
-        cells.emplace_back();
-      else
-        cells.back() += ch;
-    }
+    const std::vector<std::string> cells = split_cells(t);
     if (cells.size() != kColumns.size()) {
       add(number, std::string(cells.size() < kColumns.size() ? "short" : "long") +
                       " row: expected 4 values (triaxiality, strain_rate, temperature, "
@@ -91,13 +73,13 @@ FractureData read_fracture_data(const std::string& file) {
     bool ok = true;
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const std::string cell = trim(cells[c]);
-      char* end = nullptr;
-      const double x = std::strtod(cell.c_str(), &end);
+      double x = 0.0;
+      const bool is_number = parse_number(cell, x);
       const std::string where = "column " + std::to_string(c + 1) + " (" + kColumns[c] + "): ";
       if (cell.empty()) {
         add(number, where + "empty cell");
         ok = false;
-      } else if (end != cell.c_str() + cell.size()) {
+      } else if (!is_number) {
         add(number, where + "not a number: '" + cell + "'");
         ok = false;
       } else if (!std::isfinite(x)) {
@@ -112,7 +94,7 @@ FractureData read_fracture_data(const std::string& file) {
       add(number, "temperature must be positive [K]");
     } else if (const auto hint = unit_hint(Quantity::temperature, v[2])) {
       // A cryogenic test at 4 or 20 K is real: a warning, not an error.
-      d.warnings.push_back(file + ":" + std::to_string(number) + ": temperature " + *hint +
+      d.warnings.push_back(problems.line_location(number) + ": temperature " + *hint +
                            "; the value is used as given");
     }
     if (v[3] <= 0 || v[3] > 5) add(number, "fracture strain must be in (0, 5] (a fraction)");
@@ -120,7 +102,7 @@ FractureData read_fracture_data(const std::string& file) {
   }
   if (d.source.empty()) add(0, "missing '# source: ...' line (the citation of the data)");
   if (!header || d.points.empty()) add(0, "no data rows");
-  if (!problems.empty()) throw InputError(problems);
+  problems.throw_if_any();
   return d;
 }
 
