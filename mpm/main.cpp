@@ -5,6 +5,7 @@
 //   mpm check SCENE.json [--threads N] [--set JSON]...
 //   mpm study SCENE_DIR --out DIR [--threads N] [--cases LIST] [--no-plot]
 //   mpm plot RUN [--out FIG]
+//   mpm keys [--format md|json]
 // Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path; a refused restart),
 // 3 run failure (numerical fault), 4 memory estimate above the available memory, 128 + signal
 // after a checkpoint on SIGINT (130) or SIGTERM (143).
@@ -19,10 +20,12 @@
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
+#include "mpm/input/scene_keys.hpp"
 #include "mpm/simulation/simulation.hpp"
 #include "campaigns/study/study.hpp"
 #include "support/command_line.hpp"
 #include "support/omp_wait_policy.hpp"
+#include "support/shipped_file.hpp"
 
 namespace {
 
@@ -40,6 +43,7 @@ const char* kFooter =
     "it. Rank 0 writes every file (docs/mpi.md).\n"
     "plot RUN draws RUN's energy books, energy error, momentum and observables into\n"
     "RUN/run.png (or --out FIG; python3 + matplotlib).\n"
+    "keys prints every scene key the reader knows: type, range, default, meaning.\n"
     "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused\n"
     "restart or replacement), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM\n"
     "(checkpoint written).\n";
@@ -60,6 +64,19 @@ bool parse_list(const std::string& text, std::vector<std::string>& items) {
 int usage_error(const std::string& message) {
   std::cerr << "mpm: " << message << "\nRun 'mpm --help' for the options.\n";
   return impact::cli::kExitUsage;
+}
+
+// `mpm keys`: the scene format's keys as the reader records them (mpm/input/scene_keys.hpp).
+int print_scene_keys(const std::string& format) {
+  const auto keys =
+      impact::mpm::scene_keys(impact::shipped_file("data/materials/al6061_t6.json").string());
+  const std::string_view name = impact::mpm::kSceneKeyName;
+  if (format == "json") {
+    std::cout << impact::keys_json(keys.keys(), name).dump(2) << '\n';
+  } else {
+    std::cout << impact::keys_markdown(keys.keys(), name);
+  }
+  return 0;
 }
 
 int run_main(int argc, char** argv) {
@@ -88,6 +105,10 @@ int run_main(int argc, char** argv) {
       app.add_subcommand("study", "the report's Table 2 study: every case of a folder");
   CLI::App* plot =
       app.add_subcommand("plot", "draw one run's energy books, momentum and observables");
+  CLI::App* keys = app.add_subcommand("keys", "list the scene keys: type, range, default, meaning");
+  std::string keys_format = "md";
+  keys->add_option("--format", keys_format, "md (a Markdown table) or json")
+      ->check(CLI::IsMember({"md", "json"}));
   std::string plot_run, plot_figure;
   plot->add_option("RUN", plot_run, "a directory mpm run wrote")->required();
   plot->add_option("-o,--out", plot_figure, "figure file (.png, .pdf, .svg; default RUN/run.png)")
@@ -132,9 +153,17 @@ int run_main(int argc, char** argv) {
   // mpm --help lists the commands; each command's --help its options, the common ones included.
   app.footer(kFooter);
   app.set_version_flag("--version", std::string("mpm ") + IMPACT_VERSION);
-  for (CLI::App* c : {run, check, study, plot}) impact::cli::describe(*c, kFooter, verbosity);
+  for (CLI::App* c : {run, check, study, plot, keys}) impact::cli::describe(*c, kFooter, verbosity);
   if (const auto code = impact::cli::parse(app, argc, argv, verbosity)) return *code;
   if (plot->parsed()) return impact::mpm::plot_run(plot_run, plot_figure);
+  if (keys->parsed()) {
+    try {
+      return print_scene_keys(keys_format);
+    } catch (const impact::InputError& e) {  // a sample scene refused: a bug, reported as input
+      std::cerr << e.what() << '\n';
+      return 2;
+    }
+  }
 
   for (const auto& text : fault_texts) {
     const auto fault = impact::mpm::parse_fault_injection(text);

@@ -195,6 +195,25 @@ const Json* JsonReader::find(std::string_view key) {
   return it == node_->end() ? nullptr : &*it;
 }
 
+void JsonReader::record(std::string_view key, std::string_view type, const Range* range,
+                        std::optional<std::string_view> default_value,
+                        std::string_view meaning) const {
+  InputKeyRecorder* keys = problems_->key_recorder();
+  if (keys == nullptr) return;
+  std::optional<std::string> fallback;
+  if (default_value) fallback = std::string(*default_value);
+  keys->record(key_path(key), {std::string(type), range ? range->describe() : std::string(),
+                               std::move(fallback), std::string(meaning)});
+}
+
+void JsonReader::record_number(std::string_view key, const Range& range,
+                               std::optional<double> fallback, std::string_view meaning) const {
+  if (problems_->key_recorder() == nullptr) return;
+  const std::string text = fallback ? format_number(*fallback) : std::string();
+  record(key, "number", &range, fallback ? std::optional<std::string_view>(text) : std::nullopt,
+         meaning);
+}
+
 bool JsonReader::has(std::string_view key) const {
   return node_->is_object() && node_->contains(std::string(key));
 }
@@ -210,6 +229,7 @@ double JsonReader::quantity(std::string_view key, Quantity q, Range range,
 
 double JsonReader::quantity_or(std::string_view key, double fallback, Quantity q, Range range,
                                std::string_view meaning) {
+  record_number(key, range, fallback, meaning);
   if (!has(key)) {
     used_.insert(std::string(key));
     return fallback;
@@ -219,6 +239,7 @@ double JsonReader::quantity_or(std::string_view key, double fallback, Quantity q
 
 double JsonReader::read_number(std::string_view key, Range range, std::string_view meaning,
                                std::optional<Quantity> q) {
+  record_number(key, range, std::nullopt, meaning);
   const Json* v = find(key);
   if (v == nullptr) {
     problems_->add(key_path(key),
@@ -247,6 +268,7 @@ double JsonReader::read_number(std::string_view key, Range range, std::string_vi
 
 double JsonReader::number_or(std::string_view key, double fallback, Range range,
                              std::string_view meaning) {
+  record_number(key, range, fallback, meaning);
   if (!has(key)) {
     used_.insert(std::string(key));
     return fallback;
@@ -255,6 +277,7 @@ double JsonReader::number_or(std::string_view key, double fallback, Range range,
 }
 
 bool JsonReader::boolean_or(std::string_view key, bool fallback, std::string_view meaning) {
+  record(key, "boolean", nullptr, fallback ? "true" : "false", meaning);
   const Json* v = find(key);
   if (v == nullptr) return fallback;
   if (!v->is_boolean()) {
@@ -266,6 +289,7 @@ bool JsonReader::boolean_or(std::string_view key, bool fallback, std::string_vie
 }
 
 std::string JsonReader::string(std::string_view key, std::string_view meaning) {
+  record(key, "string", nullptr, std::nullopt, meaning);
   const Json* v = find(key);
   if (v == nullptr) {
     problems_->add(key_path(key), with_meaning("missing required string", meaning));
@@ -281,6 +305,7 @@ std::string JsonReader::string(std::string_view key, std::string_view meaning) {
 
 std::string JsonReader::string_or(std::string_view key, std::string_view fallback,
                                   std::string_view meaning) {
+  record(key, "string", nullptr, fallback, meaning);
   if (!has(key)) {
     used_.insert(std::string(key));
     return std::string(fallback);
@@ -301,6 +326,8 @@ std::string JsonReader::choice(std::string_view key, const std::vector<std::stri
     known_list += (known_list.empty() ? "" : ", ") + std::string(k);
     candidates.emplace_back(k);
   }
+  if (problems_->key_recorder() != nullptr)
+    record(key, "one of: " + known_list, nullptr, fallback, meaning);
   if (!has(key) && fallback) {
     used_.insert(std::string(key));
     return std::string(*fallback);
@@ -323,6 +350,7 @@ std::string JsonReader::choice(std::string_view key, const std::vector<std::stri
 }
 
 JsonReader JsonReader::child(std::string_view key, std::string_view meaning) {
+  record(key, "object", nullptr, std::nullopt, meaning);
   const Json* v = find(key);
   if (v == nullptr) {
     problems_->add(key_path(key), with_meaning("missing required object", meaning));
@@ -338,6 +366,7 @@ JsonReader JsonReader::child(std::string_view key, std::string_view meaning) {
 
 std::optional<JsonReader> JsonReader::optional_child(std::string_view key,
                                                      std::string_view meaning) {
+  record(key, "object", nullptr, "", meaning);
   if (!has(key)) {
     used_.insert(std::string(key));
     return std::nullopt;

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "models/core/input_keys.hpp"
 #include "models/core/units_check.hpp"
 
 namespace impact {
@@ -59,9 +60,14 @@ class InputProblems {
   void throw_if_any() const;
   const std::string& file() const { return file_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
+  /// Every JsonReader of this document records the keys it reads into `keys` (nullptr: off, the
+  /// default; a read then costs one pointer test more).
+  void record_keys_to(InputKeyRecorder* keys) { keys_ = keys; }
+  InputKeyRecorder* key_recorder() const { return keys_; }
 
  private:
   std::string file_;
+  InputKeyRecorder* keys_ = nullptr;
   std::vector<std::string> problems_;
   std::vector<std::string> warnings_;
 };
@@ -120,11 +126,33 @@ class JsonReader {
   std::optional<JsonReader> optional_child(std::string_view key, std::string_view meaning);
   /// Marks a key as handled elsewhere (documentation-only keys such as "source").
   void ignore(std::string_view key);
+  /// As ignore(), for a key that other code reads (an array, a block read later): when keys are
+  /// recorded, records it with `description`, which is built only then.
+  template <class Describe>
+  void read_elsewhere(std::string_view key, Describe&& description) {
+    ignore(key);
+    if (InputKeyRecorder* keys = problems_->key_recorder())
+      keys->record(key_path(key), description());
+  }
+  /// Lets `amend` change the recorded description of `key` (a KeyDescription&), when keys are
+  /// recorded and the key was: a caller that knows more than the read it made.
+  template <class Amend>
+  void amend_description(std::string_view key, Amend&& amend) {
+    if (InputKeyRecorder* keys = problems_->key_recorder()) {
+      if (KeyDescription* d = keys->find(key_path(key))) amend(*d);
+    }
+  }
   /// Records "unknown key (did you mean ...?)" for every key that no read touched.
   void reject_unknown_keys();
 
  private:
   const Json* find(std::string_view key);
+  /// Records `key` when keys are recorded (InputProblems::record_keys_to); `default_value` as in
+  /// KeyDescription.
+  void record(std::string_view key, std::string_view type, const Range* range,
+              std::optional<std::string_view> default_value, std::string_view meaning) const;
+  void record_number(std::string_view key, const Range& range, std::optional<double> fallback,
+                     std::string_view meaning) const;
   double read_number(std::string_view key, Range range, std::string_view meaning,
                      std::optional<Quantity> q);
   const Json* node_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 namespace impact::mpm {
 
@@ -104,7 +105,15 @@ std::pair<Vec3, Vec3> bounds(const Geometry& g) {
 
 Vec3 read_vec3(JsonReader& r, const Json& node, std::string_view key, std::string_view meaning,
                std::optional<Vec3> fallback) {
-  r.ignore(key);
+  r.read_elsewhere(key, [&] {
+    std::optional<std::string> value;
+    if (fallback) {
+      std::ostringstream text;
+      text << '[' << (*fallback)(0) << ", " << (*fallback)(1) << ", " << (*fallback)(2) << ']';
+      value = text.str();
+    }
+    return KeyDescription{"[3 numbers]", "", value, std::string(meaning)};
+  });
   const std::string k(key);
   if (!node.is_object() || !node.contains(k)) {
     if (fallback) return *fallback;

@@ -87,6 +87,10 @@ std::array<int, 3> read_int3(JsonReader& r, const Json& node, std::string_view k
       read_vec3(r, node, key, meaning,
                 fallback ? std::optional<Vec3>(Vec3((*fallback)[0], (*fallback)[1], (*fallback)[2]))
                          : std::nullopt);
+  r.amend_description(key, [&](KeyDescription& d) {
+    d.type = "[3 integers]";
+    d.range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  });
   std::array<int, 3> out{};
   for (int d = 0; d < 3; ++d) {
     if (!(v(d) >= lo && v(d) <= hi && v(d) == std::floor(v(d)))) {
@@ -155,6 +159,7 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
       }
       g.wall_friction[f] =
           w->number(kFaceNames[f], Range::closed(0.0, 10.0), "Coulomb coefficient mu [-]");
+      w->amend_description(kFaceNames[f], [](KeyDescription& d) { d.default_value = "0"; });
     }
     w->reject_unknown_keys();
   }
@@ -290,6 +295,9 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
     ph.adiabatic_heating =
         r.boolean_or("turn_on_adiabatic_heating", true, "heat particles by plastic work");
   }
+  // Absent, each of these three leaves the material file's own choice.
+  for (const char* key : {"erosion", "do_melting", "turn_on_adiabatic_heating"})
+    r.amend_description(key, [](KeyDescription& d) { d.default_value = ""; });
   r.reject_unknown_keys();
 }
 
@@ -323,11 +331,22 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
                      "expected a whole number of steps (0: off)");
   }
   o.checkpoint_interval_steps = static_cast<long>(every);
-  r.ignore("fields");
-  r.ignore("gauges");  // read_observables(), once the objects are known
-  r.ignore("crater");
-  r.ignore("particle_paths");
   o.fields = {"velocity", "stress", "plastic_strain", "temperature", "damage", "mass"};
+  r.read_elsewhere("fields", [&] {
+    std::string names;
+    for (const auto& f : o.fields) names += (names.empty() ? "" : ", ") + f;
+    return KeyDescription{"array of names", "", names, "VTU point data"};
+  });
+  // Read by read_observables(), once the objects are known.
+  r.read_elsewhere("gauges", [] {
+    return KeyDescription{"object", "", "", "named history gauges: one history.csv column each"};
+  });
+  r.read_elsewhere("crater", [] {
+    return KeyDescription{"object", "", "", "crater depth and diameter in summary.json"};
+  });
+  r.read_elsewhere("particle_paths", [] {
+    return KeyDescription{"object", "", "", "point-driver paths of chosen particles"};
+  });
   if (n.is_object() && n.contains("fields")) {
     const Json& f = n["fields"];
     o.fields.clear();
@@ -359,7 +378,10 @@ void read_materials(JsonReader& root, const Json& doc, std::vector<SceneMaterial
   for (const auto& item : n.items()) {
     JsonReader m = r.child(item.key(), "a material: file and inline overrides");
     const std::string file = m.string("file", "material file, e.g. data/materials/al6061_t6.json");
-    m.ignore("overrides");
+    m.read_elsewhere("overrides", [] {
+      return KeyDescription{"object", "", "{}",
+                            "JSON merge patch applied to the material file before validation"};
+    });
     const Json& ov = at(item.value(), "overrides");
     if (item.value().is_object() && item.value().contains("overrides") && !ov.is_object()) {
       m.problems().add(m.key_path("overrides"), "expected an object (a JSON merge patch)");
@@ -666,13 +688,16 @@ Json load_scene_document(const std::string& file) {
   return load_with_extends(file, chain);
 }
 
-Scene read_scene(const Json& document, const std::string& file) {
+Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder* keys) {
   InputProblems problems(file);
+  problems.record_keys_to(keys);
   JsonReader root(document, "", problems);
   Scene s;
   s.file = file;
   s.resolved = document;
-  root.ignore("description");
+  root.read_elsewhere("description", [] {
+    return KeyDescription{"string", "", "", "free text, ignored"};
+  });
   read_grid(root, document, s.grid);
   read_time(root, s.time, s.warnings);
   read_solver(root, document, s.solver);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "models/core/input.hpp"
+#include "models/core/input_keys.hpp"
 #include "mpm/scene/scene.hpp"
 
 namespace impact::mpm {
@@ -18,7 +19,8 @@ namespace impact::mpm {
 Scene load_scene(const std::string& file);
 /// The merged document only (extends resolved, material file paths made relative to the cwd).
 Json load_scene_document(const std::string& file);
-/// Validates an already-merged document; `file` is used in messages.
-Scene read_scene(const Json& document, const std::string& file);
+/// Validates an already-merged document; `file` is used in messages. With `keys`, records every
+/// key the reader asks for (mpm/input/scene_keys.hpp).
+Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder* keys = nullptr);
 
 }  // namespace impact::mpm

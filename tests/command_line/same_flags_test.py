@@ -34,6 +34,7 @@ def main(bin_dir, source, work):
         ("mpm_check", ["mpm", "check"], [scene, "--set", short], False, True),
         ("mpm_run", ["mpm", "run"], [scene, "--out={out}", "--threads", "1", "--set", short],
          True, True),
+        ("mpm_keys", ["mpm", "keys"], ["--format", "json"], False, False),
     ]
     failures = []
 
