@@ -159,7 +159,7 @@ case "${1:-}" in
     install_missing_packages
     build release
     # The centred impact as a quarter with symmetric planes against the full model, 40 us
-    # (docs/performance.md, "Quarter model with symmetric planes").
+    # (docs/performance.md#quarter-model).
     /usr/bin/python3 campaigns/study/quarter_model.py docs/figures/quarter_model --mpm build/bin/mpm \
       --threads 1 "${@:2}"
     ;;

@@ -1,8 +1,8 @@
-// What a vector pow/log gives the Johnson-Cook flow stress (docs/performance.md, "A vector pow
-// and log"): the roofline found the stress update bound by the latency of one pow and one log
-// per radial-return step, so a batched update needs them for W lanes at once. Debian's C library
-// ships them (libmvec, glibc >= 2.22: _ZGVdN4vv_pow / _ZGVdN4v_log for AVX2, _ZGVeN8vv_pow /
-// _ZGVeN8v_log for AVX-512, the vector-function ABI names). This probe evaluates
+// What a vector pow/log gives the Johnson-Cook flow stress (docs/notes/performance_history.md,
+// "a vector pow and log"): the roofline found the stress update bound by the latency of one pow
+// and one log per radial-return step, so a batched update needs them for W lanes at once.
+// Debian's C library ships them (libmvec, glibc >= 2.22: _ZGVdN4vv_pow / _ZGVdN4v_log for AVX2,
+// _ZGVeN8vv_pow / _ZGVeN8v_log for AVX-512, the vector-function ABI names). This probe evaluates
 //   sigma_y = (A + B eps^n)(1 + C ln(rate))(1 - T*^m)      (Johnson & Cook 1983)
 // on 65 536 points with the scalar libm calls and with the 4- and 8-lane library calls (each run
 // only when the CPU reports the instruction set), and prints ns per point (best of 5) and the

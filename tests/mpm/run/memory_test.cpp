@@ -46,7 +46,7 @@ BOOST_AUTO_TEST_CASE(the_grid_term_is_what_the_grid_allocates) {
                                     << " MB");
       BOOST_TEST(estimate == allocated);
       // One scatter buffer for any thread count (mpm/step/scatter_order.hpp): with a copy per
-      // thread, 2 threads took 1.4 times the grid of 1 (docs/performance.md).
+      // thread, 2 threads took 1.4 times the grid of 1 (docs/notes/performance_history.md).
       if (threads == 1) one_thread = allocated;
       BOOST_TEST(allocated == one_thread);
     }
