@@ -15,14 +15,14 @@
 #include <string>
 #include <vector>
 
-#include "mpm/input/scene_reader.hpp"
 #include "campaigns/plot/run_plot.hpp"
+#include "campaigns/study/study.hpp"
+#include "mpm/input/scene_keys.hpp"
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"
 #include "mpm/run/summary.hpp"
-#include "mpm/input/scene_keys.hpp"
 #include "mpm/simulation/simulation.hpp"
-#include "campaigns/study/study.hpp"
 #include "support/command_line.hpp"
 #include "support/omp_wait_policy.hpp"
 #include "support/shipped_file.hpp"

@@ -1,5 +1,5 @@
-#include "mpm/input/scene_reader.hpp"
 #include "mpm/run/run.hpp"
+#include "mpm/input/scene_reader.hpp"
 
 #include <omp.h>
 

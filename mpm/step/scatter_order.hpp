@@ -11,7 +11,7 @@
 // faults and restarts). Why bands in x: the seeded order is x-major (and the particles keep it),
 // so a band's particles are long runs of the arrays and its nodes are swept plane by plane as in
 // index order; smaller tiles (4 x 4 nodes in x and y) re-load their halo nodes in another colour's
-// pass and cost 9 % of a GIMP step (docs/performance.md).
+// pass and cost 9 % of a GIMP step (docs/notes/performance_history.md).
 #pragma once
 
 #include <array>

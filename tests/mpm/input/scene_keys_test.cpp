@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "mpm/input/scene_reader.hpp"
 #include "mpm/scene/scene.hpp"
 
 using namespace impact;

@@ -20,7 +20,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "mpm", "study"))
+sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
 import vtu  # noqa: E402
 
 CAUSES = {1: "melting", 2: "tepla", 3: "drucker", 4: "becker"}

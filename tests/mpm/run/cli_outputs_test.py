@@ -50,7 +50,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "mpm", "study"))
+sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
 import vtu  # noqa: E402
 
 SCENES = os.path.join(ROOT, "data", "scenes")

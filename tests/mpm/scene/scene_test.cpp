@@ -118,8 +118,8 @@ BOOST_AUTO_TEST_CASE(errors_name_the_key_path_and_what_was_expected) {
 }
 
 // solver.ranks_per_axis: three integers >= 1 (their product checked against the rank count when
-// a run starts, mpm/parallel/ranks.cpp), [0, 0, 0] for the automatic split cutting the fewest node faces
-// (the default, also "fewest_cut_faces"), or "least_loaded".
+// a run starts, mpm/parallel/decomposition_plan.cpp), [0, 0, 0] for the automatic split cutting the
+// fewest node faces (the default, also "fewest_cut_faces"), or "least_loaded".
 BOOST_AUTO_TEST_CASE(ranks_per_axis_is_all_positive_or_all_zero_or_a_rule) {
   Json doc = base();
   BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{0, 0, 0}));
