@@ -67,4 +67,10 @@ JohnsonCookDamageParams read_johnson_cook_damage(JsonReader& r, double room_temp
   return p;
 }
 
+Json to_json(const JohnsonCookDamageParams& p) {
+  Json j = parameters_to_json(p);
+  if (p.cutoff_triaxiality) j["cutoff_triaxiality"] = *p.cutoff_triaxiality;
+  return j;
+}
+
 }  // namespace impact

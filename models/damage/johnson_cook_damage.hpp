@@ -29,6 +29,7 @@
 #include <limits>
 #include <optional>
 
+#include "models/core/catalogue.hpp"
 #include "models/core/input.hpp"
 #include "models/core/tensor.hpp"
 
@@ -48,6 +49,16 @@ struct JohnsonCookDamageParams {
   std::optional<double> cutoff_triaxiality;
   double room_temperature = 294.0;  ///< [K]
   double melt_temperature = 925.0;  ///< [K]
+
+  static constexpr std::string_view kType = "johnson_cook";
+  static constexpr LawParameter<JohnsonCookDamageParams> kParameters[] = {
+      {"D1", "-", &JohnsonCookDamageParams::D1},
+      {"D2", "-", &JohnsonCookDamageParams::D2},
+      {"D3", "-", &JohnsonCookDamageParams::D3},
+      {"D4", "-", &JohnsonCookDamageParams::D4},
+      {"D5", "-", &JohnsonCookDamageParams::D5},
+      {"reference_strain_rate", "1/s", &JohnsonCookDamageParams::reference_strain_rate},
+      {"min_fracture_strain", "-", &JohnsonCookDamageParams::min_fracture_strain}};
 };
 
 /// The round-off band above the cut-off that still counts as at it: 8 eps (1 + |cutoff|), eps =
@@ -78,5 +89,20 @@ double jc_damage_increment(const JohnsonCookDamageParams& p, double delta_plasti
 /// temperatures are the material's.
 JohnsonCookDamageParams read_johnson_cook_damage(JsonReader& r, double room_temperature,
                                                  double melt_temperature);
+/// The catalogue's reader (models/damage/damage_law.hpp): read_johnson_cook_damage.
+inline JohnsonCookDamageParams read_model(JsonReader& r, const JohnsonCookDamageParams*,
+                                          double room_temperature, double melt_temperature) {
+  return read_johnson_cook_damage(r, room_temperature, melt_temperature);
+}
+/// {"type", the parameters, "cutoff_triaxiality" when set}: what the reader reads back.
+Json to_json(const JohnsonCookDamageParams& p);
+
+/// The damage a plastic increment d_ep adds at this stress (the catalogue's hook,
+/// models/damage/damage_law.hpp): jc_damage_increment at the stress's triaxiality.
+inline double damage_increment(const JohnsonCookDamageParams& p, double delta_plastic_strain,
+                               const Mat3& stress, double plastic_strain_rate, double temperature) {
+  return jc_damage_increment(p, delta_plastic_strain, triaxiality(stress), plastic_strain_rate,
+                             temperature);
+}
 
 }  // namespace impact

@@ -29,6 +29,31 @@ double modulus(const NadalLePoacShearModulus& n, double mu0, const ModulusCondit
          J;
 }
 
+// Each form's reader: its parameters, with their ranges ("type" and unknown keys are the caller's).
+ConstantShearModulus read_model(JsonReader&, const ConstantShearModulus*) {
+  return {};
+}
+VarshniShearModulus read_model(JsonReader& r, const VarshniShearModulus*) {
+  VarshniShearModulus v;
+  v.D = r.quantity("D", Quantity::elastic_modulus, Range::non_negative(), "Varshni D [Pa]");
+  v.T0 = r.quantity("T0", Quantity::temperature, Range::positive(), "Varshni T0 [K]");
+  return v;
+}
+SteinbergShearModulus read_model(JsonReader& r, const SteinbergShearModulus*) {
+  SteinbergShearModulus s;
+  s.dG_dp = r.number("dG_dp", Range::closed(0.0, 10.0), "SCG G'_p = dG/dp [-]");
+  s.dG_dT = r.number("dG_dT", Range::closed(-1e9, 0.0), "SCG G'_T = dG/dT [Pa/K]");
+  return s;
+}
+NadalLePoacShearModulus read_model(JsonReader& r, const NadalLePoacShearModulus*) {
+  NadalLePoacShearModulus n;
+  n.dG_dp = r.number("dG_dp", Range::closed(0.0, 10.0), "Nadal-Le Poac dG/dp [-]");
+  n.zeta = r.number("zeta", Range::open(0.0, 1.0), "Nadal-Le Poac zeta [-]");
+  n.C = r.number("C", Range::positive(), "Nadal-Le Poac C [-]");
+  n.molar_mass = r.number("molar_mass", Range::open(1e-3, 1.0), "molar mass [kg/mol]");
+  return n;
+}
+
 }  // namespace
 
 double shear_modulus(const ShearModulusLaw& law, double mu0, const ModulusConditions& c) {
@@ -40,44 +65,17 @@ bool is_constant(const ShearModulusLaw& law) {
 }
 
 ShearModulusLaw read_shear_modulus(JsonReader& r) {
-  const std::string type =
-      r.choice("type", {"constant", "varshni", "steinberg_cochran_guinan", "nadal_le_poac"},
-               "shear modulus model", "constant");
-  ShearModulusLaw law;
-  if (type == "varshni") {
-    VarshniShearModulus v;
-    v.D = r.quantity("D", Quantity::elastic_modulus, Range::non_negative(), "Varshni D [Pa]");
-    v.T0 = r.quantity("T0", Quantity::temperature, Range::positive(), "Varshni T0 [K]");
-    law = v;
-  } else if (type == "steinberg_cochran_guinan") {
-    SteinbergShearModulus s;
-    s.dG_dp = r.number("dG_dp", Range::closed(0.0, 10.0), "SCG G'_p = dG/dp [-]");
-    s.dG_dT = r.number("dG_dT", Range::closed(-1e9, 0.0), "SCG G'_T = dG/dT [Pa/K]");
-    law = s;
-  } else if (type == "nadal_le_poac") {
-    NadalLePoacShearModulus n;
-    n.dG_dp = r.number("dG_dp", Range::closed(0.0, 10.0), "Nadal-Le Poac dG/dp [-]");
-    n.zeta = r.number("zeta", Range::open(0.0, 1.0), "Nadal-Le Poac zeta [-]");
-    n.C = r.number("C", Range::positive(), "Nadal-Le Poac C [-]");
-    n.molar_mass = r.number("molar_mass", Range::open(1e-3, 1.0), "molar mass [kg/mol]");
-    law = n;
-  }
+  const std::string type = r.choice("type", model_types<ShearModulusLaw>(), "shear modulus model",
+                                    ConstantShearModulus::kType);
+  const ShearModulusLaw law = read_by_type<ShearModulusLaw>(type, [&](const auto* tag) {
+                                return read_model(r, tag);
+                              }).value_or(ShearModulusLaw{});
   r.reject_unknown_keys();
   return law;
 }
 
 Json to_json(const ShearModulusLaw& law) {
-  if (const auto* v = std::get_if<VarshniShearModulus>(&law))
-    return {{"type", v->kType}, {"D", v->D}, {"T0", v->T0}};
-  if (const auto* s = std::get_if<SteinbergShearModulus>(&law))
-    return {{"type", s->kType}, {"dG_dp", s->dG_dp}, {"dG_dT", s->dG_dT}};
-  if (const auto* n = std::get_if<NadalLePoacShearModulus>(&law))
-    return {{"type", n->kType},
-            {"dG_dp", n->dG_dp},
-            {"zeta", n->zeta},
-            {"C", n->C},
-            {"molar_mass", n->molar_mass}};
-  return {{"type", ConstantShearModulus::kType}};
+  return std::visit([](const auto& l) { return parameters_to_json(l); }, law);
 }
 
 }  // namespace impact

@@ -20,6 +20,7 @@
 #include <variant>
 #include <vector>
 
+#include "models/core/catalogue.hpp"
 #include "models/core/input.hpp"
 
 namespace impact {
@@ -34,16 +35,22 @@ struct ModulusConditions {
 
 struct ConstantShearModulus {
   static constexpr std::string_view kType = "constant";
+  static constexpr NoParameters<ConstantShearModulus> kParameters{};
 };
 struct VarshniShearModulus {
   static constexpr std::string_view kType = "varshni";
   double D = 0.0;   ///< [Pa]
   double T0 = 0.0;  ///< [K]
+  static constexpr LawParameter<VarshniShearModulus> kParameters[] = {
+      {"D", "Pa", &VarshniShearModulus::D}, {"T0", "K", &VarshniShearModulus::T0}};
 };
 struct SteinbergShearModulus {
   static constexpr std::string_view kType = "steinberg_cochran_guinan";
   double dG_dp = 0.0;  ///< G'_p [-]
   double dG_dT = 0.0;  ///< G'_T [Pa/K]
+  static constexpr LawParameter<SteinbergShearModulus> kParameters[] = {
+      {"dG_dp", "-", &SteinbergShearModulus::dG_dp},
+      {"dG_dT", "Pa/K", &SteinbergShearModulus::dG_dT}};
 };
 struct NadalLePoacShearModulus {
   static constexpr std::string_view kType = "nadal_le_poac";
@@ -51,9 +58,15 @@ struct NadalLePoacShearModulus {
   double zeta = 0.0;        ///< [-]
   double C = 0.0;           ///< [-]
   double molar_mass = 0.0;  ///< [kg/mol]
+  static constexpr LawParameter<NadalLePoacShearModulus> kParameters[] = {
+      {"dG_dp", "-", &NadalLePoacShearModulus::dG_dp},
+      {"zeta", "-", &NadalLePoacShearModulus::zeta},
+      {"C", "-", &NadalLePoacShearModulus::C},
+      {"molar_mass", "kg/mol", &NadalLePoacShearModulus::molar_mass}};
 };
 
-/// The catalogue, one line per form (the first is the default).
+/// The catalogue, one line per form (the first is the default); models/core/catalogue.hpp gives
+/// the forms' parameters by name.
 using ShearModulusLaw = std::variant<ConstantShearModulus, VarshniShearModulus,
                                      SteinbergShearModulus, NadalLePoacShearModulus>;
 
@@ -63,6 +76,7 @@ bool is_constant(const ShearModulusLaw& law);
 
 /// Reads {"type", ...} (the block is optional: constant).
 ShearModulusLaw read_shear_modulus(JsonReader& r);
+/// {"type", every parameter}: what read_shear_modulus reads back.
 Json to_json(const ShearModulusLaw& law);
 
 }  // namespace impact

@@ -21,4 +21,8 @@ DefaultHypoParams read_default_hypo(JsonReader& r) {
   return p;
 }
 
+Json to_json(const DefaultHypoParams& p) {
+  return {{"modulus", p.modulus == HypoModulus::bulk ? "bulk" : "report_eq2_lame"}};
+}
+
 }  // namespace impact

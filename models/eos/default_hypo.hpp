@@ -14,7 +14,13 @@
 // item 3).
 #pragma once
 
+#include "models/core/catalogue.hpp"
 #include "models/core/input.hpp"
+#include "models/core/lane_math.hpp"
+#include "models/eos/eos_step.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace impact {
 
@@ -25,6 +31,11 @@ enum class HypoModulus {
 
 struct DefaultHypoParams {
   HypoModulus modulus = HypoModulus::bulk;
+
+  static constexpr std::string_view kType = "default_hypo";
+  static constexpr std::string_view kMeaning =
+      "default_hypo parameters";                                   ///< of its block, in messages
+  static constexpr NoParameters<DefaultHypoParams> kParameters{};  // the modulus is a choice
 };
 
 /// Modulus multiplying -tr(D) dt: K (bulk) or K - 2 mu/3 (report_eq2_lame) [Pa]. Also the bulk
@@ -39,7 +50,49 @@ inline double default_hypo_effective_bulk_modulus(double bulk_modulus, double sh
 double default_hypo_pressure(double p_old, double trace_D, double dt, double bulk_modulus,
                              double shear_modulus, const DefaultHypoParams& p);
 
+/// Step 4 with the default_hypo pressure (report eq. 2), for one point (V = double) or a vector of
+/// them (V = lane::Vec, the batched update, models/material/update_kernels.cpp): p_{n+1} =
+/// p_n - K_eff tr(D) dt, and the specific internal energy e_{n+1} = e_n - (p_n + p_{n+1})/2 dv +
+/// the retained heat (trapezoidal work, dv = 1/rho_{n+1} - 1/rho_n).
+template <class V>
+struct alignas(lane::kLaneBytes) PressureLanes {
+  V pressure{};         ///< p_{n+1} [Pa]
+  V internal_energy{};  ///< e_{n+1} [J/kg]
+};
+
+template <class V>
+[[gnu::always_inline]] inline PressureLanes<V> hypo_pressure_lanes(V K_eff, V p_n, V trace_D, V dt,
+                                                                   V e_n, V rho0_n, V rho1,
+                                                                   V heat_per_mass) {
+  PressureLanes<V> out;
+  out.pressure = p_n - K_eff * trace_D * dt;
+  const V dv = 1.0 / rho1 - 1.0 / rho0_n;
+  out.internal_energy = e_n - 0.5 * (p_n + out.pressure) * dv + heat_per_mass;
+  return out;
+}
+
+/// The catalogue's step (models/eos/eos_step.hpp): hypo_pressure_lanes with K_eff; always in
+/// range.
+inline EosStep eos_step(const DefaultHypoParams& p, const EosMaterial& m, const EosStepInput& in) {
+  const PressureLanes<double> pr = hypo_pressure_lanes<double>(
+      default_hypo_effective_bulk_modulus(m.bulk_modulus, m.shear_modulus, p), in.pressure,
+      in.trace_D, in.dt, in.internal_energy, in.density, in.new_density, in.heat_per_mass);
+  return {pr.pressure, pr.internal_energy, true};
+}
+/// K_eff, whatever the density and energy.
+inline double eos_bulk_modulus(const DefaultHypoParams& p, const EosMaterial& m, double, double) {
+  return default_hypo_effective_bulk_modulus(m.bulk_modulus, m.shear_modulus, p);
+}
+
 /// Reads {"modulus": "bulk" (default) | "report_eq2_lame"}; "type" is read by the caller.
 DefaultHypoParams read_default_hypo(JsonReader& r);
+/// The catalogue's reader (models/eos/equation_of_state.hpp): read_default_hypo.
+inline DefaultHypoParams read_model(JsonReader& r, const DefaultHypoParams*) {
+  return read_default_hypo(r);
+}
+/// {"modulus"}: the block read_default_hypo reads back.
+Json to_json(const DefaultHypoParams& p);
 
 }  // namespace impact
+
+#pragma GCC diagnostic pop

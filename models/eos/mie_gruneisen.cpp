@@ -91,4 +91,11 @@ MieGruneisenParams read_mie_gruneisen(JsonReader& r) {
   return p;
 }
 
+Json to_json(const MieGruneisenParams& p) {
+  Json j = parameters_to_json(p);
+  j.erase("type");  // the block's type is its key (models/eos/equation_of_state.hpp)
+  j["energy"] = p.energy == MieGruneisenEnergy::evolved ? "evolved" : "cp_temperature";
+  return j;
+}
+
 }  // namespace impact

@@ -36,7 +36,9 @@
 //    T_0 (docs/theory.md sec. 2, "internal energy and temperature").
 #pragma once
 
+#include "models/core/catalogue.hpp"
 #include "models/core/input.hpp"
+#include "models/eos/eos_step.hpp"
 
 namespace impact {
 
@@ -50,6 +52,14 @@ struct MieGruneisenParams {
   double Gamma0 = 0.0;   ///< Gruneisen coefficient at the reference state [-]
   double S_alpha = 0.0;  ///< slope S of U_s = C0 + S u_p [-]
   MieGruneisenEnergy energy = MieGruneisenEnergy::evolved;
+
+  static constexpr std::string_view kType = "mie_gruneisen";
+  static constexpr std::string_view kMeaning =
+      "Mie-Gruneisen parameters";  ///< of its block, in messages
+  static constexpr LawParameter<MieGruneisenParams> kParameters[] = {
+      {"C0", "m/s", &MieGruneisenParams::C0},
+      {"Gamma0", "-", &MieGruneisenParams::Gamma0},
+      {"S_alpha", "-", &MieGruneisenParams::S_alpha}};
 };
 
 /// True when rho > 0 and 1 - S eta > 0 (eta = 1 - rho0/rho), where the EOS is defined.
@@ -93,8 +103,30 @@ MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, 
                                       double heat_per_mass, double specific_heat,
                                       double temperature_old, double temperature_new);
 
+/// The catalogue's step (models/eos/eos_step.hpp): out of range beyond the compression limit
+/// (S eta >= 1), else mie_gruneisen_update from the start-of-step state.
+inline EosStep eos_step(const MieGruneisenParams& p, const EosMaterial& m, const EosStepInput& in) {
+  const double eta = 1.0 - m.density / in.new_density;
+  if (!(p.S_alpha * eta < 1.0)) return {in.pressure, in.internal_energy, false};
+  const MieGruneisenStep step = mie_gruneisen_update(
+      p, m.density, in.density, in.new_density, in.pressure, in.internal_energy, in.heat_per_mass,
+      m.specific_heat, in.temperature, in.new_temperature);
+  return {step.pressure, step.internal_energy, true};
+}
+/// The isentropic bulk modulus at (density, internal_energy): mie_gruneisen_bulk_modulus.
+inline double eos_bulk_modulus(const MieGruneisenParams& p, const EosMaterial& m, double density,
+                               double internal_energy) {
+  return mie_gruneisen_bulk_modulus(p, m.density, density, internal_energy);
+}
+
 /// Reads {"C0" (m/s, > 0), "Gamma0" (>= 0), "S_alpha" ([0, 10]), "energy": "evolved" (default) |
 /// "cp_temperature"}; "type" is read by the caller.
 MieGruneisenParams read_mie_gruneisen(JsonReader& r);
+/// The catalogue's reader (models/eos/equation_of_state.hpp): read_mie_gruneisen.
+inline MieGruneisenParams read_model(JsonReader& r, const MieGruneisenParams*) {
+  return read_mie_gruneisen(r);
+}
+/// {"C0", "Gamma0", "S_alpha", "energy"}: the block read_mie_gruneisen reads back.
+Json to_json(const MieGruneisenParams& p);
 
 }  // namespace impact

@@ -1,14 +1,21 @@
 #include "models/failure/erosion.hpp"
 
-#include <array>
 #include <string>
 
 namespace impact {
 
 namespace {
 
-constexpr std::array<Erosion, 4> kAll = {Erosion::none, Erosion::allow_no_tension,
-                                         Erosion::keep_stress, Erosion::zero_stress};
+/// The catalogue of erosion algorithms, one line each: the value and its name in a material file
+/// (the report's spelling). The reader's choices, erosion_name and erosion_from_name come from it.
+struct ErosionEntry {
+  Erosion algorithm;
+  std::string_view name;
+};
+constexpr ErosionEntry kAlgorithms[] = {{Erosion::none, "none"},
+                                        {Erosion::allow_no_tension, "AllowNoTension"},
+                                        {Erosion::keep_stress, "KeepStress"},
+                                        {Erosion::zero_stress, "ZeroStress"}};
 
 }  // namespace
 
@@ -26,30 +33,27 @@ Mat3 erode_stress(Erosion algorithm, const Mat3& stress) {
 }
 
 std::string_view erosion_name(Erosion algorithm) {
-  switch (algorithm) {
-    case Erosion::none:
-      return "none";
-    case Erosion::allow_no_tension:
-      return "AllowNoTension";
-    case Erosion::keep_stress:
-      return "KeepStress";
-    case Erosion::zero_stress:
-      return "ZeroStress";
-  }
+  for (const ErosionEntry& e : kAlgorithms)
+    if (e.algorithm == algorithm) return e.name;
   return "none";
 }
 
 std::optional<Erosion> erosion_from_name(std::string_view name) {
-  for (Erosion e : kAll)
-    if (erosion_name(e) == name) return e;
+  for (const ErosionEntry& e : kAlgorithms)
+    if (e.name == name) return e.algorithm;
   return std::nullopt;
 }
 
+std::vector<std::string_view> erosion_names() {
+  std::vector<std::string_view> names;
+  for (const ErosionEntry& e : kAlgorithms) names.push_back(e.name);
+  return names;
+}
+
 Erosion read_erosion(JsonReader& r) {
-  const std::string name =
-      r.choice("algorithm", {"none", "AllowNoTension", "KeepStress", "ZeroStress"},
-               "stress operation on failed points; none also turns failure "
-               "detection off");
+  const std::string name = r.choice("algorithm", erosion_names(),
+                                    "stress operation on failed points; none also turns failure "
+                                    "detection off");
   r.reject_unknown_keys();
   // A bad name has been recorded as a problem; none is a harmless stand-in until it is thrown.
   return erosion_from_name(name).value_or(Erosion::none);

@@ -15,6 +15,7 @@
 
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "models/core/input.hpp"
 #include "models/core/tensor.hpp"
@@ -31,6 +32,9 @@ std::string_view erosion_name(Erosion algorithm);
 
 /// The algorithm spelled `name` (exactly, case-sensitive), or nothing for an unknown name.
 std::optional<Erosion> erosion_from_name(std::string_view name);
+
+/// Every algorithm's name, catalogue order (erosion.cpp's table: one line an algorithm).
+std::vector<std::string_view> erosion_names();
 
 /// Reads {"algorithm": "none" | "AllowNoTension" | "KeepStress" | "ZeroStress"} (required).
 Erosion read_erosion(JsonReader& r);

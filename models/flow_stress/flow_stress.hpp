@@ -1,12 +1,13 @@
 // What every flow-stress law shares: the result (the flow stress and its partial derivatives, as
-// the radial return and the stability tangent need them), the conditions a law may read besides
-// the plastic strain and its rate, and the description of a law's parameters by name (what the
-// fitter and the checker reach them by; models/flow_stress/flow_stress_law.hpp).
+// the radial return and the stability tangent need them) and the conditions a law may read besides
+// the plastic strain and its rate. A law's parameters by name (FitBounds, LawParameter) are every
+// catalogue's (models/core/catalogue.hpp).
 #pragma once
 
 #include <string>
 #include <string_view>
 
+#include "models/core/catalogue.hpp"
 #include "models/core/input.hpp"
 
 namespace impact {
@@ -39,34 +40,5 @@ struct FlowConditions {
   /// outside a material): the law's own melt_temperature.
   double melt_temperature = 0.0;
 };
-
-/// The range a fitter searches for a parameter by default [SI]. Empty (lower == upper, the
-/// default): not a strength parameter to fit (a reference rate, a molar mass, a modulus the law
-/// shares with elasticity); a fit configuration may still free it with bounds of its own.
-struct FitBounds {
-  double lower = 0.0;
-  double upper = 0.0;
-  bool empty() const { return !(upper > lower); }
-};
-
-/// One named parameter of a law: the JSON key, its unit (SI), the member it lives in and the
-/// fitter's default bounds. A law lists them in `kParameters`; `pointdriver fit` varies them by
-/// name.
-template <class Law>
-struct LawParameter {
-  std::string_view name;
-  std::string_view unit;
-  double Law::*member;
-  FitBounds fit{};
-};
-
-/// {"type": kType, every kParameters entry by name}: the writer of a law whose keys are exactly
-/// its parameters (its reader then reads them back).
-template <class Law>
-Json parameters_to_json(const Law& law) {
-  Json j = {{"type", Law::kType}};
-  for (const auto& q : Law::kParameters) j[std::string(q.name)] = law.*q.member;
-  return j;
-}
 
 }  // namespace impact

@@ -3,9 +3,10 @@
 //   - its parameters struct, with kType (the JSON "type") and kParameters (name, unit, member),
 //   - flow_stress(law, ep, rate, FlowConditions) -> FlowStress (value and derivatives),
 //   - read_law(JsonReader&, const Law*, room_temperature, melt_temperature) and to_json(law),
-// and one line in FlowStressLaw below. Everything else (the material reader and writer, the
-// radial return, the point driver's fitter and checker, the MPM solver) reaches a law through the
-// functions here, by type name and parameter name. docs/extending.md walks through adding one.
+// and one line in FlowStressLaw below (the machinery is every catalogue's:
+// models/core/catalogue.hpp). Everything else (the material reader and writer, the radial return,
+// the point driver's fitter and checker, the MPM solver) reaches a law through the functions here,
+// by type name and parameter name. docs/extending.md walks through adding one.
 #pragma once
 
 #include <string>
@@ -51,23 +52,22 @@ inline double flow_internal_after(const FlowStressLaw& law, double internal, dou
 }
 
 /// The law's JSON "type".
-std::string_view law_type(const FlowStressLaw& law);
+inline std::string_view law_type(const FlowStressLaw& law) {
+  return model_type(law);
+}
 /// Every law's "type", catalogue order.
-std::vector<std::string_view> law_types();
+inline std::vector<std::string_view> law_types() {
+  return model_types<FlowStressLaw>();
+}
 /// Reads the object at `r` by its "type" (a problem names the known types);
 /// the temperatures are the material's.
 FlowStressLaw read_flow_stress(JsonReader& r, double room_temperature, double melt_temperature);
 /// The object read_flow_stress reads back, "type" first.
-Json to_json(const FlowStressLaw& law);
+inline Json to_json(const FlowStressLaw& law) {
+  return model_to_json(law);
+}
 
-/// The law's parameter names (kParameters order) and units.
-std::vector<std::string> parameter_names(const FlowStressLaw& law);
-std::string_view parameter_unit(const FlowStressLaw& law, std::string_view name);
-bool has_parameter(const FlowStressLaw& law, std::string_view name);
-/// The fitter's default bounds of a parameter (empty: not fitted by default).
-FitBounds fit_bounds(const FlowStressLaw& law, std::string_view name);
-/// A parameter by name; std::invalid_argument naming the law's parameters when it has none such.
-double parameter(const FlowStressLaw& law, std::string_view name);
-void set_parameter(FlowStressLaw& law, std::string_view name, double value);
+// The law's parameters by name (parameter_names, parameter_unit, has_parameter, fit_bounds,
+// parameter, set_parameter) are the catalogue's: models/core/catalogue.hpp.
 
 }  // namespace impact

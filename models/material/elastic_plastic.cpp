@@ -76,13 +76,7 @@ double ElasticPlastic::wave_speed(double rho, double internal_energy) const {
 }
 
 double ElasticPlastic::wave_speed(double rho, double internal_energy, double mu) const {
-  double bulk = 0.0;
-  if (const auto* hypo = std::get_if<DefaultHypoParams>(&p_.equation_of_state)) {
-    bulk = default_hypo_effective_bulk_modulus(p_.bulk_modulus, p_.shear_modulus, *hypo);
-  } else {
-    const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
-    bulk = mie_gruneisen_bulk_modulus(mg, p_.density, rho, internal_energy);
-  }
+  const double bulk = eos_bulk_modulus(p_.equation_of_state, eos_material(), rho, internal_energy);
   if (!(bulk + 4.0 * mu / 3.0 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
   return longitudinal_wave_speed(bulk, mu, rho);
 }
@@ -214,26 +208,15 @@ void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
 
   // 4. Pressure from the equation of state; the specific internal energy follows the work
   //    -p dv (trapezoidal) plus the retained heat, so e = e_v + c_p (T - T_0) at every step.
-  double p_new = 0.0;
-  if (std::holds_alternative<DefaultHypoParams>(p_.equation_of_state)) {
-    const PressureLanes<double> pr = hypo_pressure_lanes<double>(
-        m.hypo_bulk_modulus, t.p_n, lane_algebra::trace(to_lanes(t.D_hat)), dt, s0.internal_energy,
-        t.rho0_n, rho1, h.heat_per_mass);
-    p_new = pr.pressure;
-    s1.internal_energy = pr.internal_energy;
-  } else {
-    const auto& mg = std::get<MieGruneisenParams>(p_.equation_of_state);
-    const double eta = 1.0 - p_.density / rho1;
-    if (!(mg.S_alpha * eta < 1.0)) {
-      report.status = UpdateStatus::eos_out_of_range;
-      return;
-    }
-    const MieGruneisenStep step =
-        mie_gruneisen_update(mg, p_.density, t.rho0_n, rho1, t.p_n, s0.internal_energy,
-                             h.heat_per_mass, p_.specific_heat, T0, s1.temperature);
-    p_new = step.pressure;
-    s1.internal_energy = step.internal_energy;
+  const EosStep eos = eos_step(p_.equation_of_state, eos_material(),
+                               {t.p_n, t.rho0_n, s0.internal_energy, T0, rho1, s1.temperature,
+                                lane_algebra::trace(to_lanes(t.D_hat)), dt, h.heat_per_mass});
+  if (!eos.in_range) {
+    report.status = UpdateStatus::eos_out_of_range;
+    return;
   }
+  const double p_new = eos.pressure;
+  s1.internal_energy = eos.internal_energy;
   Mat3 stress_new = to_mat3(with_pressure(to_lanes(r.deviator), p_new));
 
   // 5-6. Damage, porosity, failure and erosion.
@@ -253,10 +236,8 @@ Mat3 ElasticPlastic::damage_and_failure(const PointState& s0, const Mat3& D_hat,
   const Mat3& s_new = r.deviator;
   const double T0 = s0.temperature;
   // 5. Johnson-Cook damage (eq. 7) and optional porosity growth.
-  if (p_.damage && d_ep > 0.0) {
-    s1.damage +=
-        jc_damage_increment(*p_.damage, d_ep, triaxiality(stress_new), s1.plastic_strain_rate, T0);
-  }
+  if (d_ep > 0.0)
+    accumulate_damage(p_.damage, s1.damage, d_ep, stress_new, s1.plastic_strain_rate, T0);
   // On plastic steps only (report's code); with porosity_growth = "tension", only while the mean
   // stress is tensile (voids do not open under pressure).
   const bool voids_grow = p_.tepla.growth == PorosityGrowth::dilatation || mean(stress_new) > 0.0;

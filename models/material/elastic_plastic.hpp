@@ -25,10 +25,9 @@
 
 #include "models/core/input.hpp"
 #include "models/core/point_state.hpp"
-#include "models/damage/johnson_cook_damage.hpp"
+#include "models/damage/damage_law.hpp"
 #include "models/elasticity/shear_modulus.hpp"
-#include "models/eos/default_hypo.hpp"
-#include "models/eos/mie_gruneisen.hpp"
+#include "models/eos/equation_of_state.hpp"
 #include "models/failure/erosion.hpp"
 #include "models/failure/tepla.hpp"
 #include "models/flow_stress/flow_stress_law.hpp"
@@ -42,8 +41,6 @@
 
 namespace impact {
 
-using EquationOfState = std::variant<DefaultHypoParams, MieGruneisenParams>;
-
 struct ElasticPlasticParams {
   double density = 0.0;                 ///< reference density rho0 [kg/m^3]
   double bulk_modulus = 0.0;            ///< K [Pa]
@@ -56,8 +53,8 @@ struct ElasticPlasticParams {
   ReturnAlgorithm return_algorithm = ReturnAlgorithm::newton;
   ReturnTolerance return_tolerance;
   EquationOfState equation_of_state = DefaultHypoParams{};
-  FlowStressLaw flow_stress;                      ///< models/flow_stress/flow_stress_law.hpp
-  std::optional<JohnsonCookDamageParams> damage;  ///< absent: no damage evolution
+  FlowStressLaw flow_stress;  ///< models/flow_stress/flow_stress_law.hpp
+  DamageLaw damage;           ///< models/damage/damage_law.hpp (none by default)
   TeplaParams tepla;
   MeltingParams melting;
   AdiabaticHeatingParams heating;
@@ -169,6 +166,11 @@ class ElasticPlastic {
   /// Whether a state is molten: melting on and T >= T_m of the state (a step starting there has
   /// no deviatoric strength).
   bool molten(const PointState& s) const;
+
+  /// The constants the equation of state reads (models/eos/eos_step.hpp).
+  EosMaterial eos_material() const {
+    return {p_.density, p_.bulk_modulus, p_.shear_modulus, p_.specific_heat};
+  }
 
   /// Steps 5-6 of finish_update: damage, porosity, failure detection and erosion of the end-of-step
   /// stress in the working frame (returned, eroded where the point has failed). A no-op, returning

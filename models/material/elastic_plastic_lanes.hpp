@@ -6,6 +6,7 @@
 #pragma once
 
 #include "models/core/lane_mat3.hpp"
+#include "models/eos/default_hypo.hpp"  // hypo_pressure_lanes, step 4
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -88,26 +89,6 @@ template <class V>
       lane::select<V>(heated, V(m.taylor_quinney * flow * d_ep / (rho1 * m.specific_heat)), 0.0);
   h.temperature = lane::select<V>(heated, V(T0 + h.temperature_rise), T0);
   return h;
-}
-
-/// Step 4 with the default_hypo pressure (report eq. 2, models/eos/default_hypo.hpp): p_{n+1} =
-/// p_n - K_eff tr(D) dt, and the specific internal energy e_{n+1} = e_n - (p_n + p_{n+1})/2 dv +
-/// the retained heat (trapezoidal work, dv = 1/rho_{n+1} - 1/rho_n).
-template <class V>
-struct alignas(lane::kLaneBytes) PressureLanes {
-  V pressure{};         ///< p_{n+1} [Pa]
-  V internal_energy{};  ///< e_{n+1} [J/kg]
-};
-
-template <class V>
-[[gnu::always_inline]] inline PressureLanes<V> hypo_pressure_lanes(V K_eff, V p_n, V trace_D, V dt,
-                                                                   V e_n, V rho0_n, V rho1,
-                                                                   V heat_per_mass) {
-  PressureLanes<V> out;
-  out.pressure = p_n - K_eff * trace_D * dt;
-  const V dv = 1.0 / rho1 - 1.0 / rho0_n;
-  out.internal_energy = e_n - 0.5 * (p_n + out.pressure) * dv + heat_per_mass;
-  return out;
 }
 
 /// s - p I.

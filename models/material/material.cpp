@@ -15,33 +15,6 @@ ObjectiveRate read_objective_rate(JsonReader& r) {
                                               : ObjectiveRate::green_naghdi;
 }
 
-EquationOfState read_equation_of_state(JsonReader& cm) {
-  JsonReader eos = cm.child("equation_of_state", "pressure model");
-  const std::string type =
-      eos.choice("type", {"default_hypo", "mie_gruneisen"}, "equation of state", "default_hypo");
-  // Parameter blocks of every EOS may be present, so that switching EOS is a one-key overlay;
-  // each present block is validated whether chosen or not.
-  DefaultHypoParams hypo;
-  if (auto block = eos.optional_child("default_hypo", "default_hypo parameters")) {
-    hypo = read_default_hypo(*block);
-  }
-  std::optional<MieGruneisenParams> mg;
-  if (auto block = eos.optional_child("mie_gruneisen", "Mie-Gruneisen parameters")) {
-    mg = read_mie_gruneisen(*block);
-  }
-  eos.reject_unknown_keys();
-  if (type == "mie_gruneisen") {
-    if (!mg) {
-      eos.problems().add(eos.key_path("mie_gruneisen"),
-                         "missing object with C0, Gamma0, S_alpha (required when type is "
-                         "mie_gruneisen)");
-      return hypo;
-    }
-    return *mg;
-  }
-  return hypo;
-}
-
 }  // namespace
 
 Material read_material(const Json& document, const std::string& file) {
@@ -99,20 +72,8 @@ Material read_material(const Json& document, const std::string& file) {
     yield->choice("type", {"von_mises"}, "yield condition", "von_mises");
     yield->reject_unknown_keys();
   }
-  if (auto damage = cm.optional_child("damage", "damage model")) {
-    const std::string type =
-        damage->choice("type", {"johnson_cook", "none"}, "damage model", "johnson_cook");
-    if (type == "johnson_cook") {
-      p.damage = read_johnson_cook_damage(*damage, p.room_temperature, p.melt_temperature);
-    } else {
-      // "none" switches damage off by overlay while the constants stay in the file for later.
-      for (const char* key :
-           {"D1", "D2", "D3", "D4", "D5", "reference_strain_rate", "min_fracture_strain"}) {
-        damage->ignore(key);
-      }
-      damage->reject_unknown_keys();
-    }
-  }
+  if (auto damage = cm.optional_child("damage", "damage model"))
+    p.damage = read_damage(*damage, p.room_temperature, p.melt_temperature);
   if (auto block = cm.optional_child("tepla", "TEPLA-F failure")) p.tepla = read_tepla(*block);
   if (auto block = cm.optional_child("melting", "melting")) p.melting = read_melting(*block);
   if (auto block = cm.optional_child("adiabatic_heating", "adiabatic heating")) {
@@ -164,38 +125,11 @@ Json to_json(const Material& material) {
   cm["return_algorithm"] =
       p.return_algorithm == ReturnAlgorithm::report_2004 ? "report_2004" : "newton";
   cm["return_tolerance"] = p.return_tolerance.relative_residual;
-  if (const auto* hypo = std::get_if<DefaultHypoParams>(&p.equation_of_state)) {
-    cm["equation_of_state"] = {
-        {"type", "default_hypo"},
-        {"default_hypo",
-         {{"modulus", hypo->modulus == HypoModulus::bulk ? "bulk" : "report_eq2_lame"}}}};
-  } else {
-    const auto& mg = std::get<MieGruneisenParams>(p.equation_of_state);
-    cm["equation_of_state"] = {
-        {"type", "mie_gruneisen"},
-        {"mie_gruneisen",
-         {{"C0", mg.C0},
-          {"Gamma0", mg.Gamma0},
-          {"S_alpha", mg.S_alpha},
-          {"energy", mg.energy == MieGruneisenEnergy::evolved ? "evolved" : "cp_temperature"}}}};
-  }
+  cm["equation_of_state"] = to_json(p.equation_of_state);
   if (!is_constant(p.shear_modulus_model)) cm["shear_modulus"] = to_json(p.shear_modulus_model);
   cm["flow_stress"] = to_json(p.flow_stress);
   cm["yield_condition"] = {{"type", "von_mises"}};
-  if (p.damage) {
-    const auto& d = *p.damage;
-    cm["damage"] = {{"type", "johnson_cook"},
-                    {"D1", d.D1},
-                    {"D2", d.D2},
-                    {"D3", d.D3},
-                    {"D4", d.D4},
-                    {"D5", d.D5},
-                    {"reference_strain_rate", d.reference_strain_rate},
-                    {"min_fracture_strain", d.min_fracture_strain}};
-    if (d.cutoff_triaxiality) cm["damage"]["cutoff_triaxiality"] = *d.cutoff_triaxiality;
-  } else {
-    cm["damage"] = {{"type", "none"}};
-  }
+  cm["damage"] = to_json(p.damage);
   cm["tepla"] = {
       {"enabled", p.tepla.enabled},
       {"critical_porosity", p.tepla.critical_porosity},

@@ -95,12 +95,14 @@ std::string mat_johnson_cook(const Material& material, const JohnsonCookParams& 
   const ElasticPlasticParams& p = material.model.params();
   const Converted c = convert(material, u);
   const double s = u.stress_scale();
-  const JohnsonCookDamageParams d = p.damage.value_or(JohnsonCookDamageParams{});
+  // The card has Johnson-Cook damage's D1..D5 (zero without it).
+  const auto* jc_damage = std::get_if<JohnsonCookDamageParams>(&p.damage);
+  const JohnsonCookDamageParams d = jc_damage ? *jc_damage : JohnsonCookDamageParams{};
   std::ostringstream k;
   k << "$ rate term 1 + C ln(max(rate / EPSO, 1))"
     << (jc.rate_form == JohnsonCookRateForm::clamped ? "" : " (the source uses another form)")
     << "; no tensile cutoff (PC, SPALL 1)"
-    << (p.damage ? "" : "; the source has no damage model: D1..D5 are 0, set them before use")
+    << (jc_damage ? "" : "; the source has no damage model: D1..D5 are 0, set them before use")
     << '\n';
   k << "*MAT_JOHNSON_COOK\n";
   k << "$#     mid        ro         g         e        pr       dtf        vp    rateop\n";
@@ -170,7 +172,9 @@ std::string mat_power_law(const Material& material, const CowperSymondsParams& c
     << (std::holds_alternative<MieGruneisenParams>(p.equation_of_state)
             ? ": the source's Mie-Gruneisen EOS is not written"
             : "")
-    << (p.damage ? "; the source's Johnson-Cook damage is not written (EPSF left blank)" : "")
+    << (std::holds_alternative<JohnsonCookDamageParams>(p.damage)
+            ? "; the source's Johnson-Cook damage is not written (EPSF left blank)"
+            : "")
     << '\n';
   k << "*MAT_POWER_LAW_PLASTICITY\n";
   k << "$#     mid        ro         e        pr         k         n       src       srp\n";

@@ -145,7 +145,7 @@ int run_damage_fit(const FitConfig& config, std::ostream& out) {
   const Material material = load_material(config.material_file, config.overrides);
   const auto& mp = material.model.params();
   JohnsonCookDamageParams base;
-  if (mp.damage) base = *mp.damage;
+  if (const auto* jc = std::get_if<JohnsonCookDamageParams>(&mp.damage)) base = *jc;
   base.room_temperature = mp.room_temperature;
   base.melt_temperature = mp.melt_temperature;
   std::vector<FracturePoint> points;

@@ -7,7 +7,7 @@ namespace impact::pointdriver::verify {
 std::vector<Check> johnson_cook_damage(const SuiteContext& ctx) {
   Recorder rec("johnson_cook_damage_triaxiality");
   const Material m = load_material(ctx.material_file);
-  const auto& dp = *m.model.params().damage;
+  const auto& dp = std::get<JohnsonCookDamageParams>(m.model.params().damage);
   const cf::JohnsonCookDamage jd{dp.D1,
                                  dp.D2,
                                  dp.D3,

@@ -334,7 +334,8 @@ BOOST_AUTO_TEST_CASE(
   };
   const Material with = material(R"(, "damage": {"cutoff_triaxiality": -0.3333333333333333})");
   const Material without = material("");
-  BOOST_TEST(*with.model.params().damage->cutoff_triaxiality == -1.0 / 3.0);
+  BOOST_TEST(*std::get<JohnsonCookDamageParams>(with.model.params().damage).cutoff_triaxiality ==
+             -1.0 / 3.0);
   const double A = 324e6, rate = 1e2, dt = 1e-6;
   std::mt19937_64 gen(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
