@@ -323,6 +323,8 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
   o.interval = r.number_or("interval", max_time / 100.0, Range::positive(),
                            "history row and snapshot interval [s]; default max_time/100");
   o.snapshots = r.boolean_or("snapshots", true, "write particles/step_NNNNNN.vtu and a .pvd");
+  o.plastic_work = r.boolean_or("plastic_work", false,
+                                "history column plastic_work [J]: the plastic work done so far");
   const double every =
       r.number_or("checkpoint_interval_steps", 0.0, Range::closed(0.0, 1e15),
                   "write DIR/checkpoint.bin every this many steps (0: off; mpm run --restart DIR)");

@@ -184,6 +184,8 @@ struct OutputSpec {
   std::vector<ParticlePathSpec> particle_paths;  ///< point-driver paths (none: no work)
   /// Write DIR/checkpoint.bin every this many steps (0: off; mpm/run/checkpoint.hpp).
   long checkpoint_interval_steps = 0;
+  /// A history column plastic_work [J] (mpm/step/step.hpp StressTotals::plastic_work).
+  bool plastic_work = false;
 };
 
 struct SceneMaterial {

@@ -76,6 +76,10 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
       scene_.grid.has_wall_friction())
     sinks_.friction = ledger_.add_sink_column("friction_heat");
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
+  // Plastic work is part of the strain energy already booked: a column, not a term of the balance.
+  st.plastic_work = scene_.output.plastic_work;
+  if (st.plastic_work)
+    sinks_.plastic = ledger_.add_sink_column("plastic_work", /*in_balance=*/false);
   if (grid_.fields() > 1) {  // contact bodies: a material's parent and companion fields
     grid_.field_body.assign(grid_.fields(), 0);
     grid_.field_density.assign(grid_.fields(), 1.0);
@@ -183,6 +187,7 @@ void Simulation::book(double dt) {
                      last_.grid.contact.friction_heat + last_.grid.wall_friction_heat);
   }
   if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
+  if (sinks_.plastic >= 0) ledger_.add_sink(sinks_.plastic, last_.stress.plastic_work);
   if (last_.particles.removed > 0) {
     ledger_.add_outflow(last_.particles.outflow_mass, last_.particles.outflow_momentum,
                         last_.particles.outflow_kinetic_energy);

@@ -159,6 +159,8 @@ struct StressUpdateSettings {
   /// step, and it is not updated again; the step goes on. Otherwise the first such particle is
   /// the step's Failure.
   bool fail_particle = false;
+  /// output.plastic_work: sum the step's plastic work (StressTotals::plastic_work).
+  bool plastic_work = false;
   /// Fault injection (mpm run --inject-fault nan:STEP:PARTICLE): this particle's updated stress
   /// is replaced by NaN in this step, as if its model had returned NaN; -1: none.
   std::ptrdiff_t inject_nan_stress = -1;
@@ -170,11 +172,15 @@ struct StressUpdateSettings {
 /// V_{n+1} dt, and the largest signal speed for the next time step. With artificial viscosity:
 /// q_{n+1} (eq. 12) for the next internal force, its dissipation q_{n+1} (-tr D) V_{n+1} dt >= 0,
 /// and the signal speed Q + sqrt(Q^2 + c^2), Q = C_L a + C_0 l |tr D| (Wilkins 1980). A particle
-/// that fails moves to its companion field (create_new_particles) in the same step.
+/// that fails moves to its companion field (create_new_particles) in the same step. With
+/// output.plastic_work: the step's plastic work sum_p sigma_eq,n+1 (ep_n+1 - ep_n) V_{n+1}, the
+/// backward-Euler value of the radial return's sigma : d eps^p (J2, associated flow), a part of
+/// the strain-energy increment.
 struct StressTotals {
   double strain_energy_increment = 0.0;
   double viscous_work = 0.0;      ///< [J]
   double eroded_energy = 0.0;     ///< elastic energy removed by erosion this step [J]
+  double plastic_work = 0.0;      ///< [J], output.plastic_work only
   double max_signal_speed = 0.0;  ///< max_p (c_p + |v_p|) [m/s]
   long failed = 0;                ///< particles that failed this step
   long converted = 0;             ///< particles moved to a companion field this step
@@ -185,6 +191,7 @@ struct StressTotals {
   static constexpr auto kFields = std::tuple{summed(&StressTotals::strain_energy_increment),
                                              summed(&StressTotals::viscous_work),
                                              summed(&StressTotals::eroded_energy),
+                                             summed(&StressTotals::plastic_work),
                                              largest(&StressTotals::max_signal_speed),
                                              summed(&StressTotals::failed),
                                              summed(&StressTotals::converted)};
