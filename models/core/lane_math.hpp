@@ -1,9 +1,9 @@
 // exp, log, log1p, expm1 and pow written with IEEE basic operations only (+, -, *, /, compares
 // and bit moves), branch-free, and inlined, for one double or a vector of kLaneWidth doubles
 // (GCC's vector extension, which the compiler lowers to SSE2, AVX2 or AVX-512 instructions, the
-// widest the CPU has: models/plasticity/johnson_cook_return.cpp). One template serves both, so
-// the flow-stress laws have one source for the one-point update and the batched one. Why not the C
-// library: std::pow and std::log are calls the vectoriser cannot see through, and the vector
+// widest the CPU has: models/plasticity/johnson_cook_return_batch.cpp). One template serves both,
+// so the flow-stress laws have one source for the one-point update and the batched one. Why not the
+// C library: std::pow and std::log are calls the vectoriser cannot see through, and the vector
 // library (glibc's libmvec) has a separate kernel per instruction set, so a run's bits would depend
 // on the CPU. These give the same bits for one lane or eight, on every x86-64 CPU, provided the
 // including file is compiled without floating-point contraction (-ffp-contract=off, the ISO mode

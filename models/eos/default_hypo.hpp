@@ -51,7 +51,7 @@ double default_hypo_pressure(double p_old, double trace_D, double dt, double bul
                              double shear_modulus, const DefaultHypoParams& p);
 
 /// Step 4 with the default_hypo pressure (report eq. 2), for one point (V = double) or a vector of
-/// them (V = lane::Vec, the batched update, models/material/update_kernels.cpp): p_{n+1} =
+/// them (V = lane::Vec, the batched update, models/material/elastic_plastic_batch.cpp): p_{n+1} =
 /// p_n - K_eff tr(D) dt, and the specific internal energy e_{n+1} = e_n - (p_n + p_{n+1})/2 dv +
 /// the retained heat (trapezoidal work, dv = 1/rho_{n+1} - 1/rho_n).
 template <class V>

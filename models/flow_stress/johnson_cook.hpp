@@ -61,8 +61,8 @@ FlowStress johnson_cook(const JohnsonCookParams& p, double plastic_strain,
 
 /// The same with the temperature factor evaluated beforehand (johnson_cook_thermal). Inline and
 /// branch-free in the points' values, for one point (V = double) or a vector of them (V =
-/// lane::Vec, the batched return of models/plasticity/johnson_cook_return.hpp): one source for
-/// both. Branches only on the parameters, which every lane shares; the rate form is a template
+/// lane::Vec, the batched return of models/plasticity/johnson_cook_return_batch.hpp): one source
+/// for both. Branches only on the parameters, which every lane shares; the rate form is a template
 /// argument.
 template <JohnsonCookRateForm Form, class V>
 [[gnu::always_inline]] inline BasicFlowStress<V> johnson_cook_form(const JohnsonCookParams& p,

@@ -33,7 +33,7 @@
 #include "models/flow_stress/flow_stress_law.hpp"
 #include "models/kinematics/corotation.hpp"
 #include "models/material/elastic_plastic_lanes.hpp"
-#include "models/plasticity/johnson_cook_return.hpp"
+#include "models/plasticity/johnson_cook_return_batch.hpp"
 #include "models/plasticity/radial_return.hpp"
 #include "models/stability/stability_check.hpp"
 #include "models/thermal/adiabatic_heating.hpp"
@@ -105,8 +105,8 @@ struct UpdateTrial {
   FlowConditions conditions;  ///< what any other law reads: T_n, p_n, rho1 / rho0, rho1, T_m(rho_n)
   double shear_modulus = 0.0;  ///< mu at the start-of-step T, p and rho (shear_modulus_model)
   bool molten = false;         ///< no return: the deviator is zero
-  /// Newton's return of a Johnson-Cook point, which a batch can do (johnson_cook_return); other
-  /// laws take the one-point return with the same Newton iteration.
+  /// Newton's return of a Johnson-Cook point, which a batch can do (johnson_cook_return_batch);
+  /// other laws take the one-point return with the same Newton iteration.
   bool batched = false;
 };
 
@@ -130,7 +130,7 @@ class ElasticPlastic {
 
   /// update() in three parts, so that a caller can do the radial returns of many points at once
   /// (UpdateBatch): begin_update (false when det F1 <= 0, with report.status set), the return
-  /// (unbatched_return for one point, or johnson_cook_return on a batch's lanes filled by
+  /// (unbatched_return for one point, or johnson_cook_return_batch on a batch's lanes filled by
   /// to_lane), finish_update. update() is exactly these three with the one-point return.
   /// `corotated`, when given, is the green_naghdi step already applied, corotate(s0.R, R_new,
   /// s0.stress, sym L) with R_new the polar rotation of F1 (a batch computes them together,

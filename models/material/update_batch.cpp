@@ -149,8 +149,8 @@ void UpdateBatch::return_by_material(double dt) {
       returns_.thermal_factor[k] = lanes_[k].trial.thermal.factor;
       returns_.thermal_d_factor[k] = lanes_[k].trial.thermal.d_factor;
     }
-    johnson_cook_return(std::get<JohnsonCookParams>(model.params().flow_stress),
-                        model.params().return_tolerance, returns_);
+    johnson_cook_return_batch(std::get<JohnsonCookParams>(model.params().flow_stress),
+                              model.params().return_tolerance, returns_);
     const ReturnValues<lane::Vec>& b = returns_.lanes;
     for (int k = 0; k < size_; ++k) {
       Lane& lane = lanes_[k];

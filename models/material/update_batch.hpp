@@ -2,11 +2,11 @@
 // Green-Naghdi rate, Newton's return and the default_hypo pressure, and that is not molten (the
 // MPM's common case), goes through the whole step on the vector lanes: the polar rotation of its
 // F_{n+1} (polar_rotation_batch), the un-rotations (corotation_batch), the trial deviator, the
-// radial return (johnson_cook_return, grouped by material), heating and pressure, and the rotation
-// back (update_kernels.hpp); only damage, failure and erosion, where a step needs them, run one
-// point at a time (ElasticPlastic::damage_and_failure). Any other point takes the one-point steps
-// (ElasticPlastic::begin_update, its return, finish_update), with its rotations and return still
-// on the lanes. Every point gets the same bits as from ElasticPlastic::update alone
+// radial return (johnson_cook_return_batch, grouped by material), heating and pressure, and the
+// rotation back (elastic_plastic_batch.hpp); only damage, failure and erosion, where a step needs
+// them, run one point at a time (ElasticPlastic::damage_and_failure). Any other point takes the
+// one-point steps (ElasticPlastic::begin_update, its return, finish_update), with its rotations and
+// return still on the lanes. Every point gets the same bits as from ElasticPlastic::update alone
 // (tests/models/material/update_batch_test.cpp). The MPM's stress update drives one per thread.
 //
 //   UpdateBatch batch;
@@ -20,7 +20,7 @@
 #include "models/kinematics/corotation_batch.hpp"
 #include "models/kinematics/polar_rotation_batch.hpp"
 #include "models/material/elastic_plastic.hpp"
-#include "models/material/update_kernels.hpp"
+#include "models/material/elastic_plastic_batch.hpp"
 
 namespace impact {
 

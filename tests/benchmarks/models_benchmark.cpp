@@ -199,7 +199,7 @@ void run_parts(int points, int repeats) {
          sink += radial_return(s, p.shear_modulus, 0.05, 1e-8, flow, ReturnAlgorithm::newton)
                      .delta_plastic_strain;
        }));
-  // The same returns eight at a time (johnson_cook_return, the batch's kernel), per point.
+  // The same returns eight at a time (johnson_cook_return_batch, the batch's kernel), per point.
   std::vector<JohnsonCookReturnBatch> batches((points + kReturnLanes - 1) / kReturnLanes);
   const JohnsonCookThermal th = johnson_cook_thermal(jc_law, 400.0);
   for (int i = 0; i < int(batches.size()) * kReturnLanes; ++i) {
@@ -214,7 +214,7 @@ void run_parts(int points, int repeats) {
     lane::set(b.thermal_d_factor, k, th.d_factor);
   }
   const double per_batch = time_per_call(int(batches.size()), repeats, [&](int i) {
-    johnson_cook_return(jc_law, p.return_tolerance, batches[i]);
+    johnson_cook_return_batch(jc_law, p.return_tolerance, batches[i]);
     sink += lane::get(batches[i].lanes.increment, 0);
   });
   line("radial return, 8 lanes at once (per point)", per_batch / kReturnLanes);

@@ -10,7 +10,7 @@
 #include <tuple>
 #include <vector>
 
-#include "models/plasticity/johnson_cook_return.hpp"
+#include "models/plasticity/johnson_cook_return_batch.hpp"
 
 using namespace impact;
 
@@ -183,8 +183,8 @@ BOOST_AUTO_TEST_CASE(return_converges_in_8_iterations_over_exponents_rates_and_o
 // ep 0.1, dt 1e-8 the second is at 1.4167; at ep 0, dt 1e-6 at 1.0899), a dense
 // scan of g with bisection finds both, and the return gives the smaller for every guess (none,
 // below, at and above either root, on each side of the jump), to the return's tolerance, and
-// bitwise the same in a vector of lanes (johnson_cook_return) as alone. Before, the second case
-// returned 1.0899 from the default start and 0.418 from a guess below the jump.
+// bitwise the same in a vector of lanes (johnson_cook_return_batch) as alone. Before, the second
+// case returned 1.0899 from the default start and 0.418 from a guess below the jump.
 BOOST_AUTO_TEST_CASE(the_2004_rate_form_returns_the_smallest_of_two_roots_from_any_guess) {
   JohnsonCookParams p = al6061();
   p.rate_form = JohnsonCookRateForm::report_2004;
@@ -224,7 +224,7 @@ BOOST_AUTO_TEST_CASE(the_2004_rate_form_returns_the_smallest_of_two_roots_from_a
         batch.thermal_factor[k] = flow.thermal.factor;
         batch.thermal_d_factor[k] = flow.thermal.d_factor;
       }
-      johnson_cook_return(p, {}, batch);
+      johnson_cook_return_batch(p, {}, batch);
       for (std::size_t i = 0; i < guesses.size(); ++i) {
         const auto r =
             radial_return(s, kMu, ep0, dt, flow, ReturnAlgorithm::newton, 0.0, {}, guesses[i]);

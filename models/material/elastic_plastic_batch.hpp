@@ -1,7 +1,7 @@
 // The vector kernels of UpdateBatch (update_batch.hpp) around the radial return: the trial
 // deviator (step 2) and the heating, default_hypo pressure and rotation back (steps 3, 4 and 7)
 // of kLaneWidth points at once, elastic_plastic_lanes.hpp on lane::Vec. Compiled per instruction
-// set and chosen when the program loads, like johnson_cook_return.
+// set and chosen when the program loads, like johnson_cook_return_batch.
 #pragma once
 
 #include "models/kinematics/corotation_lanes.hpp"

@@ -30,7 +30,7 @@ struct alignas(lane::kLaneBytes) JohnsonCookReturnBatch {
 };
 
 /// Newton's radial return on every lane (ReturnAlgorithm::newton).
-void johnson_cook_return(const JohnsonCookParams& p, const ReturnTolerance& tol,
-                         JohnsonCookReturnBatch& batch);
+void johnson_cook_return_batch(const JohnsonCookParams& p, const ReturnTolerance& tol,
+                               JohnsonCookReturnBatch& batch);
 
 }  // namespace impact

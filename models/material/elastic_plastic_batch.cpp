@@ -1,4 +1,4 @@
-#include "models/material/update_kernels.hpp"
+#include "models/material/elastic_plastic_batch.hpp"
 
 namespace impact {
 

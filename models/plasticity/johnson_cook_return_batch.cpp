@@ -1,4 +1,4 @@
-#include "models/plasticity/johnson_cook_return.hpp"
+#include "models/plasticity/johnson_cook_return_batch.hpp"
 
 // Vectors are passed between the always-inlined templates only (see lane_math.hpp).
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -55,8 +55,9 @@ void JohnsonCookReturnBatch::clear(int k) {
   thermal_d_factor[k] = 0.0;
 }
 
-IMPACT_LANE_CLONES void johnson_cook_return(const JohnsonCookParams& p, const ReturnTolerance& tol,
-                                            JohnsonCookReturnBatch& batch) {
+IMPACT_LANE_CLONES void johnson_cook_return_batch(const JohnsonCookParams& p,
+                                                  const ReturnTolerance& tol,
+                                                  JohnsonCookReturnBatch& batch) {
   return_on(p, tol, batch.lanes, batch.thermal_factor, batch.thermal_d_factor);
 }
 
