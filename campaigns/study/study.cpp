@@ -1,8 +1,8 @@
 // `mpm study` (docs/mpm.md#table-2-study-mpm-study): the cases run one after another, each with
 // all the threads it is given (the machine has few cores; running cases side by side would only
 // share them), then study_plot.py draws the figures and writes the table.
-#include "mpm/input/scene_reader.hpp"
 #include "campaigns/study/study.hpp"
+#include "mpm/input/scene_reader.hpp"
 
 #include <omp.h>
 
@@ -42,8 +42,9 @@ void run_plot(const fs::path& out, bool figures) {
   const std::string by_hand =
       "python3 " + script + " " + out.string() + (figures ? "" : " --no-figures");
   if (!fs::is_regular_file(script)) {
-    std::cerr << "mpm study: warning: plotting script not found: " << script
-              << " (set MPM_STUDY_PLOT_SCRIPT to campaigns/study/study_plot.py); no table or figures\n";
+    std::cerr
+        << "mpm study: warning: plotting script not found: " << script
+        << " (set MPM_STUDY_PLOT_SCRIPT to campaigns/study/study_plot.py); no table or figures\n";
     return;
   }
   const PythonInterpreter python = find_python();

@@ -1,7 +1,7 @@
 // JSON reading: every problem names the file and the JSON key path, all problems are reported at
 // once, unknown keys get a nearest-key suggestion.
 #include "models/core/input.hpp"
-#include "support/input_problems.hpp"
+#include "helpers/input_problems.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>

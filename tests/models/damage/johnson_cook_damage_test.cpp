@@ -3,7 +3,7 @@
 // 2004 code's "no damage in strong tension", damage accumulation along a proportional path, the
 // triaxiality of standard stress states and the reader's error messages.
 #include "models/damage/johnson_cook_damage.hpp"
-#include "support/input_problems.hpp"
+#include "helpers/input_problems.hpp"
 
 #include <Eigen/Geometry>
 #include <boost/test/unit_test.hpp>

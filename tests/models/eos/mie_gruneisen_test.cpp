@@ -12,8 +12,8 @@
 #include <sstream>
 #include <string>
 
-#include "support/finite_difference.hpp"
-#include "support/input_problems.hpp"
+#include "helpers/finite_difference.hpp"
+#include "helpers/input_problems.hpp"
 
 using namespace impact;
 using impact::testing::relative_difference;

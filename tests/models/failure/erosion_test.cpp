@@ -21,8 +21,8 @@
 #include <cmath>
 #include <string>
 
+#include "helpers/input_problems.hpp"
 #include "models/material/material.hpp"
-#include "support/input_problems.hpp"
 
 using namespace impact;
 using impact::testing::problems_text;

@@ -9,8 +9,8 @@
 #include <numbers>
 #include <string>
 
+#include "helpers/input_problems.hpp"
 #include "models/damage/johnson_cook_damage.hpp"
-#include "support/input_problems.hpp"
 
 using namespace impact;
 using impact::testing::problems_text;

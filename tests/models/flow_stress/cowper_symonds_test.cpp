@@ -10,9 +10,9 @@
 #include <cmath>
 #include <string>
 
+#include "helpers/cowper_symonds_mild_steel.hpp"
+#include "helpers/input_problems.hpp"
 #include "models/flow_stress/flow_stress_law.hpp"
-#include "support/cowper_symonds_mild_steel.hpp"
-#include "support/input_problems.hpp"
 
 using namespace impact;
 

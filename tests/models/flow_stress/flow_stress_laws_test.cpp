@@ -20,9 +20,9 @@
 #include <cmath>
 #include <string>
 
+#include "helpers/cowper_symonds_mild_steel.hpp"
 #include "models/flow_stress/flow_stress_law.hpp"
 #include "models/plasticity/radial_return.hpp"
-#include "support/cowper_symonds_mild_steel.hpp"
 
 using namespace impact;
 

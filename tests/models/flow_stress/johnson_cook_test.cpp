@@ -5,7 +5,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-#include "support/finite_difference.hpp"
+#include "helpers/finite_difference.hpp"
 
 using namespace impact;
 using impact::testing::central_difference;

@@ -19,12 +19,12 @@
 #include <cmath>
 #include <string>
 
+#include "helpers/finite_difference.hpp"
+#include "helpers/input_problems.hpp"
+#include "helpers/mts_illustrative.hpp"
 #include "models/flow_stress/flow_stress_law.hpp"
 #include "models/material/material.hpp"
 #include "models/plasticity/radial_return.hpp"
-#include "support/finite_difference.hpp"
-#include "support/input_problems.hpp"
-#include "support/mts_illustrative.hpp"
 
 using namespace impact;
 

@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "helpers/finite_difference.hpp"
 #include "models/stability/elastic_plastic_tangent.hpp"
-#include "support/finite_difference.hpp"
 
 using namespace impact;
 using impact::testing::central_difference;

@@ -1,7 +1,7 @@
 // Stability-check selection: read_stability's names, defaults and errors, and check_stability runs
 // exactly the selected checks, with the tangent built from K, mu, the stress and H.
 #include "models/stability/stability_check.hpp"
-#include "support/input_problems.hpp"
+#include "helpers/input_problems.hpp"
 
 #include <boost/test/unit_test.hpp>
 #include <string>

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "helpers/input_problems.hpp"
 #include "models/core/tensor.hpp"
-#include "support/input_problems.hpp"
 
 using namespace impact;
 using impact::testing::problems_text;

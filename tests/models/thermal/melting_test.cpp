@@ -1,7 +1,7 @@
 // Melting (report sec. 3): a melted point keeps its mean stress and loses its deviator; the melted
 // predicate's boundary; the reader's error messages.
 #include "models/thermal/melting.hpp"
-#include "support/input_problems.hpp"
+#include "helpers/input_problems.hpp"
 
 #include <boost/test/unit_test.hpp>
 #include <cmath>

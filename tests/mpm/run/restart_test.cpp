@@ -27,9 +27,9 @@
 #include <sstream>
 
 #include "../verification_helpers.hpp"
+#include "helpers/mts_illustrative.hpp"
 #include "mpm/input/scene_reader.hpp"
 #include "mpm/run/checkpoint.hpp"
-#include "support/mts_illustrative.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

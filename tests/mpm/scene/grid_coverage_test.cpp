@@ -9,8 +9,8 @@
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
 
+#include "helpers/scene_error.hpp"
 #include "mpm/particles/particles.hpp"
-#include "support/scene_error.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <numbers>
 
+#include "helpers/scene_error.hpp"
 #include "mpm/particles/particles.hpp"
-#include "support/scene_error.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

@@ -19,9 +19,9 @@
 #include <sstream>
 
 #include "../verification_helpers.hpp"
+#include "helpers/scene_error.hpp"
 #include "mpm/input/scene_reader.hpp"
 #include "mpm/output/observables.hpp"
-#include "support/scene_error.hpp"
 
 using namespace impact;
 using namespace impact::mpm;

@@ -12,15 +12,15 @@
 //  - Mechanical Threshold Stress, an illustrative set (sigma_a, sigma_i, a0, sigma_es0 free),
 //    its internal variable integrated along each driver curve: each within 1e-4;
 //  - Swift hardening with Cowper-Symonds rate scaling (K, eps0, n, D, q all free; the tests'
-//    mild-steel set, tests/support/cowper_symonds_mild_steel.hpp): each within 1e-4.
+//    mild-steel set, tests/helpers/cowper_symonds_mild_steel.hpp): each within 1e-4.
 // The acceptance asks 1 %; 1e-4 is what a noise-free fit through the same model must reach.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <map>
 
+#include "helpers/cowper_symonds_mild_steel.hpp"
+#include "helpers/mts_illustrative.hpp"
 #include "pointdriver/fit/strength_fit.hpp"
-#include "support/cowper_symonds_mild_steel.hpp"
-#include "support/mts_illustrative.hpp"
 
 using namespace impact;
 using namespace impact::pointdriver::fit;

@@ -11,10 +11,10 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
+#include "helpers/cowper_symonds_mild_steel.hpp"
 #include "pointdriver/fit/fit_report.hpp"
 #include "pointdriver/fit/parameter_bounds.hpp"
 #include "pointdriver/fit/strength_fit.hpp"
-#include "support/cowper_symonds_mild_steel.hpp"
 
 using namespace impact;
 using namespace impact::pointdriver::fit;
