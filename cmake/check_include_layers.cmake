@@ -6,6 +6,10 @@
 #   LAYERS  the folders bottom up, '|'-separated (a ';' list cannot pass the command line whole)
 #   FILES   the folder's files, '|'-separated, relative to ROOT
 #   STAMP   written when every include runs down (or stays in FOLDER)
+#   ABOVE   optional: include prefixes above the whole PREFIX tree, '|'-separated (e.g. campaigns
+#           for mpm: no file of mpm/ may include "campaigns/...")
+# Quoted and angle-bracket includes are both read; a relative include ("../x.hpp") is refused,
+# since it would step around the check.
 # One message per wrong include, all of them at once:
 #   "pointdriver/fit/fit_report.cpp includes pointdriver/commands/options.hpp: fit/ may include
 #   only path/, driver/, ... (and its own files)"
@@ -29,10 +33,24 @@ else()
 endif()
 
 set(problems "")
+string(REPLACE "|" ";" above "${ABOVE}")
 foreach(file IN LISTS files)
-  file(STRINGS "${ROOT}/${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"${PREFIX}/[^/\"]+/")
+  file(STRINGS "${ROOT}/${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<]")
   foreach(line IN LISTS includes)
-    string(REGEX REPLACE "^[^\"]*\"([^\"]+)\".*$" "\\1" header "${line}")
+    string(REGEX REPLACE "^[^\"<]*[\"<]([^\">]+)[\">].*$" "\\1" header "${line}")
+    if(header MATCHES "^\\.\\./|/\\.\\./")
+      string(APPEND problems "\n  ${file} includes ${header}: a relative path; include it as "
+                             "\"${PREFIX}/<folder>/<name>\"")
+      continue()
+    endif()
+    string(REGEX REPLACE "/.*$" "" top "${header}")
+    if(top IN_LIST above)
+      string(APPEND problems "\n  ${file} includes ${header}: ${top}/ is above ${PREFIX}/")
+      continue()
+    endif()
+    if(NOT header MATCHES "^${PREFIX}/[^/]+/")
+      continue()
+    endif()
     string(REGEX REPLACE "^${PREFIX}/([^/]+)/.*$" "\\1" included "${header}")
     if(included STREQUAL FOLDER OR included IN_LIST below)
       continue()

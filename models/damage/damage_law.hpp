@@ -24,7 +24,8 @@ struct NoDamage {
   static constexpr NoParameters<NoDamage> kParameters{};
 };
 
-/// Every damage model, one line each (the first is the default: a material without the block).
+/// Every damage model, one line each (the first is the default of a material without the block;
+/// a block without "type" is johnson_cook, as it was before the catalogue).
 using DamageLaw = std::variant<NoDamage, JohnsonCookDamageParams>;
 
 /// Reads the damage block at `r` by its "type" (default johnson_cook; a problem names the known

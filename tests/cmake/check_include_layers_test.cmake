@@ -7,10 +7,14 @@ file(WRITE ${WORK_DIR}/tree/lib/mid/mid.cpp
      "#include \"lib/mid/mid.hpp\"\n#include \"lib/low/low.hpp\"\n#include <vector>\n")
 file(WRITE ${WORK_DIR}/tree/lib/mid/up.cpp "  #  include \"lib/top/top.hpp\"\n")
 file(WRITE ${WORK_DIR}/tree/lib/mid/stray.cpp "#include \"lib/stray/x.hpp\"\n")
+file(WRITE ${WORK_DIR}/tree/lib/mid/angle.cpp "#include <lib/top/top.hpp>\n")
+file(WRITE ${WORK_DIR}/tree/lib/mid/relative.cpp "#include \"../top/top.hpp\"\n")
+file(WRITE ${WORK_DIR}/tree/lib/mid/program.cpp "#include \"app/run.hpp\"\n#include <omp.h>\n")
 
 function(check folder files expected_result expected_output)
   execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${WORK_DIR}/tree -DPREFIX=lib -DFOLDER=${folder}
                           -DLAYERS=low|mid|top -DFILES=${files} -DSTAMP=${WORK_DIR}/${folder}.stamp
+                          -DABOVE=app|tools
                           -P ${SCRIPT}
                   RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
   string(REGEX REPLACE "[ \n]+" " " out "${out}")  # CMake wraps long messages
@@ -35,3 +39,7 @@ check(mid lib/mid/mid.cpp|lib/mid/up.cpp 1
       "lib/mid/up.cpp includes lib/top/top.hpp: mid/ may include only low/ (and its own files)")
 check(mid lib/mid/stray.cpp 1
       "lib/mid/stray.cpp includes lib/stray/x.hpp: stray/ is not one of the layers of lib/ (low, mid, top)")
+check(mid lib/mid/angle.cpp 1
+      "lib/mid/angle.cpp includes lib/top/top.hpp: mid/ may include only low/ (and its own files)")
+check(mid lib/mid/relative.cpp 1 "lib/mid/relative.cpp includes ../top/top.hpp: a relative path")
+check(mid lib/mid/program.cpp 1 "lib/mid/program.cpp includes app/run.hpp: app/ is above lib/")
