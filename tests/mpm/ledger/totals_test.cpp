@@ -113,10 +113,10 @@ BOOST_AUTO_TEST_CASE(the_step_totals_tables_name_every_member) {
                                                     doubles_in(g) + doubles_in(h));
   }
   {
-    const auto& [a, b, c, d, e, f, g] = StressTotals{};
+    const auto& [a, b, c, d, e, f, g, h] = StressTotals{};
     BOOST_TEST(field_count<StressTotals>() == doubles_in(a) + doubles_in(b) + doubles_in(c) +
                                                   doubles_in(d) + doubles_in(e) + doubles_in(f) +
-                                                  doubles_in(g));
+                                                  doubles_in(g) + doubles_in(h));
   }
   {
     const auto& [a, b, c, d, e, f, g, h, i, j, k, l, m] = Ledger::State{};
