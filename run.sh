@@ -190,7 +190,7 @@ case "${1:-}" in
       --threads 2 "${@:2}"
     ;;
   *)
-    sed -n '2,25p' "$0"
+    sed -n '2,/^set -euo/p' "$0" | sed '$d'  # the header comment, whole
     exit 1
     ;;
 esac

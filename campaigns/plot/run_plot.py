@@ -6,7 +6,7 @@
 Draws from RUN/history.csv (columns read by name, so ledger columns added later are picked up):
   energy books   every `[J]` column (kinetic, strain, total, the booked sinks, outflow, external
                  work) [J] against time [us]
-  energy error   energy_error [-] (docs/mpm.md#energy-ledger)
+  energy error   energy_error [-] (docs/mpm.md#ledger)
   momentum       every `[kg m/s]` and `[N s]` column (momentum, boundary, outflow and external
                  impulses by component)
   observables    the gauges (the columns after energy_error, each in its unit); without gauges,

@@ -2,7 +2,7 @@
 // the admissible range, the default and the meaning that the reader's own calls carry (MOOSE's
 // validParams, built from the reader instead of beside it). A JsonReader records into an
 // InputKeyRecorder only when one is attached to its InputProblems; docs are checked against it
-// (tests/mpm/scene/scene_keys_test.cpp) and `mpm keys` prints it.
+// (tests/mpm/input/scene_keys_test.cpp) and `mpm keys` prints it.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -9,7 +9,7 @@
 namespace impact {
 
 /// Which criterion failed a point (report sec. 3), kept with the point so that a run can say, per
-/// particle, why it failed (docs/models.md#failure-causes).
+/// particle, why it failed (docs/models.md#failure-causes-and-failure-in-compression).
 enum class FailureCause : std::uint8_t { none, melting, tepla, drucker, becker };
 
 /// Bits of PointState::instability: a stability check fired at a plastic step but, with

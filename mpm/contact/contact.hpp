@@ -12,7 +12,7 @@
 //               small body's side face, sees its slide as an approach, and took 0.9 m/s in 10 us
 //               off a block sliding at 5 m/s on another, then decelerated it 1.6 times faster
 //               than Coulomb's law. Where two equal bodies' edges meet, the sum is the right one
-//               (docs/mpm.md#velocity-fields-and-contact).
+//               (docs/mpm.md#velocity-fields-and-contact-physicscontact-contact).
 //   detection   approaching, u_n = (v_f - v_cm) . n_f > 0. Bodies pressed together meet it at
 //               every step (the compressed material pushes its nodes outward), so the friction
 //               they transmit is bounded by the normal impulse of the step: a block resting on

@@ -1,7 +1,7 @@
 // The scene format's keys as the scene reader asks for them (models/core/input_keys.hpp): the
 // reader reads sample scenes that switch on every optional block and every geometry type, and
 // records each key's type, range, default and meaning. `mpm keys` prints them;
-// tests/mpm/scene/scene_keys_test.cpp checks docs/scenes.md's tables against them.
+// tests/mpm/input/scene_keys_test.cpp checks docs/scenes.md's tables against them.
 #pragma once
 
 #include <string>

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "mpm/input/scene_keys.hpp"
 #include "mpm/scene/grid_coverage.hpp"
 #include "mpm/scene/seed_points.hpp"
 #include "mpm/shape/shape.hpp"
@@ -296,8 +297,13 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
         r.boolean_or("turn_on_adiabatic_heating", true, "heat particles by plastic work");
   }
   // Absent, each of these three leaves the material file's own choice.
-  for (const char* key : {"erosion", "do_melting", "turn_on_adiabatic_heating"})
-    r.amend_description(key, [](KeyDescription& d) { d.default_value = ""; });
+  // Absent, each material keeps its own file's choice: no one default value.
+  for (const char* key : {"erosion", "do_melting", "turn_on_adiabatic_heating"}) {
+    r.amend_description(key, [](KeyDescription& d) {
+      d.default_value = std::string(kComputedDefault);
+      d.meaning += " (absent: each material file's own choice)";
+    });
+  }
   r.reject_unknown_keys();
 }
 

@@ -8,10 +8,10 @@
 // second pass (the contact impulse of the step) reaches both the positions and the velocities.
 // Handing the particles the first pass too (the increment from the uncorrected p_I/m_I) removes the
 // same approach velocity again at every step, because the particles keep carrying it to the grid:
-// the sphere-cylinder lost 26 % of E0 in 10 us that way (docs/mpm.md#velocity-fields-and-contact).
-// The mirror faces act on the start and end velocities alike: a stationary wall does no work; a
-// `wall` holds the end velocity of the face nodes its body touches (grid/wall.cpp)
-// (docs/mpm.md#ledger).
+// the sphere-cylinder lost 26 % of E0 in 10 us that way
+// (docs/mpm.md#velocity-fields-and-contact-physicscontact-contact). The mirror faces act on the
+// start and end velocities alike: a stationary wall does no work; a `wall` holds the end velocity
+// of the face nodes its body touches (grid/wall.cpp) (docs/mpm.md#ledger).
 #include <omp.h>
 
 #include <algorithm>

@@ -173,10 +173,11 @@ struct StressUpdateSettings {
 /// q_{n+1} (eq. 12) for the next internal force, its dissipation q_{n+1} (-tr D) V_{n+1} dt >= 0,
 /// and the signal speed Q + sqrt(Q^2 + c^2), Q = C_L a + C_0 l |tr D| (Wilkins 1980). A particle
 /// that fails moves to its companion field (create_new_particles) in the same step. With
-/// output.plastic_work: the step's plastic work sum_p sigma_y,n+1 (ep_n+1 - ep_n) V_{n+1}, the
+/// output.plastic_work: the step's plastic work sum_p sigma_eq,n+1 (ep_n+1 - ep_n) V_{n+1}, the
 /// backward-Euler value of the radial return's sigma : d eps^p (J2, associated flow: sigma_eq =
-/// sigma_y after the return), as the model reports it (StepReport::plastic_work, the work whose
-/// Taylor-Quinney share heats the point); a part of the strain-energy increment.
+/// sigma_y after the return), with the stress the point carries at the end of the step: a point
+/// whose stress erosion zeroes (ZeroStress) does no plastic work from its failure on, though its
+/// model may go on reporting flow. A part of the strain-energy increment.
 struct StressTotals {
   double strain_energy_increment = 0.0;
   double viscous_work = 0.0;      ///< [J]

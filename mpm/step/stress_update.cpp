@@ -149,7 +149,8 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
         const double V1 = P.volume0[p] * F1.determinant();
         sum.strain_energy_increment += 0.5 * ddot(s0.stress + s1.stress, sym(L)) * V1 * dt;
         sum.eroded_energy += r.eroded_energy * V1;
-        if (settings.plastic_work) sum.plastic_work += r.plastic_work * V1;  // sigma_y d_ep V
+        if (settings.plastic_work)  // with the stress the point carries: none once eroded to zero
+          sum.plastic_work += von_mises(s1.stress) * (s1.plastic_strain - s0.plastic_strain) * V1;
         double signal = r.wave_speed;
         if (av != nullptr) {
           const double trD = L.trace();

@@ -22,7 +22,8 @@
 //     companion field taking part in the contact.
 //   - the sinks (viscous_work, friction_heat) never decrease, and |energy_error| < 5 % of E0 at
 //     the end (the converted block's field meets the left block's through the contact
-//     projection, which takes kinetic energy: docs/mpm.md#velocity-fields-and-contact).
+//     projection, which takes kinetic energy:
+//     docs/mpm.md#velocity-fields-and-contact-physicscontact-contact).
 #include <boost/test/unit_test.hpp>
 #include <sstream>
 

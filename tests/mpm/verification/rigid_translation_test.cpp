@@ -3,7 +3,8 @@
 // velocity gradient and hence the stress vanish, and the energy is constant. Tolerances: positions
 // 1e-12 m, stress 1e-3 Pa (against rho c |v| = 6e8 Pa), energy 1e-12 relative. All four
 // shape/scheme combinations: linear/USL relies on the light-node limiter of its velocity
-// gradient (docs/mpm.md#usl-and-light-nodes), without which round-off grows ~1e37-fold.
+// gradient (docs/mpm.md#usl-and-light-nodes-klightnodemassfraction-stepstephpp), without which
+// round-off grows ~1e37-fold.
 #include <boost/test/unit_test.hpp>
 
 #include "../verification_helpers.hpp"
