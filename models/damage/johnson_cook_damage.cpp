@@ -53,6 +53,8 @@ JohnsonCookDamageParams read_johnson_cook_damage(JsonReader& r, double room_temp
         r.number("cutoff_triaxiality", Range::closed(-10.0, 0.0),
                  "triaxiality at and below which no damage accumulates [-] (Bao & "
                  "Wierzbicki 2005: -1/3)");
+    // Optional, with no value when absent (damage at every triaxiality, the report's eq. 7).
+    r.amend_description("cutoff_triaxiality", [](KeyDescription& d) { d.default_value = ""; });
   }
   // eps_f at zero triaxiality, reference rate and room temperature is D1 + D2; a non-positive value
   // would put every point on the floor even in pure shear: surely a typo (e.g. a sign of D2).

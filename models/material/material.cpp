@@ -17,8 +17,9 @@ ObjectiveRate read_objective_rate(JsonReader& r) {
 
 }  // namespace
 
-Material read_material(const Json& document, const std::string& file) {
+Material read_material(const Json& document, const std::string& file, InputKeyRecorder* keys) {
   InputProblems problems(file);
+  problems.record_keys_to(keys);
   if (!document.is_object()) {
     problems.add("", "expected a JSON object with the material's properties");
     problems.throw_if_any();
@@ -26,8 +27,12 @@ Material read_material(const Json& document, const std::string& file) {
   JsonReader root(document, "", problems);
   ElasticPlasticParams p;
   const std::string name = root.string("name", "material name");
-  root.ignore("description");
-  root.ignore("sources");
+  root.read_elsewhere("description", [] {
+    return KeyDescription{"any", "", "", "documentation only; not read"};
+  });
+  root.read_elsewhere("sources", [] {
+    return KeyDescription{"any", "", "", "the sources of each value, documentation only; not read"};
+  });
   // Ranges refuse what is physically impossible (no solid is denser than 30000 kg/m^3 or stiffer
   // than 2e12 Pa); a possible but implausible SI value that looks typed in g/cm^3, GPa, MPa,
   // J/(g K) or degC is read with a warning naming the likely unit (units_check.hpp): a foam's

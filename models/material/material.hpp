@@ -22,8 +22,10 @@ struct Material {
 };
 
 /// Validates a material document; every problem is collected and thrown as one InputError whose
-/// lines name `file` and the JSON key path.
-Material read_material(const Json& document, const std::string& file);
+/// lines name `file` and the JSON key path. With `keys`, every key the reader asks for is
+/// recorded there (models/material/material_keys.hpp); nullptr, the default, records nothing.
+Material read_material(const Json& document, const std::string& file,
+                       InputKeyRecorder* keys = nullptr);
 
 /// Loads a material file and applies `overrides` as an RFC 7396 JSON merge patch before validation
 /// (how a scene or a path file changes a material inline).

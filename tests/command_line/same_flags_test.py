@@ -24,6 +24,7 @@ def main(bin_dir, source, work):
     # (name, command words, valid arguments with {out} for the output, takes --set)
     commands = [
         ("material_check", ["material_check"], [material], False, True),
+        ("material_keys", ["material_check"], ["--keys", "--format", "json"], False, False),
         ("run", ["pointdriver", "run"], [path, "--out={out}.csv"], True, True),
         ("verify", ["pointdriver", "verify"], ["--case", "elastic_uniaxial", "--out={out}"],
          True, False),
