@@ -87,8 +87,8 @@ class Ledger {
   bool with_external() const { return with_external_; }
   bool with_outflow() const { return with_outflow_; }
 
-  /// Every accumulator: what a checkpoint saves (mpm/simulation/simulation_checkpoint.cpp walks kFields, then
-  /// the sinks); restore() on a ledger with the same columns continues bit for bit.
+  /// Every accumulator: what a checkpoint saves (mpm/simulation/simulation_checkpoint.cpp walks
+  /// kFields, then the sinks); restore() on a ledger with the same columns continues bit for bit.
   struct State {
     double time = 0.0, kinetic = 0.0, strain = 0.0, external_work = 0.0, initial_energy = 0.0;
     double outflow_mass = 0.0, outflow_kinetic = 0.0;
