@@ -16,9 +16,12 @@
 #include <set>
 #include <sstream>
 
+#include "helpers/key_tables.hpp"
 #include "models/material/material.hpp"
 
 using namespace impact;
+
+using namespace impact::test;
 
 namespace {
 
@@ -32,40 +35,6 @@ struct DocumentedKey {
   std::string range_text;    ///< the range (or values) column
   std::string meaning_text;  ///< the meaning column
 };
-
-std::string trim(std::string s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
-
-/// The cells of a Markdown table row (an escaped \| stays inside its cell).
-std::vector<std::string> cells(const std::string& row) {
-  std::vector<std::string> out;
-  std::string cell;
-  for (std::size_t i = 1; i < row.size(); ++i) {
-    if (row[i] == '\\' && i + 1 < row.size() && row[i + 1] == '|') {
-      cell += '|';
-      ++i;
-    } else if (row[i] == '|') {
-      out.push_back(trim(cell));
-      cell.clear();
-    } else {
-      cell += row[i];
-    }
-  }
-  return out;
-}
-
-/// The `backticked` words of a text.
-std::vector<std::string> backticked(const std::string& text) {
-  std::vector<std::string> out;
-  static const std::regex code("`([^`]+)`");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), code); it != std::sregex_iterator();
-       ++it)
-    out.push_back((*it)[1]);
-  return out;
-}
 
 /// The key prefix a heading sets: "## `constitutive_model`" -> constitutive_model; "###
 /// `flow_stress` (`type`: `zerilli_armstrong`)" ->
@@ -131,21 +100,8 @@ std::map<std::string, DocumentedKey> documented_keys(const std::string& file) {
   return keys;
 }
 
-/// The value a default column states: its first `code` span, else its text up to " (" or ";".
-std::string stated_default(const std::string& text) {
-  if (text.rfind('`', 0) == 0) return backticked(text).front();
-  return trim(text.substr(0, std::min(text.find(" ("), text.find(';'))));
-}
-
 bool states_required(const std::string& text) {
   return text.rfind("required", 0) == 0 || text.rfind("**required**", 0) == 0;
-}
-
-std::optional<double> number_of(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  return *end == '\0' ? std::optional<double>(v) : std::nullopt;
 }
 
 /// Numbers compare by value (1e-6 is 1e-06).
@@ -153,25 +109,6 @@ bool same_value(const std::string& docs, const std::string& reader) {
   const auto a = number_of(docs), b = number_of(reader);
   if (a && b) return *a == *b;
   return docs == reader;
-}
-
-/// An interval: bounds and whether each end is open.
-struct Interval {
-  double min, max;
-  bool min_open, max_open;
-  bool operator==(const Interval& o) const {
-    // An infinite end is open whatever the notation.
-    const auto same_end = [](double a, bool ao, double b, bool bo) {
-      return a == b && (std::isinf(a) || ao == bo);
-    };
-    return same_end(min, min_open, o.min, o.min_open) && same_end(max, max_open, o.max, o.max_open);
-  }
-};
-
-std::string text_of(const Interval& i) {
-  std::ostringstream o;
-  o << (i.min_open ? '(' : '[') << i.min << ", " << i.max << (i.max_open ? ')' : ']');
-  return o.str();
 }
 
 /// The range a docs cell states: "(a, b]" (or "in (a, b]"), ">= a", "> a" or "any".
@@ -187,14 +124,6 @@ std::optional<Interval> stated_range(const std::string& text) {
     return Interval{std::strtod(m[2].str().c_str(), nullptr), inf, m[1] == ">", true};
   if (trim(text).rfind("any", 0) == 0) return Interval{-inf, inf, true, true};
   return std::nullopt;
-}
-
-/// The reader's Range::describe() text as an interval.
-Interval reader_range(const std::string& text) {
-  const auto comma = text.find(',');
-  return {std::strtod(text.substr(1, comma - 1).c_str(), nullptr),
-          std::strtod(text.substr(comma + 1).c_str(), nullptr), text.front() == '(',
-          text.back() == ')'};
 }
 
 /// The names of a reader's "one of: a, b" type.

@@ -15,11 +15,14 @@
 #include <set>
 #include <sstream>
 
+#include "helpers/key_tables.hpp"
 #include "mpm/input/scene_reader.hpp"
 #include "mpm/scene/scene.hpp"
 
 using namespace impact;
 using namespace impact::mpm;
+
+using namespace impact::test;
 
 namespace {
 
@@ -33,40 +36,6 @@ struct DocumentedKey {
   std::string type_text;     ///< the type (or values) column
   std::string meaning_text;  ///< the meaning column
 };
-
-std::string trim(std::string s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
-
-/// The cells of a Markdown table row (an escaped \| stays inside its cell).
-std::vector<std::string> cells(const std::string& row) {
-  std::vector<std::string> out;
-  std::string cell;
-  for (std::size_t i = 1; i < row.size(); ++i) {
-    if (row[i] == '\\' && i + 1 < row.size() && row[i + 1] == '|') {
-      cell += '|';
-      ++i;
-    } else if (row[i] == '|') {
-      out.push_back(trim(cell));
-      cell.clear();
-    } else {
-      cell += row[i];
-    }
-  }
-  return out;
-}
-
-/// The `backticked` words of a text.
-std::vector<std::string> backticked(const std::string& text) {
-  std::vector<std::string> out;
-  static const std::regex code("`([^`]+)`");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), code); it != std::sregex_iterator();
-       ++it)
-    out.push_back((*it)[1]);
-  return out;
-}
 
 /// Every key of every key table (header "key | ..."), as a dotted path: the table's section
 /// heading (`grid`, `objects.<name>`, ...) followed by the row's key; `<face>` stands for each
@@ -121,19 +90,6 @@ std::map<std::string, DocumentedKey> documented_keys(const std::string& file) {
   return keys;
 }
 
-/// The value a default column states: its first `code` span, else its text up to " (" or ";".
-std::string stated_default(const std::string& text) {
-  if (text.rfind('`', 0) == 0) return backticked(text).front();
-  return trim(text.substr(0, std::min(text.find(" ("), text.find(';'))));
-}
-
-std::optional<double> number_of(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  return *end == '\0' ? std::optional<double>(v) : std::nullopt;
-}
-
 /// Numbers compare by value (1.0 is 1, 1e4 is 10000), arrays element by element.
 bool same_value(const std::string& docs, const std::string& reader) {
   const auto a = number_of(docs), b = number_of(reader);
@@ -147,25 +103,6 @@ bool same_value(const std::string& docs, const std::string& reader) {
     return !std::getline(x, p, ',') && !std::getline(y, q, ',');
   }
   return docs == reader;
-}
-
-/// An interval: bounds and whether each end is open.
-struct Interval {
-  double min, max;
-  bool min_open, max_open;
-  bool operator==(const Interval& o) const {
-    // An infinite end is open whatever the notation.
-    const auto same_end = [](double a, bool ao, double b, bool bo) {
-      return a == b && (std::isinf(a) || ao == bo);
-    };
-    return same_end(min, min_open, o.min, o.min_open) && same_end(max, max_open, o.max, o.max_open);
-  }
-};
-
-std::string text_of(const Interval& i) {
-  std::ostringstream o;
-  o << (i.min_open ? '(' : '[') << i.min << ", " << i.max << (i.max_open ? ')' : ']');
-  return o.str();
 }
 
 /// The range a docs row states: "in (a, b]", "integers in a..b", ">= a" or "> a"; the type
@@ -186,14 +123,6 @@ std::optional<Interval> stated_range(const std::string& text) {
   if (std::regex_search(text, m, bound))
     return Interval{std::strtod(m[2].str().c_str(), nullptr), inf, m[1] == ">", true};
   return std::nullopt;
-}
-
-/// The reader's Range::describe() text as an interval.
-Interval reader_range(const std::string& text) {
-  const auto comma = text.find(',');
-  return {std::strtod(text.substr(1, comma - 1).c_str(), nullptr),
-          std::strtod(text.substr(comma + 1).c_str(), nullptr), text.front() == '(',
-          text.back() == ')'};
 }
 
 /// A union's parts are geometries: objects.<name>.geometry.parts.<name>.radius is documented as
