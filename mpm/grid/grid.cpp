@@ -11,11 +11,14 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
     : spec_(spec),
       dx_(spec.spacing()),
       inv_dx_(dx_.cwiseInverse()),
+      // A 2D grid stores its one node plane along z, k = 0 (scene.hpp GridGeometry).
       first_{box ? std::max(box->first[0], -1) : -1, box ? std::max(box->first[1], -1) : -1,
-             box ? std::max(box->first[2], -1) : -1},
+             spec.planar() ? 0 : (box ? std::max(box->first[2], -1) : -1)},
       nx_((box ? std::min(box->last[0], spec.cells[0] + 1) : spec.cells[0] + 1) - first_[0] + 1),
       ny_((box ? std::min(box->last[1], spec.cells[1] + 1) : spec.cells[1] + 1) - first_[1] + 1),
-      nz_((box ? std::min(box->last[2], spec.cells[2] + 1) : spec.cells[2] + 1) - first_[2] + 1),
+      nz_(spec.planar() ? 1
+                        : (box ? std::min(box->last[2], spec.cells[2] + 1) : spec.cells[2] + 1) -
+                              first_[2] + 1),
       fields_(std::max(fields, 1)),
       threads_(std::max(threads, 1)),
       nodes_(entry_count()) {

@@ -160,12 +160,13 @@ class Grid {
   /// The block marks (active blocks only): mark_stencil() sets them during the scatter (threads
   /// mark disjoint blocks, mpm/step/scatter_order.hpp), activate() reads and resets them.
   char* block_marks() { return marks_.data(); }
-  /// Marks the blocks holding nodes base..base+n-1 per axis (a particle's stencil).
-  void mark_stencil(char* marks, const std::array<int, 3>& base, int n) const {
+  /// Marks the blocks holding nodes base..base+n-1 along x and y and base..base+nz-1 along z (a
+  /// particle's stencil; nz = 1 on a 2D grid).
+  void mark_stencil(char* marks, const std::array<int, 3>& base, int n, int nz) const {
     int lo[3], hi[3];
     for (int d = 0; d < 3; ++d) {  // storage coordinate = node index - first
       lo[d] = (base[d] - first_[d]) / kBlock;
-      hi[d] = (base[d] - first_[d] + n - 1) / kBlock;
+      hi[d] = (base[d] - first_[d] + (d == 2 ? nz : n) - 1) / kBlock;
     }
     for (int a = lo[0]; a <= hi[0]; ++a)
       for (int b = lo[1]; b <= hi[1]; ++b)

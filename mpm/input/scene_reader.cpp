@@ -8,6 +8,7 @@
 
 #include "mpm/input/scene_keys.hpp"
 #include "mpm/scene/grid_coverage.hpp"
+#include "mpm/scene/planar_form.hpp"
 #include "mpm/scene/seed_points.hpp"
 #include "mpm/shape/shape.hpp"
 
@@ -111,12 +112,65 @@ const Json& at(const Json& node, const char* key) {
   return node.is_object() && node.contains(key) ? node[key] : empty_json_object();
 }
 
+const char* const kGeometryNames[] = {"3d", "axisymmetric", "plane_strain"};
+
+// The grid geometry the document asks for (grid.geometry, validated by read_grid; an unknown
+// value reads as 3d here).
+GridGeometry document_geometry(const Json& doc) {
+  const Json& g = at(at(doc, "grid"), "geometry");
+  if (g == kGeometryNames[1]) return GridGeometry::axisymmetric;
+  if (g == kGeometryNames[2]) return GridGeometry::plane_strain;
+  return GridGeometry::three_d;
+}
+
+// A 2D grid is written in its plane: grid.lower, grid.upper and grid.cells take [x, y], as do
+// objects' particles_per_cell and solver.ranks_per_axis. They are read as the 3D grid of one
+// cell of 1 m along z, centred on z = 0 (scene.hpp GridGeometry): this completes each [x, y]
+// with its z value, and refuses three numbers where two are expected. Every other vector (the
+// objects' geometry, velocities, gauge regions) stays 3D: the bodies are the 3D twin's.
+Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
+  if (document_geometry(doc) == GridGeometry::three_d) return doc;
+  Json out = doc;
+  const auto complete = [&](Json& node, const std::string& path, const char* key, double z) {
+    if (!node.is_object() || !node.contains(key) || !node[key].is_array()) return;
+    Json& a = node[key];
+    if (a.size() == 2) {
+      a.push_back(z);
+    } else if (a.size() == 3) {
+      problems.add(path + "/" + key,
+                   "expected an array of 2 numbers [x, y] on a 2D grid "
+                   "(grid.geometry \"" +
+                       at(doc["grid"], "geometry").get<std::string>() + "\"), got " + a.dump());
+      a[2] = z;  // read on, so that the other problems show too
+    }
+  };
+  Json& grid = out["grid"];
+  complete(grid, "/grid", "lower", -0.5);
+  complete(grid, "/grid", "upper", 0.5);
+  complete(grid, "/grid", "cells", 1);
+  if (out.contains("solver") && out["solver"].is_object())
+    complete(out["solver"], "/solver", "ranks_per_axis", 1);
+  if (out.contains("objects") && out["objects"].is_object())
+    for (auto& item : out["objects"].items())
+      complete(item.value(), "/objects/" + item.key(), "particles_per_cell", 1);
+  return out;
+}
+
 void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   JsonReader r = root.child("grid", "background grid");
   const Json& n = at(doc, "grid");
-  g.lower = read_vec3(r, n, "lower", "lower corner of the grid [m]");
-  g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m]");
-  g.cells = read_int3(r, n, "cells", 1, 100000, "cells per axis", std::nullopt);
+  const std::string geometry =
+      r.choice("geometry", {kGeometryNames[0], kGeometryNames[1], kGeometryNames[2]},
+               "3d, or a 2D grid in the x-y plane: axisymmetric (x the axis, y the radius >= 0; "
+               "totals of the revolved body) or plane_strain (per metre along z)",
+               kGeometryNames[0]);
+  g.geometry = geometry == kGeometryNames[1]   ? GridGeometry::axisymmetric
+               : geometry == kGeometryNames[2] ? GridGeometry::plane_strain
+                                               : GridGeometry::three_d;
+  g.lower = read_vec3(r, n, "lower", "lower corner of the grid [m] ([x, y] on a 2D grid)");
+  g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m] ([x, y] on a 2D grid)");
+  g.cells =
+      read_int3(r, n, "cells", 1, 100000, "cells per axis ([x, y] on a 2D grid)", std::nullopt);
   // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int.
   const double stored_nodes = (g.cells[0] + 3.0) * (g.cells[1] + 3.0) * (g.cells[2] + 3.0);
   if (stored_nodes > static_cast<double>(std::numeric_limits<int>::max())) {
@@ -132,9 +186,24 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
     r.problems().warn(r.key_path("upper"),
                       "largest extent (upper - lower) " + *hint + "; the value is used as given");
   }
+  if (g.geometry == GridGeometry::axisymmetric && g.lower(1) != 0.0 && std::isfinite(g.lower(1)))
+    r.problems().add(r.key_path("lower") + "/1",
+                     "an axisymmetric grid starts at the axis, y = 0 (y is the radius); expected "
+                     "0, got " +
+                         std::to_string(g.lower(1)));
   g.faces.fill(FaceCondition::symmetric);
+  // A 2D grid has no faces along z (its one cell of 1 m is not a mesh axis): they are free.
+  const int faces = g.planar() ? 4 : 6;
+  if (g.planar()) g.faces[4] = g.faces[5] = FaceCondition::free;
   if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed, free or wall")) {
-    for (int f = 0; f < 6; ++f) {
+    for (int f = 4; f < 6 && g.planar(); ++f)
+      if (b->has(kFaceNames[f])) {
+        b->problems().add(b->key_path(kFaceNames[f]),
+                          std::string("a 2D grid (grid.geometry \"") + geometry +
+                              "\") has no face along z; expected faces x-, x+, y- and y+ only");
+        b->ignore(kFaceNames[f]);
+      }
+    for (int f = 0; f < faces; ++f) {
       const std::string c = b->choice(kFaceNames[f], {"symmetric", "fixed", "free", "wall"},
                                       "grid face condition (symmetric: frictionless mirror plane; "
                                       "wall: rigid wall that never pulls, with friction)",
@@ -143,6 +212,11 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
                    : c == "free" ? FaceCondition::free
                    : c == "wall" ? FaceCondition::wall
                                  : FaceCondition::symmetric;
+      if (f == 2 && g.geometry == GridGeometry::axisymmetric && c != "symmetric")
+        b->problems().add(b->key_path(kFaceNames[f]),
+                          "the face y- of an axisymmetric grid is the axis of symmetry, where the "
+                          "radial velocity is zero: expected \"symmetric\", got \"" +
+                              c + "\"");
     }
     b->reject_unknown_keys();
   }
@@ -672,6 +746,35 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
   }
 }
 
+// On a 2D grid every body must have its 2D form (mpm/scene/planar_form.hpp) and move in the
+// plane: along the axis when axisymmetric (a uniform radial velocity is no body of revolution's),
+// with no z component in plane strain; gravity likewise.
+void check_planar_scene(InputProblems& problems, Scene& s) {
+  const GridGeometry kind = s.grid.geometry;
+  if (kind == GridGeometry::three_d) return;
+  const bool axi = kind == GridGeometry::axisymmetric;
+  const std::string grid = std::string("grid.geometry \"") + kGeometryNames[int(kind)] + "\"";
+  const auto moves_in_plane = [&](const Vec3& v) { return v(2) == 0.0 && (!axi || v(1) == 0.0); };
+  const std::string expected =
+      axi ? "expected [v, 0, 0]: a body of revolution moves along its axis x"
+          : "expected [vx, vy, 0]: a plane-strain body moves in the x-y plane";
+  for (SceneObject& o : s.objects) {
+    const std::string key = "/objects/" + o.name;
+    const std::string why = planar_form_problem(o.geometry, kind);
+    if (!why.empty()) problems.add(key + "/geometry", why + " (" + grid + ")");
+    if (!moves_in_plane(o.velocity))
+      problems.add(key + "/velocity",
+                   "initial velocity " + vec_text(o.velocity) + " on " + grid + ": " + expected);
+    o.particles_per_cell[2] = 1;  // the one cell along z
+  }
+  if (!moves_in_plane(s.solver.gravity))
+    problems.add("/solver/gravity",
+                 "gravity " + vec_text(s.solver.gravity) + " on " + grid + ": " + expected);
+  if (s.solver.ranks_per_axis[2] > 1)
+    problems.add("/solver/ranks_per_axis",
+                 "a 2D grid is split in x and y only; expected [px, py] (" + grid + ")");
+}
+
 // Multi-field contact keeps per-node arrays of kMaxContactFields fields (contact.cpp): a scene
 // with more velocity fields is refused here rather than have the rest ignored.
 void check_field_count(InputProblems& problems, const Scene& s) {
@@ -699,23 +802,27 @@ Json load_scene_document(const std::string& file) {
 Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder* keys) {
   InputProblems problems(file);
   problems.record_keys_to(keys);
-  JsonReader root(document, "", problems);
+  // A 2D grid's [x, y] arrays read as the 3D ones they stand for (with_plane_arrays_completed).
+  const Json in_plane = with_plane_arrays_completed(document, problems);
+  const Json& doc = in_plane;
+  JsonReader root(doc, "", problems);
   Scene s;
   s.file = file;
   s.resolved = document;
   root.read_elsewhere("description", [] {
     return KeyDescription{"string", "", "", "free text, ignored"};
   });
-  read_grid(root, document, s.grid);
+  read_grid(root, doc, s.grid);
   read_time(root, s.time, s.warnings);
-  read_solver(root, document, s.solver);
+  read_solver(root, doc, s.solver);
   read_physics(root, s.physics);
-  read_output(root, document, file, s.time.max_time, s.output);
-  read_materials(root, document, s.materials);
-  read_objects(root, document, s.materials, s.objects);
+  read_output(root, doc, file, s.time.max_time, s.output);
+  read_materials(root, doc, s.materials);
+  read_objects(root, doc, s.materials, s.objects);
   apply_physics_overrides(s.physics, s.materials);
+  if (problems.empty()) check_planar_scene(problems, s);
   if (problems.empty()) check_objects_in_grid(problems, s);  // grid and objects valid
-  read_observables(problems, document, s);
+  read_observables(problems, doc, s);
   check_field_count(problems, s);
   root.reject_unknown_keys();
   problems.throw_if_any();

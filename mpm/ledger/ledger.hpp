@@ -47,8 +47,14 @@ class Ledger {
   /// `with_external`: gravity is on, so body-force impulse and work get columns too;
   /// `with_outflow`: particles that leave the grid are removed (grid.outflow = remove), so their
   /// mass, momentum and kinetic energy get columns.
-  explicit Ledger(bool with_external = false, bool with_outflow = false)
-      : with_external_(with_external), with_outflow_(with_outflow) {}
+  /// `momentum_components`: 1 for each component of the particles' sum m v that is the body's
+  /// momentum, 0 for one that is not: on an axisymmetric grid only the axial (x) one, since the
+  /// radial momenta of a ring cancel (scene.hpp GridGeometry); the others are booked as zero.
+  explicit Ledger(bool with_external = false, bool with_outflow = false,
+                  const Vec3& momentum_components = Vec3::Ones())
+      : with_external_(with_external),
+        with_outflow_(with_outflow),
+        components_(momentum_components) {}
 
   /// Registers an energy sink column (J, accumulated; `name` without unit: the header gets
   /// "name [J]"); returns its index for add_sink(). `in_balance`: a term of energy_error (false
@@ -67,7 +73,7 @@ class Ledger {
   /// Particles removed at the grid's edge this step (grid.outflow = remove).
   void add_outflow(double mass, const Vec3& momentum, double kinetic_energy) {
     s_.outflow_mass += mass;
-    s_.outflow_momentum += momentum;
+    s_.outflow_momentum += momentum.cwiseProduct(components_);
     s_.outflow_kinetic += kinetic_energy;
   }
 
@@ -115,6 +121,7 @@ class Ledger {
 
  private:
   bool with_external_, with_outflow_;
+  Vec3 components_;
   State s_;
   std::vector<std::string> sink_names_;
   std::vector<bool> in_balance_;

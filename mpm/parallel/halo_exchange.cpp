@@ -124,7 +124,7 @@ void sum_shared(Grid& G, T* data, const Communicator& comm, const BoxDecompositi
         const T remote = record<T>(in[i], k++);
         add(data[e], remote);
         if constexpr (std::is_same_v<T, NodeData>) {
-          if (marks && remote.mass != 0.0) G.mark_stencil(marks, ijk, 1);
+          if (marks && remote.mass != 0.0) G.mark_stencil(marks, ijk, 1, 1);
         }
       });
     }
@@ -188,7 +188,7 @@ void HaloExchange::sum_node_data(Grid& G, bool contact) const {
       std::size_t k = 0;
       for_layers(G, axis, theirs, theirs, [&](int e, const std::array<int, 3>& ijk) {
         data[e] = record<NodeData>(in[i], k++);
-        if (marks && data[e].mass != 0.0) G.mark_stencil(marks, ijk, 1);
+        if (marks && data[e].mass != 0.0) G.mark_stencil(marks, ijk, 1, 1);
       });
     }
   }

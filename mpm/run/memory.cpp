@@ -22,21 +22,27 @@ constexpr double kMB = 1e6;
 
 double estimated_particle_count(const Scene& scene) {
   const GridSpec& g = scene.grid;
-  const double cell = g.spacing().prod();
+  const Vec3 h = g.spacing();
   double n = 0.0;
   for (const SceneObject& o : scene.objects) {
     const auto [lo, hi] = bounds(o.geometry);
     const Vec3 extent = (hi.cwiseMin(g.upper) - lo.cwiseMax(g.lower)).cwiseMax(0.0);
-    const double v = std::min(volume(o.geometry), extent.prod());
     const auto& ppc = o.particles_per_cell;
-    n += std::ceil(v / cell * ppc[0] * ppc[1] * ppc[2]);
+    if (g.planar()) {  // an upper bound: the section's bounding rectangle inside the grid
+      n += std::ceil(extent(0) * extent(1) / (h(0) * h(1)) * ppc[0] * ppc[1]);
+      continue;
+    }
+    const double v = std::min(volume(o.geometry), extent.prod());
+    n += std::ceil(v / h.prod() * ppc[0] * ppc[1] * ppc[2]);
   }
   return n;
 }
 
 double estimated_grid_bytes(const Scene& scene) {
   const GridSpec& g = scene.grid;
-  const double nx = g.cells[0] + 3.0, ny = g.cells[1] + 3.0, nz = g.cells[2] + 3.0;
+  // A 2D grid stores one node plane along z (grid/grid.hpp).
+  const double nx = g.cells[0] + 3.0, ny = g.cells[1] + 3.0,
+               nz = g.planar() ? 1.0 : g.cells[2] + 3.0;
   const double nodes = nx * ny * nz;
   const double fields = scene.field_count();
   const bool contact_heat = fields > 1 && scene.physics.contact.type == ContactType::friction &&

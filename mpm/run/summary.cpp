@@ -1,4 +1,5 @@
 #include "mpm/run/summary.hpp"
+#include "mpm/scene/planar_form.hpp"
 
 #include <array>
 #include <cmath>
@@ -73,7 +74,8 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const auto n = static_cast<std::size_t>(sums[3 * o]);
     const double mass = sums[3 * o + 1], vol = sums[3 * o + 2];
-    const double exact = volume(scene.objects[o].geometry);
+    // The revolved body's volume (axisymmetric), or per metre of thickness (plane strain).
+    const double exact = modelled_volume(scene.objects[o].geometry, scene.grid.geometry);
     const double rho = scene.materials[scene.objects[o].material].material.model.params().density;
     objects[scene.objects[o].name] = {
         {"particles", n},
@@ -113,9 +115,9 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
 Json check_report(const Scene& scene, int threads, int ranks) {
   const Particles P = seed_particles(scene);
   Json report = particle_report(scene, P, threads);
-  const double dt =
-      std::min(stable_time_step(scene.grid.spacing(), max_signal_speed(P), scene.time.multiplier),
-               scene.time.max_dt);
+  const double dt = std::min(
+      stable_time_step(scene.grid.min_spacing(), max_signal_speed(P), scene.time.multiplier),
+      scene.time.max_dt);
   report["stable_dt [s]"] = dt;
   report["estimated_steps"] = std::ceil(scene.time.max_time / dt);
   if (ranks > 1) report["decomposition"] = plan_decomposition(scene, P, ranks);

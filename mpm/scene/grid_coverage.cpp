@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 
 namespace impact::mpm {
 
@@ -13,7 +14,13 @@ bool in_grid(const GridSpec& grid, const Vec3& x) {
 
 }  // namespace
 
-GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& grid) {
+GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& spec) {
+  // A 2D grid models the body's whole extent along z (its section, planar_form.hpp): unbounded.
+  GridSpec grid = spec;
+  if (spec.planar()) {
+    grid.lower(2) = -std::numeric_limits<double>::infinity();
+    grid.upper(2) = std::numeric_limits<double>::infinity();
+  }
   GridCoverage c;
   const auto [lo, hi] = bounds(geometry);
   const double v = std::min(volume(geometry), (hi - lo).prod());

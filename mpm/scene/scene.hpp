@@ -29,6 +29,15 @@ enum class Outflow { stop, remove };
 /// Faces in the order x-, x+, y-, y+, z-, z+ (index 2*axis + side).
 inline constexpr std::array<const char*, 6> kFaceNames = {"x-", "x+", "y-", "y+", "z-", "z+"};
 
+/// The grid's kind (grid.geometry, docs/mpm.md#2d-grids): 3D, or a 2D grid in the x-y plane.
+/// axisymmetric (Sulsky & Schreyer 1996, CMAME 139:409): x the axis of symmetry, y the radius
+/// (>= 0, the axis at y = 0), z the hoop direction; every mass, volume, force, momentum and energy
+/// is that of the body revolved through the full circle, 2 pi. plane_strain: z the out-of-plane
+/// direction (no strain along it); every extensive quantity per metre of thickness. A 2D grid is
+/// one cell of 1 m along z, centred on z = 0, whose nodes are stored in the plane k = 0 only; its
+/// shapes (mpm/shape/shape.hpp) have one node along z.
+enum class GridGeometry { three_d, axisymmetric, plane_strain };
+
 struct GridSpec {
   Vec3 lower, upper;                      ///< [m]
   std::array<int, 3> cells{};             ///< cells per axis
@@ -49,6 +58,21 @@ struct GridSpec {
   /// false: every node of the box every step (the 2004 code's dense loops).
   bool active_blocks = true;
   Outflow outflow = Outflow::stop;
+  GridGeometry geometry = GridGeometry::three_d;
+  /// A 2D grid (axisymmetric or plane strain): z is one cell of 1 m, not an axis of the mesh.
+  bool planar() const { return geometry != GridGeometry::three_d; }
+  /// The mesh's axes: 2 or 3.
+  int dimensions() const { return planar() ? 2 : 3; }
+  /// The smallest cell edge of the mesh's axes [m] (the time step).
+  double min_spacing() const {
+    const Vec3 h = spacing();
+    return planar() ? std::min(h(0), h(1)) : h.minCoeff();
+  }
+  /// The mean cell edge of the mesh's axes [m] (artificial viscosity's length, report eq. 12).
+  double mean_spacing() const {
+    const Vec3 h = spacing();
+    return planar() ? 0.5 * (h(0) + h(1)) : h.sum() / 3.0;
+  }
   Vec3 spacing() const { return (upper - lower).cwiseQuotient(Vec3(cells[0], cells[1], cells[2])); }
   /// The cell along axis d holding coordinate x, clamped into [0, cells_d - 1] (seed points,
   /// migration and the domain decomposition's counts all bin particles by it).

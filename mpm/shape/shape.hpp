@@ -3,10 +3,12 @@
 // A shape is a struct with
 //   - kName (the scene's solver.interpolation) and kMeaning (for messages),
 //   - N, the nodes per axis of its stencil, and at(x, object) -> Stencil<N>,
+//   - OnGrid<G, N> as a base: the grid geometry it serves (NZ nodes along z, hoop terms),
 //   - make(scene), which builds it for a scene;
-// and one line in WithEveryShape below. docs/extending.md walks through adding one.
+// and its grid geometries in WithEveryShape below. docs/extending.md walks through adding one.
 #pragma once
 
+#include <algorithm>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -17,39 +19,75 @@
 
 namespace impact::mpm {
 
-struct LinearShape {
+/// The stencil's reach along z on a grid of geometry G: 3D, or the single node plane k = 0 of a
+/// 2D grid (weight 1, no gradient along z: no strain out of the plane but the hoop term).
+template <int N>
+inline void flatten_z(Stencil<N>& s) {
+  s.base[2] = 0;
+  for (int a = 0; a < N; ++a) s.w[2][a] = s.dw[2][a] = 0.0;
+  s.w[2][0] = 1.0;
+}
+
+/// What every shape takes from its grid's geometry: NZ, the nodes along z its loops visit, and
+/// kHoop, whether the axisymmetric hoop terms (Sulsky & Schreyer 1996 eqs. 14 and 20) apply:
+///   f_I,r -= V_p sigma_tt,p S_Ip / r_p,   L_tt,p = sum_I S_Ip v_I,r / r_p.
+template <GridGeometry G, int N>
+struct OnGrid {
+  static constexpr GridGeometry kGeometry = G;
+  static constexpr int NZ = G == GridGeometry::three_d ? N : 1;
+  static constexpr bool kHoop = G == GridGeometry::axisymmetric;
+};
+
+template <GridGeometry G = GridGeometry::three_d>
+struct LinearShape : OnGrid<G, 2> {
   static constexpr std::string_view kName = "linear";
-  static constexpr std::string_view kMeaning = "8-node trilinear";
-  static constexpr int N = 2;  ///< nodes per axis: 8 in all
+  static constexpr std::string_view kMeaning =
+      G == GridGeometry::three_d ? "8-node trilinear" : "4-node bilinear";
+  static constexpr int N = 2;  ///< nodes per axis: 8 in all (4 on a 2D grid)
   Vec3 lower, inv_dx;
   std::array<int, 3> cells;
   Stencil<2> at(const Vec3& x, int /*object*/) const {
-    return linear_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, cells);
+    Stencil<2> s = linear_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, cells);
+    if constexpr (G != GridGeometry::three_d) flatten_z(s);
+    return s;
   }
   static LinearShape make(const Scene& scene) {
-    return {scene.grid.lower, scene.grid.spacing().cwiseInverse(), scene.grid.cells};
+    return {{}, scene.grid.lower, scene.grid.spacing().cwiseInverse(), scene.grid.cells};
   }
 };
 
-struct GimpShape {
+template <GridGeometry G = GridGeometry::three_d>
+struct GimpShape : OnGrid<G, 3> {
   static constexpr std::string_view kName = "gimp";
-  static constexpr std::string_view kMeaning = "27-node uGIMP";
-  static constexpr int N = 3;  ///< nodes per axis: 27 in all
+  static constexpr std::string_view kMeaning =
+      G == GridGeometry::three_d ? "27-node uGIMP" : "9-node uGIMP";
+  static constexpr int N = 3;  ///< nodes per axis: 27 in all (9 on a 2D grid)
   Vec3 lower, inv_dx;
   std::array<int, 3> cells;
   std::vector<Vec3> half_width;  ///< per object, in cells
   Stencil<3> at(const Vec3& x, int object) const {
-    return gimp_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, half_width[object], cells);
+    Stencil<3> s =
+        gimp_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, half_width[object], cells);
+    if constexpr (G != GridGeometry::three_d) flatten_z(s);
+    return s;
   }
   static GimpShape make(const Scene& scene) {
-    return {scene.grid.lower, scene.grid.spacing().cwiseInverse(), scene.grid.cells,
+    return {{},
+            scene.grid.lower,
+            scene.grid.spacing().cwiseInverse(),
+            scene.grid.cells,
             half_widths(scene)};
   }
 };
 
-/// The catalogue: T<every shape>, one line per shape (the first is the default).
+inline constexpr GridGeometry kAxisymmetric = GridGeometry::axisymmetric;
+inline constexpr GridGeometry kPlaneStrain = GridGeometry::plane_strain;
+
+/// The catalogue: T<every shape on every grid geometry>, one line per shape (the first is the
+/// default).
 template <template <class...> class T>
-using WithEveryShape = T<GimpShape, LinearShape>;
+using WithEveryShape = T<GimpShape<>, GimpShape<kAxisymmetric>, GimpShape<kPlaneStrain>,  //
+                         LinearShape<>, LinearShape<kAxisymmetric>, LinearShape<kPlaneStrain>>;
 
 /// One of the shapes, as a run holds it.
 using AnyShape = WithEveryShape<std::variant>;
@@ -57,13 +95,23 @@ using AnyShape = WithEveryShape<std::variant>;
 namespace detail {
 template <class... Shapes>
 struct ShapeNames {
-  static std::vector<std::string_view> get() { return {Shapes::kName...}; }
+  static std::vector<std::string_view> get() {
+    std::vector<std::string_view> names;
+    ((std::find(names.begin(), names.end(), Shapes::kName) == names.end()
+          ? void(names.push_back(Shapes::kName))
+          : void()),
+     ...);
+    return names;
+  }
 };
 template <class... Shapes>
 struct MakeShape {
   static AnyShape by_name(const Scene& scene, std::string_view name) {
     AnyShape shape;
-    ((name == Shapes::kName ? void(shape = Shapes::make(scene)) : void()), ...);
+    ((name == Shapes::kName && scene.grid.geometry == Shapes::kGeometry
+          ? void(shape = Shapes::make(scene))
+          : void()),
+     ...);
     return shape;
   }
 };
@@ -77,11 +125,11 @@ struct StencilBytes {
 };
 }  // namespace detail
 
-/// Every shape's kName, catalogue order (the scene reader's choice).
+/// Every shape's kName once, catalogue order (the scene reader's choice).
 inline std::vector<std::string_view> shape_names() {
   return WithEveryShape<detail::ShapeNames>::get();
 }
-/// The shape scene.solver.interpolation names, built for the scene.
+/// The shape scene.solver.interpolation names on the scene's grid geometry, built for the scene.
 inline AnyShape make_shape(const Scene& scene) {
   return WithEveryShape<detail::MakeShape>::by_name(scene, scene.solver.interpolation);
 }

@@ -41,7 +41,9 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
             ranks_.stored_box(boxes_, scene.grid.cells)),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
-      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove) {
+      ledger_(
+          !scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove,
+          scene.grid.geometry == GridGeometry::axisymmetric ? Vec3(1.0, 0.0, 0.0) : Vec3::Ones()) {
   census_ = {};  // needed for seeding only
   if (ranks_.several()) {
     grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
@@ -63,7 +65,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   st.fail_particle = ph.on_numerical_fault == NumericalFaultAction::fail_particle;
   if (st.fail_particle) particles_.fault.assign(particles_.size(), 0);
   if (scene_.grid.outflow == Outflow::remove) particles_.removed.assign(particles_.size(), 0);
-  st.mean_spacing = scene_.grid.spacing().sum() / 3.0;
+  st.mean_spacing = scene_.grid.mean_spacing();
   if (ph.artificial_viscosity.enabled) {
     st.viscosity = &scene_.physics.artificial_viscosity;
     particles_.q.assign(particles_.size(), 0.0);
@@ -130,7 +132,8 @@ void Simulation::restart_ledger() {
 }
 
 double Simulation::next_dt() const {
-  double dt = stable_time_step(grid_.spacing(), max_signal_speed_, scene_.time.multiplier);
+  double dt =
+      stable_time_step(scene_.grid.min_spacing(), max_signal_speed_, scene_.time.multiplier);
   if (steps_ == 0) dt = std::min(dt, scene_.time.initial_dt);
   dt = std::min(dt, scene_.time.max_dt);
   // No signal at all (every particle left the grid, grid.outflow = remove): nothing limits the

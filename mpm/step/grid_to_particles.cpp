@@ -20,10 +20,22 @@ bool outside(const Grid& G, const Vec3& x) {
   return !((x.array() >= G.lower().array()).all() && (x.array() <= upper.array()).all());
 }
 
-// L_p = sum_I (v_I - v_ref) (x) grad S_Ip over nodes with mass (see step.hpp).
+// The start-of-step radius of a particle, sum_I S_Ip y_I (the shapes reproduce linear fields):
+// what the weights were evaluated at, also after MUSL has moved the particle.
 template <int N>
-Mat3 gradient(const Grid& G, const Stencil<N>& s, const std::vector<Vec3>& v, const Vec3& v_ref,
-              std::size_t offset) {
+double stencil_radius(const Grid& G, const Stencil<N>& s) {
+  double r = 0.0;
+  for (int j = 0; j < N; ++j) r += s.w[1][j] * (G.lower()(1) + (s.base[1] + j) * G.spacing()(1));
+  return r;
+}
+
+// L_p = sum_I (v_I - v_ref) (x) grad S_Ip over nodes with mass (see step.hpp); with the hoop
+// terms (axisymmetric), L_tt = sum_I S_Ip v_I,r / r_p = (v_ref,r + sum_I S_Ip (v_I - v_ref)_r) /
+// r_p, in the same sense (Sulsky & Schreyer 1996 eq. 14), r_p at the start of the step.
+template <class Shape>
+Mat3 gradient(const Grid& G, const Stencil<Shape::N>& s, const std::vector<Vec3>& v,
+              const Vec3& v_ref, std::size_t offset) {
+  constexpr int N = Shape::N, NZ = Shape::NZ;
   Mat3 L = Mat3::Zero();
   const std::size_t base = offset + G.index(s.base[0], s.base[1], s.base[2]);
   const std::size_t sx = G.stride_x(), sy = G.stride_y();
@@ -34,7 +46,7 @@ Mat3 gradient(const Grid& G, const Stencil<N>& s, const std::vector<Vec3>& v, co
       const double dxw = s.dw[0][i] * s.w[1][j];
       const double wdy = s.w[0][i] * s.dw[1][j];
       Vec3 a = Vec3::Zero(), b = Vec3::Zero();  // sum_k dv w_z, sum_k dv dw_z
-      for (int k = 0; k < N; ++k) {
+      for (int k = 0; k < NZ; ++k) {
         if (!(G.mass[row + k] > 0.0)) continue;
         const Vec3 dv = v[row + k] - v_ref;
         a += dv * s.w[2][k];
@@ -43,7 +55,9 @@ Mat3 gradient(const Grid& G, const Stencil<N>& s, const std::vector<Vec3>& v, co
       L.col(0) += dxw * a;
       L.col(1) += wdy * a;
       L.col(2) += wij * b;
+      if constexpr (Shape::kHoop) L(2, 2) += wij * a(1);
     }
+  if constexpr (Shape::kHoop) L(2, 2) = (L(2, 2) + v_ref(1)) / stencil_radius(G, s);
   return L;
 }
 
@@ -53,7 +67,7 @@ template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
                                  bool usl_gradient, const std::vector<HeatCapacity>& heat_capacity,
                                  std::optional<Failure>& failure) {
-  constexpr int N = Shape::N;
+  constexpr int N = Shape::N, NZ = Shape::NZ;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   const std::size_t sx = G.stride_x(), sy = G.stride_y();
@@ -78,7 +92,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
         for (int j = 0; j < N; ++j) {
           const std::size_t row = base + i * sx + j * sy;
           const double wij = s.w[0][i] * s.w[1][j];
-          for (int k = 0; k < N; ++k) {
+          for (int k = 0; k < NZ; ++k) {
             const double w = wij * s.w[2][k];
             const Vec3& inc = G.increment[row + k];
             dv += w * inc;
@@ -86,7 +100,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
             if (heat && G.heat[row + k] != 0.0) h += w * G.heat[row + k] / G.mass[row + k];
           }
         }
-      if (usl_gradient) P.L[p] = gradient(G, s, G.velocity_L, P.v[p], offset);
+      if (usl_gradient) P.L[p] = gradient<Shape>(G, s, G.velocity_L, P.v[p], offset);
       const double m = P.mass[p];
       if (h != 0.0) {
         const HeatCapacity& c = heat_capacity[P.material[p]];
@@ -96,6 +110,14 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
       P.v[p] += dv;
       const Vec3 x_old = P.x[p];
       P.x[p] += dt * v_new;
+      if constexpr (Shape::kHoop) {
+        // A ring carried across the axis is its own mirror image on the near side (the mirror at
+        // y = 0 is the axis condition, grid/boundary.cpp): r stays >= 0, |v| and the books too.
+        if (P.x[p](1) < 0.0) {
+          P.x[p](1) = -P.x[p](1);
+          P.v[p](1) = -P.v[p](1);
+        }
+      }
       const Vec3& v = P.v[p];
       if (!fail && !v.allFinite()) fail = Failure{std::size_t(p), "velocity", "not finite"};
       if (!(P.x[p].allFinite() && !outside(G, P.x[p]))) {
@@ -137,7 +159,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 template <class Shape>
 void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const ScatterOrder& order,
                         const ContactSpec* contact, const HaloExchange* halo) {
-  constexpr int N = Shape::N;
+  constexpr int N = Shape::N, NZ = Shape::NZ;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const int nt = G.threads();
   G.clear_momentum();
@@ -151,7 +173,7 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
       for (int j = 0; j < N; ++j) {
         Vec3* row = base + i * sx + j * sy;
         const Vec3 mvij = (s.w[0][i] * s.w[1][j]) * mv;
-        for (int k = 0; k < N; ++k) row[k] += s.w[2][k] * mvij;
+        for (int k = 0; k < NZ; ++k) row[k] += s.w[2][k] * mvij;
       }
   });
   if (halo) halo->sum_momentum(G);
@@ -167,7 +189,7 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
   if (G.has_walls()) G.apply_walls(nullptr, G.velocity_L, WallPass::projection);
 #pragma omp parallel for schedule(static) num_threads(nt)
   for (std::ptrdiff_t p = 0; p < n; ++p)
-    P.L[p] = gradient(G, S[p], G.velocity_L, P.v[p], P.field[p] * nn);
+    P.L[p] = gradient<Shape>(G, S[p], G.velocity_L, P.v[p], P.field[p] * nn);
 }
 
 // Both phases for every shape of the catalogue (mpm/shape/shape.hpp): taking their addresses

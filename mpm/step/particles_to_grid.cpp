@@ -22,8 +22,8 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
                        const ScatterOrder& order, double dt, const HaloExchange* halo) {
-  constexpr int N = Shape::N;
-  G.clear();  // where the last step put mass: now zero everywhere
+  constexpr int N = Shape::N, NZ = Shape::NZ;  // NZ = 1 on a 2D grid
+  G.clear();                                   // where the last step put mass: now zero everywhere
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
   const bool viscosity = !P.q.empty();
   NodeData* const buf = G.node_buffer();
@@ -33,13 +33,17 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
   std::uint8_t* const touch = G.wall_touch.empty() ? nullptr : G.wall_touch.data();
   scatter_by_colour(order, G.threads(), [&](int p) {
     const Stencil<N>& s = S[p];
-    if (marks) G.mark_stencil(marks, s.base, N);
+    if (marks) G.mark_stencil(marks, s.base, N, NZ);
     const int base_index = G.index(s.base[0], s.base[1], s.base[2]);
     const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
     NodeData* const field = buf + offset;
     Mat3 sigma = P.state[p].stress;
     if (viscosity) sigma.diagonal().array() -= P.q[p];  // sigma - q I (report eq. 12)
     const Mat3 vs = -P.volume[p] * sigma;               // -V_p (sigma_p - q_p I)
+    // Axisymmetric: the hoop stress pulls each ring towards the axis, -V_p sigma_tt S_Ip / r_p
+    // on the radial component (Sulsky & Schreyer 1996 eq. 20; V_p is the revolved ring's).
+    double hoop = 0.0;
+    if constexpr (Shape::kHoop) hoop = vs(2, 2) / P.x[p](1);
     const double m = P.mass[p];
     const Vec3 mv = m * P.v[p];
     for (int i = 0; i < N; ++i) {
@@ -50,9 +54,10 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
         const double dxw = s.dw[0][i] * s.w[1][j];
         const double wdy = s.w[0][i] * s.dw[1][j];
         // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
-        const Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
+        Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
+        if constexpr (Shape::kHoop) a(1) += hoop * wij;  // w_z = 1, dw_z = 0 on a 2D grid
         const Vec3 b = vs.col(2) * wij;
-        for (int k = 0; k < N; ++k) {
+        for (int k = 0; k < NZ; ++k) {
           NodeData& node = row[k];
           const double w = wij * s.w[2][k];
           const Vec3 f = a * s.w[2][k] + b * s.dw[2][k];
@@ -70,7 +75,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
       if (bits == 0) return;
       for (int i = 0; i < N; ++i)
         for (int j = 0; j < N; ++j)
-          for (int k = 0; k < N; ++k)
+          for (int k = 0; k < NZ; ++k)
             if (s.w[0][i] * s.w[1][j] * s.w[2][k] > 0.0)
               touch[offset + base_index + i * sx + j * sy + k] |= bits;
     }

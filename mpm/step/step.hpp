@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -43,8 +44,26 @@ struct Failure {
 /// position: computed once per step and reused by P2G, G2P and the MUSL re-map.
 template <class Shape>
 using Stencils = std::vector<Stencil<Shape::N>>;
+namespace detail {
+// std::variant of the distinct types among Ts (shapes on several grid geometries share their
+// stencil type).
+template <class Variant, class... Ts>
+struct DistinctVariant {
+  using type = Variant;
+};
+template <class... Vs, class T, class... Ts>
+struct DistinctVariant<std::tuple<Vs...>, T, Ts...> {
+  using type = typename DistinctVariant<
+      std::conditional_t<(std::is_same_v<T, Vs> || ...), std::tuple<Vs...>, std::tuple<Vs..., T>>,
+      Ts...>::type;
+};
+template <class... Vs>
+struct DistinctVariant<std::tuple<Vs...>> {
+  using type = std::variant<Vs...>;
+};
+}  // namespace detail
 template <class... Shapes>
-using StencilsOf = std::variant<Stencils<Shapes>...>;
+using StencilsOf = typename detail::DistinctVariant<std::tuple<>, Stencils<Shapes>...>::type;
 /// The stencils of the run's shape.
 using AnyStencils = WithEveryShape<StencilsOf>;
 template <class Shape>
@@ -150,7 +169,7 @@ struct StressUpdateSettings {
   std::vector<const ElasticPlastic*> models;  ///< per material
   FIntegration f_integration = FIntegration::forward_euler;
   const ArtificialViscositySpec* viscosity = nullptr;  ///< null: off
-  double mean_spacing = 0.0;                           ///< l = (dx + dy + dz)/3 [m] (eq. 12)
+  double mean_spacing = 0.0;  ///< l = (dx + dy + dz)/3, (dx + dy)/2 in 2D [m] (eq. 12)
   /// Per material: the field a failed particle moves to (create_new_particles); empty: off.
   std::vector<std::uint16_t> companion_field;
   /// physics.on_numerical_fault = fail_particle: a particle whose update fails (non-finite F or
@@ -202,8 +221,9 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
                            std::optional<Failure>& failure);
 
 /// Stable step: multiplier * min_d dx_d / max_p (c_p + |v_p|) (docs/report_code.md sec. 16,
-/// with the speed magnitude instead of per-axis components: slightly more conservative).
-double stable_time_step(const Vec3& dx, double max_signal_speed, double multiplier);
+/// with the speed magnitude instead of per-axis components: slightly more conservative);
+/// `min_spacing` = GridSpec::min_spacing(), the mesh's axes only.
+double stable_time_step(double min_spacing, double max_signal_speed, double multiplier);
 /// max_p (c_p + |v_p|) from the stored wave speeds (first step).
 double max_signal_speed(const Particles& P);
 

@@ -1,14 +1,15 @@
-// Stable time step (docs/report_code.md sec. 16): dt = multiplier * min_d dx_d /
-// max_p (c_p + |v_p|), c_p the longitudinal wave speed of the particle's current state.
+// Stable time step (docs/report_code.md sec. 16): dt = multiplier * min_d dx_d (the mesh axes: x
+// and y on a 2D grid) / max_p (c_p + |v_p|), c_p the longitudinal wave speed of the particle's
+// current state.
 #include <limits>
 
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
 
-double stable_time_step(const Vec3& dx, double max_signal_speed, double multiplier) {
+double stable_time_step(double min_spacing, double max_signal_speed, double multiplier) {
   if (!(max_signal_speed > 0.0)) return std::numeric_limits<double>::infinity();
-  return multiplier * dx.minCoeff() / max_signal_speed;
+  return multiplier * min_spacing / max_signal_speed;
 }
 
 double max_signal_speed(const Particles& P) {

@@ -46,7 +46,7 @@ Deviation compress(const char* interpolation, const char* scheme) {
   const double length = 0.1, h = sim.grid().spacing()(0);
   double worst = 0.0, worst_ep = 0.0, first_crossing = -1.0;
   std::size_t checked = 0, checked_plastic = 0;
-  const bool linear = scene.solver.interpolation == LinearShape::kName;
+  const bool linear = scene.solver.interpolation == LinearShape<>::kName;
   const auto cell = [&](const Vec3& x) { return static_cast<int>(std::floor(x(0) / h)); };
   while (!sim.finished()) {
     const double t0 = sim.time();
