@@ -16,14 +16,19 @@ namespace {
 constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
 
 // Gradient of one field's nodal mass at node (i, j, k) by central differences (one-sided at the
-// outermost layers). The report's normals came from the same differences (sec. 14).
+// outermost stored layers). The report's normals came from the same differences (sec. 14). A 2D
+// grid stores one node plane along z: no difference, no gradient along z.
 Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk) {
   Vec3 g;
-  const std::array<int, 3>& c = G.cells();
+  const NodeBox stored = G.stored();
   for (int d = 0; d < 3; ++d) {
     std::array<int, 3> lo = ijk, hi = ijk;
-    lo[d] = std::max(ijk[d] - 1, -1);
-    hi[d] = std::min(ijk[d] + 1, c[d] + 1);
+    lo[d] = std::max(ijk[d] - 1, stored.first[d]);
+    hi[d] = std::min(ijk[d] + 1, stored.last[d]);
+    if (hi[d] == lo[d]) {
+      g(d) = 0.0;
+      continue;
+    }
     const double span = (hi[d] - lo[d]) * G.spacing()(d);
     g(d) = (m[G.index(hi[0], hi[1], hi[2])] - m[G.index(lo[0], lo[1], lo[2])]) / span;
   }

@@ -79,6 +79,9 @@ Observables::Observables(const Scene& scene, const Particles& initial, const Com
       comm_(comm) {
   for (const SceneObject& o : scene.objects) names_.push_back(o.name);
   if (!crater_) return;
+  // An axisymmetric crater is centred on the axis of symmetry (y = 0; the rings have z = 0).
+  if (scene.grid.geometry == GridGeometry::axisymmetric && !crater_->axis)
+    crater_->axis = std::array<double, 2>{0.0, 0.0};
   crater_object_ = scene.objects[crater_->object].name;
   // The face layer: (seed index, initial position) of the particles this rank holds, then of
   // every rank's, in seed-index order.
