@@ -153,6 +153,23 @@ Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
   if (out.contains("objects") && out["objects"].is_object())
     for (auto& item : out["objects"].items())
       complete(item.value(), "/objects/" + item.key(), "particles_per_cell", 1);
+  // Positions in the plane may be written [x, y] too (the particles lie at z = 0); [x, y, z]
+  // stays valid for them, as for the bodies.
+  const auto position = [](Json& node, const char* key) {
+    if (node.is_object() && node.contains(key) && node[key].is_array() && node[key].size() == 2)
+      node[key].push_back(0.0);
+  };
+  if (out.contains("output") && out["output"].is_object()) {
+    Json& output = out["output"];
+    if (output.contains("gauges") && output["gauges"].is_object())
+      for (auto& item : output["gauges"].items())
+        if (item.value().is_object() && item.value().contains("region")) {
+          position(item.value()["region"], "lower");
+          position(item.value()["region"], "upper");
+        }
+    if (output.contains("particle_paths") && output["particle_paths"].is_object())
+      for (auto& item : output["particle_paths"].items()) position(item.value(), "position");
+  }
   return out;
 }
 
@@ -171,8 +188,10 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m] ([x, y] on a 2D grid)");
   g.cells =
       read_int3(r, n, "cells", 1, 100000, "cells per axis ([x, y] on a 2D grid)", std::nullopt);
-  // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int.
-  const double stored_nodes = (g.cells[0] + 3.0) * (g.cells[1] + 3.0) * (g.cells[2] + 3.0);
+  // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int; a 2D
+  // grid one node plane along z.
+  const double stored_nodes =
+      (g.cells[0] + 3.0) * (g.cells[1] + 3.0) * (g.planar() ? 1.0 : g.cells[2] + 3.0);
   if (stored_nodes > static_cast<double>(std::numeric_limits<int>::max())) {
     std::ostringstream m;
     m << "(cells + 3) per axis multiplied is " << stored_nodes
@@ -631,6 +650,12 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
         spec.axis = std::array<double, 2>{
             c.number("axis_y", Range::any(), "y of the crater axis [m] (quarter model: 0)"),
             c.number("axis_z", Range::any(), "z of the crater axis [m] (quarter model: 0)")};
+        // An axisymmetric crater is centred on the axis of symmetry, y = z = 0.
+        if (s.grid.geometry == GridGeometry::axisymmetric &&
+            ((*spec.axis)[0] != 0.0 || (*spec.axis)[1] != 0.0))
+          problems.add(c.key_path("axis_y"),
+                       "the crater of an axisymmetric scene is centred on the axis of symmetry: "
+                       "expected axis_y = axis_z = 0, or neither key");
       }
       c.reject_unknown_keys();
       if (object >= 0 && std::isfinite(spec.face)) {
@@ -697,7 +722,14 @@ constexpr double kMaxSilentLoss = 0.01;
 // on the whole scene, so every rank of a run finds the same.
 void check_objects_in_grid(InputProblems& problems, const Scene& s) {
   const GridSpec& g = s.grid;
-  const std::string grid_text = vec_text(g.lower) + " to " + vec_text(g.upper) + " m";
+  // A 2D grid as the scene wrote it, [x, y] (its 1 m along z is no extent of the user's).
+  const auto corner = [&](const Vec3& x) {
+    if (!g.planar()) return vec_text(x);
+    std::ostringstream t;
+    t << '[' << x(0) << ", " << x(1) << ']';
+    return t.str();
+  };
+  const std::string grid_text = corner(g.lower) + " to " + corner(g.upper) + " m";
   for (std::size_t oi = 0; oi < s.objects.size(); ++oi) {
     const SceneObject& o = s.objects[oi];
     const std::string key = "/objects/" + o.name + "/geometry";

@@ -75,6 +75,7 @@ Observables::Observables(const Scene& scene, const Particles& initial, const Com
     : max_pressure_(scene.objects.size(), -std::numeric_limits<double>::infinity()),
       max_pressure_time_(scene.objects.size(), 0.0),
       crater_(scene.output.crater),
+      axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
       dx_(scene.grid.spacing()(0)),
       comm_(comm) {
   for (const SceneObject& o : scene.objects) names_.push_back(o.name);
@@ -174,7 +175,8 @@ Json Observables::summary(const Particles& P) const {
   Json objects = Json::object();
   for (std::size_t o = 0; o < n; ++o) {
     const double* s = &sums[5 * o];
-    const Vec3 v = s[0] > 0.0 ? Vec3(Vec3(s[1], s[2], s[3]) / s[0]) : Vec3::Zero();
+    Vec3 v = s[0] > 0.0 ? Vec3(Vec3(s[1], s[2], s[3]) / s[0]) : Vec3::Zero();
+    if (axisymmetric_) v(1) = v(2) = 0.0;  // a ring's radial momenta cancel (as in the ledger)
     const bool sampled = std::isfinite(max_pressure_[o]);
     objects[names_[o]] = {{"mass [kg]", s[0]},
                           {"mean_velocity [m/s]", Json::array({v(0), v(1), v(2)})},

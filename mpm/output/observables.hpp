@@ -89,6 +89,7 @@ class Observables {
   std::vector<std::string> names_;
   std::vector<double> max_pressure_, max_pressure_time_;
   std::optional<CraterSpec> crater_;
+  bool axisymmetric_ = false;  ///< mean velocities along the axis only
   std::string crater_object_;
   double dx_ = 0.0;
   ParticleSets face_;          ///< crater: the face layer's particles (set 0)

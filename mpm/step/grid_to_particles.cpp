@@ -57,7 +57,12 @@ Mat3 gradient(const Grid& G, const Stencil<Shape::N>& s, const std::vector<Vec3>
       L.col(2) += wij * b;
       if constexpr (Shape::kHoop) L(2, 2) += wij * a(1);
     }
-  if constexpr (Shape::kHoop) L(2, 2) = (L(2, 2) + v_ref(1)) / stencil_radius(G, s);
+  if constexpr (Shape::kHoop) {
+    // On the axis itself v_r / r is its limit dv_r / dr (a particle seeded off the axis reaches
+    // it only if parked there by outflow, with no mass).
+    const double r = stencil_radius(G, s);
+    L(2, 2) = r > 0.0 ? (L(2, 2) + v_ref(1)) / r : L(1, 1);
+  }
   return L;
 }
 
@@ -110,14 +115,6 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
       P.v[p] += dv;
       const Vec3 x_old = P.x[p];
       P.x[p] += dt * v_new;
-      if constexpr (Shape::kHoop) {
-        // A ring carried across the axis is its own mirror image on the near side (the mirror at
-        // y = 0 is the axis condition, grid/boundary.cpp): r stays >= 0, |v| and the books too.
-        if (P.x[p](1) < 0.0) {
-          P.x[p](1) = -P.x[p](1);
-          P.v[p](1) = -P.v[p](1);
-        }
-      }
       const Vec3& v = P.v[p];
       if (!fail && !v.allFinite()) fail = Failure{std::size_t(p), "velocity", "not finite"};
       if (!(P.x[p].allFinite() && !outside(G, P.x[p]))) {

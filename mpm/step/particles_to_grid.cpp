@@ -43,7 +43,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
     // Axisymmetric: the hoop stress pulls each ring towards the axis, -V_p sigma_tt S_Ip / r_p
     // on the radial component (Sulsky & Schreyer 1996 eq. 20; V_p is the revolved ring's).
     double hoop = 0.0;
-    if constexpr (Shape::kHoop) hoop = vs(2, 2) / P.x[p](1);
+    if constexpr (Shape::kHoop) hoop = P.x[p](1) > 0.0 ? vs(2, 2) / P.x[p](1) : 0.0;
     const double m = P.mass[p];
     const Vec3 mv = m * P.v[p];
     for (int i = 0; i < N; ++i) {
