@@ -75,11 +75,11 @@ Json plan_decomposition(const Scene& scene, const Particles& P, int ranks) {
   for (const Vec3& x : P.x) held[std::size_t(boxes.owner_of_cell(scene.grid.cell_of(x)))] += 1.0;
   const int fields = scene.field_count();
   for (int r = 0; r < ranks; ++r) {
-    const NodeBox box = stored_nodes(boxes, scene.grid.cells, r);
+    const NodeBox box = stored_nodes(boxes, scene.grid, r);
     nodes[std::size_t(r)] = double(box.last[0] - box.first[0] + 1) *
                             double(box.last[1] - box.first[1] + 1) *
                             double(box.last[2] - box.first[2] + 1);
-    const HaloTraffic t = halo_traffic(boxes, scene.grid.cells, r, fields, scene.grid.has_walls(),
+    const HaloTraffic t = halo_traffic(boxes, scene.grid, r, fields, scene.grid.has_walls(),
                                        scene.solver.scheme == Scheme::musl);
     bytes[std::size_t(r)] = t.bytes;
     messages[std::size_t(r)] = t.messages;

@@ -133,18 +133,19 @@ void sum_shared(Grid& G, T* data, const Communicator& comm, const BoxDecompositi
 
 }  // namespace
 
-NodeBox stored_nodes(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank) {
+NodeBox stored_nodes(const BoxDecomposition& boxes, const GridSpec& grid, int rank) {
   NodeBox box{boxes.first_cell(rank), boxes.end_cell(rank)};
   for (std::size_t d = 0; d < 3; ++d) {
     box.first[d] = std::max(box.first[d] - kHaloPlanes, -1);
-    box.last[d] = std::min(box.last[d] + kHaloPlanes, cells[d] + 1);
+    box.last[d] = std::min(box.last[d] + kHaloPlanes, grid.cells[d] + 1);
   }
+  if (grid.planar()) box.first[2] = box.last[2] = 0;
   return box;
 }
 
-HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank,
-                         int fields, bool walls, bool musl) {
-  const NodeBox box = stored_nodes(boxes, cells, rank);
+HaloTraffic halo_traffic(const BoxDecomposition& boxes, const GridSpec& grid, int rank, int fields,
+                         bool walls, bool musl) {
+  const NodeBox box = stored_nodes(boxes, grid, rank);
   const double per_node =
       double(sizeof(NodeData)) + (walls ? sizeof(std::uint8_t) : 0.0) + (musl ? sizeof(Vec3) : 0.0);
   const int exchanges_per_neighbour = 1 + (walls ? 1 : 0) + (musl ? 1 : 0);

@@ -26,8 +26,9 @@ namespace impact::mpm {
 constexpr int kHaloPlanes = 3;
 
 /// The nodes rank `rank`'s grid stores: its box's cells [c0, c1) per axis widened by kHaloPlanes
-/// on each side, clipped to the grid and its ghost layers [-1, cells + 1].
-NodeBox stored_nodes(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank);
+/// on each side, clipped to the grid and its ghost layers [-1, cells + 1]; along z of a 2D grid
+/// the one node plane k = 0 (Grid stores no other: scene.hpp GridGeometry).
+NodeBox stored_nodes(const BoxDecomposition& boxes, const GridSpec& grid, int rank);
 
 /// What a rank sends by the node sums per step (docs/mpi.md, "Cost model"): per neighbour along
 /// axis d, 3 node layers times its stored extents on the other two axes times the velocity fields,
@@ -39,8 +40,8 @@ struct HaloTraffic {
   double bytes = 0.0;
   double messages = 0.0;
 };
-HaloTraffic halo_traffic(const BoxDecomposition& boxes, const std::array<int, 3>& cells, int rank,
-                         int fields, bool walls, bool musl);
+HaloTraffic halo_traffic(const BoxDecomposition& boxes, const GridSpec& grid, int rank, int fields,
+                         bool walls, bool musl);
 
 class HaloExchange {
  public:

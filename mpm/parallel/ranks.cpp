@@ -62,9 +62,9 @@ Particles Ranks::seed(const Scene& scene, const BoxDecomposition& boxes,
 }
 
 std::optional<NodeBox> Ranks::stored_box(const BoxDecomposition& boxes,
-                                         const std::array<int, 3>& cells) const {
+                                         const GridSpec& grid) const {
   if (!comm_) return std::nullopt;
-  return stored_nodes(boxes, cells, rank());
+  return stored_nodes(boxes, grid, rank());
 }
 
 NodeBox Ranks::owned_box(const BoxDecomposition& boxes, const std::array<int, 3>& cells) const {

@@ -46,8 +46,7 @@ class Ranks {
   /// The nodes this rank's grid stores: its box's cells [c0, c1) per axis and the halo its
   /// particles' stencils, the shared-layer sums and the contact gradients reach,
   /// [c0 - kHaloPlanes, c1 + kHaloPlanes]; nullopt (the whole grid) on one rank.
-  std::optional<NodeBox> stored_box(const BoxDecomposition& boxes,
-                                    const std::array<int, 3>& cells) const;
+  std::optional<NodeBox> stored_box(const BoxDecomposition& boxes, const GridSpec& grid) const;
   /// The nodes this rank owns for the ledger (the end boxes also own the ghost layer and the
   /// last node layer outside their cells).
   NodeBox owned_box(const BoxDecomposition& boxes, const std::array<int, 3>& cells) const;

@@ -38,7 +38,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
       grid_(scene.grid, thread_count(threads), scene.field_count(),
             scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction &&
                 scene.physics.contact.mu > 0.0,
-            ranks_.stored_box(boxes_, scene.grid.cells)),
+            ranks_.stored_box(boxes_, scene.grid)),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
       ledger_(
@@ -207,7 +207,7 @@ void Simulation::stop_if(const std::optional<std::string>& message) const {
 
 void Simulation::rebuild_grid() {
   Grid next(scene_.grid, grid_.threads(), grid_.fields(), !grid_.heat.empty(),
-            ranks_.stored_box(boxes_, scene_.grid.cells));
+            ranks_.stored_box(boxes_, scene_.grid));
   next.field_body = grid_.field_body;
   next.field_density = grid_.field_density;
   next.light_mass = grid_.light_mass;
