@@ -97,8 +97,10 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   for (const double m : particles_.mass) lightest = std::min(lightest, m);
   lightest = ranks_.min(lightest);
   if (std::isfinite(lightest)) grid_.light_mass = kLightNodeMassFraction * lightest;
-  // Walls hold only where a particle's domain reaches them (grid/wall.cpp).
-  if (grid_.has_walls())
+  // Walls hold only where a particle's domain reaches them (grid/wall.cpp). Every rank scatters
+  // the touch bits of its particles (the sums carry them to the rank holding the wall's nodes),
+  // also one whose box stores no wall node.
+  if (scene_.grid.has_walls())
     for (const Vec3& l : half_widths(scene_))
       grid_.particle_half_width.push_back(l.cwiseProduct(scene_.grid.spacing()));
   restart_ledger();

@@ -6,7 +6,8 @@
 The sphere-cylinder case01 in axisymmetry (data/scenes/sphere_cylinder/case01.json with the
 sphere on the axis, 50 x 10 cells over the half-section, 2 x 2 particles per cell: friction
 contact with four velocity fields, artificial viscosity, erosion, particle conversion) to 3 us,
-once on one rank and on RANKS ranks, split automatically and in boxes across
+and the same with single_velocity contact and an x+ `wall` face with friction (wall touch bits
+in the halo). Each once on one rank and on RANKS ranks, split automatically and in boxes across
 x and y (solver.ranks_per_axis [RANKS/2, 2]). Asserted: summary.json's numbers and every
 history column within 1e-9 as in mpirun_summary_test.py; the boxes never split z (z [0, 1]);
 each rank's halo bytes and messages per step equal the cost model with one node plane along z
@@ -136,6 +137,9 @@ def main(mpm, mpiexec, ranks, work):
     launch = [mpiexec, "-np", str(ranks), "--oversubscribe", mpm, "run", "--threads", "1"]
     variants = [
         ("friction", {}, 4, False),
+        ("wall", {"physics": {"contact": {"type": "single_velocity"}},
+                  "grid": {"boundary": {"x+": "wall", "z-": None, "z+": None},
+                           "wall_friction": {"x+": 0.2}}}, 1, True),
     ]
     for name, patch, fields, walls in variants:
         path = scene(work, name, patch)
