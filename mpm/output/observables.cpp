@@ -75,14 +75,11 @@ Observables::Observables(const Scene& scene, const Particles& initial, const Com
     : max_pressure_(scene.objects.size(), -std::numeric_limits<double>::infinity()),
       max_pressure_time_(scene.objects.size(), 0.0),
       crater_(scene.output.crater),
-      axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
       dx_(scene.grid.spacing()(0)),
+      axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
       comm_(comm) {
   for (const SceneObject& o : scene.objects) names_.push_back(o.name);
   if (!crater_) return;
-  // An axisymmetric crater is centred on the axis of symmetry (y = 0; the rings have z = 0).
-  if (scene.grid.geometry == GridGeometry::axisymmetric && !crater_->axis)
-    crater_->axis = std::array<double, 2>{0.0, 0.0};
   crater_object_ = scene.objects[crater_->object].name;
   // The face layer: (seed index, initial position) of the particles this rank holds, then of
   // every rank's, in seed-index order.
@@ -147,8 +144,11 @@ Crater Observables::crater(const Particles& P) const {
   c.depth = c.face_particles == 0 ? 0.0 : depth;
   c.displaced_particles = static_cast<std::size_t>(displaced[0]);
   if (c.displaced_particles == 0) return c;
-  c.axis_y = crater_->axis ? (*crater_->axis)[0] : displaced[1] / displaced[0];
-  c.axis_z = crater_->axis ? (*crater_->axis)[1] : displaced[2] / displaced[0];
+  // On an axisymmetric grid a displaced particle is a ring about the axis of symmetry (y is its
+  // radius): the mean of the radii is no axis.
+  const bool on_axis = axisymmetric_ && !crater_->axis;
+  c.axis_y = crater_->axis ? (*crater_->axis)[0] : on_axis ? 0.0 : displaced[1] / displaced[0];
+  c.axis_z = crater_->axis ? (*crater_->axis)[1] : on_axis ? 0.0 : displaced[2] / displaced[0];
   double r2 = 0.0;
   for (const ParticleSets::Member& m : found) {
     const Vec3& x = P.x[m.p];
@@ -176,7 +176,9 @@ Json Observables::summary(const Particles& P) const {
   for (std::size_t o = 0; o < n; ++o) {
     const double* s = &sums[5 * o];
     Vec3 v = s[0] > 0.0 ? Vec3(Vec3(s[1], s[2], s[3]) / s[0]) : Vec3::Zero();
-    if (axisymmetric_) v(1) = v(2) = 0.0;  // a ring's radial momenta cancel (as in the ledger)
+    // A ring's radial velocities cancel around it: the revolved body's mean velocity is axial
+    // (its momentum too: the ledger books the axial component only, ledger.hpp).
+    if (axisymmetric_) v(1) = v(2) = 0.0;
     const bool sampled = std::isfinite(max_pressure_[o]);
     objects[names_[o]] = {{"mass [kg]", s[0]},
                           {"mean_velocity [m/s]", Json::array({v(0), v(1), v(2)})},

@@ -64,6 +64,7 @@ struct Crater {
   double depth = 0.0;                 ///< max over the face layer of (x - X0)_x [m]
   double diameter = 0.0;              ///< 2 max distance of a displaced particle from the axis [m]
   double axis_y = 0.0, axis_z = 0.0;  ///< the axis: mean current (y, z) of the displaced [m]
+                                      ///< (axisymmetric: 0, the axis of symmetry)
   std::size_t face_particles = 0;     ///< the face layer: abs(X0_x - face) <= dx
   std::size_t displaced_particles = 0;  ///< of those, (x - X0)_x > dx/2
 };
@@ -89,9 +90,11 @@ class Observables {
   std::vector<std::string> names_;
   std::vector<double> max_pressure_, max_pressure_time_;
   std::optional<CraterSpec> crater_;
-  bool axisymmetric_ = false;  ///< mean velocities along the axis only
   std::string crater_object_;
   double dx_ = 0.0;
+  /// An axisymmetric grid (scene.hpp GridGeometry): the bodies are rings about the x axis, so
+  /// their mean velocity is axial and the crater's axis is the axis of symmetry.
+  bool axisymmetric_ = false;
   ParticleSets face_;          ///< crater: the face layer's particles (set 0)
   std::vector<Vec3> face_x0_;  ///< and their initial positions, in seed-index order
   const Communicator* comm_;
