@@ -123,6 +123,31 @@ double section_area(const Geometry& g) {
       g.shape);
 }
 
+// The meridian half-section y >= 0 of a body of revolution about x.
+double meridian_area(const Geometry& g) {
+  constexpr double pi = std::numbers::pi;
+  return std::visit(
+      [&](const auto& s) -> double {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, Box>) {
+          return (s.upper(0) - s.lower(0)) * (s.upper(1) - s.lower(1));  // refused by the reader
+        } else if constexpr (std::is_same_v<T, Sphere>) {
+          return 0.5 * pi * s.radius * s.radius;
+        } else if constexpr (std::is_same_v<T, Cylinder>) {
+          return (s.top - s.bottom).norm() * s.radius;
+        } else if constexpr (std::is_same_v<T, HollowCylinder>) {
+          // the wall over the whole length, the cap inside it (geometry.cpp inside())
+          return (s.top - s.bottom).norm() * s.thickness +
+                 s.cap_thickness * (s.radius - s.thickness);
+        } else {
+          double a = 0.0;
+          for (const Geometry& p : s.parts) a += meridian_area(p);
+          return a;
+        }
+      },
+      g.shape);
+}
+
 }  // namespace
 
 std::string planar_form_problem(const Geometry& g, GridGeometry kind) {
@@ -138,6 +163,10 @@ std::string planar_form_problem(const Geometry& g, GridGeometry kind) {
 
 double modelled_volume(const Geometry& g, GridGeometry kind) {
   return kind == GridGeometry::plane_strain ? section_area(g) * 1.0 : volume(g);
+}
+
+double seeded_area(const Geometry& g, GridGeometry kind) {
+  return kind == GridGeometry::axisymmetric ? meridian_area(g) : section_area(g);
 }
 
 }  // namespace impact::mpm

@@ -23,4 +23,10 @@ std::string planar_form_problem(const Geometry& g, GridGeometry kind);
 /// times 1 m). `g` has its 2D form (planar_form_problem is empty).
 double modelled_volume(const Geometry& g, GridGeometry kind);
 
+/// The area of the section z = 0 that a 2D grid of geometry `kind` seeds of `g` [m^2]: the
+/// meridian half-section y >= 0 (axisymmetric: a sphere's half-disc, a cylinder's length times
+/// its radius, a hollow cylinder's wall and cap), or the prism's section (plane strain); a
+/// union's parts summed. `g` has its 2D form. (The memory estimate's particle count.)
+double seeded_area(const Geometry& g, GridGeometry kind);
+
 }  // namespace impact::mpm
