@@ -18,6 +18,7 @@
 //      (PointState::flow_internal) must come back from the checkpoint.
 // (c) A restart is refused (InputError) for a checkpoint of another format version, a corrupt
 //     one (a flipped byte: checksum), a scene.json edited since, and a missing checkpoint.
+// (d) (a) and (b) on axisymmetric grids (axisymmetric_scenes below).
 #include <unistd.h>
 
 #include <boost/test/unit_test.hpp>
@@ -254,6 +255,89 @@ BOOST_AUTO_TEST_CASE(interrupted_and_restarted_run_matches_the_uninterrupted_one
   BOOST_TEST(read_json(b / "status.json").at("status") == "completed");
   require_same_outputs(a, b);
   fs::remove_all(b);
+}
+
+// (d) On 2D grids (docs/scenes.md#2d-grids): case01 in axisymmetry (friction contact, four
+//     fields, artificial viscosity, erosion, particle conversion, the hoop terms) and the Taylor
+//     rod in axisymmetry on an x- wall with friction 0.3: 40 steps uninterrupted against 20, a
+//     checkpoint and 20, every particle array and ledger row bit for bit; and the run stopped by
+//     SIGTERM after step 30 and restarted writes every file as the uninterrupted run.
+std::vector<Scene> axisymmetric_scenes() {
+  Json case01 = {
+      {"grid",
+       {{"geometry", "axisymmetric"},
+        {"lower", {0.0, 0.0}},
+        {"upper", {119.0e-3, 33.0e-3}},
+        {"cells", {50, 10}},
+        {"boundary", {{"z-", nullptr}, {"z+", nullptr}}}}},
+      {"objects",
+       {{"sphere",
+         {{"geometry", {{"center", {9.75e-3, 0.0, 0.0}}}}, {"particles_per_cell", {2, 2}}}},
+        {"target", {{"particles_per_cell", {2, 2}}}}}},
+      {"time", {{"max_time", 4.0e-6}, {"multiplier", 0.2}}},
+      {"output", {{"interval", 1.0e-6}, {"fields", {"velocity", "pressure", "id"}}}}};
+  Json taylor = {
+      {"grid",
+       {{"geometry", "axisymmetric"},
+        {"lower", {-0.001, 0.0}},
+        {"upper", {0.016455833333333336, 0.008860833333333333}},
+        {"cells", {28, 14}},
+        {"boundary", {{"x-", "wall"}, {"z-", nullptr}, {"z+", nullptr}}},
+        {"wall_friction", {{"x-", 0.3}}}}},
+      {"objects",
+       {{"rod",
+         {{"geometry", {{"bottom", {0.0001, 0.0, 0.0}}, {"top", {0.01529, 0.0, 0.0}}}},
+          {"particles_per_cell", {2, 2}}}}}},
+      {"time", {{"max_time", 6.0e-6}}},
+      {"output",
+       {{"interval", 1.5e-6}, {"snapshots", true}, {"fields", {"velocity", "temperature"}}}}};
+  return {test::shipped_scene("sphere_cylinder/case01.json", case01),
+          test::verification_scene("taylor_rod.json", taylor)};
+}
+
+BOOST_AUTO_TEST_CASE(an_axisymmetric_run_continues_bit_for_bit_from_a_checkpoint) {
+  constexpr int kSteps = 40, kHalf = 20;
+  for (const Scene& s : axisymmetric_scenes()) {
+    BOOST_REQUIRE(s.grid.geometry == GridGeometry::axisymmetric);
+    std::vector<std::vector<double>> rows_a;
+    Particles end_a;
+    {
+      Simulation a(s, 2);
+      for (int i = 0; i < kSteps; ++i) {
+        a.step();
+        rows_a.push_back(ledger_row(a));
+      }
+      end_a = a.particles();
+    }
+    Simulation c(s, 2);
+    load_after(c, s, kHalf);
+    std::size_t rows_differ = 0;
+    for (int i = kHalf; i < kSteps; ++i) {
+      c.step();
+      rows_differ += ledger_row(c) == rows_a[i] ? 0 : 1;
+    }
+    const std::size_t particles_differ = differing(end_a, c.particles());
+    BOOST_TEST_MESSAGE(s.file << " (axisymmetric): " << end_a.size() << " particles, " << kSteps
+                              << " steps against " << kHalf << " + checkpoint + " << kSteps - kHalf
+                              << ": " << particles_differ << " particles and " << rows_differ
+                              << " ledger rows differ");
+    BOOST_TEST(particles_differ == 0u);
+    BOOST_TEST(rows_differ == 0u);
+
+    const fs::path a = scratch("axisymmetric_a"), b = scratch("axisymmetric_b");
+    RunOptions options;
+    options.threads = 2;
+    options.out_dir = a.string();
+    BOOST_REQUIRE(run(s, options) == 0);
+    options.out_dir = b.string();
+    options.faults = {{FaultInjection::Kind::sigterm, 30, 0}};
+    BOOST_TEST(run(s, options) == 128 + 15);
+    RunOptions again;
+    BOOST_REQUIRE(restart(b.string(), again) == 0);
+    require_same_outputs(a, b);
+    fs::remove_all(a);
+    fs::remove_all(b);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_restart_drops_history_rows_written_after_the_checkpoint) {
