@@ -9,7 +9,8 @@
 //    larger_volume). Asserted at every step: every particle stays in the plane z = 0 with zero
 //    hoop velocity v_z, bit for bit; the axial momentum closes, |p_x - p0_x - J_x| < 1e-9 |p0|
 //    (the 3D twin's closure, sphere_cylinder_short_test.cpp; measured 1.3e-15); every sink column
-//    non-decreasing. At the end |energy_error| < 0.04 (the 3D case01's tolerance; measured
+//    non-decreasing, and at the end the artificial viscosity's work and the eroded energy are
+//    booked (> 0). At the end |energy_error| < 0.04 (the 3D case01's tolerance; measured
 //    -0.0019 to -0.0055). With two fields, particles fail (55-59) and every failed one is
 //    converted (create_new_particles).
 //    Before the normal was 2D, mass_gradient read the nodes k +- 1, which a 2D grid does not
@@ -24,6 +25,8 @@
 //    exactly, every particle stays at z = 0 with v_z = 0, and the blocks rebound (the relative
 //    normal velocity ends below -10 m/s, as in 3D).
 #include <boost/test/unit_test.hpp>
+
+#include <algorithm>
 
 #include "../verification_helpers.hpp"
 
@@ -97,6 +100,16 @@ void axisymmetric_contact(const Json& contact) {
   BOOST_TEST(steps_off_plane == 0);
   BOOST_TEST(worst_closure < 1e-9);
   BOOST_TEST(worst_sink_decrease == 0.0);
+  // The artificial viscosity and the erosion act, and their energies are booked.
+  const auto& names = sim.ledger().sink_names();
+  for (const char* sink : {"viscous_work", "eroded_energy"}) {
+    const auto it = std::find(names.begin(), names.end(), sink);
+    BOOST_REQUIRE(it != names.end());
+    const double booked = row.sinks[std::size_t(it - names.begin())];
+    BOOST_TEST_MESSAGE("  " << sink << " " << booked << " J of E0 " << sim.ledger().initial_energy()
+                            << " J");
+    BOOST_TEST(booked > 0.0, sink);
+  }
   BOOST_TEST(std::abs(row.energy_error) < 0.04);
   if (sim.grid().fields() > 1) {
     BOOST_TEST(sim.failed_particles() > 0);
