@@ -15,7 +15,7 @@ void Ledger::start(double time, double kinetic_energy, const Vec3& momentum) {
   s_.time = time;
   s_.kinetic = kinetic_energy;
   s_.initial_energy = kinetic_energy;  // the initial strain energy is zero: stress-free start
-  s_.momentum = momentum.cwiseProduct(components_);
+  s_.momentum = booked(momentum);
   s_.p0 = s_.momentum;
 }
 
@@ -24,10 +24,10 @@ void Ledger::record_step(double time, double kinetic_energy, const Vec3& momentu
                          const Vec3& external_impulse, double external_work) {
   s_.time = time;
   s_.kinetic = kinetic_energy;
-  s_.momentum = momentum.cwiseProduct(components_);
+  s_.momentum = booked(momentum);
   s_.strain += strain_energy_increment;
-  s_.boundary_impulse += boundary_impulse.cwiseProduct(components_);
-  s_.external_impulse += external_impulse.cwiseProduct(components_);
+  s_.boundary_impulse += booked(boundary_impulse);
+  s_.external_impulse += booked(external_impulse);
   s_.external_work += external_work;
 }
 

@@ -73,7 +73,7 @@ class Ledger {
   /// Particles removed at the grid's edge this step (grid.outflow = remove).
   void add_outflow(double mass, const Vec3& momentum, double kinetic_energy) {
     s_.outflow_mass += mass;
-    s_.outflow_momentum += momentum.cwiseProduct(components_);
+    s_.outflow_momentum += booked(momentum);
     s_.outflow_kinetic += kinetic_energy;
   }
 
@@ -122,6 +122,12 @@ class Ledger {
  private:
   bool with_external_, with_outflow_;
   Vec3 components_;
+  /// The components of `v` that are the body's (components_), the others +0: a product with 0
+  /// would keep the sign of a negative one, and history.csv prints -0.
+  Vec3 booked(const Vec3& v) const {
+    return {components_(0) != 0.0 ? v(0) : 0.0, components_(1) != 0.0 ? v(1) : 0.0,
+            components_(2) != 0.0 ? v(2) : 0.0};
+  }
   State s_;
   std::vector<std::string> sink_names_;
   std::vector<bool> in_balance_;
