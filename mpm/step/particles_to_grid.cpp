@@ -42,8 +42,10 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
     const Mat3 vs = -P.volume[p] * sigma;               // -V_p (sigma_p - q_p I)
     // Axisymmetric: the hoop stress pulls each ring towards the axis, -V_p sigma_tt S_Ip / r_p
     // on the radial component (Sulsky & Schreyer 1996 eq. 20; V_p is the revolved ring's).
-    double hoop = 0.0;
-    if constexpr (Shape::kHoop) hoop = P.x[p](1) > 0.0 ? vs(2, 2) / P.x[p](1) : 0.0;
+    // Held as a vector (0, hoop, 0) added to a below: a scalar a(1) += ... made the compiler
+    // store a to the stack and reload it whole, a stalled store forward per node (perf).
+    Vec3 hoop = Vec3::Zero();
+    if constexpr (Shape::kHoop) hoop(1) = P.x[p](1) > 0.0 ? vs(2, 2) / P.x[p](1) : 0.0;
     const double m = P.mass[p];
     const Vec3 mv = m * P.v[p];
     for (int i = 0; i < N; ++i) {
@@ -55,7 +57,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
         const double wdy = s.w[0][i] * s.dw[1][j];
         // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
         Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
-        if constexpr (Shape::kHoop) a(1) += hoop * wij;  // w_z = 1, dw_z = 0 on a 2D grid
+        if constexpr (Shape::kHoop) a = a + hoop * wij;  // w_z = 1, dw_z = 0 on a 2D grid
         const Vec3 b = vs.col(2) * wij;
         for (int k = 0; k < NZ; ++k) {
           NodeData& node = row[k];
