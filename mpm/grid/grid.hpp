@@ -225,6 +225,9 @@ class Grid {
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;
   double light_mass = 0.0;  ///< [kg] see kLightNodeMassFraction in step/step.hpp
+  /// Axisymmetric: the radius light_mass holds at [m]; a node at r_I > light_radius is light
+  /// below light_mass r_I / light_radius (rings weigh in proportion to their radius). 0: off.
+  double light_radius = 0.0;
   /// Contact body of each velocity field (its material: a material's parent and companion fields
   /// are one body against the others, contact/contact.hpp); empty: every field its own body.
   std::vector<int> field_body;

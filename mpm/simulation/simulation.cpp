@@ -94,8 +94,25 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
     }
   }
   double lightest = std::numeric_limits<double>::infinity();
-  for (const double m : particles_.mass) lightest = std::min(lightest, m);
-  lightest = ranks_.min(lightest);
+  if (scene_.grid.geometry == GridGeometry::axisymmetric) {
+    // A ring's mass is 2 pi r_p rho A_p: the lightest per unit radius, taken at the smallest
+    // radius seeded (kLightNodeMassFraction in step/step.hpp).
+    double per_radius = std::numeric_limits<double>::infinity();
+    double innermost = std::numeric_limits<double>::infinity();
+    for (std::size_t p = 0; p < particles_.size(); ++p) {
+      per_radius = std::min(per_radius, particles_.mass[p] / particles_.x[p](1));
+      innermost = std::min(innermost, particles_.x[p](1));
+    }
+    per_radius = ranks_.min(per_radius);
+    innermost = ranks_.min(innermost);
+    if (std::isfinite(per_radius) && std::isfinite(innermost) && innermost > 0.0) {
+      grid_.light_radius = innermost;
+      lightest = per_radius * innermost;
+    }
+  } else {
+    for (const double m : particles_.mass) lightest = std::min(lightest, m);
+    lightest = ranks_.min(lightest);
+  }
   if (std::isfinite(lightest)) grid_.light_mass = kLightNodeMassFraction * lightest;
   // Walls hold only where a particle's domain reaches them (grid/wall.cpp). Every rank scatters
   // the touch bits of its particles (the sums carry them to the rank holding the wall's nodes),
@@ -213,6 +230,7 @@ void Simulation::rebuild_grid() {
   next.field_body = grid_.field_body;
   next.field_density = grid_.field_density;
   next.light_mass = grid_.light_mass;
+  next.light_radius = grid_.light_radius;
   next.particle_half_width = grid_.particle_half_width;
   grid_ = std::move(next);
   grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
