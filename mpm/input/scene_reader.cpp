@@ -205,11 +205,14 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
     r.problems().warn(r.key_path("upper"),
                       "largest extent (upper - lower) " + *hint + "; the value is used as given");
   }
-  if (g.geometry == GridGeometry::axisymmetric && g.lower(1) != 0.0 && std::isfinite(g.lower(1)))
+  if (g.geometry == GridGeometry::axisymmetric && g.lower(1) != 0.0 && std::isfinite(g.lower(1))) {
+    std::ostringstream got;  // as typed, 1e-09 too (std::to_string would print 0.000000)
+    got << g.lower(1);
     r.problems().add(r.key_path("lower") + "/1",
                      "an axisymmetric grid starts at the axis, y = 0 (y is the radius); expected "
                      "0, got " +
-                         std::to_string(g.lower(1)));
+                         got.str());
+  }
   g.faces.fill(FaceCondition::symmetric);
   // A 2D grid has no faces along z (its one cell of 1 m is not a mesh axis): they are free.
   const int faces = g.planar() ? 4 : 6;
@@ -722,12 +725,13 @@ constexpr double kMaxSilentLoss = 0.01;
 // on the whole scene, so every rank of a run finds the same.
 void check_objects_in_grid(InputProblems& problems, const Scene& s) {
   const GridSpec& g = s.grid;
-  // A 2D grid as the scene wrote it, [x, y] (its 1 m along z is no extent of the user's).
-  const auto corner = [&](const Vec3& x) {
-    if (!g.planar()) return vec_text(x);
-    std::ostringstream t;
-    t << '[' << x(0) << ", " << x(1) << ']';
-    return t.str();
+  // A 2D grid as it was typed, [x, y] (its z extent is the reader's, scene.hpp GridGeometry).
+  const auto corner = [&](const Vec3& v) {
+    if (!g.planar()) return vec_text(v);
+    std::ostringstream o;
+    o.precision(4);
+    o << '[' << v(0) << ", " << v(1) << ']';
+    return o.str();
   };
   const std::string grid_text = corner(g.lower) + " to " + corner(g.upper) + " m";
   for (std::size_t oi = 0; oi < s.objects.size(); ++oi) {

@@ -24,6 +24,12 @@ bool along(const Vec3& bottom, const Vec3& top, int axis) {
   return true;
 }
 
+std::string text(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
 std::string text(const Vec3& v) {
   std::ostringstream s;
   s << '[' << v(0) << ", " << v(1) << ", " << v(2) << ']';
@@ -69,8 +75,7 @@ std::string plane_strain_problem(const Geometry& g) {
         using T = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<T, Box>) {
           if (s.lower(2) <= 0.0 && s.upper(2) >= 0.0) return "";
-          return "a box from z = " + std::to_string(s.lower(2)) + " to " +
-                 std::to_string(s.upper(2)) +
+          return "a box from z = " + text(s.lower(2)) + " to " + text(s.upper(2)) +
                  " m misses the plane z = 0 that a plane-strain grid models; expected lower[2] "
                  "<= 0 <= upper[2]";
         } else if constexpr (std::is_same_v<T, Sphere>) {
