@@ -3,12 +3,16 @@
 
   python3 campaigns/taylor/taylor.py OUT [--sets table1,fit_all] [--failure off]
                               [--cells-per-radius 4] [--shots H1,H8] [--anvil mirror]
-                              [--jobs J] [--threads T]
+                              [--geometry 3d] [--data CSV] [--jobs J] [--threads T]
                               [--mpm build/bin/mpm] [--pointdriver build/bin/pointdriver]
 
-For every parameter set x failure mode x resolution x shot it generates a quarter-model scene (the
-rod along x, its impact face on the x- face of the grid, the anvil; mirror planes y = 0 and
-z = 0), runs `mpm run`, and measures on the last snapshot:
+For every parameter set x failure mode x resolution x shot it generates a scene (the rod along x,
+its impact face on the x- face of the grid, the anvil), runs `mpm run`, and measures on the last
+snapshot. Geometry (--geometry, one per OUT):
+  3d            a quarter model: mirror planes y = 0 and z = 0 (the default);
+  axisymmetric  the r-z section on a 2D grid (docs/scenes.md#2d-grids): x the axis, y the radius,
+                the grid's y- face the axis; every particle a ring, 2 x 2 per cell.
+The measures:
   Lf  final length: the largest particle x plus the distance by which the outermost seeded particle
       lay inside the rod's end at t = 0 (seed_offsets: the measure is exact at t = 0);
   Dm  mushroom diameter: twice the largest radius of the particles within 0.5 mm of the anvil, plus
@@ -34,6 +38,15 @@ Failure modes:
   compression_aware  shipped plus the opt-in choices of docs/models.md (failure causes and failure
                      in compression): damage.cutoff_triaxiality = -1/3, tepla.porosity_growth =
                      tension, stability_check.outcome = report with drucker_steps = loading.
+
+Shots (--data CSV, default data/experiments/taylor/house1995.csv): one row per shot in that file's
+columns, `shot`, `D0 [m]`, `L0 [m]`, `U0 [m/s]`, `T0 [K]` required (`L0_over_D0 [-]` from them if
+absent), the measurements `Lf [m]`, `Dm [m]`, `Xf [m]` optional: one left empty is reported (the
+prediction is printed) and not judged (no error, not in the error statistics).
+
+A run whose directory holds the result of the same scene (result.json, written when it finished)
+is not run again: a campaign stopped part-way resumes where it was, and a ladder can be extended
+one level at a time into the same OUT.
 
 Writes OUT/results.csv (one row per run, SI units), OUT/results.md (errors per set, shot table,
 resolution ladder), OUT/profiles/*.csv and the figures OUT/lf_dm_vs_speed.png,
@@ -65,20 +78,51 @@ COMPRESSION_AWARE = {"constitutive_model": {
     "tepla": {"porosity_growth": "tension"},
     "stability_check": {"outcome": "report", "drucker_steps": "loading"}}}
 PPC = 2                 # particles per cell per axis
+GEOMETRIES = ("3d", "axisymmetric")
+MEASURED = ("Lf", "Dm", "Xf")
 ANVIL_LAYER = 0.5e-3    # Dm from the particles within this distance of the anvil [m]
 PLASTIC_EDGE = 2e-3     # Xf: the cross-section mean plastic strain below which a section is undeformed
 CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
 
 
 def read_shots(path=DATA):
+    """The shots of a table in the columns of house1995.csv. The measurements Lf, Dm, Xf may be
+    left empty (or the column left out): None, reported and not judged. Anything else missing or
+    not a positive number stops with the file, row and column."""
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
-    shots = []
-    for r in rows:
-        shots.append({"shot": r["shot"], "aspect": float(r["L0_over_D0 [-]"]),
-                      "D0": float(r["D0 [m]"]), "L0": float(r["L0 [m]"]),
-                      "U0": float(r["U0 [m/s]"]), "T0": float(r["T0 [K]"]),
-                      "Lf": float(r["Lf [m]"]), "Dm": float(r["Dm [m]"]), "Xf": float(r["Xf [m]"])})
+
+    def number(r, row, column, required):
+        text = (r.get(column) or "").strip()
+        if not text and not required:
+            return None
+        try:
+            value = float(text)
+        except ValueError:
+            value = float("nan")
+        if not (math.isfinite(value) and value > 0.0):
+            what = "a number > 0" + ("" if required else " or empty (not measured)")
+            sys.exit(f"taylor: {path}: row {row} ({r.get('shot') or '?'}), column '{column}': "
+                     f"'{text}' is not {what}")
+        return value
+
+    shots, names = [], set()
+    for row, r in enumerate(rows, start=2):  # row 1 is the header
+        name = (r.get("shot") or "").strip()
+        if not name or name in names:
+            sys.exit(f"taylor: {path}: row {row}: the column 'shot' needs a name, unique in the "
+                     f"file (got '{name}')")
+        names.add(name)
+        shot = {"shot": name, "D0": number(r, row, "D0 [m]", True),
+                "L0": number(r, row, "L0 [m]", True), "U0": number(r, row, "U0 [m/s]", True),
+                "T0": number(r, row, "T0 [K]", True)}
+        aspect = number(r, row, "L0_over_D0 [-]", False)
+        shot["aspect"] = aspect if aspect is not None else shot["L0"] / shot["D0"]
+        for key in MEASURED:
+            shot[key] = number(r, row, f"{key} [m]", False)
+        shots.append(shot)
+    if not shots:
+        sys.exit(f"taylor: {path}: no shots")
     return shots
 
 
@@ -104,7 +148,7 @@ def parse_anvil(text):
     sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall or wall:MU with MU in [0, 10]")
 
 
-def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0)):
+def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0), geometry="3d"):
     R0 = 0.5 * shot["D0"]
     dx = R0 / cells_per_radius
     # The mushroom reaches up to ~1.8 R0 (House H3: Dm/D0 = 1.69): the grid leaves 2.2 R0.
@@ -117,6 +161,9 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0))
                                     "top": [shot["L0"], 0.0, 0.0], "radius": R0},
                        "velocity": [-shot["U0"], 0.0, 0.0], "temperature": shot["T0"],
                        "particles_per_cell": [PPC, PPC, PPC]}}
+    planar = geometry == "axisymmetric"
+    if planar:
+        objects["rod"]["particles_per_cell"] = [PPC, PPC]
     materials = {"al": {"file": material_file, "overrides": overrides}}
     physics = {"artificial_viscosity": {"enabled": True}}
     if failure == "off":
@@ -127,11 +174,17 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0))
                 "y-": "symmetric", "y+": "symmetric", "z-": "symmetric", "z+": "symmetric"}
     grid = {"lower": [0.0, 0.0, 0.0], "upper": [nx * dx, ny * dx, ny * dx],
             "cells": [nx, ny, ny], "boundary": boundary}
+    if planar:
+        # The r-z section: the y- face is the axis (symmetric, v_r = 0), no z faces.
+        del boundary["z-"], boundary["z+"]
+        grid = {"geometry": "axisymmetric", "lower": [0.0, 0.0], "upper": [nx * dx, ny * dx],
+                "cells": [nx, ny], "boundary": boundary}
     if anvil[0] == "wall":
         boundary["x-"] = "wall"
         grid["wall_friction"] = {"x-": anvil[1]}
     return {
-        "description": f"Taylor impact, House et al. (1995) shot {shot['shot']}: quarter model, "
+        "description": f"Taylor impact, House et al. (1995) shot {shot['shot']}: "
+                       f"{'axisymmetric model' if planar else 'quarter model'}, "
                        f"{cells_per_radius} cells per radius, failure {failure}",
         "materials": materials, "objects": objects,
         "grid": grid,
@@ -144,28 +197,34 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0))
     }
 
 
-def seed_offsets(shot, cells_per_radius):
+def seed_offsets(shot, cells_per_radius, geometry="3d"):
     """How far inside the true rod the outermost seeded particles lie at t = 0 (axially, L0 minus
     the largest particle x; radially, R0 minus the largest particle radius): sub-cell centres
     (i + 1/2) h inside the cylinder, as mpm seeds them (docs/scenes.md). Adding these to the
     final extreme particles makes the measures exact at t = 0 (raw h/2 would read a 6-cells-per-
-    radius rod 3 % too thick and a short rod up to 2 % too long)."""
+    radius rod 3 % too thick and a short rod up to 2 % too long). In the quarter model the rim is
+    the farthest centre (y, z) of the staircase; in the r-z section the particles sit at z = 0,
+    so it is the largest centre y <= R0 (R0 - h/2: R0 is a whole number of spacings)."""
     R0 = 0.5 * shot["D0"]
     h = R0 / cells_per_radius / PPC
     top = (math.floor(shot["L0"] / h - 0.5) + 0.5) * h
     centres = [(i + 0.5) * h for i in range(int(R0 / h) + 1)]
-    rim = max(math.hypot(a, b) for a in centres for b in centres if math.hypot(a, b) <= R0)
+    if geometry == "axisymmetric":
+        rim = max(a for a in centres if a <= R0)
+    else:
+        rim = max(math.hypot(a, b) for a in centres for b in centres if math.hypot(a, b) <= R0)
     return shot["L0"] - top, R0 - rim
 
 
-def measure(x, plastic_strain, shot, cells_per_radius, face_lift=0.0):
+def measure(x, plastic_strain, shot, cells_per_radius, face_lift=0.0, geometry="3d"):
     """Lf, Dm, Xf and the profile [(x, radius, mean plastic strain)] from final positions x, with
-    the impact face `face_lift` above the anvil (a rod that bounced off a `wall` anvil)."""
+    the impact face `face_lift` above the anvil (a rod that bounced off a `wall` anvil). The
+    radius is sqrt(y^2 + z^2) in the quarter model, y in the r-z section (z = 0 there)."""
     R0 = 0.5 * shot["D0"]
     h = R0 / cells_per_radius / PPC  # particle spacing
-    axial, radial = seed_offsets(shot, cells_per_radius)
+    axial, radial = seed_offsets(shot, cells_per_radius, geometry)
     x = x - [face_lift, 0.0, 0.0]
-    r = (x[:, 1] ** 2 + x[:, 2] ** 2) ** 0.5
+    r = x[:, 1] if geometry == "axisymmetric" else (x[:, 1] ** 2 + x[:, 2] ** 2) ** 0.5
     Lf = x[:, 0].max() + axial
     near = x[:, 0] < ANVIL_LAYER
     Dm = 2.0 * (r[near].max() + radial)
@@ -182,7 +241,7 @@ def measure(x, plastic_strain, shot, cells_per_radius, face_lift=0.0):
     return Lf, Dm, Lf - edge, profile
 
 
-def extract(run_dir, shot, cells_per_radius):
+def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     """Lf, Dm, Xf, the profile and the failure counts of a finished run (module docstring)."""
     snaps = vtu.snapshots(run_dir)
     first, last = vtu.read_vtu(snaps[0][1]), vtu.read_vtu(snaps[-1][1])
@@ -199,7 +258,7 @@ def extract(run_dir, shot, cells_per_radius):
         lowest = min(vtu.read_vtu(f)["points"][rod0][:, 0].min() for _, f in snaps)
         face_lift = float(x[:, 0].min() - lowest)
     Lf, Dm, Xf, profile = measure(x, last["plastic_strain"][rod0], shot, cells_per_radius,
-                                  face_lift)
+                                  face_lift, geometry)
     failed = last["failed"][rod0] > 0.5
     core = (X0[:, 1] ** 2 + X0[:, 2] ** 2) ** 0.5 <= 0.5 * R0
     causes = last["failure_cause"][rod0]
@@ -228,21 +287,43 @@ def extract(run_dir, shot, cells_per_radius):
     return out, profile
 
 
+def finished(run_dir, the_scene):
+    """The row and profile of a run of this very scene that finished before (result.json), or
+    None: a stopped campaign resumes, and a finished run is not repeated."""
+    try:
+        with open(os.path.join(run_dir, "result.json")) as f:
+            done = json.load(f)
+    except (OSError, ValueError):
+        return None
+    return done if done.get("scene") == the_scene else None
+
+
 def run_one(job):
-    shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads, anvil = job
+    shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads, anvil, geometry = job
     tag = f"{set_name}_{failure}_n{n}"
-    # Campaigns with different anvils may share --runs: each anvil has its own run directories.
+    # Campaigns with different anvils or geometries may share --runs: each has its own run
+    # directories.
     run_tag = tag if anvil[0] == "mirror" else f"{tag}_wall{anvil[1]:g}"
+    if geometry != "3d":
+        run_tag += f"_{geometry}"
     run_dir = os.path.join(runs_dir, run_tag, shot["shot"])
     os.makedirs(run_dir, exist_ok=True)
+    the_scene = scene(shot, material, failure, n, anvil, geometry)
+    done = finished(run_dir, the_scene)
+    if done is not None:
+        row, profile = done["row"], [tuple(p) for p in done["profile"]]
+        record_shape(row, shot, profile, out_dir, tag)
+        print(f"taylor: {tag} {shot['shot']}: done before ({run_dir}/result.json)", flush=True)
+        return row, profile
     scene_file = os.path.join(run_dir, "scene_in.json")
     with open(scene_file, "w") as f:
-        json.dump(scene(shot, material, failure, n, anvil), f, indent=1)
+        json.dump(the_scene, f, indent=1)
     start = time.time()
     proc = subprocess.run([mpm, "run", scene_file, "--out", run_dir, "--threads", str(threads)],
                           capture_output=True, text=True)
     row = {"set": set_name, "failure": failure, "cells_per_radius": n,
-           "anvil": anvil[0] if anvil[0] == "mirror" else f"wall:{anvil[1]:g}", "shot": shot["shot"],
+           "anvil": anvil[0] if anvil[0] == "mirror" else f"wall:{anvil[1]:g}",
+           "geometry": geometry, "shot": shot["shot"],
            "L0_over_D0 [-]": shot["aspect"], "U0 [m/s]": shot["U0"], "L0 [m]": shot["L0"],
            "D0 [m]": shot["D0"], "Lf_exp [m]": shot["Lf"], "Dm_exp [m]": shot["Dm"],
            "Xf_exp [m]": shot["Xf"], "exit_code": proc.returncode,
@@ -252,7 +333,7 @@ def run_one(job):
         print(f"taylor: {tag} {shot['shot']} FAILED (exit {proc.returncode}): {row['message']}",
               flush=True)
         return row, None
-    m, profile = extract(run_dir, shot, n)
+    m, profile = extract(run_dir, shot, n, geometry)
     row.update(m)
     record_shape(row, shot, profile, out_dir, tag)
     # Keep the last snapshot (the failure-cause figure); drop the others (tens of MB per run).
@@ -263,17 +344,27 @@ def run_one(job):
         f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n'
                 f'<DataSet timestep="{snaps[-1][0]!r}" part="0" '
                 f'file="{os.path.relpath(snaps[-1][1], run_dir)}"/>\n</Collection>\n</VTKFile>\n')
-    print(f"taylor: {tag} {shot['shot']}: Lf {row['Lf_error [%]']:+.2f} %, "
-          f"Dm {row['Dm_error [%]']:+.2f} %, failed {m['failed']} (core {m['failed_core']}), "
-          f"{row['elapsed [s]']:.0f} s", flush=True)
+    print(f"taylor: {tag} {shot['shot']}: {shape_text(row)}, failed {m['failed']} (core "
+          f"{m['failed_core']}), {row['elapsed [s]']:.0f} s", flush=True)
     row["last_snapshot"] = os.path.relpath(snaps[-1][1], out_dir)  # relative to OUT
+    with open(os.path.join(run_dir, "result.json"), "w") as f:
+        json.dump({"scene": the_scene, "row": row, "profile": profile}, f)
     return row, profile
 
 
+def shape_text(row):
+    """Lf and Dm against the experiment, or the prediction where the shot has no measurement."""
+    return ", ".join(f"{key} {row[f'{key}_error [%]']:+.2f} %" if row[f"{key}_error [%]"] != ""
+                     else f"{key} {1e3 * row[f'{key} [m]']:.3f} mm (not measured)"
+                     for key in ("Lf", "Dm"))
+
+
 def record_shape(row, shot, profile, out_dir, tag):
-    """Errors against the experiment into `row`; the profile into OUT/profiles/<tag>_<shot>.csv."""
-    for key in ("Lf", "Dm", "Xf"):
-        row[f"{key}_error [%]"] = 100.0 * (row[f"{key} [m]"] / shot[key] - 1.0)
+    """Errors against the experiment into `row` (empty where the shot has no measurement: not
+    judged); the profile into OUT/profiles/<tag>_<shot>.csv."""
+    for key in MEASURED:
+        row[f"{key}_error [%]"] = ("" if shot[key] is None
+                                   else 100.0 * (row[f"{key} [m]"] / shot[key] - 1.0))
     prof_dir = os.path.join(out_dir, "profiles")
     os.makedirs(prof_dir, exist_ok=True)
     with open(os.path.join(prof_dir, f"{tag}_{shot['shot']}.csv"), "w") as f:
@@ -282,12 +373,12 @@ def record_shape(row, shot, profile, out_dir, tag):
             f.write(f"{p[0]:.6e},{p[1]:.6e},{p[2]:.6e}\n")
 
 
-def reextract(out_dir):
+def reextract(out_dir, data=DATA):
     """Re-measures Lf, Dm, Xf and the profiles of OUT/results.csv from the runs' last snapshots
     (after a change of the measures; nothing is re-run)."""
     with open(os.path.join(out_dir, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    shots = {s["shot"]: s for s in read_shots()}
+    shots = {s["shot"]: s for s in read_shots(data)}
     for row in rows:
         if row["exit_code"] != "0":
             continue
@@ -295,7 +386,8 @@ def reextract(out_dir):
         last = vtu.read_vtu(os.path.join(out_dir, row["last_snapshot"]))
         rod = last["object"] == max(last["object"])
         Lf, Dm, Xf, profile = measure(last["points"][rod], last["plastic_strain"][rod], shot, n,
-                                      float(row.get("face_lift [m]") or 0.0))
+                                      float(row.get("face_lift [m]") or 0.0),
+                                      row.get("geometry") or "3d")
         row.update({"Lf [m]": Lf, "Dm [m]": Dm, "Xf [m]": Xf})
         record_shape(row, shot, profile, out_dir, f"{row['set']}_{row['failure']}_n{n}")
     with open(os.path.join(out_dir, "results.csv"), "w", newline="") as f:
@@ -328,6 +420,12 @@ def main():
     ap.add_argument("--anvil", default="mirror",
                     help="mirror (default: symmetric x- face, frictionless) or wall[:MU] (rigid "
                          "wall that never pulls, Coulomb friction MU; one per OUT)")
+    ap.add_argument("--geometry", default="3d", choices=GEOMETRIES,
+                    help="3d (default: the quarter model) or axisymmetric (the r-z section on a 2D "
+                         "grid; one per OUT)")
+    ap.add_argument("--data", default=DATA,
+                    help="the table of shots, in the columns of data/experiments/taylor/"
+                         "house1995.csv (the default); a measurement left empty is not judged")
     ap.add_argument("--shots", default=None, help="comma list of shot names (default: all 23)")
     ap.add_argument("--jobs", type=int, default=None, help="runs at a time (default: cores/threads)")
     ap.add_argument("--threads", type=int, default=1, help="OpenMP threads per run")
@@ -341,7 +439,7 @@ def main():
     a = ap.parse_args()
     out_dir = os.path.abspath(a.out)
     if a.reextract:
-        reextract(out_dir)
+        reextract(out_dir, a.data)
         if not a.no_plot:
             sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
             import taylor_report  # noqa: E402
@@ -349,12 +447,13 @@ def main():
         return 0
     os.makedirs(out_dir, exist_ok=True)
     runs_dir = os.path.abspath(a.runs) if a.runs else os.path.join(out_dir, "runs")
-    shots = read_shots()
+    shots = read_shots(a.data)
     if a.shots:
         wanted = a.shots.split(",")
         unknown = [s for s in wanted if s not in {x["shot"] for x in shots}]
         if unknown:
-            sys.exit(f"taylor: --shots: unknown shot(s) {unknown}; the data file has H1..H23")
+            sys.exit(f"taylor: --shots: unknown shot(s) {unknown}; the data file has "
+                     f"{shots[0]['shot']}..{shots[-1]['shot']}")
         shots = [s for s in shots if s["shot"] in wanted]
     levels = [int(n) for n in a.cells_per_radius.split(",")]
     ladder = set(a.ladder_shots.split(",")) if a.ladder_shots else None
@@ -383,7 +482,7 @@ def main():
                     if i > 0 and ladder is not None and shot["shot"] not in ladder:
                         continue
                     jobs.append((shot, s, materials[s], f, n, out_dir, runs_dir, a.mpm,
-                                 a.threads, anvil))
+                                 a.threads, anvil, a.geometry))
     # Longest first, so that the pool ends together.
     jobs.sort(key=lambda j: -(j[0]["L0"] * j[4] ** 4 / j[0]["U0"]))
     n_jobs = a.jobs or max(1, (os.cpu_count() or 1) // a.threads)
@@ -394,7 +493,7 @@ def main():
         for row, _ in pool.map(run_one, jobs):
             rows.append(row)
     wall = time.time() - start
-    order = {s["shot"]: i for i, s in enumerate(read_shots())}
+    order = {s["shot"]: i for i, s in enumerate(read_shots(a.data))}
     rows.sort(key=lambda r: (r["set"], r["failure"], r["cells_per_radius"], order[r["shot"]]))
     keys = []
     for r in rows:

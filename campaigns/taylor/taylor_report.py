@@ -5,7 +5,13 @@
 
 Reads OUT/results.csv and OUT/profiles/, writes OUT/results.md and the figures
 OUT/lf_dm_vs_speed.png, OUT/profiles.png, OUT/failure_causes_<set>_<failure>.png (failure modes
-other than off) and OUT/ladder.png (when more than one resolution was run).
+other than off) and OUT/ladder.png (when more than one resolution was run). With three or more
+resolutions, also OUT/convergence.csv: per shot, Lf and Dm extrapolated from the three finest
+levels (Richardson, with the observed order; `richardson` below) and the errors of every level
+and of the extrapolation against the experiment.
+
+A shot whose measurement is empty in the data table has no error: its prediction is in the tables
+and it is left out of the error statistics (not judged).
 """
 
 import csv
@@ -22,20 +28,72 @@ CAUSE_COLOURS = {"none": "#c8c8c8", "melting": "tab:orange", "tepla": "tab:red",
                  "drucker": "tab:blue", "becker": "tab:green"}
 SET_MARKERS = {"table1": "s", "fit_all": "o", "fit_room": "^"}
 PROFILE_SHOTS = ["H3", "H8", "H10", "H13", "H16", "H21"]
+TEXT_COLUMNS = {"set", "failure", "anvil", "geometry", "shot", "message", "last_snapshot"}
 
 
 def load(out):
+    """The rows of OUT/results.csv, numbers as floats, an empty number (a measurement the data
+    table leaves empty, and its error) as None; `order` numbers the shots as the file lists them."""
     with open(os.path.join(out, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
+    order = {}
     for r in rows:
         for k, v in list(r.items()):
+            if k in TEXT_COLUMNS:
+                continue
             try:
                 r[k] = float(v)
             except (TypeError, ValueError):
-                pass
+                r[k] = None if v == "" else v
         r["cells_per_radius"] = int(r["cells_per_radius"])
         r["ok"] = r["exit_code"] == 0
+        order.setdefault(r["shot"], len(order))
+    for r in rows:
+        r["order"] = order[r["shot"]]
     return rows
+
+
+def judged(rows, key):
+    """The errors `key` of the rows whose shot has that measurement."""
+    return [r[key] for r in rows if r.get(key) is not None]
+
+
+def error_stats(errors):
+    """'mean / mean abs / worst abs' of a list of errors [%], or 'not measured'."""
+    if not errors:
+        return "not measured"
+    return (f"{sum(errors) / len(errors):+.2f} / {sum(map(abs, errors)) / len(errors):.2f} / "
+            f"{max(map(abs, errors)):.2f}")
+
+
+def richardson(levels, values):
+    """Richardson extrapolation from three resolutions (cells per radius n1 < n2 < n3, the values
+    f1, f2, f3): (p, f_ext), the observed order and the extrapolated value, or None when the
+    differences change sign (oscillatory) or do not shrink (no observed order > 0).
+
+    With h = 1 / n, r21 = n3 / n2, r32 = n2 / n1, e21 = f3 - f2, e32 = f2 - f1, the order solves
+    p = |ln|e32 / e21| + q(p)| / ln r21, q(p) = ln((r21^p - 1) / (r32^p - 1)) (monotone case),
+    by fixed-point iteration; for a constant ratio r, q = 0 and
+    p = ln((f1 - f2) / (f2 - f3)) / ln r.
+    Then f_ext = f3 + (f3 - f2) / (r21^p - 1) (Roache 1998; Celik et al. 2008, eqs. 3-4)."""
+    (n1, n2, n3), (f1, f2, f3) = levels, values
+    r21, r32 = n3 / n2, n2 / n1
+    e21, e32 = f3 - f2, f2 - f1
+    if e21 == 0.0 or e32 == 0.0 or (e21 > 0.0) != (e32 > 0.0):
+        return None
+    p = math.log(abs(e32 / e21)) / math.log(r21)
+    for _ in range(200):
+        if p <= 0.0:
+            return None
+        q = math.log((r21 ** p - 1.0) / (r32 ** p - 1.0))
+        p_next = abs(math.log(abs(e32 / e21)) + q) / math.log(r21)
+        if abs(p_next - p) < 1e-12:
+            p = p_next
+            break
+        p = p_next
+    if not p > 0.0:
+        return None
+    return p, f3 + e21 / (r21 ** p - 1.0)
 
 
 def group(rows, *keys):
@@ -55,16 +113,14 @@ def summary_table(rows):
         if not ok:
             lines.append(f"| {s} | {f} | {n} | {len(rs)} (0) | | | | | | |")
             continue
-        lf = [r["Lf_error [%]"] for r in ok]
-        dm = [r["Dm_error [%]"] for r in ok]
+        lf = judged(ok, "Lf_error [%]")
+        dm = judged(ok, "Dm_error [%]")
         rest = [r["time_to_rest [s]"] for r in ok]
         rest_text = ("not all" if any(math.isnan(x) for x in rest)
                      else f"{1e6 * max(rest):.0f}")
         lines.append(
-            f"| {s} | {f} | {n} | {len(rs)} ({len(ok)}) | {sum(lf) / len(lf):+.2f} / "
-            f"{sum(map(abs, lf)) / len(lf):.2f} / {max(map(abs, lf)):.2f} | "
-            f"{sum(dm) / len(dm):+.2f} / {sum(map(abs, dm)) / len(dm):.2f} / "
-            f"{max(map(abs, dm)):.2f} | {sum(int(r['failed']) for r in ok)} "
+            f"| {s} | {f} | {n} | {len(rs)} ({len(ok)}) | {error_stats(lf)} | "
+            f"{error_stats(dm)} | {sum(int(r['failed']) for r in ok)} "
             f"({sum(int(r['failed_core']) for r in ok)}, "
             f"{sum(int(r['failed_core_under_pressure']) for r in ok)}) | {rest_text} | "
             f"{100 * max(abs(r['energy_error [-]']) for r in ok):.2f} | "
@@ -86,8 +142,8 @@ def shot_table(rows, failure="off"):
         f"Xf {s} [mm]" for s in sets) + " |"
     lines = [f"Failure {failure}, at {', '.join(f'{s}: {finest[s]}' for s in sets)} cells per "
              "radius.", "", head, "|" + "---|" * (5 + 3 * len(sets))]
-    shots = sorted({r["shot"] for r in rows}, key=lambda x: int(x[1:]))
-    for sh in shots:
+    shots = sorted({(r["order"], r["shot"]) for r in rows})
+    for _, sh in shots:
         ref = next((by[(s, sh)] for s in sets if (s, sh) in by), None)
         if ref is None:
             continue
@@ -96,15 +152,22 @@ def shot_table(rows, failure="off"):
             r = by.get((s, sh))
             if r is None or not r["ok"]:
                 return "stopped" if r is not None else ""
-            return f"{1e3 * r[key]:.2f} ({r[err]:+.1f})" if err else f"{1e3 * r[key]:.1f}"
+            if err is None:
+                return f"{1e3 * r[key]:.1f}"
+            if r[err] is None:
+                return f"{1e3 * r[key]:.2f} (not judged)"
+            return f"{1e3 * r[key]:.2f} ({r[err]:+.1f})"
+
+        def measured(key):
+            return "-" if ref[key] is None else f"{1e3 * ref[key]:.1f}"
 
         lines.append(
             f"| {sh} | {ref['L0_over_D0 [-]']:g} | {ref['U0 [m/s]']:g} | "
-            f"{1e3 * ref['Lf_exp [m]']:.1f} | " +
+            f"{measured('Lf_exp [m]')} | " +
             " | ".join(cell(s, "Lf [m]", "Lf_error [%]") for s in sets) +
-            f" | {1e3 * ref['Dm_exp [m]']:.1f} | " +
+            f" | {measured('Dm_exp [m]')} | " +
             " | ".join(cell(s, "Dm [m]", "Dm_error [%]") for s in sets) +
-            f" | {1e3 * ref['Xf_exp [m]']:.1f} | " +
+            f" | {measured('Xf_exp [m]')} | " +
             " | ".join(cell(s, "Xf [m]", None) for s in sets) + " |")
     return lines
 
@@ -130,6 +193,70 @@ def ladder_table(rows):
     return lines
 
 
+def convergence(rows, out=None):
+    """Per set and failure mode with three or more resolutions: per shot, Lf and Dm at every level
+    and extrapolated from the three finest (richardson; the observed order p in brackets, '-'
+    where the differences oscillate or grow), then the errors against the experiment at every
+    level and of the extrapolations. With `out`, the per-shot figures go to OUT/convergence.csv."""
+    lines, table = [], []
+    for (s, f), rs in sorted(group([r for r in rows if r["ok"]], "set", "failure").items()):
+        levels = sorted({r["cells_per_radius"] for r in rs})
+        if len(levels) < 3:
+            continue
+        by_shot = defaultdict(dict)
+        for r in rs:
+            by_shot[(r["order"], r["shot"])][r["cells_per_radius"]] = r
+        head = ("| shot | " + " | ".join(f"Lf at {n} [mm]" for n in levels) +
+                " | Lf extrapolated [mm] (p) | " + " | ".join(f"Dm at {n} [mm]" for n in levels) +
+                " | Dm extrapolated [mm] (p) |")
+        lines += [f"Set {s}, failure {f}: extrapolated from the three finest levels each shot has "
+                  "(Richardson with the observed order p; general form for a non-constant ratio).",
+                  "", head, "|" + "---|" * (3 + 2 * len(levels))]
+        errors = defaultdict(lambda: defaultdict(list))  # [key][level or "ext"] -> errors [%]
+        for (_, sh), by in sorted(by_shot.items()):
+            have = sorted(by)
+            ref = by[have[-1]]
+            entry = {"set": s, "failure": f, "shot": sh}
+            cells = {}
+            for key in ("Lf", "Dm"):
+                exp = ref[f"{key}_exp [m]"]
+                for n in have:
+                    entry[f"{key} n{n} [m]"] = by[n][f"{key} [m]"]
+                    if exp is not None:
+                        errors[key][n].append(100.0 * (by[n][f"{key} [m]"] / exp - 1.0))
+                est = (richardson(have[-3:], [by[n][f"{key} [m]"] for n in have[-3:]])
+                       if len(have) >= 3 else None)
+                entry[f"{key}_levels"] = "/".join(str(n) for n in have[-3:])
+                entry[f"{key} extrapolated [m]"] = est[1] if est else ""
+                entry[f"{key} observed order [-]"] = est[0] if est else ""
+                entry[f"{key}_exp [m]"] = "" if exp is None else exp
+                entry[f"{key} extrapolated error [%]"] = (
+                    100.0 * (est[1] / exp - 1.0) if est and exp is not None else "")
+                if est and exp is not None:
+                    errors[key]["ext"].append(100.0 * (est[1] / exp - 1.0))
+                cells[key] = (" | ".join(f"{1e3 * by[n][f'{key} [m]']:.3f}" if n in by else ""
+                                         for n in levels) + " | " +
+                              (f"{1e3 * est[1]:.3f} ({est[0]:.2f})" if est else "-"))
+            table.append(entry)
+            lines.append(f"| {sh} | {cells['Lf']} | {cells['Dm']} |")
+        lines += ["", "| cells per radius | shots | Lf error mean / mean abs / worst abs [%] | "
+                  "Dm error mean / mean abs / worst abs [%] |", "|---|---|---|---|"]
+        for n in levels + ["ext"]:
+            count = max(len(errors["Lf"][n]), len(errors["Dm"][n]))
+            lines.append(f"| {'extrapolated' if n == 'ext' else n} | {count} | "
+                         f"{error_stats(errors['Lf'][n])} | {error_stats(errors['Dm'][n])} |")
+        lines.append("")
+    if out and table:
+        keys = []
+        for e in table:
+            keys += [k for k in e if k not in keys]
+        with open(os.path.join(out, "convergence.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, keys, lineterminator="\n")
+            w.writeheader()
+            w.writerows(table)
+    return lines
+
+
 def failure_table(rows):
     fr = [r for r in rows if r["failure"] != "off" and r["ok"]]
     if not fr:
@@ -140,7 +267,7 @@ def failure_table(rows):
     off = {(r["set"], r["cells_per_radius"], r["shot"]): r for r in rows
            if r["failure"] == "off" and r["ok"]}
     for r in sorted(fr, key=lambda r: (r["set"], r["failure"], r["cells_per_radius"],
-                                       int(r["shot"][1:]))):
+                                       r["order"])):
         o = off.get((r["set"], r["cells_per_radius"], r["shot"]))
         rel = f"{100 * (r['Lf [m]'] / o['Lf [m]'] - 1):+.2f}" if o else "n/a"
         lines.append(
@@ -169,7 +296,7 @@ def figures(out, rows):
                                      (axes[1], "Dm [m]", "Dm_exp [m]", "D0 [m]", "Dm / D0")]:
         for a in aspects:
             ex = sorted({(r["U0 [m/s]"], r[exp] / r[ref]) for r in rows
-                         if r["L0_over_D0 [-]"] == a})
+                         if r["L0_over_D0 [-]"] == a and r[exp] is not None})
             ax.plot([x for x, _ in ex], [y for _, y in ex], "*", ms=11, color=colours[a],
                     mec="k", label=f"L0/D0 = {a:g}, experiment" if key == "Lf [m]" else None)
             for s in sorted(finest):
@@ -204,8 +331,11 @@ def figures(out, rows):
                 ax.plot([1e3 * x for x, _ in pts], [1e3 * y for _, y in pts],
                         label=f"{r['set']} ({r['cells_per_radius']} cells/radius)")
                 exp = r
-            ax.plot([0.0], [0.5e3 * exp["Dm_exp [m]"]], "k*", ms=12, label="experiment Dm/2")
-            ax.axvline(1e3 * exp["Lf_exp [m]"], color="k", ls="--", lw=0.8, label="experiment Lf")
+            if exp["Dm_exp [m]"] is not None:
+                ax.plot([0.0], [0.5e3 * exp["Dm_exp [m]"]], "k*", ms=12, label="experiment Dm/2")
+            if exp["Lf_exp [m]"] is not None:
+                ax.axvline(1e3 * exp["Lf_exp [m]"], color="k", ls="--", lw=0.8,
+                           label="experiment Lf")
             ax.axhline(0.5e3 * exp["D0 [m]"], color="0.6", ls=":", lw=0.8)
             ax.set_title(f"{sh}: L0/D0 = {exp['L0_over_D0 [-]']:g}, {exp['U0 [m/s]']:g} m/s",
                          fontsize=9)
@@ -219,7 +349,7 @@ def figures(out, rows):
 
     for (s, f, n), rs in sorted(group([r for r in rows if r["failure"] != "off" and r["ok"]],
                                       "set", "failure", "cells_per_radius").items()):
-        shots = [r for r in sorted(rs, key=lambda r: int(r["shot"][1:]))]
+        shots = [r for r in sorted(rs, key=lambda r: r["order"])]
         cols = min(4, len(shots))
         nrows = math.ceil(len(shots) / cols)
         fig, axes = plt.subplots(nrows, cols, figsize=(3.6 * cols, 2.8 * nrows), squeeze=False)
@@ -261,7 +391,7 @@ def figures(out, rows):
         for (s, f, sh), rs in sorted(group([r for r in rows if r["ok"]], "set", "failure",
                                            "shot").items()):
             rs = sorted(rs, key=lambda r: r["cells_per_radius"])
-            if len(rs) < 2:
+            if len(rs) < 2 or any(r["Lf_error [%]"] is None for r in rs):
                 continue
             ax.plot([r["cells_per_radius"] for r in rs], [r["Lf_error [%]"] for r in rs],
                     SET_MARKERS.get(s, "d") + "-", label=f"{s}, {sh}" + ("" if f == "off" else f))
@@ -280,8 +410,11 @@ def report(out):
              "Written by campaigns/taylor/taylor_report.py from results.csv (errors: simulation / "
              "experiment - 1; lengths in mm in the tables, SI in results.csv).", ""]
     anvils = sorted({r.get("anvil") or "mirror" for r in rows})
+    geometries = sorted({r.get("geometry") or "3d" for r in rows})
     lines += [f"Anvil: {', '.join(anvils)} (mirror: the symmetric x- face, rigid and frictionless; "
               "wall:MU: a rigid wall that never pulls, Coulomb friction MU).", "",
+              f"Geometry: {', '.join(geometries)} (3d: the quarter model; axisymmetric: the r-z "
+              "section on a 2D grid).", "",
               "## Per parameter set, failure mode and resolution", ""]
     lines += summary_table(rows)
     for f in sorted({r["failure"] for r in rows}):
@@ -289,6 +422,9 @@ def report(out):
     lad = ladder_table(rows)
     if lad:
         lines += ["", "## Resolution ladder", ""] + lad
+    conv = convergence(rows, out)
+    if conv:
+        lines += ["", "## Convergence (Richardson)", ""] + conv
     ft = failure_table(rows)
     if ft:
         lines += ["", "## Failed particles by cause", ""] + ft

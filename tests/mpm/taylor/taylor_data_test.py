@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""The Taylor campaign's table of shots (--data) and its convergence estimate (docs/taylor.md).
+
+  taylor_data_test.py WORK_DIR
+
+campaigns/taylor/taylor.py reads any table in the columns of data/experiments/taylor/house1995.csv:
+a measurement (Lf, Dm, Xf) left empty, or its column left out, is None: reported, not judged (no
+error, out of the error statistics); L0_over_D0 follows from L0 and D0 when absent; a missing or
+non-positive required value stops with the file, row and column. The House table reads as before
+(23 shots, every measurement present). campaigns/taylor/taylor_report.py's Richardson estimate
+recovers the order and the limit of f = f0 + C h^p from three levels with a constant and with a
+non-constant refinement ratio, and refuses oscillating or non-shrinking differences. A run
+directory whose result.json holds the same scene is finished (the campaign resumes); another scene
+or no result is not.
+"""
+import json
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "campaigns", "taylor"))
+sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
+import taylor  # noqa: E402
+import taylor_report  # noqa: E402
+
+HEADER = "shot,L0_over_D0 [-],D0 [m],L0 [m],U0 [m/s],T0 [K],rho0 [kg/m^3],Lf [m],Dm [m],Xf [m]\n"
+
+
+def write(work, name, text):
+    path = os.path.join(work, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def refused(path):
+    """The message with which read_shots stops, or None when it reads the file."""
+    try:
+        taylor.read_shots(path)
+    except SystemExit as e:
+        return str(e)
+    return None
+
+
+def main(work):
+    os.makedirs(work, exist_ok=True)
+    failures = []
+
+    def check(ok, what):
+        if not ok:
+            failures.append(what)
+
+    house = taylor.read_shots()
+    check(len(house) == 23 and all(s[k] is not None for s in house for k in taylor.MEASURED),
+          "the House table: 23 shots with every measurement")
+    check(house[7]["shot"] == "H8" and house[7]["aspect"] == 2.0 and house[7]["Lf"] == 0.0114,
+          f"H8 read as {house[7]}")
+
+    # A table with an unmeasured diameter and an unmeasured length, without the aspect column.
+    table = write(work, "partial.csv", "shot,D0 [m],L0 [m],U0 [m/s],T0 [K],Lf [m],Dm [m],Xf [m]\n"
+                  "A1,0.0076,0.0152,300,294,0.0131,,\n"
+                  "A2,0.0076,0.0380,250,294,,0.0120,0.0200\n")
+    shots = taylor.read_shots(table)
+    check([s["shot"] for s in shots] == ["A1", "A2"], f"shot names {shots}")
+    check(shots[0]["Dm"] is None and shots[0]["Xf"] is None and shots[0]["Lf"] == 0.0131,
+          f"A1's empty Dm and Xf: {shots[0]}")
+    check(shots[1]["Lf"] is None and shots[1]["Dm"] == 0.0120, f"A2's empty Lf: {shots[1]}")
+    check(abs(shots[0]["aspect"] - 2.0) < 1e-12, f"A1's aspect from L0/D0: {shots[0]['aspect']}")
+    # Measurement columns left out altogether: nothing to judge.
+    bare = taylor.read_shots(write(work, "bare.csv", "shot,D0 [m],L0 [m],U0 [m/s],T0 [K]\n"
+                                   "B1,0.0076,0.0152,300,294\n"))
+    check(all(bare[0][k] is None for k in taylor.MEASURED), f"no measurement columns: {bare}")
+
+    # Not judged: no error where the measurement is empty.
+    row = {"Lf [m]": 0.0130, "Dm [m]": 0.0125, "Xf [m]": 0.005}
+    taylor.record_shape(row, shots[0], [(0.001, 0.004, 0.1)], work, "t")
+    check(abs(row["Lf_error [%]"] - 100 * (0.0130 / 0.0131 - 1)) < 1e-12
+          and row["Dm_error [%]"] == "" and row["Xf_error [%]"] == "",
+          f"errors of A1: {row}")
+    check(taylor.shape_text(row) == f"Lf {row['Lf_error [%]']:+.2f} %, Dm 12.500 mm (not measured)",
+          f"printed: {taylor.shape_text(row)}")
+    check(taylor_report.error_stats([]) == "not measured"
+          and taylor_report.error_stats([1.0, -3.0]) == "-1.00 / 2.00 / 3.00",
+          "error statistics")
+
+    # Bad tables: the file, the row and the column.
+    for name, text, expected in [
+            ("no_speed.csv", HEADER + "H1,1.5,0.007595,0.01139,,294,2700,0.0102,0.0099,0.0052\n",
+             "row 2 (H1), column 'U0 [m/s]': '' is not a number > 0"),
+            ("bad_lf.csv", HEADER + "H1,1.5,0.007595,0.01139,227,294,2700,short,0.0099,0.0052\n",
+             "row 2 (H1), column 'Lf [m]': 'short' is not a number > 0 or empty (not measured)"),
+            ("negative.csv", HEADER + "H1,1.5,-0.007595,0.01139,227,294,2700,,,\n",
+             "row 2 (H1), column 'D0 [m]': '-0.007595' is not a number > 0"),
+            ("twice.csv", HEADER + "H1,1.5,0.0076,0.0114,227,294,2700,,,\n"
+             "H1,1.5,0.0076,0.0114,227,294,2700,,,\n",
+             "row 3: the column 'shot' needs a name, unique in the file (got 'H1')"),
+            ("empty.csv", HEADER, "no shots")]:
+        path = write(work, name, text)
+        message = refused(path)
+        check(message == f"taylor: {path}: {expected}", f"{name}: {message}")
+
+    # Richardson: f = f0 + C h^p with h = 1 / n.
+    def f(n, p=1.7):
+        return 10.0 + 3.0 * (1.0 / n) ** p
+
+    for levels in [(12, 16, 24), (6, 12, 24), (4, 6, 8)]:
+        est = taylor_report.richardson(levels, [f(n) for n in levels])
+        check(est is not None and abs(est[0] - 1.7) < 1e-8 and abs(est[1] - 10.0) < 1e-10,
+              f"Richardson at {levels}: {est}")
+    r = 2.0
+    vals = [f(6), f(12), f(24)]
+    closed = math.log((vals[0] - vals[1]) / (vals[1] - vals[2])) / math.log(r)
+    check(abs(taylor_report.richardson((6, 12, 24), vals)[0] - closed) < 1e-12,
+          "constant ratio: the closed form")
+    check(taylor_report.richardson((12, 16, 24), [1.0, 1.1, 1.05]) is None, "oscillating")
+    check(taylor_report.richardson((12, 16, 24), [1.0, 1.1, 1.3]) is None, "growing differences")
+    check(taylor_report.richardson((12, 16, 24), [1.0, 1.0, 1.1]) is None, "no change, then one")
+
+    # Resuming: the result of this very scene, or nothing.
+    sc = taylor.scene(house[7], taylor.MATERIAL, "off", 6, geometry="axisymmetric")
+    run = os.path.join(work, "run")
+    os.makedirs(run, exist_ok=True)
+    if os.path.exists(os.path.join(run, "result.json")):
+        os.remove(os.path.join(run, "result.json"))
+    check(taylor.finished(run, sc) is None, "no result.json: not finished")
+    with open(os.path.join(run, "result.json"), "w") as f:
+        json.dump({"scene": sc, "row": {"Lf [m]": 0.0114}, "profile": [[0.1, 0.2, 0.3]]}, f)
+    done = taylor.finished(run, json.loads(json.dumps(sc)))
+    check(done is not None and done["row"] == {"Lf [m]": 0.0114}, f"finished: {done}")
+    check(taylor.finished(run, taylor.scene(house[7], taylor.MATERIAL, "off", 8,
+                                            geometry="axisymmetric")) is None,
+          "another scene in the same directory: not finished")
+
+    for what in failures:
+        print("FAILED:", what)
+    if not failures:
+        print("taylor data: all checks passed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
