@@ -193,11 +193,25 @@ def ladder_table(rows):
     return lines
 
 
+def equal_ratio_triple(levels):
+    """The triple n1 < n2 < n3 of `levels` with n2 / n1 = n3 / n2 that ends at the finest level,
+    the finest such (e.g. 4, 8, 16 of 4..16), or None: the closed form's check on the three
+    finest."""
+    finest = levels[-1]
+    for n2 in sorted(levels[:-1], reverse=True):
+        n1 = n2 * n2 / finest
+        if n1 in levels[:-1] and n1 < n2:
+            return (int(n1), n2, finest)
+    return None
+
+
 def convergence(rows, out=None):
     """Per set and failure mode with three or more resolutions: per shot, Lf and Dm at every level
     and extrapolated from the three finest (richardson; the observed order p in brackets, '-'
     where the differences oscillate or grow), then the errors against the experiment at every
-    level and of the extrapolations. With `out`, the per-shot figures go to OUT/convergence.csv."""
+    level and of the extrapolations; where the levels hold a triple with one refinement ratio
+    that ends at the finest (equal_ratio_triple) and is not the three finest, its extrapolation
+    too. With `out`, the per-shot figures go to OUT/convergence.csv."""
     lines, table = [], []
     for (s, f), rs in sorted(group([r for r in rows if r["ok"]], "set", "failure").items()):
         levels = sorted({r["cells_per_radius"] for r in rs})
@@ -206,12 +220,19 @@ def convergence(rows, out=None):
         by_shot = defaultdict(dict)
         for r in rs:
             by_shot[(r["order"], r["shot"])][r["cells_per_radius"]] = r
+        triple = equal_ratio_triple(levels)
+        if triple == tuple(levels[-3:]):
+            triple = None
+        extra = f" | from {'/'.join(map(str, triple))} [mm] (p)" if triple else ""
         head = ("| shot | " + " | ".join(f"Lf at {n} [mm]" for n in levels) +
-                " | Lf extrapolated [mm] (p) | " + " | ".join(f"Dm at {n} [mm]" for n in levels) +
-                " | Dm extrapolated [mm] (p) |")
+                " | Lf extrapolated [mm] (p)" + extra + " | " +
+                " | ".join(f"Dm at {n} [mm]" for n in levels) + " | Dm extrapolated [mm] (p)" +
+                extra + " |")
         lines += [f"Set {s}, failure {f}: extrapolated from the three finest levels each shot has "
-                  "(Richardson with the observed order p; general form for a non-constant ratio).",
-                  "", head, "|" + "---|" * (3 + 2 * len(levels))]
+                  "(Richardson with the observed order p; general form for a non-constant ratio)" +
+                  (f", and from {'/'.join(map(str, triple))} (one ratio, the closed form)"
+                   if triple else "") + "; '-': the differences oscillate or grow.",
+                  "", head, "|" + "---|" * (3 + 2 * len(levels) + (2 if triple else 0))]
         errors = defaultdict(lambda: defaultdict(list))  # [key][level or "ext"] -> errors [%]
         for (_, sh), by in sorted(by_shot.items()):
             have = sorted(by)
@@ -237,13 +258,24 @@ def convergence(rows, out=None):
                 cells[key] = (" | ".join(f"{1e3 * by[n][f'{key} [m]']:.3f}" if n in by else ""
                                          for n in levels) + " | " +
                               (f"{1e3 * est[1]:.3f} ({est[0]:.2f})" if est else "-"))
+                if triple:
+                    alt = (richardson(triple, [by[n][f"{key} [m]"] for n in triple])
+                           if all(n in by for n in triple) else None)
+                    tag = "/".join(map(str, triple))
+                    entry[f"{key} extrapolated {tag} [m]"] = alt[1] if alt else ""
+                    entry[f"{key} observed order {tag} [-]"] = alt[0] if alt else ""
+                    if alt and exp is not None:
+                        errors[key]["alt"].append(100.0 * (alt[1] / exp - 1.0))
+                    cells[key] += " | " + (f"{1e3 * alt[1]:.3f} ({alt[0]:.2f})" if alt else "-")
             table.append(entry)
             lines.append(f"| {sh} | {cells['Lf']} | {cells['Dm']} |")
-        lines += ["", "| cells per radius | shots | Lf error mean / mean abs / worst abs [%] | "
+        lines += ["", "| cells per radius | shots judged (Lf / Dm) | Lf error mean / mean abs / "
+                  "worst abs [%] | "
                   "Dm error mean / mean abs / worst abs [%] |", "|---|---|---|---|"]
-        for n in levels + ["ext"]:
-            count = max(len(errors["Lf"][n]), len(errors["Dm"][n]))
-            lines.append(f"| {'extrapolated' if n == 'ext' else n} | {count} | "
+        names = {"ext": "extrapolated from the three finest",
+                 "alt": f"extrapolated from {'/'.join(map(str, triple or ()))}"}
+        for n in levels + ["ext"] + (["alt"] if triple else []):
+            lines.append(f"| {names.get(n, n)} | {len(errors['Lf'][n])} / {len(errors['Dm'][n])} | "
                          f"{error_stats(errors['Lf'][n])} | {error_stats(errors['Dm'][n])} |")
         lines.append("")
     if out and table:

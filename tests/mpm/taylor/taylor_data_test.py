@@ -114,6 +114,9 @@ def main(work):
     closed = math.log((vals[0] - vals[1]) / (vals[1] - vals[2])) / math.log(r)
     check(abs(taylor_report.richardson((6, 12, 24), vals)[0] - closed) < 1e-12,
           "constant ratio: the closed form")
+    check(taylor_report.equal_ratio_triple([4, 6, 8, 12, 16]) == (4, 8, 16)
+          and taylor_report.equal_ratio_triple([4, 6, 8, 12, 16, 24]) == (6, 12, 24)
+          and taylor_report.equal_ratio_triple([4, 6, 8, 12]) is None, "equal-ratio triples")
     check(taylor_report.richardson((12, 16, 24), [1.0, 1.1, 1.05]) is None, "oscillating")
     check(taylor_report.richardson((12, 16, 24), [1.0, 1.1, 1.3]) is None, "growing differences")
     check(taylor_report.richardson((12, 16, 24), [1.0, 1.0, 1.1]) is None, "no change, then one")
