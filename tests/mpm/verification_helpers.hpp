@@ -32,4 +32,20 @@ inline double longitudinal_wave_speed(const Scene& s) {
   return std::sqrt((p.bulk_modulus + 4.0 * p.shear_modulus / 3.0) / p.density);
 }
 
+/// The patch that puts the report's case01 (data/scenes/sphere_cylinder/case01.json) on an
+/// axisymmetric grid: the 3D twin's spacing (2.38 x 3.3 mm) over the half-section y >= 0, the
+/// sphere moved onto the axis (docs/scenes.md#2d-grids). Tests add their own time and output.
+inline Json axisymmetric_case01_patch() {
+  return {{"grid",
+           {{"geometry", "axisymmetric"},
+            {"lower", {0.0, 0.0}},
+            {"upper", {119.0e-3, 33.0e-3}},
+            {"cells", {50, 10}},
+            {"boundary", {{"z-", nullptr}, {"z+", nullptr}}}}},
+          {"objects",
+           {{"sphere",
+             {{"geometry", {{"center", {9.75e-3, 0.0, 0.0}}}}, {"particles_per_cell", {2, 2}}}},
+            {"target", {{"particles_per_cell", {2, 2}}}}}}};
+}
+
 }  // namespace impact::mpm::test

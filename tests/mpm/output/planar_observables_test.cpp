@@ -22,17 +22,7 @@ using namespace impact::mpm;
 BOOST_AUTO_TEST_SUITE(mpm_planar_observables)
 
 BOOST_AUTO_TEST_CASE(axisymmetric_mean_velocity_is_axial_and_the_crater_axis_is_the_axis) {
-  const Json patch = {
-      {"grid",
-       {{"geometry", "axisymmetric"},
-        {"lower", {0.0, 0.0}},
-        {"upper", {119.0e-3, 33.0e-3}},
-        {"cells", {50, 10}},
-        {"boundary", {{"z-", nullptr}, {"z+", nullptr}}}}},
-      {"objects",
-       {{"sphere",
-         {{"geometry", {{"center", {9.75e-3, 0.0, 0.0}}}}, {"particles_per_cell", {2, 2}}}},
-        {"target", {{"particles_per_cell", {2, 2}}}}}}};
+  const Json patch = test::axisymmetric_case01_patch();
   const Scene scene = test::shipped_scene("sphere_cylinder/case01.json", patch);
   BOOST_REQUIRE(scene.output.crater.has_value());
   Particles P = seed_particles(scene);

@@ -35,21 +35,12 @@ using namespace impact::mpm;
 
 namespace {
 
-// case01.json on an axisymmetric grid: the 3D twin's spacing (2.38 x 3.3 mm) over the
-// half-section y >= 0, the sphere moved onto the axis.
+// case01.json on an axisymmetric grid (test::axisymmetric_case01_patch), no output.
 Json axisymmetric_case01(double max_time) {
-  return {{"grid",
-           {{"geometry", "axisymmetric"},
-            {"lower", {0.0, 0.0}},
-            {"upper", {119.0e-3, 33.0e-3}},
-            {"cells", {50, 10}},
-            {"boundary", {{"z-", nullptr}, {"z+", nullptr}}}}},
-          {"objects",
-           {{"sphere",
-             {{"geometry", {{"center", {9.75e-3, 0.0, 0.0}}}}, {"particles_per_cell", {2, 2}}}},
-            {"target", {{"particles_per_cell", {2, 2}}}}}},
-          {"time", {{"max_time", max_time}, {"multiplier", 0.2}}},
-          {"output", {{"snapshots", false}, {"gauges", nullptr}, {"crater", nullptr}}}};
+  Json patch = test::axisymmetric_case01_patch();
+  patch["time"] = {{"max_time", max_time}, {"multiplier", 0.2}};
+  patch["output"] = {{"snapshots", false}, {"gauges", nullptr}, {"crater", nullptr}};
+  return patch;
 }
 
 // Whether every particle lies in the plane z = 0 and moves in it.
