@@ -1,0 +1,559 @@
+#!/usr/bin/env python3
+"""Result bounds for arithmetic changes (issue 41; docs/performance.md, "Result bounds for
+arithmetic changes (issue 41)"): does a candidate `mpm` still give today's results?
+
+  result_bounds.py REF_MPM NEW_MPM OUT_DIR [--set table2,recommended,taylor,verification]
+                   [--jobs 1] [--threads 2] [--reuse-ref] [--halving [SETS]]
+
+REF_MPM is today's main, NEW_MPM the candidate. Both run every scene of the chosen sets to its full
+max_time, on the same thread count (results are bit-identical on any thread count, docs/mpm.md):
+  table2        data/scenes/sphere_cylinder/case01.json ... case16.json (the report's Table 2);
+  recommended   data/scenes/sphere_cylinder/recommended.json;
+  taylor        data/scenes/taylor/h8_quarter.json (the 3D quarter rod, 6 cells per radius) and
+                h8_axisymmetric.json (its r-z twin);
+  verification  data/scenes/verification/*.json that `mpm check` accepts (elastic_base.json is
+                only a base the others extend).
+Each scene runs from a scene file written to OUT_DIR/scenes/ that `extends` the original by
+absolute path with `output.snapshots` off. The history interval is kept, because the history
+rows are where `max_pressure` is sampled and where the energy error's maximum is read. The
+Taylor scenes keep their snapshots (the `object` field only): Lf and Dm are measured on the last
+one, as campaigns/taylor/taylor.py measures them.
+
+The bounds (the issue's wording: "results may change in the last digits where the physics cannot
+tell, if the books still close (momentum to 1e-12 of |p0|, energy error within 1e-4 of today's on
+every Table 2 case and the recommended scene) and every observable of the recommended scene, the
+Taylor H8 rod and the verification scenes stays within 1e-6 relative of today's (or within the
+scatter of one time-step halving, where that is smaller: say which)"):
+  momentum      max over the history rows of |momentum + outflow_momentum - p0 - boundary_impulse
+                - external_impulse| / |p0| <= 1e-12 for NEW (REF's printed too). p0 is the t = 0
+                row; a scene with p0 = 0 (bodies meeting head-on) is scaled by sqrt(2 M E0), the
+                momentum of its mass at the rms speed, and says so;
+  energy        energy_error at the end and max |energy_error| over the rows: |NEW - REF| <= 1e-4
+                on the Table 2 cases and the recommended scene (reported on the others);
+  observables   every number in summary.json (recursively: the final ledger row, mean velocities,
+                peak pressures and their times, the crater, failed and converted counts, steps,
+                ...), minus timing, memory, thread and host keys and the energy error (a book,
+                above); the gauges' max, min and last value from history.csv; the Taylor rod's Lf
+                and Dm. Passes by `1e-6` when |NEW - REF| <= 1e-6 |REF|; else by `halving` when
+                REF was also run at half its time.multiplier (--halving SETS) and |NEW - REF| <=
+                |REF_half - REF|; a momentum or impulse within 1e-12 |p0| of REF passes by
+                `round-off` (the momentum bound: a component that is zero up to round-off).
+                A string (the status) must be equal.
+With --halving (on the scenes of SETS, a comma list; alone: every set run) the scatter |REF_half - REF| / |REF| of every observable is written too, and the
+column `min bound` says whether NEW also holds the stricter reading (within the smaller of 1e-6
+and the scatter).
+
+Writes OUT_DIR/bounds.md (a table per scene: observable, REF, NEW, relative difference, halving
+scatter, criterion, pass) and OUT_DIR/bounds.csv, prints one verdict line per scene and exits 1
+if any bound fails (2 if a run could not be made).
+
+Resumable: the runs go to OUT_DIR/runs/<scene>/{ref,new,ref_half}; a run directory whose
+summary.json exists and whose stamp (bounds_stamp.json: the extending scene and the binary's
+SHA-256) matches is not run again. --reuse-ref relaxes the stamp of the REF runs (ref, ref_half)
+to the scene alone, so that the REF results of one call serve later calls with other NEW binaries
+(and a REF binary rebuilt from the same commit).
+
+Only the standard library; `mpm run SCENE --out DIR --threads N` and `mpm check SCENE` are used.
+"""
+import argparse
+import concurrent.futures
+import csv
+import glob
+import hashlib
+import json
+import math
+import os
+import re
+import struct
+import subprocess
+import sys
+import time
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+SCENES = os.path.join(ROOT, "data", "scenes")
+SETS = ("table2", "recommended", "taylor", "verification")
+
+OBSERVABLE_BOUND = 1e-6      # relative, every observable
+MOMENTUM_BOUND = 1e-12       # of |p0|, the momentum closure and round-off momenta
+ENERGY_BOUND = 1e-4          # absolute on energy_error [-], Table 2 and recommended
+ENERGY_SETS = ("table2", "recommended")
+ANVIL_LAYER = 0.5e-3         # Dm from the particles within this distance of the anvil [m] (taylor.py)
+
+# summary.json keys that are not results: timing, memory, threads, host. Matched on the key's
+# name without its unit, at any depth.
+SKIPPED = {"wall_time", "phase_seconds", "particle_steps_per_second", "threads", "ranks",
+           "omp_wait_policy", "available_memory", "memory", "memory_estimate",
+           "memory_per_particle", "peak_resident_memory", "units", "host", "hostname",
+           "version", "git", "date", "started", "energy_error"}
+
+
+# ---------------------------------------------------------------------------------------------
+# The comparison (pure functions: tests/mpm/benchmark/result_bounds_test.py feeds them synthetic
+# summaries and histories).
+
+def bare(key):
+    """A key without its unit: 'wall_time [s]' -> 'wall_time'."""
+    return key.split(" [")[0]
+
+
+def flatten(node, prefix=""):
+    """{path: value} of every number and string leaf of a summary, skipping SKIPPED keys. Lists
+    are indexed: 'observables/objects/rod/mean_velocity [m/s]/0'. Booleans count as strings."""
+    out = {}
+    if isinstance(node, dict):
+        for key, value in node.items():
+            if bare(key) in SKIPPED:
+                continue
+            out.update(flatten(value, f"{prefix}/{key}" if prefix else key))
+    elif isinstance(node, list):
+        for i, value in enumerate(node):
+            out.update(flatten(value, f"{prefix}/{i}"))
+    elif isinstance(node, bool) or isinstance(node, str) or node is None:
+        out[prefix] = str(node)
+    elif isinstance(node, (int, float)):
+        out[prefix] = float(node)
+    return out
+
+
+def history_columns(rows):
+    """{column: [float per row]} of history.csv rows (dicts of strings)."""
+    if not rows:
+        return {}
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def momentum_scale(cols, mass=None, e0=None):
+    """(|p0|, how): the momentum the closure is measured against. p0 is the first row's momentum;
+    when it is zero, sqrt(2 M E0) (the momentum of the whole mass at the rms speed)."""
+    p0 = math.sqrt(sum(cols.get(f"momentum_{c} [kg m/s]", [0.0])[0] ** 2 for c in "xyz"))
+    if p0 > 0.0:
+        return p0, "|p0|"
+    if mass and e0 and mass > 0.0 and e0 > 0.0:
+        return math.sqrt(2.0 * mass * e0), "sqrt(2 M E0) (p0 = 0)"
+    return 1.0, "1 kg m/s (p0 = 0, no E0)"
+
+
+def momentum_closure(cols, scale):
+    """max over rows of |momentum + outflow_momentum - p0 - boundary_impulse - external_impulse|
+    / scale (docs/mpm.md, "Momentum closure")."""
+    n = len(cols.get("time [s]", []))
+    worst = 0.0
+    for i in range(n):
+        s = 0.0
+        for c in "xyz":
+            def at(name, unit):
+                col = cols.get(f"{name}_{c} [{unit}]")
+                return col[i] if col else 0.0
+            p0 = cols.get(f"momentum_{c} [kg m/s]", [0.0])[0]
+            r = (at("momentum", "kg m/s") + at("outflow_momentum", "kg m/s") - p0
+                 - at("boundary_impulse", "N s") - at("external_impulse", "N s"))
+            s += r * r
+        worst = max(worst, math.sqrt(s) / scale)
+    return worst
+
+
+def energy_errors(cols):
+    """(energy_error at the last row, max |energy_error| over the rows)."""
+    e = cols.get("energy_error [-]", [])
+    if not e:
+        return float("nan"), float("nan")
+    return e[-1], max(abs(v) for v in e)
+
+
+def gauge_observables(cols):
+    """The gauges' max, min and last value (their peaks), from history.csv's gauge columns."""
+    out = {}
+    for k, v in cols.items():
+        if k.startswith("gauge_") and v:
+            out[f"history/{k}/max"] = max(v)
+            out[f"history/{k}/min"] = min(v)
+            out[f"history/{k}/last"] = v[-1]
+    return out
+
+
+def relative(ref, new):
+    """|new - ref| / |ref|; 0 when equal, inf when ref is 0 and new is not."""
+    if new == ref:
+        return 0.0
+    if ref == 0.0 or not math.isfinite(ref) or not math.isfinite(new):
+        return math.inf
+    return abs(new - ref) / abs(ref)
+
+
+def is_momentum(name):
+    return "[kg m/s]" in name or "[N s]" in name
+
+
+def judge(name, ref, new, half=None, p0=None, bound=OBSERVABLE_BOUND):
+    """One observable: a dict with rel, scatter (relative |REF_half - REF| / |REF|, None without a
+    halving run), criterion ('1e-6', 'round-off', 'halving', 'equal', or '' when it fails), ok,
+    and strict (passes the stricter reading: within min(1e-6 |REF|, |REF_half - REF|); None
+    without a halving run)."""
+    row = {"observable": name, "ref": ref, "new": new, "half": half, "rel": None, "scatter": None,
+           "criterion": "", "ok": False, "strict": None}
+    if isinstance(ref, str) or isinstance(new, str):
+        row["ok"] = ref == new
+        row["criterion"] = "equal" if row["ok"] else ""
+        return row
+    diff = abs(new - ref) if math.isfinite(new) and math.isfinite(ref) else math.inf
+    if new == ref or (math.isnan(new) and math.isnan(ref)):
+        diff = 0.0
+    row["rel"] = relative(ref, new) if diff > 0.0 else 0.0
+    spread = None
+    if half is not None and not isinstance(half, str):
+        spread = abs(half - ref)
+        row["scatter"] = relative(ref, half)
+    if diff <= bound * abs(ref):
+        row["criterion"], row["ok"] = "1e-6", True
+    elif p0 is not None and is_momentum(name) and diff <= MOMENTUM_BOUND * p0:
+        row["criterion"], row["ok"] = "round-off", True
+    elif spread is not None and diff <= spread:
+        row["criterion"], row["ok"] = "halving", True
+    if spread is not None:
+        row["strict"] = diff <= min(bound * abs(ref), spread) or (
+            row["criterion"] == "round-off")
+    return row
+
+
+def compare_observables(ref, new, half=None, p0=None):
+    """judge() for every observable of REF and NEW ({name: value}, e.g. flatten(summary)). One
+    present in only one of them fails (criterion 'missing')."""
+    rows = []
+    for name in sorted(set(ref) | set(new)):
+        if name not in ref or name not in new:
+            rows.append({"observable": name, "ref": ref.get(name), "new": new.get(name),
+                         "half": None, "rel": None, "scatter": None, "criterion": "missing",
+                         "ok": False, "strict": None})
+            continue
+        rows.append(judge(name, ref[name], new[name], None if half is None else half.get(name),
+                          p0))
+    return rows
+
+
+def books(ref_cols, new_cols, scale, energy_judged):
+    """The books: momentum closure of NEW (and REF) against MOMENTUM_BOUND x scale, and the energy
+    error's end value and max |.| against ENERGY_BOUND (judged when energy_judged, else reported).
+    A list of rows like judge()'s: observable, ref, new, criterion, ok."""
+    rows = []
+    m_ref, m_new = momentum_closure(ref_cols, scale), momentum_closure(new_cols, scale)
+    rows.append({"observable": "books/momentum_closure [of p0]", "ref": m_ref, "new": m_new,
+                 "half": None, "rel": None, "scatter": None,
+                 "criterion": f"<= {MOMENTUM_BOUND:g}", "ok": m_new <= MOMENTUM_BOUND,
+                 "strict": None})
+    (end_r, max_r), (end_n, max_n) = energy_errors(ref_cols), energy_errors(new_cols)
+    for what, r, n in (("end", end_r, end_n), ("max_abs", max_r, max_n)):
+        d = abs(n - r) if math.isfinite(n) and math.isfinite(r) else math.inf
+        ok = d <= ENERGY_BOUND
+        rows.append({"observable": f"books/energy_error_{what} [-]", "ref": r, "new": n,
+                     "half": None, "rel": d, "scatter": None,
+                     "criterion": f"abs <= {ENERGY_BOUND:g}" if energy_judged else "reported",
+                     "ok": ok or not energy_judged, "strict": None})
+    return rows
+
+
+# ---------------------------------------------------------------------------------------------
+# Runs.
+
+def sha256(path):
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def scenes_of(sets, mpm):
+    """[(name, set, original path)] of the chosen sets."""
+    out = []
+    sc = os.path.join(SCENES, "sphere_cylinder")
+    if "table2" in sets:
+        out += [(os.path.basename(p)[:-5], "table2", p)
+                for p in sorted(glob.glob(os.path.join(sc, "case*.json")))]
+    if "recommended" in sets:
+        out.append(("recommended", "recommended", os.path.join(sc, "recommended.json")))
+    if "taylor" in sets:
+        out += [(f"taylor_{n}", "taylor", os.path.join(SCENES, "taylor", f"{n}.json"))
+                for n in ("h8_quarter", "h8_axisymmetric")]
+    if "verification" in sets:
+        for p in sorted(glob.glob(os.path.join(SCENES, "verification", "*.json"))):
+            # A base scene without a grid or objects (elastic_base.json) is not a scene to run.
+            if subprocess.run([mpm, "check", p], capture_output=True).returncode == 0:
+                out.append((f"verification_{os.path.basename(p)[:-5]}", "verification", p))
+    return out
+
+
+def extending_scene(original, kind, multiplier=None):
+    """The scene a run reads: the original by absolute path, without snapshots (the Taylor rod
+    keeps them, with the object field, for Lf and Dm); half the multiplier for a halving run."""
+    doc = {"extends": os.path.abspath(original)}
+    if kind == "taylor":
+        doc["output"] = {"snapshots": True, "fields": ["object"]}
+    else:
+        doc["output"] = {"snapshots": False}
+    if multiplier is not None:
+        doc["time"] = {"multiplier": multiplier}
+    return doc
+
+
+def finished(run_dir, stamp, scene_only):
+    """A run of this stamp finished in run_dir (summary.json and a matching bounds_stamp.json)."""
+    try:
+        with open(os.path.join(run_dir, "bounds_stamp.json")) as f:
+            old = json.load(f)
+        if not os.path.exists(os.path.join(run_dir, "summary.json")):
+            return False
+    except (OSError, ValueError):
+        return False
+    if scene_only:
+        return old.get("scene") == stamp["scene"]
+    return old == stamp
+
+
+def run(mpm, scene_doc, run_dir, threads, scene_only):
+    """Runs mpm on scene_doc into run_dir unless finished; (wall seconds or None if reused,
+    error message or None)."""
+    stamp = {"scene": scene_doc, "binary_sha256": sha256(mpm)}
+    if finished(run_dir, stamp, scene_only):
+        return None, None
+    os.makedirs(run_dir, exist_ok=True)
+    stamp_path = os.path.join(run_dir, "bounds_stamp.json")
+    if os.path.exists(stamp_path):
+        os.remove(stamp_path)
+    scene_path = run_dir + ".scene.json"
+    with open(scene_path, "w") as f:
+        json.dump(scene_doc, f, indent=1)
+    start = time.perf_counter()
+    done = subprocess.run([mpm, "run", scene_path, "--out", run_dir, "--threads", str(threads)],
+                          capture_output=True, text=True)
+    wall = time.perf_counter() - start
+    with open(os.path.join(run_dir, "bounds_stderr.txt"), "w") as f:
+        f.write(done.stderr)
+    if not os.path.exists(os.path.join(run_dir, "summary.json")):
+        return wall, f"{mpm} exited {done.returncode} without summary.json: {done.stderr[-500:]}"
+    # A run that stopped (status failed) still has its summary: the status is compared.
+    with open(stamp_path, "w") as f:
+        json.dump(dict(stamp, exit_code=done.returncode, wall_seconds=wall), f, indent=1)
+    return wall, None
+
+
+def read_run(run_dir):
+    with open(os.path.join(run_dir, "summary.json")) as f:
+        summary = json.load(f)
+    with open(os.path.join(run_dir, "history.csv"), newline="") as f:
+        cols = history_columns(list(csv.DictReader(f)))
+    return summary, cols
+
+
+_VTU_TYPES = {"Float64": "d", "Int64": "q", "UInt8": "B"}
+_VTU_ARRAY = re.compile(rb'<DataArray type="(\w+)"(?: Name="(\w+)")? NumberOfComponents="(\d+)"'
+                        rb' format="appended" offset="(\d+)"/>')
+
+
+def read_vtu(path):
+    """{"points": [(x, y, z)], field: [value or tuple]} of one snapshot (mpm's raw appended
+    UInt64-headed little-endian VTU; campaigns/study/vtu.py without numpy)."""
+    with open(path, "rb") as f:
+        blob = f.read()
+    start = blob.index(b'<AppendedData encoding="raw">')
+    data = blob.index(b"_", start) + 1
+    out = {}
+    for m in _VTU_ARRAY.finditer(blob[:start]):
+        code, comps, at = _VTU_TYPES[m.group(1).decode()], int(m.group(3)), data + int(m.group(4))
+        nbytes = struct.unpack_from("<Q", blob, at)[0]
+        n = nbytes // struct.calcsize(code)
+        values = struct.unpack_from(f"<{n}{code}", blob, at + 8)
+        key = m.group(2).decode() if m.group(2) else "points"
+        out[key] = [values[i:i + comps] for i in range(0, n, comps)] if comps > 1 else list(values)
+    return out
+
+
+def rod_measures(run_dir):
+    """Lf and Dm of the Taylor rod (campaigns/taylor/taylor.py's measures, mirror anvil at the
+    grid's x- face): the largest particle x, and twice the largest radius among the particles
+    within 0.5 mm of the anvil, each plus the distance by which the seeded extreme particle lay
+    inside the rod at t = 0 (read from the first snapshot, so the measures are exact there)."""
+    with open(os.path.join(run_dir, "scene.json")) as f:
+        scene = json.load(f)
+    with open(os.path.join(run_dir, "particles.pvd")) as f:
+        files = re.findall(r'file="([^"]+)"', f.read())
+    first, last = read_vtu(os.path.join(run_dir, files[0])), read_vtu(os.path.join(run_dir, files[-1]))
+    rod = scene["objects"]["rod"]["geometry"]
+    axisymmetric = scene["grid"].get("geometry") == "axisymmetric"
+    anvil = scene["grid"]["lower"][0]
+
+    def radius(p):
+        return abs(p[1]) if axisymmetric else math.hypot(p[1], p[2])
+    axial = rod["top"][0] - max(p[0] for p in first["points"])
+    radial = rod["radius"] - max(radius(p) for p in first["points"])
+    pts = last["points"]
+    lf = max(p[0] for p in pts) - anvil + axial
+    dm = 2.0 * (max(radius(p) for p in pts if p[0] - anvil < ANVIL_LAYER) + radial)
+    return {"taylor/Lf [m]": lf, "taylor/Dm [m]": dm}
+
+
+def observables(run_dir, kind):
+    summary, cols = read_run(run_dir)
+    obs = flatten(summary)
+    obs.update(gauge_observables(cols))
+    if kind == "taylor":
+        obs.update(rod_measures(run_dir))
+    return summary, cols, obs
+
+
+# ---------------------------------------------------------------------------------------------
+# Report.
+
+def fmt(v):
+    if v is None:
+        return ""
+    if isinstance(v, str):
+        return v
+    return f"{v:.17g}"
+
+
+def fmt_rel(v):
+    return "" if v is None else f"{v:.3g}"
+
+
+def verdict(name, rows, scale_how):
+    failed = [r for r in rows if not r["ok"]]
+    by = {}
+    for r in rows:
+        if r["ok"]:
+            by[r["criterion"]] = by.get(r["criterion"], 0) + 1
+    mom = next(r for r in rows if r["observable"].startswith("books/momentum"))
+    ee = next(r for r in rows if r["observable"] == "books/energy_error_end [-]")
+    nonzero = sum(1 for r in rows if r["rel"] not in (None, 0.0) and not
+                  r["observable"].startswith("books/"))
+    text = (f"{name}: {'PASS' if not failed else 'FAIL'}: {len(rows)} checks "
+            f"({', '.join(f'{v} by {k}' for k, v in sorted(by.items()))}); "
+            f"{nonzero} observables differ; momentum closure NEW {mom['new']:.2g} REF "
+            f"{mom['ref']:.2g} of {scale_how}; energy_error end NEW - REF {ee['rel']:.2g}")
+    if failed:
+        text += "; failing: " + ", ".join(
+            f"{r['observable']} (REF {fmt(r['ref'])}, NEW {fmt(r['new'])})" for r in failed)
+    return text
+
+
+def write_reports(out, results, args):
+    with open(os.path.join(out, "bounds.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["scene", "set", "observable", "ref", "new", "ref_half", "rel_diff",
+                    "halving_scatter", "criterion", "pass", "min_bound_pass"])
+        for name, kind, rows, _, _ in results:
+            for r in rows:
+                w.writerow([name, kind, r["observable"], fmt(r["ref"]), fmt(r["new"]),
+                            fmt(r["half"]), fmt_rel(r["rel"]), fmt_rel(r["scatter"]),
+                            r["criterion"], int(r["ok"]),
+                            "" if r["strict"] is None else int(r["strict"])])
+    with open(os.path.join(out, "bounds.md"), "w") as f:
+        f.write("# Result bounds (issue 41)\n\n")
+        f.write(f"REF `{args.ref}`, NEW `{args.new}`, {args.threads} thread(s); "
+                f"campaigns/benchmark/result_bounds.py, docs/performance.md.\n\n")
+        f.write("Criteria: books (momentum closure <= 1e-12 of the scale, energy_error NEW - REF "
+                "<= 1e-4 on Table 2 and recommended); observables |NEW - REF| <= 1e-6 |REF| "
+                "(`1e-6`), else <= |REF_half - REF| (`halving`); momenta within 1e-12 |p0| "
+                "(`round-off`). `min bound`: within the smaller of the two (needs --halving).\n\n")
+        for name, kind, rows, line, _ in results:
+            f.write(f"## {name} ({kind})\n\n{line}\n\n")
+            f.write("| observable | REF | NEW | rel diff | halving scatter | criterion | pass |"
+                    " min bound |\n|---|---|---|---|---|---|---|---|\n")
+            for r in rows:
+                strict = "" if r["strict"] is None else ("yes" if r["strict"] else "no")
+                f.write(f"| {r['observable']} | {fmt(r['ref'])} | {fmt(r['new'])} | "
+                        f"{fmt_rel(r['rel'])} | {fmt_rel(r['scatter'])} | {r['criterion']} | "
+                        f"{'yes' if r['ok'] else '**no**'} | {strict} |\n")
+            f.write("\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("ref", help="today's mpm (main)")
+    ap.add_argument("new", help="the candidate mpm")
+    ap.add_argument("out")
+    ap.add_argument("--set", default=",".join(SETS), help=f"comma list of {', '.join(SETS)}")
+    ap.add_argument("--jobs", type=int, default=1, help="runs at a time")
+    ap.add_argument("--threads", type=int, default=2, help="threads per run (REF and NEW alike)")
+    ap.add_argument("--reuse-ref", action="store_true",
+                    help="reuse REF runs whose scene matches whatever the REF binary")
+    ap.add_argument("--halving", nargs="?", const="all", default="",
+                    help="also run REF at half its time.multiplier, on the scenes of these sets "
+                         "(comma list; alone: every set run): the scatter of each observable")
+    args = ap.parse_args()
+    args.ref, args.new = os.path.abspath(args.ref), os.path.abspath(args.new)
+    sets = [s for s in args.set.split(",") if s]
+    for s in sets:
+        if s not in SETS:
+            sys.exit(f"result_bounds.py: --set: unknown set '{s}' (known: {', '.join(SETS)})")
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    scenes = scenes_of(sets, args.ref)
+    halving = sets if args.halving == "all" else [s for s in args.halving.split(",") if s]
+    for s in halving:
+        if s not in sets:
+            sys.exit(f"result_bounds.py: --halving: '{s}' is not one of the sets run ({args.set})")
+
+    # REF first (the halving run needs REF's multiplier), then NEW and REF_half.
+    jobs = []
+    for name, kind, path in scenes:
+        base = os.path.join(out, "runs", name)
+        jobs.append((name, "ref", args.ref, extending_scene(path, kind), base + "/ref", True))
+        jobs.append((name, "new", args.new, extending_scene(path, kind), base + "/new", False))
+    started = time.perf_counter()
+    walls, errors = {}, []
+
+    def go(job):
+        name, role, mpm, doc, run_dir, is_ref = job
+        return job, run(mpm, doc, run_dir, args.threads, is_ref and args.reuse_ref)
+
+    def execute(batch):
+        with concurrent.futures.ThreadPoolExecutor(max(1, args.jobs)) as pool:
+            for job, (wall, err) in pool.map(go, batch):
+                walls[(job[0], job[1])] = wall
+                tag = "reused" if wall is None else f"{wall:.1f} s"
+                print(f"  {job[0]} {job[1]}: {tag}{' ERROR ' + err if err else ''}", flush=True)
+                if err:
+                    errors.append(f"{job[0]} {job[1]}: {err}")
+
+    execute(jobs)
+    if args.halving:
+        halves = []
+        for name, kind, path in scenes:
+            if kind not in halving:
+                continue
+            ref_dir = os.path.join(out, "runs", name, "ref")
+            if not os.path.exists(os.path.join(ref_dir, "scene.json")):
+                continue
+            with open(os.path.join(ref_dir, "scene.json")) as f:
+                m = json.load(f).get("time", {}).get("multiplier", 0.5)  # docs/scenes.md default
+            halves.append((name, "ref_half", args.ref, extending_scene(path, kind, 0.5 * m),
+                           os.path.join(out, "runs", name, "ref_half"), True))
+        execute(halves)
+    if errors:
+        print("result_bounds.py: runs that could not be made:\n  " + "\n  ".join(errors))
+        sys.exit(2)
+
+    results, any_failed = [], False
+    for name, kind, _ in scenes:
+        base = os.path.join(out, "runs", name)
+        ref_summary, ref_cols, ref_obs = observables(base + "/ref", kind)
+        _, new_cols, new_obs = observables(base + "/new", kind)
+        half_obs = None
+        if kind in halving and os.path.exists(base + "/ref_half/summary.json"):
+            half_obs = observables(base + "/ref_half", kind)[2]
+        scale, how = momentum_scale(ref_cols, ref_summary.get("mass [kg]"),
+                                    ref_summary.get("initial_energy [J]"))
+        rows = books(ref_cols, new_cols, scale, kind in ENERGY_SETS)
+        rows += compare_observables(ref_obs, new_obs, half_obs, scale)
+        line = verdict(name, rows, how)
+        any_failed |= any(not r["ok"] for r in rows)
+        print(line, flush=True)
+        results.append((name, kind, rows, line, how))
+    write_reports(out, results, args)
+    print(f"result_bounds.py: {len(results)} scenes, {time.perf_counter() - started:.0f} s; "
+          f"{'ALL PASS' if not any_failed else 'SOME BOUNDS FAIL'}; {out}/bounds.md, bounds.csv")
+    sys.exit(1 if any_failed else 0)
+
+
+if __name__ == "__main__":
+    main()

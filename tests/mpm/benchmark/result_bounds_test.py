@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+"""The comparison of campaigns/benchmark/result_bounds.py (issue 41's result bounds;
+docs/performance.md), on synthetic summaries and histories: no mpm run.
+
+  result_bounds_test.py
+
+An observable passes within 1e-6 relative of REF (the bound itself included), else within the
+scatter |REF_half - REF| of a time-step halving, else fails; a momentum passes within 1e-12 |p0|
+(round-off); `min bound` is the stricter reading (within the smaller of the two). The books: the
+momentum closure momentum - p0 - boundary_impulse (+ outflow, - external) against 1e-12 of |p0|,
+or of sqrt(2 M E0) when p0 = 0; energy_error's end and max |.| within 1e-4 of REF where judged,
+reported elsewhere. summary.json is read recursively without timing, memory, thread keys and
+the energy error; a missing observable or a different status fails.
+"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "campaigns", "benchmark"))
+import result_bounds as rb  # noqa: E402
+
+
+def history(momentum_x, impulse_x, energy_error, gauge=None):
+    cols = {"time [s]": [i * 1e-6 for i in range(len(momentum_x))],
+            "momentum_x [kg m/s]": momentum_x, "momentum_y [kg m/s]": [0.0] * len(momentum_x),
+            "momentum_z [kg m/s]": [0.0] * len(momentum_x),
+            "boundary_impulse_x [N s]": impulse_x,
+            "boundary_impulse_y [N s]": [0.0] * len(momentum_x),
+            "boundary_impulse_z [N s]": [0.0] * len(momentum_x),
+            "energy_error [-]": energy_error}
+    if gauge is not None:
+        cols["gauge_probe [m/s]"] = gauge
+    return cols
+
+
+def main():
+    failures = []
+
+    def check(ok, what):
+        if not ok:
+            failures.append(what)
+
+    # --- summary.json read recursively, timing and host keys and the energy error left out.
+    summary = {"wall_time [s]": 3.0, "phase_seconds [s]": {"stress": 1.0}, "threads": 2,
+               "particle_steps_per_second": 1e6, "peak_resident_memory [MB]": 9.0,
+               "memory_estimate": {"total [MB]": 16.0}, "omp_wait_policy": "passive",
+               "status": "completed", "steps": 284, "failed_particles": 270,
+               "final": {"energy_error [-]": 1e-3, "kinetic_energy [J]": 10.0},
+               "observables": {"objects": {"sphere": {"mean_velocity [m/s]": [1.0, 2.0, 0.0]}},
+                               "crater": {"depth [m]": 0.004, "diameter [m]": 0.01}}}
+    flat = rb.flatten(summary)
+    check(set(flat) == {"status", "steps", "failed_particles", "final/kinetic_energy [J]",
+                        "observables/objects/sphere/mean_velocity [m/s]/0",
+                        "observables/objects/sphere/mean_velocity [m/s]/1",
+                        "observables/objects/sphere/mean_velocity [m/s]/2",
+                        "observables/crater/depth [m]", "observables/crater/diameter [m]"},
+          f"flatten keeps the results only: {sorted(flat)}")
+    check(flat["status"] == "completed" and flat["observables/crater/depth [m]"] == 0.004,
+          f"flatten values: {flat}")
+
+    # --- 1e-6 relative, the bound included; beyond it, fails without a halving run.
+    ok = rb.judge("crater/depth [m]", 1.0, 1.0 + 1e-6)
+    check(ok["ok"] and ok["criterion"] == "1e-6", f"1e-6 exactly passes: {ok}")
+    ok = rb.judge("crater/depth [m]", -4.0, -4.0 - 3.9e-6)
+    check(ok["ok"] and ok["criterion"] == "1e-6", f"a negative value within 1e-6: {ok}")
+    bad = rb.judge("crater/depth [m]", 1.0, 1.0 + 2e-6)
+    check(not bad["ok"] and bad["criterion"] == "" and abs(bad["rel"] - 2e-6) < 1e-12,
+          f"2e-6 fails without halving: {bad}")
+    check(bad["strict"] is None, "no halving run: no strict reading")
+    zero = rb.judge("failed_particles", 0.0, 1.0)
+    check(not zero["ok"] and zero["rel"] == math.inf, f"REF 0, NEW 1: fails: {zero}")
+    same = rb.judge("failed_particles", 0.0, 0.0)
+    check(same["ok"] and same["rel"] == 0.0, f"0 and 0: {same}")
+
+    # --- the halving scatter: passes within |REF_half - REF| when 1e-6 is exceeded.
+    by_half = rb.judge("taylor/Lf [m]", 1.0, 1.0 + 1e-4, half=1.0 - 3e-4)
+    check(by_half["ok"] and by_half["criterion"] == "halving" and
+          abs(by_half["scatter"] - 3e-4) < 1e-12, f"within the halving scatter: {by_half}")
+    check(by_half["strict"] is False, f"the stricter reading min(1e-6, scatter) fails: {by_half}")
+    beyond = rb.judge("taylor/Lf [m]", 1.0, 1.0 + 4e-4, half=1.0 - 3e-4)
+    check(not beyond["ok"], f"beyond the halving scatter fails: {beyond}")
+    tight = rb.judge("taylor/Lf [m]", 1.0, 1.0 + 5e-7, half=1.0 + 1e-7)
+    check(tight["ok"] and tight["criterion"] == "1e-6" and tight["strict"] is False,
+          f"within 1e-6 but beyond a smaller scatter: passes, strict reading fails: {tight}")
+    both = rb.judge("taylor/Lf [m]", 1.0, 1.0 + 5e-7, half=1.0 + 1e-5)
+    check(both["ok"] and both["strict"] is True, f"within both: {both}")
+
+    # --- a momentum that is round-off: within 1e-12 |p0|; not for other quantities.
+    mom = rb.judge("final/momentum_y [kg m/s]", 1e-17, 4e-17, p0=0.6)
+    check(mom["ok"] and mom["criterion"] == "round-off", f"momentum round-off: {mom}")
+    imp = rb.judge("final/boundary_impulse_z [N s]", 0.0, 5e-13, p0=0.6)
+    check(imp["ok"] and imp["criterion"] == "round-off", f"impulse round-off: {imp}")
+    big = rb.judge("final/momentum_y [kg m/s]", 1e-17, 1e-12, p0=0.6)
+    check(not big["ok"], f"momentum beyond 1e-12 |p0|: {big}")
+    energy = rb.judge("final/kinetic_energy [J]", 1e-17, 4e-17, p0=0.6)
+    check(not energy["ok"], f"round-off is for momenta only: {energy}")
+
+    # --- strings equal; an observable in only one run fails.
+    rows = rb.compare_observables({"status": "completed", "steps": 10.0, "a": 1.0},
+                                  {"status": "failed", "steps": 10.0, "b": 1.0})
+    by_name = {r["observable"]: r for r in rows}
+    check(not by_name["status"]["ok"], f"status differs: {by_name['status']}")
+    check(by_name["steps"]["ok"], f"steps equal: {by_name['steps']}")
+    check(not by_name["a"]["ok"] and by_name["a"]["criterion"] == "missing" and
+          not by_name["b"]["ok"], f"missing observables: {rows}")
+    rows = rb.compare_observables({"x": 2.0}, {"x": 2.0 + 1e-5}, half={"x": 2.0 + 1e-4})
+    check(rows[0]["ok"] and rows[0]["criterion"] == "halving", f"halving by name: {rows}")
+
+    # --- the books. The rod hits the wall: momentum - p0 - impulse = 0 exactly.
+    p0 = -0.6
+    ref = history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, 2e-3, 1e-3])
+    scale, how = rb.momentum_scale(ref)
+    check(scale == 0.6 and how == "|p0|", f"scale |p0|: {scale} {how}")
+    check(rb.momentum_closure(ref, scale) < 1e-15, "closed books: 0 to round-off")
+    leak = history([p0, -0.5, -0.25 + 6e-12], [0.0, 0.1, 0.35], [0.0, 2e-3, 1e-3])
+    check(abs(rb.momentum_closure(leak, scale) - 1e-11) < 1e-14,
+          f"a leak of 6e-12 on |p0| 0.6: {rb.momentum_closure(leak, scale)}")
+    rows = rb.books(ref, leak, scale, True)
+    check(not rows[0]["ok"] and rows[0]["observable"].startswith("books/momentum"),
+          f"NEW's leak fails the momentum book: {rows[0]}")
+    ok_rows = rb.books(ref, ref, scale, True)
+    check(all(r["ok"] for r in ok_rows) and len(ok_rows) == 3, f"REF against itself: {ok_rows}")
+    outflow = dict(ref)
+    outflow["momentum_x [kg m/s]"] = [p0, -0.3, -0.05]          # 0.2 left through the x- face
+    outflow["outflow_momentum_x [kg m/s]"] = [0.0, -0.2, -0.2]
+    check(rb.momentum_closure(outflow, scale) < 1e-15, "outflow momentum is booked")
+    gravity = history([0.0, 0.1, 0.2], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+    gravity["external_impulse_x [N s]"] = [0.0, 0.1, 0.2]
+    check(rb.momentum_closure(gravity, 1.0) < 1e-15, "external impulse is booked")
+    head_on = history([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+    scale0, how0 = rb.momentum_scale(head_on, mass=2.0, e0=4.0)
+    check(scale0 == 4.0 and "p0 = 0" in how0, f"p0 = 0: sqrt(2 M E0): {scale0} {how0}")
+
+    # Energy error: end and max |.| within 1e-4 where judged (Table 2, recommended).
+    near = history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, 2e-3 + 9e-5, 1e-3 - 9e-5])
+    far = history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, 2e-3, 1e-3 + 2e-4])
+    check(all(r["ok"] for r in rb.books(ref, near, scale, True)), "energy within 1e-4 passes")
+    rows = {r["observable"]: r for r in rb.books(ref, far, scale, True)}
+    check(not rows["books/energy_error_end [-]"]["ok"] and
+          rows["books/energy_error_max_abs [-]"]["ok"],
+          f"end 2e-4 off fails, max abs unchanged passes: {rows}")
+    peak = history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, -2.2e-3, 1e-3])
+    rows = {r["observable"]: r for r in rb.books(ref, peak, scale, True)}
+    check(not rows["books/energy_error_max_abs [-]"]["ok"] and
+          abs(rows["books/energy_error_max_abs [-]"]["new"] - 2.2e-3) < 1e-15,
+          f"max |energy_error| read over the rows, sign ignored: {rows}")
+    rows = rb.books(ref, far, scale, False)
+    check(all(r["ok"] for r in rows[1:]) and rows[1]["criterion"] == "reported",
+          f"energy reported, not judged, outside Table 2 and recommended: {rows}")
+
+    # Gauges: max, min and last of each gauge column.
+    g = rb.gauge_observables(history([p0] * 3, [0.0] * 3, [0.0] * 3, gauge=[0.0, -3.0, -1.0]))
+    check(g == {"history/gauge_probe [m/s]/max": 0.0, "history/gauge_probe [m/s]/min": -3.0,
+                "history/gauge_probe [m/s]/last": -1.0}, f"gauge peaks: {g}")
+
+    for what in failures:
+        print("FAILED:", what)
+    if not failures:
+        print("result bounds: all checks passed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
