@@ -9,8 +9,9 @@ REF_MPM is today's main, NEW_MPM the candidate. Both run every scene of the chos
 max_time, on the same thread count (results are bit-identical on any thread count, docs/mpm.md):
   table2        data/scenes/sphere_cylinder/case01.json ... case16.json (the report's Table 2);
   recommended   data/scenes/sphere_cylinder/recommended.json;
-  taylor        data/scenes/taylor/h8_quarter.json (the 3D quarter rod, 6 cells per radius) and
-                h8_axisymmetric.json (its r-z twin);
+  taylor        data/scenes/taylor/h8_quarter.json (the 3D quarter rod, 6 cells per radius), the
+                same at the Taylor campaign's default 4 cells per radius (its grid as
+                campaigns/taylor/taylor.py lays it out) and h8_axisymmetric.json (the r-z twin);
   verification  data/scenes/verification/*.json that `mpm check` accepts (elastic_base.json is
                 only a base the others extend).
 Each scene runs from a scene file written to OUT_DIR/scenes/ that `extends` the original by
@@ -26,8 +27,9 @@ Taylor H8 rod and the verification scenes stays within 1e-6 relative of today's 
 scatter of one time-step halving, where that is smaller: say which)"):
   momentum      max over the history rows of |momentum + outflow_momentum - p0 - boundary_impulse
                 - external_impulse| / |p0| <= 1e-12 for NEW (REF's printed too). p0 is the t = 0
-                row; a scene with p0 = 0 (bodies meeting head-on) is scaled by sqrt(2 M E0), the
-                momentum of its mass at the rms speed, and says so;
+                row; where it is zero up to round-off, bodies meeting head-on are measured against
+                one body's initial momentum sqrt(2 m KE0) (as the verification tests are), bodies
+                starting at rest against the largest momentum of the run; the verdict says which;
   energy        energy_error at the end and max |energy_error| over the rows: |NEW - REF| <= 1e-4
                 on the Table 2 cases and the recommended scene (reported on the others);
   observables   every number in summary.json (recursively: the final ledger row, mean velocities,
@@ -77,6 +79,7 @@ OBSERVABLE_BOUND = 1e-6      # relative, every observable
 MOMENTUM_BOUND = 1e-12       # of |p0|, the momentum closure and round-off momenta
 ENERGY_BOUND = 1e-4          # absolute on energy_error [-], Table 2 and recommended
 ENERGY_SETS = ("table2", "recommended")
+CAMPAIGN_CELLS_PER_RADIUS = 4  # campaigns/taylor/taylor.py's default --cells-per-radius
 ANVIL_LAYER = 0.5e-3         # Dm from the particles within this distance of the anvil [m] (taylor.py)
 
 # summary.json keys that are not results: timing, memory, threads, host. Matched on the key's
@@ -122,15 +125,24 @@ def history_columns(rows):
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
-def momentum_scale(cols, mass=None, e0=None):
-    """(|p0|, how): the momentum the closure is measured against. p0 is the first row's momentum;
-    when it is zero, sqrt(2 M E0) (the momentum of the whole mass at the rms speed)."""
+def momentum_scale(cols, bodies=()):
+    """(scale, how): what the momentum closure is measured against. |p0|, the first row's
+    momentum, unless it is zero up to round-off (below 1e-9 of the largest body's): bodies meeting
+    head-on are measured against one body's initial momentum sqrt(2 m KE) (bodies = [(m, KE0)]),
+    as the verification tests measure them; bodies starting at rest (set moving by a face) against
+    the largest momentum over the rows."""
     p0 = math.sqrt(sum(cols.get(f"momentum_{c} [kg m/s]", [0.0])[0] ** 2 for c in "xyz"))
-    if p0 > 0.0:
+    body = max((math.sqrt(2.0 * m * ke) for m, ke in bodies if m > 0.0 and ke > 0.0), default=0.0)
+    if p0 > 1e-9 * body and p0 > 0.0:
         return p0, "|p0|"
-    if mass and e0 and mass > 0.0 and e0 > 0.0:
-        return math.sqrt(2.0 * mass * e0), "sqrt(2 M E0) (p0 = 0)"
-    return 1.0, "1 kg m/s (p0 = 0, no E0)"
+    if body > 0.0:
+        return body, "one body's initial momentum (p0 = 0)"
+    rows = len(cols.get("time [s]", []))
+    largest = max((math.sqrt(sum(cols.get(f"momentum_{c} [kg m/s]", [0.0] * rows)[i] ** 2
+                                 for c in "xyz")) for i in range(rows)), default=0.0)
+    if largest > 0.0:
+        return largest, "the largest momentum over the run (a start at rest)"
+    return 1.0, "1 kg m/s (nothing moves)"
 
 
 def momentum_closure(cols, scale):
@@ -262,30 +274,47 @@ def sha256(path):
     return h.hexdigest()
 
 
+def campaign_resolution(quarter, cells_per_radius=CAMPAIGN_CELLS_PER_RADIUS):
+    """The grid patch that puts the quarter rod at the Taylor campaign's default resolution, laid
+    out as campaigns/taylor/taylor.py's scene() lays it out: dx = R0 / cells, L0 / dx + 1 cells
+    along the rod, 2.2 R0 / dx across (the mushroom's room)."""
+    with open(quarter) as f:
+        rod = json.load(f)["objects"]["rod"]["geometry"]
+    r0, l0 = rod["radius"], rod["top"][0] - rod["bottom"][0]
+    dx = r0 / cells_per_radius
+    nx, ny = math.ceil(l0 / dx) + 1, math.ceil(2.2 * r0 / dx)
+    return {"grid": {"upper": [nx * dx, ny * dx, ny * dx], "cells": [nx, ny, ny]}}
+
+
 def scenes_of(sets, mpm):
-    """[(name, set, original path)] of the chosen sets."""
+    """[(name, set, original path, patch or None)] of the chosen sets."""
     out = []
     sc = os.path.join(SCENES, "sphere_cylinder")
     if "table2" in sets:
-        out += [(os.path.basename(p)[:-5], "table2", p)
+        out += [(os.path.basename(p)[:-5], "table2", p, None)
                 for p in sorted(glob.glob(os.path.join(sc, "case*.json")))]
     if "recommended" in sets:
-        out.append(("recommended", "recommended", os.path.join(sc, "recommended.json")))
+        out.append(("recommended", "recommended", os.path.join(sc, "recommended.json"), None))
     if "taylor" in sets:
-        out += [(f"taylor_{n}", "taylor", os.path.join(SCENES, "taylor", f"{n}.json"))
-                for n in ("h8_quarter", "h8_axisymmetric")]
+        quarter = os.path.join(SCENES, "taylor", "h8_quarter.json")
+        out += [("taylor_h8_quarter", "taylor", quarter, None),
+                ("taylor_h8_quarter_cpr4", "taylor", quarter, campaign_resolution(quarter)),
+                ("taylor_h8_axisymmetric", "taylor",
+                 os.path.join(SCENES, "taylor", "h8_axisymmetric.json"), None)]
     if "verification" in sets:
         for p in sorted(glob.glob(os.path.join(SCENES, "verification", "*.json"))):
             # A base scene without a grid or objects (elastic_base.json) is not a scene to run.
             if subprocess.run([mpm, "check", p], capture_output=True).returncode == 0:
-                out.append((f"verification_{os.path.basename(p)[:-5]}", "verification", p))
+                out.append((f"verification_{os.path.basename(p)[:-5]}", "verification", p, None))
     return out
 
 
-def extending_scene(original, kind, multiplier=None):
-    """The scene a run reads: the original by absolute path, without snapshots (the Taylor rod
-    keeps them, with the object field, for Lf and Dm); half the multiplier for a halving run."""
+def extending_scene(original, kind, patch=None, multiplier=None):
+    """The scene a run reads: the original by absolute path (and patch), without snapshots (the
+    Taylor rod keeps them, with the object field, for Lf and Dm); half the multiplier for a
+    halving run."""
     doc = {"extends": os.path.abspath(original)}
+    doc.update(patch or {})
     if kind == "taylor":
         doc["output"] = {"snapshots": True, "fields": ["object"]}
     else:
@@ -306,7 +335,7 @@ def finished(run_dir, stamp, scene_only):
         return False
     if scene_only:
         return old.get("scene") == stamp["scene"]
-    return old == stamp
+    return all(old.get(k) == v for k, v in stamp.items())
 
 
 def run(mpm, scene_doc, run_dir, threads, scene_only):
@@ -495,10 +524,11 @@ def main():
 
     # REF first (the halving run needs REF's multiplier), then NEW and REF_half.
     jobs = []
-    for name, kind, path in scenes:
+    for name, kind, path, patch in scenes:
         base = os.path.join(out, "runs", name)
-        jobs.append((name, "ref", args.ref, extending_scene(path, kind), base + "/ref", True))
-        jobs.append((name, "new", args.new, extending_scene(path, kind), base + "/new", False))
+        doc = extending_scene(path, kind, patch)
+        jobs.append((name, "ref", args.ref, doc, base + "/ref", True))
+        jobs.append((name, "new", args.new, doc, base + "/new", False))
     started = time.perf_counter()
     walls, errors = {}, []
 
@@ -518,7 +548,7 @@ def main():
     execute(jobs)
     if args.halving:
         halves = []
-        for name, kind, path in scenes:
+        for name, kind, path, patch in scenes:
             if kind not in halving:
                 continue
             ref_dir = os.path.join(out, "runs", name, "ref")
@@ -526,7 +556,7 @@ def main():
                 continue
             with open(os.path.join(ref_dir, "scene.json")) as f:
                 m = json.load(f).get("time", {}).get("multiplier", 0.5)  # docs/scenes.md default
-            halves.append((name, "ref_half", args.ref, extending_scene(path, kind, 0.5 * m),
+            halves.append((name, "ref_half", args.ref, extending_scene(path, kind, patch, 0.5 * m),
                            os.path.join(out, "runs", name, "ref_half"), True))
         execute(halves)
     if errors:
@@ -534,15 +564,16 @@ def main():
         sys.exit(2)
 
     results, any_failed = [], False
-    for name, kind, _ in scenes:
+    for name, kind, _, _ in scenes:
         base = os.path.join(out, "runs", name)
         ref_summary, ref_cols, ref_obs = observables(base + "/ref", kind)
         _, new_cols, new_obs = observables(base + "/new", kind)
         half_obs = None
         if kind in halving and os.path.exists(base + "/ref_half/summary.json"):
             half_obs = observables(base + "/ref_half", kind)[2]
-        scale, how = momentum_scale(ref_cols, ref_summary.get("mass [kg]"),
-                                    ref_summary.get("initial_energy [J]"))
+        bodies = [(o.get("mass [kg]", 0.0), o.get("kinetic_energy [J]", 0.0))
+                  for o in ref_summary.get("objects", {}).values()]
+        scale, how = momentum_scale(ref_cols, bodies)
         rows = books(ref_cols, new_cols, scale, kind in ENERGY_SETS)
         rows += compare_observables(ref_obs, new_obs, half_obs, scale)
         line = verdict(name, rows, how)

@@ -8,13 +8,17 @@ An observable passes within 1e-6 relative of REF (the bound itself included), el
 scatter |REF_half - REF| of a time-step halving, else fails; a momentum passes within 1e-12 |p0|
 (round-off); `min bound` is the stricter reading (within the smaller of the two). The books: the
 momentum closure momentum - p0 - boundary_impulse (+ outflow, - external) against 1e-12 of |p0|,
-or of sqrt(2 M E0) when p0 = 0; energy_error's end and max |.| within 1e-4 of REF where judged,
+or, where p0 is round-off, of one body's sqrt(2 m KE0) (head-on) or the largest |p| (from rest); energy_error's end and max |.| within 1e-4 of REF where judged,
 reported elsewhere. summary.json is read recursively without timing, memory, thread keys and
-the energy error; a missing observable or a different status fails.
+the energy error; a missing observable or a different status fails. A run directory is reused
+when its stamp matches (scene and binary; --reuse-ref: the REF runs' scene alone).
 """
+import json
 import math
 import os
+import shutil
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
@@ -129,9 +133,14 @@ def main():
     gravity = history([0.0, 0.1, 0.2], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0])
     gravity["external_impulse_x [N s]"] = [0.0, 0.1, 0.2]
     check(rb.momentum_closure(gravity, 1.0) < 1e-15, "external impulse is booked")
-    head_on = history([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0])
-    scale0, how0 = rb.momentum_scale(head_on, mass=2.0, e0=4.0)
-    check(scale0 == 4.0 and "p0 = 0" in how0, f"p0 = 0: sqrt(2 M E0): {scale0} {how0}")
+    check(rb.momentum_scale(ref, [(1.0, 0.18)])[0] == 0.6, "one body moving: |p0|")
+    head_on = history([1e-18, 1e-18, 2e-18], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+    scale0, how0 = rb.momentum_scale(head_on, [(2.0, 4.0), (2.0, 1.0)])
+    check(scale0 == 4.0 and "p0 = 0" in how0,
+          f"p0 round-off (head-on): the larger body's sqrt(2 m KE0): {scale0} {how0}")
+    at_rest = history([0.0, 0.3, -0.5], [0.0, 0.3, -0.5], [0.0, 0.0, 0.0])
+    scale1, how1 = rb.momentum_scale(at_rest, [(2.0, 0.0)])
+    check(scale1 == 0.5 and "rest" in how1, f"a start at rest: the largest |p|: {scale1} {how1}")
 
     # Energy error: end and max |.| within 1e-4 where judged (Table 2, recommended).
     near = history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, 2e-3 + 9e-5, 1e-3 - 9e-5])
@@ -154,6 +163,23 @@ def main():
     g = rb.gauge_observables(history([p0] * 3, [0.0] * 3, [0.0] * 3, gauge=[0.0, -3.0, -1.0]))
     check(g == {"history/gauge_probe [m/s]/max": 0.0, "history/gauge_probe [m/s]/min": -3.0,
                 "history/gauge_probe [m/s]/last": -1.0}, f"gauge peaks: {g}")
+
+    # Resumption: a run directory is reused when its stamp matches (the REF runs with
+    # --reuse-ref: the scene alone), and only with its summary.json.
+    work = tempfile.mkdtemp()
+    stamp = {"scene": {"extends": "/a.json"}, "binary_sha256": "1"}
+    with open(os.path.join(work, "bounds_stamp.json"), "w") as f:
+        json.dump(dict(stamp, exit_code=0, wall_seconds=1.5), f)
+    check(not rb.finished(work, stamp, False), "no summary.json: not finished")
+    with open(os.path.join(work, "summary.json"), "w") as f:
+        f.write("{}")
+    check(rb.finished(work, stamp, False), "same scene and binary: finished")
+    other = dict(stamp, binary_sha256="2")
+    check(not rb.finished(work, other, False), "another binary: run again")
+    check(rb.finished(work, other, True), "another binary, scene only (--reuse-ref): reused")
+    check(not rb.finished(work, dict(stamp, scene={"extends": "/b.json"}), True),
+          "another scene: run again")
+    shutil.rmtree(work)
 
     for what in failures:
         print("FAILED:", what)
