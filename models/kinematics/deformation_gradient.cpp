@@ -4,13 +4,9 @@
 
 namespace impact {
 
-Mat3 advance_deformation_gradient(const Mat3& F, const Mat3& L, double dt, FIntegration how) {
-  if (how == FIntegration::exponential) {
-    const Mat3 A = L * dt;
-    return A.exp() * F;
-  }
-  // (I + L dt) F written as F + dt (L F): the increment is not rounded against the identity.
-  return F + dt * (L * F);
+Mat3 advance_deformation_gradient_exponential(const Mat3& F, const Mat3& L, double dt) {
+  const Mat3 A = L * dt;
+  return A.exp() * F;
 }
 
 Mat3 constant_velocity_gradient(const Mat3& F0, const Mat3& F1, double dt) {
