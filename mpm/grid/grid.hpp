@@ -174,16 +174,22 @@ class Grid {
   }
   /// Rebuilds active_nodes() from the marks (active blocks; no-op when dense).
   void activate();
+  /// Below this many active nodes a node loop runs on one thread: waking the team costs more
+  /// than it saves (about 30 us per parallel region with passive waiting on the project VM,
+  /// against ~5 ns per node; docs/performance.md#threads).
+  static constexpr int kMinParallelNodes = 16384;
   /// body(e) for every entry e = f * node_count() + I of every field f and active node I, in
-  /// parallel over the nodes of each field.
+  /// parallel over the nodes of each field (on one thread when there are few: the bodies are
+  /// independent per entry, so the bits are the same either way).
   template <class Body>
   void for_active_entries(Body&& body) const {
     const int na = static_cast<int>(active_.size());
     const int nn = node_count();
+    const bool team = threads() > 1 && na >= kMinParallelNodes;
     for (int f = 0; f < fields_; ++f) {
       const int* const nodes = active_.data();
       const int offset = f * nn;
-#pragma omp parallel for schedule(static) num_threads(threads())
+#pragma omp parallel for schedule(static) num_threads(threads()) if (team)
       for (int a = 0; a < na; ++a) body(offset + nodes[a]);
     }
   }

@@ -36,6 +36,10 @@ struct OnGrid {
   static constexpr GridGeometry kGeometry = G;
   static constexpr int NZ = G == GridGeometry::three_d ? N : 1;
   static constexpr bool kHoop = G == GridGeometry::axisymmetric;
+  /// Whether a node of zero weight always has a zero gradient too (then a gather may take a
+  /// massless node's zero velocity without testing its mass: it adds exact zeros). Not for the
+  /// linear hat, whose slope is -1/h at the node it has just left.
+  static constexpr bool kSlopeVanishesWithWeight = false;
 };
 
 template <GridGeometry G = GridGeometry::three_d>
@@ -62,6 +66,7 @@ struct GimpShape : OnGrid<G, 3> {
   static constexpr std::string_view kMeaning =
       G == GridGeometry::three_d ? "27-node uGIMP" : "9-node uGIMP";
   static constexpr int N = 3;  ///< nodes per axis: 27 in all (9 on a 2D grid)
+  static constexpr bool kSlopeVanishesWithWeight = true;  ///< S and dS/dr vanish at |r| = 1 + l
   Vec3 lower, inv_dx;
   std::array<int, 3> cells;
   std::vector<Vec3> half_width;  ///< per object, in cells

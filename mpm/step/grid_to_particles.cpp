@@ -29,7 +29,9 @@ double stencil_radius(const Grid& G, const Stencil<N>& s) {
   return r;
 }
 
-// L_p = sum_I (v_I - v_ref) (x) grad S_Ip over nodes with mass (see step.hpp); with the hoop
+// L_p = sum_I (v_I - v_ref) (x) grad S_Ip over nodes with mass (see step.hpp; with uGIMP a
+// massless node of the particle's own stencil has zero weight and zero gradient, so it adds exact
+// zeros and is not tested: Shape::kSlopeVanishesWithWeight, the same bits); with the hoop
 // terms (axisymmetric), L_tt = sum_I S_Ip v_I,r / r_p = (v_ref,r + sum_I S_Ip (v_I - v_ref)_r) /
 // r_p, in the same sense (Sulsky & Schreyer 1996 eq. 14), r_p at the start of the step.
 template <class Shape>
@@ -47,7 +49,8 @@ Mat3 gradient(const Grid& G, const Stencil<Shape::N>& s, const std::vector<Vec3>
       const double wdy = s.w[0][i] * s.dw[1][j];
       Vec3 a = Vec3::Zero(), b = Vec3::Zero();  // sum_k dv w_z, sum_k dv dw_z
       for (int k = 0; k < NZ; ++k) {
-        if (!(G.mass[row + k] > 0.0)) continue;
+        if constexpr (!Shape::kSlopeVanishesWithWeight)
+          if (!(G.mass[row + k] > 0.0)) continue;
         const Vec3 dv = v[row + k] - v_ref;
         a += dv * s.w[2][k];
         b += dv * s.dw[2][k];
@@ -162,17 +165,25 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
   G.clear_momentum();
   Vec3* const buf = G.momentum_buffer();
   const int sx = G.stride_x(), sy = G.stride_y();
-  scatter_by_colour(order, nt, [&](int p) {
-    const Stencil<N>& s = S[p];
-    Vec3* const base = buf + P.field[p] * G.node_count() + G.index(s.base[0], s.base[1], s.base[2]);
-    const Vec3 mv = P.mass[p] * P.v[p];
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j) {
-        Vec3* row = base + i * sx + j * sy;
-        const Vec3 mvij = (s.w[0][i] * s.w[1][j]) * mv;
-        for (int k = 0; k < NZ; ++k) row[k] += s.w[2][k] * mvij;
-      }
-  });
+  scatter_by_colour(
+      order, nt,
+      [&](int p) {
+        const Stencil<N>& s = S[p];
+        Vec3* const base =
+            buf + P.field[p] * G.node_count() + G.index(s.base[0], s.base[1], s.base[2]);
+        const Vec3 mv = P.mass[p] * P.v[p];
+        for (int i = 0; i < N; ++i)
+          for (int j = 0; j < N; ++j) {
+            Vec3* row = base + i * sx + j * sy;
+            const Vec3 mvij = (s.w[0][i] * s.w[1][j]) * mv;
+            for (int k = 0; k < NZ; ++k) row[k] += s.w[2][k] * mvij;
+          }
+      },
+      [&](int q) {
+        __builtin_prefetch(&S[q]);
+        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 64);
+        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 128);
+      });
   if (halo) halo->sum_momentum(G);
   const std::vector<Vec3>& momentum = G.remapped_momentum();
   const std::size_t nn = static_cast<std::size_t>(G.node_count());

@@ -31,57 +31,65 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
   const int sx = G.stride_x(), sy = G.stride_y();
   // Wall faces: which walls each particle's domain reaches this step (grid/wall.cpp).
   std::uint8_t* const touch = G.wall_touch.empty() ? nullptr : G.wall_touch.data();
-  scatter_by_colour(order, G.threads(), [&](int p) {
-    const Stencil<N>& s = S[p];
-    if (marks) G.mark_stencil(marks, s.base, N, NZ);
-    const int base_index = G.index(s.base[0], s.base[1], s.base[2]);
-    const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
-    NodeData* const field = buf + offset;
-    Mat3 sigma = P.state[p].stress;
-    if (viscosity) sigma.diagonal().array() -= P.q[p];  // sigma - q I (report eq. 12)
-    const Mat3 vs = -P.volume[p] * sigma;               // -V_p (sigma_p - q_p I)
-    // Axisymmetric: the hoop stress pulls each ring towards the axis, -V_p sigma_tt S_Ip / r_p
-    // on the radial component (Sulsky & Schreyer 1996 eq. 20; V_p is the revolved ring's).
-    // Held as a vector (0, hoop, 0) added to a below: a scalar a(1) += ... made the compiler
-    // store a to the stack and reload it whole, a stalled store forward per node (perf).
-    Vec3 hoop = Vec3::Zero();
-    if constexpr (Shape::kHoop) hoop(1) = P.x[p](1) > 0.0 ? vs(2, 2) / P.x[p](1) : 0.0;
-    const double m = P.mass[p];
-    const Vec3 mv = m * P.v[p];
-    for (int i = 0; i < N; ++i) {
-      for (int j = 0; j < N; ++j) {
-        const int row_index = base_index + i * sx + j * sy;
-        NodeData* row = field + row_index;
-        const double wij = s.w[0][i] * s.w[1][j];
-        const double dxw = s.dw[0][i] * s.w[1][j];
-        const double wdy = s.w[0][i] * s.dw[1][j];
-        // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
-        Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
-        if constexpr (Shape::kHoop) a = a + hoop * wij;  // w_z = 1, dw_z = 0 on a 2D grid
-        const Vec3 b = vs.col(2) * wij;
-        for (int k = 0; k < NZ; ++k) {
-          NodeData& node = row[k];
-          const double w = wij * s.w[2][k];
-          const Vec3 f = a * s.w[2][k] + b * s.dw[2][k];
-          node.mass += w * m;
-          for (int d = 0; d < 3; ++d) {
-            node.momentum[d] += w * mv(d);
-            node.force[d] += f(d);
+  scatter_by_colour(
+      order, G.threads(),
+      [&](int p) {
+        const Stencil<N>& s = S[p];
+        if (marks) G.mark_stencil(marks, s.base, N, NZ);
+        const int base_index = G.index(s.base[0], s.base[1], s.base[2]);
+        const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
+        NodeData* const field = buf + offset;
+        Mat3 sigma = P.state[p].stress;
+        if (viscosity) sigma.diagonal().array() -= P.q[p];  // sigma - q I (report eq. 12)
+        const Mat3 vs = -P.volume[p] * sigma;               // -V_p (sigma_p - q_p I)
+        // Axisymmetric: the hoop stress pulls each ring towards the axis, -V_p sigma_tt S_Ip / r_p
+        // on the radial component (Sulsky & Schreyer 1996 eq. 20; V_p is the revolved ring's).
+        // Held as a vector (0, hoop, 0) added to a below: a scalar a(1) += ... made the compiler
+        // store a to the stack and reload it whole, a stalled store forward per node (perf).
+        Vec3 hoop = Vec3::Zero();
+        if constexpr (Shape::kHoop) hoop(1) = P.x[p](1) > 0.0 ? vs(2, 2) / P.x[p](1) : 0.0;
+        const double m = P.mass[p];
+        const Vec3 mv = m * P.v[p];
+        for (int i = 0; i < N; ++i) {
+          for (int j = 0; j < N; ++j) {
+            const int row_index = base_index + i * sx + j * sy;
+            NodeData* row = field + row_index;
+            const double wij = s.w[0][i] * s.w[1][j];
+            const double dxw = s.dw[0][i] * s.w[1][j];
+            const double wdy = s.w[0][i] * s.dw[1][j];
+            // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
+            Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
+            if constexpr (Shape::kHoop) a = a + hoop * wij;  // w_z = 1, dw_z = 0 on a 2D grid
+            const Vec3 b = vs.col(2) * wij;
+            for (int k = 0; k < NZ; ++k) {
+              NodeData& node = row[k];
+              const double w = wij * s.w[2][k];
+              const Vec3 f = a * s.w[2][k] + b * s.dw[2][k];
+              node.mass += w * m;
+              for (int d = 0; d < 3; ++d) {
+                node.momentum[d] += w * mv(d);
+                node.force[d] += f(d);
+              }
+            }
           }
         }
-      }
-    }
-    if (touch && m > 0.0) {  // the nodes this particle weighs, where it reaches a wall
-      const std::uint8_t bits =
-          G.touched_walls(P.x[p], P.v[p], G.particle_half_width[P.object[p]], dt);
-      if (bits == 0) return;
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j)
-          for (int k = 0; k < NZ; ++k)
-            if (s.w[0][i] * s.w[1][j] * s.w[2][k] > 0.0)
-              touch[offset + base_index + i * sx + j * sy + k] |= bits;
-    }
-  });
+        if (touch && m > 0.0) {  // the nodes this particle weighs, where it reaches a wall
+          const std::uint8_t bits =
+              G.touched_walls(P.x[p], P.v[p], G.particle_half_width[P.object[p]], dt);
+          if (bits == 0) return;
+          for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j)
+              for (int k = 0; k < NZ; ++k)
+                if (s.w[0][i] * s.w[1][j] * s.w[2][k] > 0.0)
+                  touch[offset + base_index + i * sx + j * sy + k] |= bits;
+        }
+      },
+      [&](int q) {  // its stress (state records are 280 B apart) and its stencil (160 B)
+        __builtin_prefetch(&P.state[q].stress);
+        __builtin_prefetch(&S[q]);
+        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 64);
+        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 128);
+      });
   if (halo) halo->sum_node_data(G, /*contact=*/G.fields() > 1);
   G.activate();
   G.collect_mass();

@@ -7,6 +7,7 @@
 // and added to the next step's internal force as -q I; its dissipation q (-tr D) V dt is booked
 // and retained as heat (docs/report_code.md sec. 13: the 2004 code neither booked its work
 // nor let it shorten the time step).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -77,6 +78,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   // Particles go through the model in blocks of one batch: their radial returns run together on
   // the vector lanes (models/material/update_batch.hpp), with the same bits as one at a time.
   constexpr std::ptrdiff_t kBlock = UpdateBatch::capacity;
+  constexpr int kChunkBlocks = 4;
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
   StressTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
@@ -103,7 +105,9 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
       sum.faulted.push_back(std::move(f));
       sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
     };
-#pragma omp for schedule(static)
+    // Chunks of kChunkBlocks blocks dealt round the threads: the plastic points of an impact are
+    // neighbours in the arrays, and a thread holding all of them would make the others wait.
+#pragma omp for schedule(static, kChunkBlocks)
     for (std::ptrdiff_t block = 0; block < blocks; ++block) {
       const std::ptrdiff_t p0 = block * kBlock, p1 = std::min(n, p0 + kBlock);
       batch.clear();
@@ -195,10 +199,12 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   StressTotals total;
   for (int t = 0; t < nt; ++t) {  // thread order: deterministic
     merge_into(total, partial[t]);
-    // Thread t's particles follow thread t-1's (static schedule): ascending indices.
     for (Failure& f : partial[t].faulted) total.faulted.push_back(std::move(f));
     merge_failure(failure, failures[t]);
   }
+  // Ascending particle indices, whichever thread updated which chunk.
+  std::stable_sort(total.faulted.begin(), total.faulted.end(),
+                   [](const Failure& a, const Failure& b) { return a.particle < b.particle; });
   return total;
 }
 
