@@ -12,6 +12,7 @@
 // T_room and T_melt come from the material (one source of truth), not from this block.
 #pragma once
 
+#include <algorithm>
 #include <limits>
 
 #include "models/core/input.hpp"
@@ -184,8 +185,29 @@ template <class V>
                : lane::splat<V>(std::numeric_limits<double>::infinity());
 }
 
+/// The increment at which the rate factor is not smooth (rate* = 1: the clamped form's kink, the
+/// 2004 form's jump), reference_rate dt, when C > 0; +inf when the factor is smooth everywhere.
+template <class V>
+[[gnu::always_inline]] inline V johnson_cook_break_increment(const JohnsonCookParams& p, V dt) {
+  return p.C > 0.0 ? V(p.reference_strain_rate * dt)
+                   : lane::splat<V>(std::numeric_limits<double>::infinity());
+}
+
+/// K such that the radial return's residual g(u) = q_tr - 3 mu e^u - sigma_y(ep + e^u, e^u / dt)
+/// (u = ln d, models/plasticity/radial_return.hpp) has |g''(u)| <= K |g'(u)| between the rate
+/// factor's breaks: max(1, n) + 2 C (docs/theory.md sec. 4). Each factor of the law is positive,
+/// increasing and convex in u, with h''/h' = (ep + n d)/(ep + d) <= max(1, n) for the hardening
+/// h = A + B (ep + d)^n; the rate factor r has r'' <= r' and r' <= C r (both forms, C <= 1); so
+/// sigma'' = theta (h'' r + 2 h' r' + h r'') <= (max(1, n) + 2 C) sigma', and the elastic term
+/// 3 mu e^u has ratio 1. +inf (no bound claimed) outside A >= 0, B >= 0, n > 0, 0 <= C <= 1.
+inline double johnson_cook_log_curvature_bound(const JohnsonCookParams& p) {
+  const bool covered = p.A >= 0.0 && p.B >= 0.0 && p.n > 0.0 && p.C >= 0.0 && p.C <= 1.0;
+  return covered ? std::max(1.0, p.n) + 2.0 * p.C : std::numeric_limits<double>::infinity();
+}
+
 /// The law at one temperature, as the radial return calls it: flow(ep, rate), the increment's
-/// upper bound and its jump (models/plasticity/radial_return.hpp, BoundedFlow, JumpingFlow).
+/// upper bound, its jump, its breaks and its curvature bound (models/plasticity/radial_return.hpp,
+/// BoundedFlow, JumpingFlow, CurvatureBoundedFlow).
 struct JohnsonCookAtTemperature {
   const JohnsonCookParams& params;
   JohnsonCookThermal thermal;
@@ -196,6 +218,10 @@ struct JohnsonCookAtTemperature {
     return johnson_cook_increment_bound(params, thermal, plastic_strain, overshoot, dt);
   }
   double jump_increment(double dt) const { return johnson_cook_jump_increment<double>(params, dt); }
+  double break_increment(double dt) const {
+    return johnson_cook_break_increment<double>(params, dt);
+  }
+  double log_curvature_bound() const { return johnson_cook_log_curvature_bound(params); }
 };
 
 /// Homologous temperature T* = (T - T_room)/(T_melt - T_room), unclamped.

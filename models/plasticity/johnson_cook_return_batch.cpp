@@ -20,6 +20,12 @@ struct LawAt {
   [[gnu::always_inline]] V jump_increment(V dt) const {
     return johnson_cook_jump_increment<V>(p, dt);
   }
+  [[gnu::always_inline]] V break_increment(V dt) const {
+    return johnson_cook_break_increment<V>(p, dt);
+  }
+  [[gnu::always_inline]] double log_curvature_bound() const {
+    return johnson_cook_log_curvature_bound(p);
+  }
 };
 template <JohnsonCookRateForm Form, class V>
 struct BoundAt {
