@@ -510,6 +510,11 @@ def main():
                          "(comma list; alone: every set run): the scatter of each observable")
     args = ap.parse_args()
     args.ref, args.new = os.path.abspath(args.ref), os.path.abspath(args.new)
+    for what, path in (("REF_MPM", args.ref), ("NEW_MPM", args.new)):
+        if not (os.path.isfile(path) and os.access(path, os.X_OK)):
+            sys.exit(f"result_bounds.py: {what}: {path} is not an executable file (an mpm binary)")
+    if args.jobs < 1 or args.threads < 1:
+        sys.exit("result_bounds.py: --jobs and --threads: expected integers >= 1")
     sets = [s for s in args.set.split(",") if s]
     for s in sets:
         if s not in SETS:

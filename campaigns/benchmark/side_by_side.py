@@ -46,6 +46,14 @@ def main():
     ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
     ap.add_argument("--repeats", type=int, default=3)
     a = ap.parse_args()
+    for what, path in (("OLD_MPM", a.old), ("NEW_MPM", a.new)):
+        if not (os.path.isfile(path) and os.access(path, os.X_OK)):
+            sys.exit(f"side_by_side.py: {what}: {path} is not an executable file (an mpm binary)")
+    if not os.path.isfile(a.scene):
+        sys.exit(f"side_by_side.py: --scene: {a.scene} is not a file")
+    if a.repeats < 1 or min(a.threads) < 1 or not a.max_time > 0.0:
+        sys.exit("side_by_side.py: --repeats and --threads: expected integers >= 1; "
+                 "--max-time: expected a time > 0 [s]")
     os.makedirs(a.out, exist_ok=True)
     scene = os.path.join(a.out, "scene.json")
     with open(scene, "w") as f:
