@@ -27,10 +27,11 @@
 // to the right of a root whose slope is infinite at d = 0, and needed more than 60 steps. A step
 // that leaves the bracket [lo, hi] falls back to a geometric bisection. A root below the smallest
 // double (a tiny overshoot with a low n at ep = 0) is an increment of zero to double precision: the
-// trial stress is on the yield surface of ep + d and is returned unchanged. A result that met
-// neither test (nor the stopping bound below) is reported as not converged, never silently
-// accepted. (A bracket cannot close without a root: g(lo) > 0 >= g(hi) and g only jumps up, so a
-// zero crossing lies between.)
+// trial stress is on the yield surface of ep + d and is returned unchanged. A subnormal root
+// (one step of d moves g by more than the tolerance) is taken once the iterations have closed the
+// bracket to adjacent doubles. A result that met none of these tests (nor the stopping bound
+// below) is reported as not converged, never silently accepted. (A bracket cannot close without a
+// root: g(lo) > 0 >= g(hi) and g only jumps up, so a zero crossing lies between.)
 //
 // Stopping. An evaluated iterate with |g| <= tol q_tr is the root. A law that bounds the
 // curvature of g in u (CurvatureBoundedFlow: |g''(u)| <= K |g'(u)| between the increments where it
@@ -112,6 +113,10 @@ concept CurvatureBoundedFlow = requires(const Flow& f, V dt) {
 /// How far from a jump the bracket's ends are taken, relative to it: more than the rounding of
 /// rate* = d / dt / reference_rate (3 operations of 1/2 eps each).
 inline constexpr double kJumpMargin = 8.0 * std::numeric_limits<double>::epsilon();
+/// The spacing of doubles: at most kEpsilon x, and kSmallestStep below kSmallestNormal.
+inline constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+inline constexpr double kSmallestStep = std::numeric_limits<double>::denorm_min();
+inline constexpr double kSmallestNormal = std::numeric_limits<double>::min();
 
 /// The inputs and outputs of the return for one point (V = double) or a vector of points (V =
 /// lane::Vec, one per lane): fill the inputs, call return_values, read the outputs. A lane with
@@ -211,7 +216,12 @@ template <class V, class Flow, class Bound>
     // Outside the bracket (also NaN): the upper bound if a guess below the root started the
     // iteration (from there Newton is monotone), else a geometric bisection.
     const auto outside = !((newton > lo1) & (newton < hi1));
-    const V bisection = select<V>(lo1 > 0.0, lane::sqrt(V(lo1 * hi1)), 0.5 * hi1);
+    // sqrt(lo hi) as sqrt(lo) sqrt(hi) where the product underflows (a bracket among the
+    // subnormals would otherwise bisect to 0 and never close); the same bits elsewhere.
+    const V product = lo1 * hi1;
+    const V geometric = select<V>(product >= kSmallestNormal, lane::sqrt(product),
+                                  V(lane::sqrt(lo1) * lane::sqrt(hi1)));
+    const V bisection = select<V>(lo1 > 0.0, geometric, 0.5 * hi1);
     const V next = select<V>(outside, select<V>(guess1, hi1, bisection), newton);
     b.iterations = select(active, Int{} + it, b.iterations);
     b.flow.value = select<V>(active, f.value, b.flow.value);
@@ -242,6 +252,15 @@ template <class V, class Flow, class Bound>
     d = select<V>(go_on, next, d);
     active = go_on;
   }
+  // A subnormal root (ep_n = 0 with a low exponent: sigma_y rises as d^n, and one step of a
+  // subnormal d, 5e-324, moves g by more than the tolerance, e.g. 39-80 Pa above A with n =
+  // 0.02) cannot meet the residual test: the iterations end with the bracket closed to adjacent
+  // doubles. The root is then known to double precision (the upper end is taken, g <= 0 there);
+  // only lanes that would otherwise end not converged take this.
+  const V spacing = select<V>(lo * kEpsilon > kSmallestStep, lo * kEpsilon, kSmallestStep);
+  const auto closed = active & !(hi - lo > spacing);
+  b.converged |= lane::flag<V>(closed);
+  d = select<V>(closed, hi, d);
   b.increment = select<V>(plastic, d, 0.0);
 }
 

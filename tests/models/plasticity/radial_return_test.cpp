@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
+
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <tuple>
 #include <vector>
 
@@ -122,6 +124,43 @@ BOOST_AUTO_TEST_CASE(unconverged_return_is_reported_not_accepted) {
                                ReturnAlgorithm::newton, 0.0, tol);
   BOOST_TEST(r.plastic);
   BOOST_TEST(!r.converged);
+}
+
+// A subnormal root (found by the issue 41 audit): at ep = 0 with n = 0.02, sigma_y = A + B d^n
+// rises by 39 Pa from d = 0 to the smallest double 5e-324 and by 80 Pa to the smallest normal
+// 2.2e-308, so an overshoot of 39-80 Pa has its root among the subnormals, where one step of d
+// moves g by more than the tolerance (3e-4 Pa here). Before, 253 of these 2000 returns ran out of
+// iterations and were reported not converged (a fault that stops an MPM run). Now every one
+// converges with the root within two steps of d (g >= -tol q_tr two doubles below the increment, g
+// <= tol q_tr two above), and the deviator is the trial's (3 mu d / q_tr ~ 1e-300).
+BOOST_AUTO_TEST_CASE(a_subnormal_root_is_taken_to_double_precision) {
+  JohnsonCookParams p = al6061();
+  p.n = 0.02;
+  const double dt = 1e-8;
+  const JohnsonCookAtTemperature flow{p, johnson_cook_thermal(p, 294.0)};
+  const double lo = flow(std::numeric_limits<double>::denorm_min(), 0.0).value - p.A;
+  const double hi = flow(std::numeric_limits<double>::min(), 0.0).value - p.A;
+  const ReturnTolerance tol;
+  const int n = 2000;
+  int subnormal = 0, converged = 0, bracketed = 0;
+  for (int k = 0; k < n; ++k) {
+    const double q = p.A + lo + (hi - lo) * (k + 0.5) / n;
+    const Mat3 s = trial_with_von_mises(q);
+    const auto r = radial_return(s, kMu, 0.0, dt, flow, ReturnAlgorithm::newton, 0.0, tol);
+    const double d = r.delta_plastic_strain;
+    const auto g = [&](double x) { return q - 3.0 * kMu * x - flow(x, x / dt).value; };
+    const double below = std::nextafter(std::nextafter(d, 0.0), 0.0);
+    const double above = std::nextafter(std::nextafter(d, 1.0), 1.0);
+    subnormal += d > 0.0 && d < std::numeric_limits<double>::min();
+    converged += r.converged;
+    bracketed += g(above) <= tol.relative_residual * q &&
+                 (d == 0.0 || g(below) >= -tol.relative_residual * q) &&
+                 (r.deviator - s).cwiseAbs().maxCoeff() <= 1e-15 * q;
+  }
+  BOOST_TEST_MESSAGE(n << " returns, " << subnormal << " subnormal roots");
+  BOOST_TEST(subnormal > n / 2);
+  BOOST_TEST(converged == n);
+  BOOST_TEST(bracketed == n);
 }
 
 // The sweep the ledger audit asked for: with a low hardening exponent at zero plastic
