@@ -17,7 +17,7 @@ namespace impact {
 
 enum class FIntegration { forward_euler, exponential };
 
-/// exp(L dt) F_n (allocation-free, but out of line: it is the rare choice).
+/// exp(L dt) F_n (out of line: it is the rare choice).
 Mat3 advance_deformation_gradient_exponential(const Mat3& F, const Mat3& L, double dt);
 
 /// F_{n+1} from F_n, a velocity gradient L [1/s] held constant over dt [s]. Inline: the MPM

@@ -179,11 +179,7 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
             for (int k = 0; k < NZ; ++k) row[k] += s.w[2][k] * mvij;
           }
       },
-      [&](int q) {
-        __builtin_prefetch(&S[q]);
-        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 64);
-        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 128);
-      });
+      [&](int q) { prefetch_stencil(S[q]); });
   if (halo) halo->sum_momentum(G);
   const std::vector<Vec3>& momentum = G.remapped_momentum();
   const std::size_t nn = static_cast<std::size_t>(G.node_count());

@@ -86,9 +86,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
       },
       [&](int q) {  // its stress (state records are 280 B apart) and its stencil (160 B)
         __builtin_prefetch(&P.state[q].stress);
-        __builtin_prefetch(&S[q]);
-        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 64);
-        __builtin_prefetch(reinterpret_cast<const char*>(&S[q]) + 128);
+        prefetch_stencil(S[q]);
       });
   if (halo) halo->sum_node_data(G, /*contact=*/G.fields() > 1);
   G.activate();

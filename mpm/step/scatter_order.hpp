@@ -62,6 +62,13 @@ void scatter_by_colour(const ScatterOrder& order, int threads, Body&& body, Ahea
   }
 }
 
+/// Brings a stencil (160 B with uGIMP: three cache lines) towards the core, for an `ahead` hook.
+template <int N>
+inline void prefetch_stencil(const Stencil<N>& s) {
+  const char* const bytes = reinterpret_cast<const char*>(&s);
+  for (std::size_t at = 0; at < sizeof(Stencil<N>); at += 64) __builtin_prefetch(bytes + at);
+}
+
 template <class Body>
 void scatter_by_colour(const ScatterOrder& order, int threads, Body&& body) {
   scatter_by_colour(order, threads, body, [](int) {});
