@@ -244,8 +244,47 @@ def write_tables(out, cases):
         "are 0). Columns `*_end [J]`: further ledger energy terms at the end time (docs/mpm.md).",
         "",
     ]
+    for c in cases:
+        lines += discretization_error_lines(c)
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("\n".join(lines))
+
+
+def discretization_error_lines(case):
+    """The error bar of a run whose scene has a grid-convergence ladder table (summary.json
+    "discretization_error", written by mpm run; docs/accuracy.md#grid-convergence-ladders)."""
+    d = case.summary.get("discretization_error")
+    if not isinstance(d, dict):
+        return []
+    head = [f"## {case.name}: discretization error (grid-convergence ladder)", ""]
+    if "observables" not in d:
+        return head + [f"Ladder table {d.get('table', '?')}: {d.get('status', '?')}.", ""]
+
+    def g(x, unit=""):
+        return f"{x:.4g}{unit}" if isinstance(x, (int, float)) and not isinstance(x, bool) else "-"
+
+    def pct(x):
+        return f"{100 * x:+.1f} %" if isinstance(x, (int, float)) else "-"
+
+    lines = head + [
+        f"This run is level x{g(d.get('level'))} of the ladder in {d.get('table')} (made at commit "
+        f"{d.get('ladder_commit', '?')}). error = (this run - extrapolated) / abs(extrapolated); "
+        "the extrapolated value is Richardson's from the ladder's three finest levels, GCI_fine its "
+        "uncertainty band (Celik et al. 2008, safety factor 1.25), order p the observed one.",
+        "",
+        "| observable | this run | extrapolated | error | GCI_fine of the finest level | order p | "
+        "status |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for name, o in d["observables"].items():
+        if not isinstance(o, dict):
+            continue
+        gci = o.get("gci_fine [-]")
+        lines.append(f"| {name} | {g(o.get('value'))} | {g(o.get('extrapolated'))} | "
+                     f"{pct(o.get('error [-]'))} | "
+                     f"{(f'{100 * gci:.2g} %' if isinstance(gci, (int, float)) else '-')} | "
+                     f"{g(o.get('order'))} | {o.get('status', '')} |")
+    return lines + [""]
 
 
 # ---- figures -----------------------------------------------------------------------------------

@@ -1,0 +1,157 @@
+"""Grid convergence arithmetic: observed order, Richardson extrapolation and the grid convergence
+index of three solutions on systematically refined grids, as the ASME V&V 20 procedure states it
+in Celik, Ghia, Roache, Freitas, Coleman & Raad (2008), "Procedure for estimation and reporting of
+uncertainty due to discretization in CFD applications", J. Fluids Eng. 130, 078001 (the GCI of
+Roache 1994, J. Fluids Eng. 116, 405). Standard library only (docs/accuracy.md#grid-convergence-ladders).
+
+Notation as in Celik et al. (2008), grid 1 the finest:
+  h_i        representative cell size, h = (volume / cells)^(1/D)  (their eq. 1)
+  r21, r32   refinement ratios h2/h1, h3/h2 (need not be equal)
+  e21, e32   phi2 - phi1, phi3 - phi2
+  p          observed order, from the fixed point of their eqs. 3a-3c:
+               p = |ln|e32/e21| + q(p)| / ln r21,  q(p) = ln((r21^p - s) / (r32^p - s)),
+               s = sign(e32/e21)
+  phi_ext    (r21^p phi1 - phi2) / (r21^p - 1)  (eq. 4)
+  e_a        |(phi1 - phi2) / phi1|, e_ext = |(phi_ext - phi1) / phi_ext|  (eq. 5)
+  GCI_fine   Fs e_a / (r21^p - 1), Fs = 1.25 for three grids  (eq. 6)
+The convergence condition follows the ratio R = e21/e32 (Stern, Wilson, Coleman & Paterson 2001,
+J. Fluids Eng. 123, 793): 0 < R < 1 monotonic convergence, -1 < R < 0 oscillatory convergence
+(Celik et al. flag it by e32/e21 < 0 and keep s = -1 in q), |R| >= 1 divergence (no order, no
+extrapolation, no GCI), e21 = 0 or e32 = 0 none either (the grids do not resolve a difference).
+"""
+
+import math
+
+SAFETY_FACTOR = 1.25  # Fs for three or more grids (Roache 1998; Celik et al. 2008, eq. 6)
+
+
+def representative_h(volume, cells, dimension):
+    """h = (volume / cells)^(1/D) (Celik et al. 2008, eq. 1, for cells of equal size)."""
+    return (volume / cells) ** (1.0 / dimension)
+
+
+def convergence_condition(phi1, phi2, phi3):
+    """'monotonic', 'oscillatory', 'monotonic divergence', 'oscillatory divergence' or
+    'no difference' (e21 or e32 zero), from R = e21/e32 (module docstring)."""
+    e21, e32 = phi2 - phi1, phi3 - phi2
+    if e21 == 0.0 or e32 == 0.0:
+        return "no difference"
+    ratio = e21 / e32
+    if 0.0 < ratio < 1.0:
+        return "monotonic"
+    if -1.0 < ratio < 0.0:
+        return "oscillatory"
+    return "monotonic divergence" if ratio > 0.0 else "oscillatory divergence"
+
+
+def observed_order(phi1, phi2, phi3, r21, r32, tolerance=1e-14, iterations=200):
+    """p of Celik et al. (2008) eqs. 3a-3c for a converging triple (else None). Fixed-point
+    iteration from q = 0 (exact in one step when r21 = r32); where it does not settle, bisection on
+    the same equation, p in (0, 50]."""
+    e21, e32 = phi2 - phi1, phi3 - phi2
+    if convergence_condition(phi1, phi2, phi3) not in ("monotonic", "oscillatory"):
+        return None
+    s = 1.0 if e32 / e21 > 0 else -1.0
+    log_ratio = math.log(abs(e32 / e21))
+
+    def q(p):
+        return math.log((r21 ** p - s) / (r32 ** p - s))
+
+    def update(p):
+        return abs(log_ratio + q(p)) / math.log(r21)
+
+    p = abs(log_ratio) / math.log(r21)  # the first guess q = 0 (Celik et al. 2008)
+    for _ in range(iterations):
+        try:
+            nxt = update(p)
+        except (ValueError, ZeroDivisionError, OverflowError):
+            break
+        if abs(nxt - p) <= tolerance * max(1.0, abs(p)):
+            return nxt
+        p = nxt
+
+    def residual(p):
+        return p - update(p)
+
+    lo, hi = 1e-6, 50.0
+    try:
+        flo, fhi = residual(lo), residual(hi)
+    except (ValueError, ZeroDivisionError, OverflowError):
+        return None
+    if flo * fhi > 0:
+        return None
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        fm = residual(mid)
+        if (fm > 0) == (flo > 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+        if hi - lo <= tolerance * hi:
+            break
+    return 0.5 * (lo + hi)
+
+
+def gci_triple(phi, h, safety_factor=SAFETY_FACTOR):
+    """The whole procedure on phi = (phi1, phi2, phi3), h = (h1, h2, h3), grid 1 the finest.
+    Returns a dict: r21, r32, condition, order p, extrapolated phi_ext21, e_a, e_ext, gci_fine
+    (relative, as fractions), gci_medium (GCI_32 with the same p, for the asymptotic check);
+    order and what follows are None when the triple does not converge."""
+    (phi1, phi2, phi3), (h1, h2, h3) = phi, h
+    if not h1 < h2 < h3:
+        raise ValueError(f"gci_triple: h must grow from the finest grid: {h}")
+    r21, r32 = h2 / h1, h3 / h2
+    out = {"r21": r21, "r32": r32, "condition": convergence_condition(phi1, phi2, phi3),
+           "order": None, "extrapolated": None, "e_a": None, "e_ext": None, "gci_fine": None,
+           "gci_medium": None}
+    p = observed_order(phi1, phi2, phi3, r21, r32)
+    if p is None or p <= 0.0:
+        return out
+    rp21 = r21 ** p
+    ext = (rp21 * phi1 - phi2) / (rp21 - 1.0)
+    out["order"], out["extrapolated"] = p, ext
+    if phi1 != 0.0:
+        out["e_a"] = abs((phi1 - phi2) / phi1)
+        out["gci_fine"] = safety_factor * out["e_a"] / (rp21 - 1.0)
+    if ext != 0.0:
+        out["e_ext"] = abs((ext - phi1) / ext)
+    if phi2 != 0.0:
+        out["gci_medium"] = safety_factor * abs((phi2 - phi3) / phi2) / (r32 ** p - 1.0)
+    return out
+
+
+def ladder(values, h, safety_factor=SAFETY_FACTOR):
+    """Every consecutive triple of a ladder (values and h ordered from the finest grid), finest
+    triple first: [gci_triple(...) | {'levels': (i, i+1, i+2)}]. Levels whose value is None are
+    skipped (a failed run)."""
+    pairs = [(v, x) for v, x in zip(values, h) if v is not None and math.isfinite(v)]
+    out = []
+    for i in range(len(pairs) - 2):
+        (v1, x1), (v2, x2), (v3, x3) = pairs[i], pairs[i + 1], pairs[i + 2]
+        t = gci_triple((v1, v2, v3), (x1, x2, x3), safety_factor)
+        t["h"] = (x1, x2, x3)
+        out.append(t)
+    return out
+
+
+def asymptotic_check(finest, next_coarser):
+    """Whether the finest triple lies in the asymptotic range, judged against the next coarser
+    triple (the one sharing its two coarser grids): both converge monotonically with orders within
+    25 % of each other, and the coarser triple's extrapolation lies within the finest triple's
+    band phi_ext +- GCI_fine |phi1|. (Within one triple Roache's ratio GCI_32 / (r21^p GCI_21)
+    equals phi1/phi2 identically, so it cannot tell; two triples can.) Returns (bool or None,
+    reason)."""
+    if next_coarser is None:
+        return None, "one triple only: a fourth level is needed to tell"
+    a, b = finest, next_coarser
+    if a["condition"] != "monotonic" or b["condition"] != "monotonic":
+        return False, f"convergence {b['condition']} then {a['condition']}"
+    if a["order"] is None or b["order"] is None:
+        return False, "no observed order"
+    if abs(a["order"] - b["order"]) > 0.25 * max(a["order"], b["order"]):
+        return False, f"orders {b['order']:.2f} then {a['order']:.2f} differ by more than 25 %"
+    band = a["gci_fine"] * abs(a["extrapolated"]) if a["gci_fine"] is not None else 0.0
+    if abs(a["extrapolated"] - b["extrapolated"]) > band:
+        return False, (f"extrapolations {b['extrapolated']:.6g} then {a['extrapolated']:.6g} "
+                       f"differ by more than the GCI band")
+    return True, "orders agree within 25 % and the extrapolations within the GCI band"

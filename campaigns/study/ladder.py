@@ -1,0 +1,654 @@
+#!/usr/bin/env python3
+"""A grid-convergence ladder of any scene (docs/accuracy.md#grid-convergence-ladders).
+
+  ladder.py SCENE.json --out OUT [--levels 1,1.5,2.25] [--ratio 1.5 --count 3]
+            [--particles-per-cell N,... --ppc-levels L,...] [--threads 2] [--ranks 1]
+            [--set JSON ...] [--mpm build/bin/mpm] [--mpirun mpirun] [--checkpoint-steps 200]
+            [--runs DIR] [--table PATH] [--analyse-only] [--no-plot]
+  (also `mpm study --ladder LEVELS SCENE.json --out OUT [...]`, which runs this script)
+
+1. Writes OUT/scenes/<run>.json for every level: a scene that `extends` SCENE with the grid's cells
+   times the level on every axis (rounded; the domain stays as it is, so cells and particle spacing
+   shrink together: particles per cell are kept), snapshots off (the first and last only when a
+   Taylor rod is measured), checkpoints every --checkpoint-steps steps. --particles-per-cell 1,2,3
+   adds, at each of --ppc-levels, runs with that many particles per cell per axis on every object
+   (quadrature error apart from grid error).
+2. Runs them one after another, coarsest first, `mpm run` with --threads (or under
+   `mpirun -np RANKS` with --ranks > 1). A run that finished (summary.json "completed") for the same
+   scene file is not run again; one that stopped with a checkpoint resumes from it (`mpm run
+   --restart`): a ladder can be stopped (Ctrl-C writes a checkpoint) and resumed, and extended one
+   level at a time into the same OUT.
+3. Reads the observables the scene names (definitions in docs/accuracy.md#grid-convergence-ladders):
+   the crater's depth and diameter (output.crater), each gauge's peak over the history rows
+   (output.gauges; the signed reading of largest magnitude), each object's largest pressure and the
+   fastest object's (the projectile's) final mean velocity along its impact direction, and for a
+   Taylor rod (one cylinder along x moving along -x) its final length Lf and mushroom diameter Dm.
+4. For every observable: the values per level, then per consecutive triple of levels the
+   convergence condition, observed order, Richardson extrapolation and fine-grid GCI of Celik et
+   al. (2008) (campaigns/study/gci.py), and whether the finest triple is in the asymptotic range
+   (against the next coarser triple). Writes OUT/ladder.csv (one row per run and observable),
+   OUT/ladder.md, OUT/ladder.json (the ladder table) and OUT/ladder_<observable>.png (value against
+   h with the extrapolated value and its GCI band). --table PATH also writes the ladder table there
+   (e.g. data/scenes/sphere_cylinder/recommended.ladder.json, which `mpm run` of that scene reads
+   to put the error bar into its summary).
+Exit codes: 0 done, 1 usage error, 2 input error (the scene), 3 a run failed (analysed without it).
+"""
+
+import argparse
+import csv
+import datetime
+import json
+import math
+import os
+import shlex
+import signal
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import gci  # noqa: E402
+
+ANVIL_LAYER = 0.5e-3  # Dm: particles within this distance of the anvil [m] (campaigns/taylor)
+
+
+# --- the scene -----------------------------------------------------------------------------------
+
+def load_resolved(path):
+    """The scene after its `extends` chain (RFC 7396 merge patches, material paths made relative
+    to the working directory), as mpm/input/scene_reader.cpp resolves it."""
+    with open(path) as f:
+        doc = json.load(f)
+    here = os.path.dirname(path)
+    for m in doc.get("materials", {}).values():
+        if isinstance(m, dict) and isinstance(m.get("file"), str) and not os.path.isabs(m["file"]):
+            m["file"] = os.path.normpath(os.path.join(here, m["file"]))
+    if "extends" not in doc:
+        return doc
+    base = load_resolved(os.path.normpath(os.path.join(here, doc.pop("extends"))))
+    return merge_patch(base, doc)
+
+
+def merge_patch(target, patch):
+    if not isinstance(patch, dict):
+        return patch
+    out = dict(target) if isinstance(target, dict) else {}
+    for k, v in patch.items():
+        if v is None:
+            out.pop(k, None)
+        else:
+            out[k] = merge_patch(out.get(k), v)
+    return out
+
+
+def taylor_rod(scene):
+    """(name, object) of the scene's Taylor rod: its only cylinder, axis along x, moving along -x;
+    else None."""
+    rods = [(n, o) for n, o in scene.get("objects", {}).items()
+            if o.get("geometry", {}).get("type") == "cylinder"]
+    if len(rods) != 1:
+        return None
+    name, rod = rods[0]
+    g, v = rod["geometry"], rod.get("velocity", [0.0])
+    axis_along_x = all(abs(a - b) < 1e-12 for a, b in zip(g["bottom"][1:], g["top"][1:]))
+    return (name, rod) if axis_along_x and v[0] < 0 and all(c == 0 for c in v[1:]) else None
+
+
+def dimension(scene):
+    return len(scene["grid"]["cells"])
+
+
+def representative_h(scene, cells):
+    """(cell volume)^(1/D) [m] (Celik et al. 2008, eq. 1; cells of one size)."""
+    lo, up = scene["grid"]["lower"], scene["grid"]["upper"]
+    vol = 1.0
+    for a, b, n in zip(lo, up, cells):
+        vol *= (b - a) / n
+    return vol ** (1.0 / len(cells))
+
+
+def level_cells(scene, level):
+    return [max(1, int(math.floor(c * level + 0.5))) for c in scene["grid"]["cells"]]
+
+
+def run_name(level, ppc=None):
+    return f"x{level:g}" + (f"_p{ppc}" if ppc is not None else "")
+
+
+def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod):
+    cells = level_cells(scene, level)
+    output = {"snapshots": False, "checkpoint_interval_steps": checkpoint_steps,
+              "directory": None}
+    if rod is not None:  # Lf and Dm come from the first and last snapshots
+        output.update({"snapshots": True, "interval": scene["time"]["max_time"]})
+    patch = {"extends": os.path.abspath(scene_file),
+             "description": f"{os.path.basename(scene_file)} at {level:g} x the cells per axis "
+             f"({' x '.join(map(str, cells))})" + (f", {ppc} particles per cell per axis"
+                                                   if ppc is not None else "")
+             + " (campaigns/study/ladder.py)",
+             "grid": {"cells": cells}, "output": output}
+    if ppc is not None:
+        patch["objects"] = {n: {"particles_per_cell": [ppc] * dimension(scene)}
+                            for n in scene["objects"]}
+    text = json.dumps(patch, indent=1) + "\n"
+    old = open(path).read() if os.path.exists(path) else None
+    if old != text:
+        with open(path, "w") as f:
+            f.write(text)
+    return text
+
+
+# --- running -------------------------------------------------------------------------------------
+
+def finished(run_dir, scene_text):
+    try:
+        with open(os.path.join(run_dir, "ladder_scene.json")) as f:
+            same = f.read() == scene_text
+        with open(os.path.join(run_dir, "summary.json")) as f:
+            return same and json.load(f).get("status") == "completed"
+    except (OSError, ValueError):
+        return False
+
+
+def run_level(args, scene_path, scene_text, run_dir):
+    """Runs (or resumes) one level; returns mpm's exit code."""
+    os.makedirs(run_dir, exist_ok=True)
+    marker = os.path.join(run_dir, "ladder_scene.json")
+    resumable = (os.path.exists(os.path.join(run_dir, "checkpoint.bin"))
+                 and os.path.exists(marker) and open(marker).read() == scene_text)
+    prefix = [args.mpirun, "-np", str(args.ranks)] if args.ranks > 1 else []
+    common = ["--threads", str(args.threads), "-q"] + [x for s in args.set for x in ("--set", s)]
+    if resumable:
+        cmd = prefix + [args.mpm, "run", "--restart", run_dir, "--threads", str(args.threads),
+                        "-q"]
+    else:
+        with open(marker, "w") as f:
+            f.write(scene_text)
+        cmd = prefix + [args.mpm, "run", scene_path, "--out", run_dir, "--overwrite"] + common
+    print(f"ladder: {'resuming' if resumable else 'running'} {os.path.basename(run_dir)}: "
+          f"{shlex.join(cmd)}", flush=True)
+    with open(os.path.join(run_dir, "ladder.log"), "a") as log:
+        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
+        try:
+            return proc.wait()
+        except KeyboardInterrupt:  # mpm writes its checkpoint on SIGINT; wait for it
+            proc.send_signal(signal.SIGINT)
+            proc.wait()
+            raise
+
+
+def fingerprint_of(args, scene_path):
+    """The scene fingerprint `mpm check --fingerprint` gives (what `mpm run` writes into
+    summary.json), from --mpm or else this tree's build; None when neither knows the option."""
+    for mpm in (args.mpm, os.path.join(ROOT, "build", "bin", "mpm")):
+        try:
+            done = subprocess.run([mpm, "check", scene_path, "--fingerprint"]
+                                  + [x for s in args.set for x in ("--set", s)],
+                                  capture_output=True, text=True, timeout=600)
+        except OSError:
+            continue
+        text = done.stdout.strip()
+        if done.returncode == 0 and len(text) == 16:
+            return text
+    return None
+
+
+# --- observables ---------------------------------------------------------------------------------
+
+def pointer_get(doc, pointer):
+    node = doc
+    for part in pointer.split("/")[1:]:
+        part = part.replace("~1", "/").replace("~0", "~")
+        if isinstance(node, list):
+            node = node[int(part)] if part.isdigit() and int(part) < len(node) else None
+        elif isinstance(node, dict):
+            node = node.get(part)
+        else:
+            return None
+        if node is None:
+            return None
+    return float(node) if isinstance(node, (int, float)) and not isinstance(node, bool) else None
+
+
+def gauge_peaks(run_dir):
+    """{gauge name: (unit, peak)}: per history.csv column gauge_<name> [unit], the signed reading
+    of largest magnitude over the rows (the first of equal magnitudes)."""
+    try:
+        with open(os.path.join(run_dir, "history.csv"), newline="") as f:
+            rows = [r for r in csv.reader(f) if r]
+    except OSError:
+        return {}
+    if len(rows) < 2:
+        return {}
+    head, out = rows[0], {}
+    for i, col in enumerate(head):
+        if not col.startswith("gauge_"):
+            continue
+        name, _, unit = col[len("gauge_"):].partition(" [")
+        values = [float(r[i]) for r in rows[1:] if len(r) == len(head)]
+        peak = max(values, key=abs) if values else None  # max keeps the first of equal magnitudes
+        out[name] = (unit.rstrip("]"), peak)
+    return out
+
+
+def taylor_measures(run_dir, scene, rod):
+    """Lf and Dm [m] of the rod from the first and last snapshots (campaigns/taylor/taylor.py's
+    measures, with the seed offsets read from the first snapshot: exact at t = 0)."""
+    import numpy as np  # noqa: F401 (vtu needs it)
+    import vtu
+    name, obj = rod
+    snaps = vtu.snapshots(run_dir)
+    first, last = vtu.read_vtu(snaps[0][1]), vtu.read_vtu(snaps[-1][1])
+    ids = first["object"]
+    index = sorted(scene["objects"]).index(name) if len(set(ids.tolist())) > 1 else ids[0]
+    mine = ids == index
+    g = obj["geometry"]
+    axis = g["bottom"]
+    planar = dimension(scene) == 2
+
+    def radius(p):
+        return abs(p[:, 1] - axis[1]) if planar else ((p[:, 1] - axis[1]) ** 2
+                                                      + (p[:, 2] - axis[2]) ** 2) ** 0.5
+
+    X0, x = first["points"][mine], last["points"][mine]
+    axial = g["top"][0] - X0[:, 0].max()
+    radial = g["radius"] - radius(X0).max()
+    Lf = x[:, 0].max() - g["bottom"][0] + axial
+    near = x[:, 0] < g["bottom"][0] + ANVIL_LAYER
+    Dm = 2.0 * (radius(x[near]).max() + radial)
+    return float(Lf), float(Dm)
+
+
+def observables_of(scene, rod):
+    """[(name, JSON pointer into summary.json or None, unit)] the scene names (module docstring)."""
+    out = []
+    crater = scene.get("output", {}).get("crater")
+    if crater:
+        out += [("crater depth", "/observables/crater/depth [m]", "m"),
+                ("crater diameter", "/observables/crater/diameter [m]", "m")]
+    objects = scene.get("objects", {})
+    speeds = {n: max((abs(c) for c in o.get("velocity", [0.0])), default=0.0)
+              for n, o in objects.items()}
+    fastest = max(speeds, key=speeds.get) if speeds else None
+    if fastest is not None and speeds[fastest] > 0 and rod is None:
+        v = objects[fastest]["velocity"]
+        c = max(range(len(v)), key=lambda i: abs(v[i]))
+        out.append((f"{fastest} residual velocity",
+                    f"/observables/objects/{fastest}/mean_velocity [m~1s]/{c}", "m/s"))
+    for n in sorted(objects):
+        out.append((f"{n} peak pressure", f"/observables/objects/{n}/max_pressure [Pa]", "Pa"))
+    units = {"velocity": "m/s", "strain": "-", "pressure": "Pa"}
+    for g, spec in sorted(scene.get("output", {}).get("gauges", {}).items()):
+        unit = units.get(spec.get("type"), "?")
+        out.append((f"gauge {g} peak", f"/gauges/{g}/peak [{unit.replace('/', '~1')}]", unit))
+    if rod is not None:
+        out += [("Lf", None, "m"), ("Dm", None, "m")]
+    return out
+
+
+def read_run(run_dir, scene, rod, observables):
+    try:
+        with open(os.path.join(run_dir, "summary.json")) as f:
+            s = json.load(f)
+    except (OSError, ValueError):
+        return None
+    if s.get("status") != "completed":
+        return None
+    peaks = gauge_peaks(run_dir)
+    values = {}
+    for name, pointer, unit in observables:
+        v = None
+        if name.startswith("gauge "):
+            v = peaks.get(name[len("gauge "):-len(" peak")], (None, None))[1]
+        elif name in ("Lf", "Dm"):
+            try:
+                values["Lf"], values["Dm"] = taylor_measures(run_dir, scene, rod)
+            except (OSError, ValueError, IndexError, KeyError):
+                pass
+            continue
+        else:
+            v = pointer_get(s, pointer)
+        values[name] = v
+    return {"values": values, "particles": s.get("particles"), "steps": s.get("steps"),
+            "wall": s.get("wall_time [s]"), "threads": s.get("threads"), "ranks": s.get("ranks"),
+            "fingerprint": s.get("scene_fingerprint"),
+            "energy_error": s.get("final", {}).get("energy_error [-]")}
+
+
+# --- analysis ------------------------------------------------------------------------------------
+
+def fmt(x, digits=4):
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return "-"
+    return f"{x:.{digits}g}"
+
+
+def analyse(runs, observables):
+    """Per observable: the Celik triples of the main ladder (finest first) and the answer."""
+    ladder_runs = sorted([r for r in runs if r["ppc"] is None and r["data"]],
+                         key=lambda r: r["h"])
+    result = {}
+    for name, pointer, unit in observables:
+        vals = [r["data"]["values"].get(name) for r in ladder_runs]
+        hs = [r["h"] for r in ladder_runs]
+        triples = gci.ladder(vals, hs)
+        finest = triples[0] if triples else None
+        asym, why = (gci.asymptotic_check(finest, triples[1] if len(triples) > 1 else None)
+                     if finest else (None, "fewer than three levels"))
+        status = (finest["condition"] if finest else "fewer than three levels")
+        if finest and finest["order"] is not None:
+            status = "extrapolated" if finest["condition"] == "monotonic" else (
+                "extrapolated (oscillatory convergence)")
+        result[name] = {"name": name, "path": pointer, "unit": unit,
+                        "levels": [r["level"] for r in ladder_runs], "h [m]": hs, "values": vals,
+                        "triples": triples, "status": status,
+                        "extrapolated": finest["extrapolated"] if finest else None,
+                        "order": finest["order"] if finest else None,
+                        "gci_fine [-]": finest["gci_fine"] if finest else None,
+                        "asymptotic": asym, "asymptotic_reason": why}
+    return result
+
+
+def git_commit():
+    try:
+        rev = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short=12", "HEAD"],
+                             capture_output=True, text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True).stdout.strip()
+        return rev + ("-dirty" if dirty else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def write_outputs(args, scene_file, runs, observables, result, plot):
+    out = args.out
+    with open(os.path.join(out, "ladder.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["run", "level [-]", "particles_per_cell [-]", "h [m]", "observable", "unit",
+                    "value", "particles", "steps", "particle_steps", "wall_time [s]", "threads",
+                    "ranks"])
+        for r in runs:
+            if not r["data"]:
+                continue
+            d = r["data"]
+            for name, _, unit in observables:
+                w.writerow([r["name"], r["level"], r["ppc"] if r["ppc"] else "", r["h"], name,
+                            unit, d["values"].get(name, ""), d["particles"], d["steps"],
+                            (d["particles"] or 0) * (d["steps"] or 0), d["wall"], d["threads"],
+                            d["ranks"]])
+    ladder_runs = sorted([r for r in runs if r["ppc"] is None and r["data"]], key=lambda r: r["h"])
+    table = {
+        "scene": os.path.relpath(os.path.abspath(scene_file), ROOT),
+        "command": args.command_line, "commit": git_commit(),
+        "date": datetime.date.today().isoformat(),
+        "definitions": "docs/accuracy.md#grid-convergence-ladders",
+        "safety_factor": gci.SAFETY_FACTOR,
+        "levels": [{"level": r["level"], "cells": r["cells"], "h [m]": r["h"],
+                    "fingerprint": r["data"]["fingerprint"], "particles": r["data"]["particles"],
+                    "steps": r["data"]["steps"],
+                    "particle_steps": (r["data"]["particles"] or 0) * (r["data"]["steps"] or 0),
+                    "wall_time [s]": r["data"]["wall"], "threads": r["data"]["threads"],
+                    "ranks": r["data"]["ranks"], "energy_error [-]": r["data"]["energy_error"]}
+                   for r in ladder_runs],
+        "observables": [{k: v for k, v in res.items() if k not in ("levels", "h [m]")}
+                        for res in result.values()],
+    }
+    for o in table["observables"]:
+        o["triples"] = [{k: v for k, v in t.items()} for t in o["triples"]]
+    text = json.dumps(table, indent=1, allow_nan=False,
+                      default=lambda x: None) + "\n"
+    with open(os.path.join(out, "ladder.json"), "w") as f:
+        f.write(text)
+    if args.table:
+        with open(args.table, "w") as f:
+            f.write(text)
+    lines = [f"# Grid-convergence ladder: {table['scene']}", "",
+             f"Command: `{args.command_line}` (commit {table['commit']}, {table['date']}). "
+             "Definitions: docs/accuracy.md#grid-convergence-ladders. GCI: Celik et al. (2008), "
+             f"safety factor {gci.SAFETY_FACTOR}.", "",
+             "| level | cells | h [m] | particles | steps | particle-steps | wall [s] | threads x ranks "
+             "| energy_error |", "|---|---|---|---|---|---|---|---|---|"]
+    for lv in table["levels"]:
+        lines.append(f"| x{lv['level']:g} | {' x '.join(map(str, lv['cells']))} | "
+                     f"{fmt(lv['h [m]'])} | {lv['particles']} | {lv['steps']} | "
+                     f"{fmt(float(lv['particle_steps']), 3)} | {fmt(lv['wall_time [s]'], 4)} | "
+                     f"{lv['threads']} x {lv['ranks']} | {fmt(lv['energy_error [-]'], 3)} |")
+    lines += ["", "| observable | " + " | ".join(f"x{lv['level']:g}" for lv in table["levels"])
+              + " | extrapolated | order p | GCI_fine (finest) | x1 error vs extrapolated | "
+              "status | asymptotic range |",
+              "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|"]
+    for res in result.values():
+        ext, v0 = res["extrapolated"], (res["values"][0] if res["values"] else None)
+        coarsest = next((v for v, lv in zip(res["values"], res["levels"]) if lv == 1.0), None)
+        err = (coarsest - ext) / abs(ext) if (coarsest is not None and ext) else None
+        del v0
+        lines.append(f"| {res['name']} [{res['unit']}] | "
+                     + " | ".join(fmt(v) for v in res["values"])
+                     + f" | {fmt(ext)} | {fmt(res['order'], 3)} | "
+                     + (f"{100 * res['gci_fine [-]']:.2g} %" if res["gci_fine [-]"] is not None
+                        else "-")
+                     + f" | {(f'{100 * err:+.1f} %' if err is not None else '-')} | "
+                     f"{res['status']} | {res['asymptotic']}: {res['asymptotic_reason']} |")
+    lines += ["", "Every consecutive triple (finest first): condition, order, extrapolated value, "
+              "GCI_fine.", ""]
+    for res in result.values():
+        parts = [f"({', '.join(fmt(x, 3) for x in t['h'])}) m: {t['condition']}, "
+                 f"p {fmt(t['order'], 3)}, {fmt(t['extrapolated'])}, "
+                 + (f"{100 * t['gci_fine']:.2g} %" if t["gci_fine"] is not None else "-")
+                 for t in res["triples"]]
+        lines.append(f"- **{res['name']}**: " + ("; ".join(parts) if parts else "no triple"))
+    lines += ppc_lines(runs, observables)
+    with open(os.path.join(out, "ladder.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    if plot:
+        draw(out, result)
+        draw_cost(out, table, result)
+
+
+def ppc_lines(runs, observables):
+    """Particles per cell apart from cells: at each level with --particles-per-cell runs, each
+    observable's spread over the particle counts (max - min, relative to the main ladder's value
+    there) beside its change from the next coarser grid (relative likewise)."""
+    ppc_runs = [r for r in runs if r["ppc"] is not None and r["data"]]
+    if not ppc_runs:
+        return []
+    main = sorted([r for r in runs if r["ppc"] is None and r["data"]], key=lambda r: r["level"])
+    base_ppc = "scene's"
+    lines = ["", "Particles per cell per axis at fixed grids (quadrature against grid error): "
+             "values per particle count; spread = (max - min) / |value at the scene's count|; grid "
+             "= |value - value one level coarser| / |value| at the scene's count.", "",
+             "| level | observable | " + " | ".join(
+                 f"{p} per axis" for p in sorted({r['ppc'] for r in ppc_runs})) +
+             f" | {base_ppc} | spread over particle counts | grid change |",
+             "|---|---|" + "---|" * (len({r['ppc'] for r in ppc_runs}) + 3)]
+    for level in sorted({r["level"] for r in ppc_runs}):
+        here = {r["ppc"]: r for r in ppc_runs if r["level"] == level}
+        ref = next((r for r in main if r["level"] == level), None)
+        coarser = [r for r in main if r["level"] < level]
+        coarser = coarser[-1] if coarser else None
+        for name, _, _ in observables:
+            vals = [here[p]["data"]["values"].get(name) for p in sorted(here)]
+            v_ref = ref["data"]["values"].get(name) if ref else None
+            known = [v for v in vals + [v_ref] if v is not None]
+            spread = ((max(known) - min(known)) / abs(v_ref)
+                      if v_ref and len(known) > 1 else None)
+            v_c = coarser["data"]["values"].get(name) if coarser else None
+            grid = abs(v_ref - v_c) / abs(v_ref) if (v_ref and v_c is not None) else None
+            lines.append(f"| x{level:g} | {name} | " + " | ".join(fmt(v) for v in vals)
+                         + f" | {fmt(v_ref)} | "
+                         + (f"{100 * spread:.1f} %" if spread is not None else "-") + " | "
+                         + (f"{100 * grid:.1f} %" if grid is not None else "-") + " |")
+    return lines
+
+
+def draw_cost(out, table, result):
+    """Speed against accuracy: each level's |value - extrapolated| / |extrapolated| against its
+    particle-steps and wall time, one curve per observable that has an extrapolated value."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    curves = [r for r in result.values() if r["extrapolated"]]
+    if not curves:
+        return
+    cost = {lv["level"]: (lv["particle_steps"], lv["wall_time [s]"]) for lv in table["levels"]}
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
+    for res in curves:
+        pts = [(cost[lv], abs(v - res["extrapolated"]) / abs(res["extrapolated"]))
+               for lv, v in zip(res["levels"], res["values"]) if v is not None and lv in cost]
+        pts = [(c, e) for c, e in pts if e > 0]
+        if not pts:
+            continue
+        for i, ax in enumerate(axes):
+            ax.loglog([c[i] for c, _ in pts], [e for _, e in pts], "o-", label=res["name"])
+    axes[0].set_xlabel("particle-steps")
+    axes[1].set_xlabel("wall time [s]")
+    axes[0].set_ylabel("|value - extrapolated| / |extrapolated|")
+    axes[1].legend(fontsize=7)
+    for ax in axes:
+        ax.grid(True, which="both", alpha=0.3)
+    fig.suptitle(f"{table['scene']}: error against the ladder's extrapolated value", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "ladder_cost.png"), dpi=110)
+    plt.close(fig)
+
+
+def draw(out, result):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("ladder: matplotlib missing: no figures (apt-get install python3-matplotlib)")
+        return
+    for res in result.values():
+        pts = [(h, v) for h, v in zip(res["h [m]"], res["values"]) if v is not None]
+        if not pts:
+            continue
+        fig, ax = plt.subplots(figsize=(5.5, 4))
+        ax.plot([1e3 * h for h, _ in pts], [v for _, v in pts], "o-", label="runs")
+        ext = res["extrapolated"]
+        if ext is not None:
+            # GCI_fine is the band about the finest level's value (Celik et al. 2008, eq. 6).
+            band = (res["gci_fine [-]"] or 0.0) * abs(pts[0][1])
+            ax.axhline(ext, color="k", ls="--", lw=1,
+                       label=f"extrapolated (p = {res['order']:.2f})")
+            ax.errorbar([1e3 * pts[0][0]], [pts[0][1]], yerr=[band], color="C3", capsize=4,
+                        fmt="none", label="finest level +- GCI_fine")
+            ax.plot([0.0], [ext], "k*", ms=9)
+        ax.set_xlim(left=0.0)
+        ax.set_xlabel("representative cell size h [mm]")
+        ax.set_ylabel(f"{res['name']} [{res['unit']}]")
+        ax.set_title(f"{res['name']}: {res['status']}", fontsize=9)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        safe = "".join(c if c.isalnum() else "_" for c in res["name"])
+        fig.savefig(os.path.join(out, f"ladder_{safe}.png"), dpi=110)
+        plt.close(fig)
+
+
+# --- main ----------------------------------------------------------------------------------------
+
+def number_list(text):
+    try:
+        out = [float(x) for x in text.split(",") if x.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected comma-separated numbers, got '{text}'")
+    if not out or any(not (x > 0 and math.isfinite(x)) for x in out):
+        raise argparse.ArgumentTypeError(f"expected positive numbers, got '{text}'")
+    return out
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("scene")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--levels", type=number_list, default=None,
+                    help="multipliers of the scene's cells per axis (default: --ratio, --count)")
+    ap.add_argument("--ratio", type=float, default=1.5)
+    ap.add_argument("--count", type=int, default=3)
+    ap.add_argument("--particles-per-cell", type=number_list, default=[])
+    ap.add_argument("--ppc-levels", type=number_list, default=[])
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--ranks", type=int, default=1)
+    ap.add_argument("--set", action="append", default=[], help="JSON merge patch over the scene")
+    ap.add_argument("--mpm", default=os.path.join(ROOT, "build", "bin", "mpm"))
+    ap.add_argument("--mpirun", default="mpirun")
+    ap.add_argument("--checkpoint-steps", type=int, default=200)
+    ap.add_argument("--runs", default=None, help="where the runs go (default OUT/runs)")
+    ap.add_argument("--table", default=None)
+    ap.add_argument("--analyse-only", action="store_true")
+    ap.add_argument("--no-plot", action="store_true")
+    args = ap.parse_args(argv)
+    args.command_line = shlex.join(["campaigns/study/ladder.py"] + argv)
+    if args.levels is None:
+        if not (args.ratio > 1 and args.count >= 1):
+            ap.error("--ratio must exceed 1 and --count be at least 1")
+        args.levels = [args.ratio ** i for i in range(args.count)]
+        args.levels = [float(f"{x:.6g}") for x in args.levels]
+    if len(set(args.levels)) != len(args.levels):
+        ap.error(f"--levels: a level is repeated: {args.levels}")
+    if any(p != int(p) or p < 1 for p in args.particles_per_cell):
+        ap.error("--particles-per-cell: expected whole numbers >= 1")
+    if args.threads < 1 or args.ranks < 1 or args.checkpoint_steps < 1:
+        ap.error("--threads, --ranks and --checkpoint-steps must be at least 1")
+    try:
+        scene = load_resolved(args.scene)
+        for s in args.set:
+            scene = merge_patch(scene, json.loads(s))
+        scene["grid"]["cells"], scene["grid"]["lower"], scene["grid"]["upper"]
+        scene["time"]["max_time"]
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        print(f"ladder: {args.scene}: cannot read the scene's grid (/grid/cells, /grid/lower, "
+              f"/grid/upper) and /time/max_time: {e}", file=sys.stderr)
+        return 2
+    if not args.analyse_only and not os.access(args.mpm, os.X_OK):
+        print(f"ladder: --mpm {args.mpm}: not an executable (build it: cmake --build build)",
+              file=sys.stderr)
+        return 1
+    rod = taylor_rod(scene)
+    observables = observables_of(scene, rod)
+    os.makedirs(os.path.join(args.out, "scenes"), exist_ok=True)
+    runs_root = args.runs or os.path.join(args.out, "runs")
+    os.makedirs(runs_root, exist_ok=True)
+    plan = [(lv, None) for lv in sorted(args.levels)]
+    plan += [(lv, int(p)) for lv in sorted(args.ppc_levels) for p in args.particles_per_cell]
+    runs, failed = [], []
+    for level, ppc in plan:
+        name = run_name(level, ppc)
+        scene_path = os.path.join(args.out, "scenes", name + ".json")
+        text = write_level_scene(scene_path, args.scene, scene, level, ppc, args.checkpoint_steps,
+                                 rod)
+        run_dir = os.path.join(runs_root, name)
+        if not args.analyse_only and not finished(run_dir, text):
+            try:
+                code = run_level(args, scene_path, text, run_dir)
+            except KeyboardInterrupt:
+                print("ladder: interrupted; run the same command again to resume", file=sys.stderr)
+                return 130
+            if code != 0:
+                failed.append(f"{name} (exit {code}; {run_dir}/ladder.log)")
+                print(f"ladder: {name} failed with exit {code}", file=sys.stderr)
+        cells = level_cells(scene, level)
+        runs.append({"name": name, "level": level, "ppc": ppc, "cells": cells,
+                     "scene_path": scene_path,
+                     "h": representative_h(scene, cells),
+                     "data": read_run(run_dir, scene, rod, observables)})
+    for r in runs:  # runs made before summary.json carried the fingerprint: ask mpm check
+        if r["data"] and not r["data"]["fingerprint"]:
+            r["data"]["fingerprint"] = fingerprint_of(args, r["scene_path"])
+    result = analyse(runs, observables)
+    write_outputs(args, args.scene, runs, observables, result, not args.no_plot)
+    print(f"ladder: {os.path.join(args.out, 'ladder.md')}" + (f", table {args.table}"
+                                                                if args.table else ""))
+    if failed:
+        print("ladder: failed: " + ", ".join(failed), file=sys.stderr)
+        return 3
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""The GCI arithmetic (campaigns/study/gci.py) against the worked example of Celik et al. (2008),
+J. Fluids Eng. 130, 078001, Table 1 (three 2D grids of a backward-facing step: the reattachment
+length, and the axial velocity at x/H = 8 at y = 0.0526 and at y = 0.8105; the third converges
+oscillatorily), to the digits the table gives; and against a closed form phi = phi0 + C h^p on
+unequal ratios, where the procedure must return p and phi0 to round-off."""
+
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                                "campaigns", "study"))
+import gci  # noqa: E402
+
+failures = []
+
+
+def check(what, got, want, digits):
+    """got rounded to `digits` decimals must equal want (the table's printed value)."""
+    if got is None or round(got, digits) != round(want, digits):
+        failures.append(f"{what}: {got} (want {want} to {digits} decimals)")
+
+
+# Celik et al. (2008) Table 1: N1, N2, N3 cells of a 2D grid; phi1, phi2, phi3; then the table's
+# p, phi_ext21, e_a21 [%], e_ext21 [%], GCI_fine21 [%] as printed.
+TABLE1 = [
+    ("reattachment length", (18000, 8000, 4500), (6.063, 5.972, 5.863),
+     dict(p=(1.53, 2), ext=(6.1685, 4), e_a=(1.5, 1), e_ext=(1.7, 1), gci=(2.2, 1))),
+    ("axial velocity, y = 0.0526", (18000, 4500, 980), (10.7880, 10.7250, 10.6050),
+     dict(p=(0.75, 2), ext=(10.8801, 4), e_a=(0.6, 1), gci=(1.1, 1))),
+    ("axial velocity, y = 0.8105", (18000, 4500, 980), (6.0042, 5.9624, 6.0909),
+     dict(p=(1.51, 2), ext=(6.0269, 4), e_a=(0.7, 1), e_ext=(0.4, 1), gci=(0.5, 1))),
+]
+for name, cells, phi, want in TABLE1:
+    h = [gci.representative_h(1.0, n, 2) for n in cells]
+    t = gci.gci_triple(phi, h)
+    check(f"{name}: r21", t["r21"], cells and math.sqrt(cells[0] / cells[1]), 12)
+    check(f"{name}: p", t["order"], *want["p"])
+    check(f"{name}: phi_ext21", t["extrapolated"], *want["ext"])
+    check(f"{name}: e_a21 [%]", 100 * t["e_a"], *want["e_a"])
+    if "e_ext" in want:
+        check(f"{name}: e_ext21 [%]", 100 * t["e_ext"], *want["e_ext"])
+    check(f"{name}: GCI_fine21 [%]", 100 * t["gci_fine"], *want["gci"])
+# The table's r32 (1.333 and 2.143, three decimals) and the convergence conditions.
+check("r32 of column 1", gci.representative_h(1, 4500, 2) / gci.representative_h(1, 8000, 2),
+      1.333, 3)
+check("r32 of columns 2-3", gci.representative_h(1, 980, 2) / gci.representative_h(1, 4500, 2),
+      2.143, 3)
+conditions = [gci.convergence_condition(*phi) for _, _, phi, _ in TABLE1]
+if conditions != ["monotonic", "monotonic", "oscillatory"]:
+    failures.append(f"conditions {conditions}")
+
+# Closed form on unequal ratios: phi = 2 - 0.3 h^p for p = 0.8, 1, 2.3; h = 1, 1/1.5, 1/2.25, 1/3.
+for p in (0.8, 1.0, 2.3):
+    hs = [1 / 3, 1 / 2.25, 1 / 1.5, 1.0]
+    vals = [2.0 - 0.3 * x ** p for x in hs]
+    for tri in gci.ladder(vals, hs):
+        if abs(tri["order"] - p) > 1e-9 * p or abs(tri["extrapolated"] - 2.0) > 1e-12:
+            failures.append(f"closed form p = {p}: got p {tri['order']}, limit "
+                            f"{tri['extrapolated']}")
+    tris = gci.ladder(vals, hs)
+    ok, why = gci.asymptotic_check(tris[0], tris[1])
+    if ok is not True:
+        failures.append(f"closed form p = {p}: asymptotic check {ok} ({why})")
+
+# Divergence and no difference give no order; an order change across triples fails the check.
+if gci.gci_triple((1.0, 1.2, 1.3), (1, 2, 4))["order"] is not None:  # |e21| > |e32|
+    failures.append("monotonic divergence got an order")
+if gci.gci_triple((1.0, 1.0, 1.3), (1, 2, 4))["order"] is not None:
+    failures.append("e21 = 0 got an order")
+hs = [1.0, 2.0, 4.0, 8.0]
+vals = [1.0 + 0.1 * hs[0], 1.0 + 0.1 * hs[1], 1.0 + 0.1 * hs[2], 1.0 + 0.1 * hs[2] + 0.01]
+tris = gci.ladder(vals, hs)
+if gci.asymptotic_check(tris[0], tris[1])[0] is not False:
+    failures.append("a ladder whose coarse triple does not contract passed the asymptotic check")
+
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)
+print("gci_test: Celik et al. (2008) Table 1 and the closed forms reproduced")
