@@ -4,6 +4,7 @@
 //   mpm run --restart DIR [--threads N]
 //   mpm check SCENE.json [--threads N] [--set JSON]...
 //   mpm study SCENE_DIR --out DIR [--threads N] [--cases LIST] [--no-plot]
+//   mpm study --ladder LEVELS SCENE.json --out DIR [--threads N] [--ranks N] [--set JSON]...
 //   mpm plot RUN [--out FIG]
 //   mpm keys [--format md|json]
 // Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path; a refused restart),
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "campaigns/plot/run_plot.hpp"
+#include "campaigns/study/ladder_command.hpp"
 #include "campaigns/study/study.hpp"
 #include "mpm/input/scene_keys.hpp"
 #include "mpm/input/scene_reader.hpp"
@@ -102,7 +104,9 @@ int run_main(int argc, char** argv) {
   CLI::App* run = app.add_subcommand("run", "run a scene to its end time");
   CLI::App* check = app.add_subcommand("check", "validate a scene; particles, mass, memory");
   CLI::App* study =
-      app.add_subcommand("study", "the report's Table 2 study: every case of a folder");
+      app.add_subcommand("study",
+                         "the report's Table 2 study: every case of a folder; or --ladder: one "
+                         "scene at several resolutions, with error bars");
   CLI::App* plot =
       app.add_subcommand("plot", "draw one run's energy books, momentum and observables");
   CLI::App* keys = app.add_subcommand("keys", "list the scene keys: type, range, default, meaning");
@@ -127,8 +131,21 @@ int run_main(int argc, char** argv) {
                    "rank (docs/mpi.md)")
       ->type_name("N")
       ->check(CLI::PositiveNumber);
-  study->add_option("SCENE_DIR", scene_file, "folder of case*.json (+ recommended.json)")
+  study
+      ->add_option("SCENE_DIR", scene_file,
+                   "folder of case*.json (+ recommended.json); with --ladder a scene file")
       ->required();
+  std::string ladder_levels;
+  int ladder_ranks = 1;
+  study
+      ->add_option("--ladder", ladder_levels,
+                   "a grid-convergence ladder of the scene SCENE_DIR names: its cells times each "
+                   "level per axis, observed order, Richardson value and GCI per observable "
+                   "(campaigns/study/ladder.py; docs/accuracy.md#grid-convergence-ladders)")
+      ->type_name("L1,L2,...");
+  study->add_option("--ranks", ladder_ranks, "with --ladder: every level under mpirun -np N")
+      ->type_name("N")
+      ->check(CLI::PositiveNumber);
   run->add_option("-o,--out", options.out_dir, "output directory")->type_name("DIR");
   study->add_option("-o,--out", options.out_dir, "output directory (one folder per case)")
       ->type_name("DIR")
@@ -192,7 +209,20 @@ int run_main(int argc, char** argv) {
   std::vector<impact::Json> patches;
   try {
     patches = impact::cli::patches_of(set_texts);
+    if (study->parsed() && !ladder_levels.empty()) {
+      if (!cases.empty()) return usage_error("study --ladder runs one scene: no --cases");
+      impact::mpm::LadderOptions ladder;
+      ladder.scene_file = scene_file;
+      ladder.out_dir = options.out_dir;
+      ladder.levels = ladder_levels;
+      ladder.threads = study_options.threads;
+      ladder.ranks = ladder_ranks;
+      ladder.set_texts = set_texts;
+      ladder.plot = !no_plot;
+      return impact::mpm::run_ladder(ladder);
+    }
     if (study->parsed()) {
+      if (ladder_ranks != 1) return usage_error("study: --ranks goes with --ladder");
       study_options.patches = patches;
       study_options.scene_dir = scene_file;
       study_options.out_dir = options.out_dir;

@@ -562,8 +562,15 @@ def number_list(text):
     return out
 
 
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # a usage error exits 1 (argparse's 2 is our input error)
+        self.print_usage(sys.stderr)
+        print(f"ladder: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = Parser(prog="ladder.py", description=__doc__.split("\n")[0])
     ap.add_argument("scene")
     ap.add_argument("--out", required=True)
     ap.add_argument("--levels", type=number_list, default=None,
@@ -595,6 +602,11 @@ def main(argv):
         ap.error("--particles-per-cell: expected whole numbers >= 1")
     if args.threads < 1 or args.ranks < 1 or args.checkpoint_steps < 1:
         ap.error("--threads, --ranks and --checkpoint-steps must be at least 1")
+    if not os.path.isfile(args.scene):
+        print(f"ladder: {args.scene}: expected a scene file (JSON), "
+              f"{'got a directory' if os.path.isdir(args.scene) else 'no such file'}",
+              file=sys.stderr)
+        return 2
     try:
         scene = load_resolved(args.scene)
         for s in args.set:

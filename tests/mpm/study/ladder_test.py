@@ -112,6 +112,15 @@ def main():
                             + resumed.stdout)
         if after != before:
             failures.append(f"resumed x2 {after} != uninterrupted {before}")
+        # `mpm study --ladder` is the same command: one level, the same values as the script's x1.
+        via_mpm = os.path.join(tmp, "via_mpm")
+        subprocess.run([mpm, "study", "--ladder", "1", SCENE, "--out", via_mpm, "--threads", "2",
+                        "--no-plot"], check=True)
+        with open(os.path.join(via_mpm, "ladder.csv"), newline="") as f:
+            mine = {r["observable"]: r["value"] for r in csv.DictReader(f) if r["run"] == "x1"}
+        script = {r["observable"]: r["value"] for r in rows if r["run"] == "x1"}
+        if mine != script:
+            failures.append(f"mpm study --ladder x1 {mine} != ladder.py x1 {script}")
     if failures:
         print("\n".join(failures))
         return 1
