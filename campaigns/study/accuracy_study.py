@@ -35,6 +35,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import gci  # noqa: E402
 BASE = os.path.join(ROOT, "data", "scenes", "sphere_cylinder", "recommended.json")
 BASE_CELLS = (50, 20, 20)
 METHODS = [("gimp", "musl"), ("gimp", "usl"), ("linear", "musl"), ("linear", "usl")]
@@ -197,18 +199,16 @@ def interp(xs, ys, x):
 
 def richardson(values, levels):
     """Three levels h1 > h2 > h3 (h = 1/level), values f1, f2, f3: the observed order p and the
-    extrapolated value when the differences keep their sign and shrink (monotone convergence)."""
+    extrapolated value when the differences keep their sign and shrink (monotone convergence) and
+    the two refinement ratios are equal (this study's triples; campaigns/study/gci.py's
+    arithmetic, Celik et al. 2008)."""
     (f1, f2, f3), (r1, r2, r3) = values, levels
-    d1, d2 = f2 - f1, f3 - f2
-    if d1 == 0 or d2 == 0 or (d1 > 0) != (d2 > 0) or abs(d2) >= abs(d1):
+    if abs(r2 / r1 - r3 / r2) > 1e-9:
         return None
-    # Equal refinement ratios only (r2/r1 == r3/r2) give the closed form; otherwise skip.
-    q1, q2 = r2 / r1, r3 / r2
-    if abs(q1 - q2) > 1e-9:
+    t = gci.gci_triple((f3, f2, f1), (1.0 / r3, 1.0 / r2, 1.0 / r1))
+    if t["condition"] != "monotonic" or t["order"] is None:
         return None
-    p = math.log(abs(d1 / d2)) / math.log(q1)
-    f = f3 + d2 / (q1 ** p - 1.0)
-    return p, f
+    return t["order"], t["extrapolated"]
 
 
 def equal_ratio_triples(ref_runs):

@@ -45,9 +45,16 @@ def convergence_condition(phi1, phi2, phi3):
 
 
 def observed_order(phi1, phi2, phi3, r21, r32, tolerance=1e-14, iterations=200):
-    """p of Celik et al. (2008) eqs. 3a-3c for a converging triple (else None). Fixed-point
-    iteration from q = 0 (exact in one step when r21 = r32); where it does not settle, bisection on
-    the same equation, p in (0, 50]."""
+    """p of Celik et al. (2008) eqs. 3a-3c for a converging triple, else None.
+
+    Monotonic (s = 1): the root of p ln r21 = ln|e32/e21| + q(p), which is the power law
+    phi = phi0 + C h^p through the three points; found by bisection on a bracket from a scan of
+    p in [1e-4, 50] (the smallest root). Celik's fixed-point form, with the absolute value, can
+    settle on a spurious root where ln|e32/e21| + q(p) < 0, or cycle, when r21 and r32 differ
+    much; where no power law passes through the points (e.g. r32 > r21 with nearly equal
+    differences) there is no order.
+    Oscillatory (s = -1): Celik's fixed point from q = 0, the same scan and bisection where it
+    does not settle."""
     e21, e32 = phi2 - phi1, phi3 - phi2
     if convergence_condition(phi1, phi2, phi3) not in ("monotonic", "oscillatory"):
         return None
@@ -60,36 +67,46 @@ def observed_order(phi1, phi2, phi3, r21, r32, tolerance=1e-14, iterations=200):
     def update(p):
         return abs(log_ratio + q(p)) / math.log(r21)
 
-    p = abs(log_ratio) / math.log(r21)  # the first guess q = 0 (Celik et al. 2008)
-    for _ in range(iterations):
-        try:
-            nxt = update(p)
-        except (ValueError, ZeroDivisionError, OverflowError):
-            break
-        if abs(nxt - p) <= tolerance * max(1.0, abs(p)):
-            return nxt
-        p = nxt
-
     def residual(p):
+        if s > 0:
+            return p * math.log(r21) - (log_ratio + q(p))
         return p - update(p)
 
-    lo, hi = 1e-6, 50.0
-    try:
-        flo, fhi = residual(lo), residual(hi)
-    except (ValueError, ZeroDivisionError, OverflowError):
-        return None
-    if flo * fhi > 0:
-        return None
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        fm = residual(mid)
-        if (fm > 0) == (flo > 0):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-        if hi - lo <= tolerance * hi:
-            break
-    return 0.5 * (lo + hi)
+    if s < 0:
+        p = abs(log_ratio) / math.log(r21)  # the first guess q = 0 (Celik et al. 2008)
+        for _ in range(iterations):
+            try:
+                nxt = update(p)
+            except (ValueError, ZeroDivisionError, OverflowError):
+                break
+            if abs(nxt - p) <= tolerance * max(1.0, abs(p)):
+                return nxt
+            p = nxt
+
+    grid = [1e-4 * (5e5 ** (i / 800.0)) for i in range(801)]  # 1e-4 to 50, geometric
+    previous = None
+    for hi in grid:
+        try:
+            fhi = residual(hi)
+        except (ValueError, ZeroDivisionError, OverflowError):
+            previous = None
+            continue
+        if fhi == 0.0:
+            return hi
+        if previous is not None and (previous[1] > 0) != (fhi > 0):
+            lo, flo = previous
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                fm = residual(mid)
+                if (fm > 0) == (flo > 0):
+                    lo, flo = mid, fm
+                else:
+                    hi = mid
+                if hi - lo <= tolerance * hi:
+                    break
+            return 0.5 * (lo + hi)
+        previous = (hi, fhi)
+    return None
 
 
 def gci_triple(phi, h, safety_factor=SAFETY_FACTOR):

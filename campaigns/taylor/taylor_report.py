@@ -21,6 +21,7 @@ import sys
 from collections import defaultdict
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
+import gci  # noqa: E402
 import vtu  # noqa: E402
 
 CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
@@ -68,32 +69,14 @@ def error_stats(errors):
 
 def richardson(levels, values):
     """Richardson extrapolation from three resolutions (cells per radius n1 < n2 < n3, the values
-    f1, f2, f3): (p, f_ext), the observed order and the extrapolated value, or None when the
-    differences change sign (oscillatory) or do not shrink (no observed order > 0).
-
-    With h = 1 / n, r21 = n3 / n2, r32 = n2 / n1, e21 = f3 - f2, e32 = f2 - f1, the order solves
-    p = |ln|e32 / e21| + q(p)| / ln r21, q(p) = ln((r21^p - 1) / (r32^p - 1)) (monotone case),
-    by fixed-point iteration; for a constant ratio r, q = 0 and
-    p = ln((f1 - f2) / (f2 - f3)) / ln r.
-    Then f_ext = f3 + (f3 - f2) / (r21^p - 1) (Roache 1998; Celik et al. 2008, eqs. 3-4)."""
+    f1, f2, f3): (p, f_ext), the observed order and the extrapolated value, or None unless the
+    three converge monotonically (differences of one sign that shrink). The arithmetic is
+    campaigns/study/gci.py's (Celik et al. 2008, eqs. 3-4, h = 1 / n: unequal ratios solved)."""
     (n1, n2, n3), (f1, f2, f3) = levels, values
-    r21, r32 = n3 / n2, n2 / n1
-    e21, e32 = f3 - f2, f2 - f1
-    if e21 == 0.0 or e32 == 0.0 or (e21 > 0.0) != (e32 > 0.0):
+    t = gci.gci_triple((f3, f2, f1), (1.0 / n3, 1.0 / n2, 1.0 / n1))
+    if t["condition"] != "monotonic" or t["order"] is None:
         return None
-    p = math.log(abs(e32 / e21)) / math.log(r21)
-    for _ in range(200):
-        if p <= 0.0:
-            return None
-        q = math.log((r21 ** p - 1.0) / (r32 ** p - 1.0))
-        p_next = abs(math.log(abs(e32 / e21)) + q) / math.log(r21)
-        if abs(p_next - p) < 1e-12:
-            p = p_next
-            break
-        p = p_next
-    if not p > 0.0:
-        return None
-    return p, f3 + e21 / (r21 ** p - 1.0)
+    return t["order"], t["extrapolated"]
 
 
 def group(rows, *keys):

@@ -64,6 +64,19 @@ for p in (0.8, 1.0, 2.3):
     if ok is not True:
         failures.append(f"closed form p = {p}: asymptotic check {ok} ({why})")
 
+# Ratios far apart (r21 = 1.2, r32 = 1.67), where Celik's fixed point cycles or settles on the
+# spurious root of its absolute value: the order is still the power law's through the points.
+for p in (0.5, 1.0, 4.2):
+    hs = [1 / 6, 1 / 5, 1 / 3]
+    tri = gci.gci_triple(tuple(0.43 + 0.9 * x ** p for x in hs), tuple(hs))
+    if tri["order"] is None or abs(tri["order"] - p) > 1e-9 * p or abs(
+            tri["extrapolated"] - 0.43) > 1e-11:
+        failures.append(f"ratios 1.2 and 1.67, p = {p}: got {tri['order']}, "
+                        f"{tri['extrapolated']}")
+# No power law passes through these (r32 = 4 > r21 = 2, differences nearly equal): no order.
+if gci.gci_triple((0.655, 0.381, 0.093), (1 / 24, 1 / 12, 1 / 3))["order"] is not None:
+    failures.append("an order where no power law passes through the points")
+
 # Divergence and no difference give no order; an order change across triples fails the check.
 if gci.gci_triple((1.0, 1.2, 1.3), (1, 2, 4))["order"] is not None:  # |e21| > |e32|
     failures.append("monotonic divergence got an order")
