@@ -8,16 +8,21 @@ Notation as in Celik et al. (2008), grid 1 the finest:
   h_i        representative cell size, h = (volume / cells)^(1/D)  (their eq. 1)
   r21, r32   refinement ratios h2/h1, h3/h2 (need not be equal)
   e21, e32   phi2 - phi1, phi3 - phi2
-  p          observed order, from the fixed point of their eqs. 3a-3c:
+  p          observed order, their eqs. 3a-3c:
                p = |ln|e32/e21| + q(p)| / ln r21,  q(p) = ln((r21^p - s) / (r32^p - s)),
-               s = sign(e32/e21)
+               s = sign(e32/e21); solved without the absolute value for s = 1 (observed_order)
   phi_ext    (r21^p phi1 - phi2) / (r21^p - 1)  (eq. 4)
   e_a        |(phi1 - phi2) / phi1|, e_ext = |(phi_ext - phi1) / phi_ext|  (eq. 5)
   GCI_fine   Fs e_a / (r21^p - 1), Fs = 1.25 for three grids  (eq. 6)
-The convergence condition follows the ratio R = e21/e32 (Stern, Wilson, Coleman & Paterson 2001,
-J. Fluids Eng. 123, 793): 0 < R < 1 monotonic convergence, -1 < R < 0 oscillatory convergence
-(Celik et al. flag it by e32/e21 < 0 and keep s = -1 in q), |R| >= 1 divergence (no order, no
-extrapolation, no GCI), e21 = 0 or e32 = 0 none either (the grids do not resolve a difference).
+The convergence condition follows the ratio R = e21/e32 of Stern, Wilson, Coleman & Paterson
+(2001, J. Fluids Eng. 123, 793), taken per unit log-ratio for unequal refinement,
+R* = (e21 / ln r21) / (e32 / ln r32) (= R for equal ratios): 0 < R* < 1 monotonic convergence
+(exactly when a power law phi0 + C h^p, p > 0, passes through the three points), -1 < R* < 0
+oscillatory convergence (Celik et al. flag it by e32/e21 < 0 and keep s = -1 in q; no power
+law is behind it, and Stern et al. bound its error by half the range of the three solutions),
+|R*| >= 1 divergence (no order, no extrapolation, no GCI), e21 = 0 or e32 = 0 none either.
+The monotonic order is the power law's (observed_order); the conservative GCI of Oberkampf & Roy
+(2010) is given beside Celik's (conservative_gci).
 """
 
 import math
@@ -30,13 +35,18 @@ def representative_h(volume, cells, dimension):
     return (volume / cells) ** (1.0 / dimension)
 
 
-def convergence_condition(phi1, phi2, phi3):
+def convergence_condition(phi1, phi2, phi3, r21=None, r32=None):
     """'monotonic', 'oscillatory', 'monotonic divergence', 'oscillatory divergence' or
-    'no difference' (e21 or e32 zero), from R = e21/e32 (module docstring)."""
+    'no difference' (e21 or e32 zero), from R* = (e21 / ln r21) / (e32 / ln r32) (module
+    docstring). With equal ratios (or none given) R* is Stern et al.'s R = e21/e32; with unequal
+    ones 0 < R* < 1 is exactly the condition that a power law phi0 + C h^p with p > 0 passes
+    through the three points (e32/e21 > ln r32 / ln r21)."""
     e21, e32 = phi2 - phi1, phi3 - phi2
     if e21 == 0.0 or e32 == 0.0:
         return "no difference"
     ratio = e21 / e32
+    if r21 is not None and r32 is not None:
+        ratio *= math.log(r32) / math.log(r21)
     if 0.0 < ratio < 1.0:
         return "monotonic"
     if -1.0 < ratio < 0.0:
@@ -48,15 +58,16 @@ def observed_order(phi1, phi2, phi3, r21, r32, tolerance=1e-14, iterations=200):
     """p of Celik et al. (2008) eqs. 3a-3c for a converging triple, else None.
 
     Monotonic (s = 1): the root of p ln r21 = ln|e32/e21| + q(p), which is the power law
-    phi = phi0 + C h^p through the three points; found by bisection on a bracket from a scan of
-    p in [1e-4, 50] (the smallest root). Celik's fixed-point form, with the absolute value, can
+    phi = phi0 + C h^p through the three points. The right side minus the left rises strictly
+    with p from ln(e32/e21) - ln(ln r32 / ln r21), so the root is unique and exists exactly when
+    the condition is monotonic (convergence_condition with the ratios); it is bracketed by a scan
+    of p in [1e-4, 50] and bisected. Celik's fixed-point form, with the absolute value, can
     settle on a spurious root where ln|e32/e21| + q(p) < 0, or cycle, when r21 and r32 differ
-    much; where no power law passes through the points (e.g. r32 > r21 with nearly equal
-    differences) there is no order.
+    much.
     Oscillatory (s = -1): Celik's fixed point from q = 0, the same scan and bisection where it
     does not settle."""
     e21, e32 = phi2 - phi1, phi3 - phi2
-    if convergence_condition(phi1, phi2, phi3) not in ("monotonic", "oscillatory"):
+    if convergence_condition(phi1, phi2, phi3, r21, r32) not in ("monotonic", "oscillatory"):
         return None
     s = 1.0 if e32 / e21 > 0 else -1.0
     log_ratio = math.log(abs(e32 / e21))
@@ -118,9 +129,14 @@ def gci_triple(phi, h, safety_factor=SAFETY_FACTOR):
     if not h1 < h2 < h3:
         raise ValueError(f"gci_triple: h must grow from the finest grid: {h}")
     r21, r32 = h2 / h1, h3 / h2
-    out = {"r21": r21, "r32": r32, "condition": convergence_condition(phi1, phi2, phi3),
+    out = {"r21": r21, "r32": r32,
+           "condition": convergence_condition(phi1, phi2, phi3, r21, r32),
            "order": None, "extrapolated": None, "e_a": None, "e_ext": None, "gci_fine": None,
-           "gci_medium": None}
+           "gci_medium": None, "gci_conservative": None, "phi1": phi1,
+           # Oscillatory: no power law behind it; Stern et al. (2001) bound the error by half the
+           # range of the three solutions, relative to phi1.
+           "oscillation_band": (0.5 * (max(phi) - min(phi)) / abs(phi1)
+                                if phi1 != 0.0 else None)}
     p = observed_order(phi1, phi2, phi3, r21, r32)
     if p is None or p <= 0.0:
         return out
@@ -134,13 +150,28 @@ def gci_triple(phi, h, safety_factor=SAFETY_FACTOR):
         out["e_ext"] = abs((ext - phi1) / ext)
     if phi2 != 0.0:
         out["gci_medium"] = safety_factor * abs((phi2 - phi3) / phi2) / (r32 ** p - 1.0)
+    if phi1 != 0.0:
+        out["gci_conservative"] = conservative_gci(out["e_a"], r21, p)
     return out
+
+
+FORMAL_ORDER = 1.0  # explicit MPM on shocks, contact and plasticity: first order at best
+
+
+def conservative_gci(e_a, r21, p, formal_order=FORMAL_ORDER):
+    """The GCI of Roache (1998) as Oberkampf & Roy (2010, sec. 8.7) recommend it when the observed
+    order p is more than 10 % from the formal one: safety factor 3 and the order limited to
+    min(max(0.5, p), formal); within 10 % it is Celik's GCI_fine with Fs = 1.25."""
+    if abs(p - formal_order) <= 0.1 * formal_order:
+        return SAFETY_FACTOR * e_a / (r21 ** p - 1.0)
+    used = min(max(0.5, p), formal_order)
+    return 3.0 * e_a / (r21 ** used - 1.0)
 
 
 def ladder(values, h, safety_factor=SAFETY_FACTOR):
     """Every consecutive triple of a ladder (values and h ordered from the finest grid), finest
-    triple first: [gci_triple(...) | {'levels': (i, i+1, i+2)}]. Levels whose value is None are
-    skipped (a failed run)."""
+    triple first: gci_triple(...) plus 'h', the triple's three cell sizes. Levels whose value is
+    None are skipped (a failed run)."""
     pairs = [(v, x) for v, x in zip(values, h) if v is not None and math.isfinite(v)]
     out = []
     for i in range(len(pairs) - 2):
@@ -152,12 +183,12 @@ def ladder(values, h, safety_factor=SAFETY_FACTOR):
 
 
 def asymptotic_check(finest, next_coarser):
-    """Whether the finest triple lies in the asymptotic range, judged against the next coarser
-    triple (the one sharing its two coarser grids): both converge monotonically with orders within
-    25 % of each other, and the coarser triple's extrapolation lies within the finest triple's
-    band phi_ext +- GCI_fine |phi1|. (Within one triple Roache's ratio GCI_32 / (r21^p GCI_21)
-    equals phi1/phi2 identically, so it cannot tell; two triples can.) Returns (bool or None,
-    reason)."""
+    """A consistency test of the finest triple against the next coarser one (which shares its two
+    coarser grids, so this is not independent evidence): both converge monotonically, their
+    orders agree within 25 % (a heuristic of this project, not from the literature), and the
+    coarser triple's extrapolation lies within the finest triple's band phi1 +- GCI_fine |phi1|.
+    (Within one monotonic triple Roache's ratio GCI_32 / (r21^p GCI_21) equals |phi1/phi2|
+    identically, so it cannot tell; two triples can.) Returns (bool or None, reason)."""
     if next_coarser is None:
         return None, "one triple only: a fourth level is needed to tell"
     a, b = finest, next_coarser
@@ -167,8 +198,10 @@ def asymptotic_check(finest, next_coarser):
         return False, "no observed order"
     if abs(a["order"] - b["order"]) > 0.25 * max(a["order"], b["order"]):
         return False, f"orders {b['order']:.2f} then {a['order']:.2f} differ by more than 25 %"
-    band = a["gci_fine"] * abs(a["extrapolated"]) if a["gci_fine"] is not None else 0.0
-    if abs(a["extrapolated"] - b["extrapolated"]) > band:
-        return False, (f"extrapolations {b['extrapolated']:.6g} then {a['extrapolated']:.6g} "
-                       f"differ by more than the GCI band")
-    return True, "orders agree within 25 % and the extrapolations within the GCI band"
+    if a["gci_fine"] is None or a.get("phi1") is None:
+        return False, "no GCI band"
+    band = a["gci_fine"] * abs(a["phi1"])
+    if abs(b["extrapolated"] - a["phi1"]) > band:
+        return False, (f"the coarser triple's extrapolation {b['extrapolated']:.6g} lies outside "
+                       f"the band {a['phi1']:.6g} +- {band:.3g}")
+    return True, "orders agree within 25 % and the coarser extrapolation lies in the GCI band"

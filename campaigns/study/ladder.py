@@ -116,12 +116,26 @@ def run_name(level, ppc=None):
     return f"x{level:g}" + (f"_p{ppc}" if ppc is not None else "")
 
 
-def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod):
+def overlay(base, top):
+    """top over base, key by key, keeping top's nulls (they are merge-patch deletions for mpm)."""
+    if not isinstance(base, dict) or not isinstance(top, dict):
+        return top
+    out = dict(top)
+    for k, v in base.items():
+        out[k] = overlay(v, top[k]) if k in top else v
+    return {k: out[k] for k in list(top) + [k for k in base if k not in top]}
+
+
+def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod, sets=()):
+    """The level's scene file: `extends` SCENE, the --set patches (SETS, parsed) merged into the
+    file itself, and the level's own keys over them (so a --set cannot change a level's cells,
+    snapshots or particles per cell, and the file, which is the resume marker, records the
+    patches). Returns its text."""
     cells = level_cells(scene, level)
     output = {"snapshots": False, "checkpoint_interval_steps": checkpoint_steps,
               "directory": None}
-    if rod is not None:  # Lf and Dm come from the first and last snapshots
-        output.update({"snapshots": True, "interval": scene["time"]["max_time"]})
+    if rod is not None:  # Lf and Dm come from the first and last snapshots (at the scene's
+        output["snapshots"] = True  # output.interval, which also sets the history rows)
     patch = {"extends": os.path.abspath(scene_file),
              "description": f"{os.path.basename(scene_file)} at {level:g} x the cells per axis "
              f"({' x '.join(map(str, cells))})" + (f", {ppc} particles per cell per axis"
@@ -131,6 +145,12 @@ def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod
     if ppc is not None:
         patch["objects"] = {n: {"particles_per_cell": [ppc] * dimension(scene)}
                             for n in scene["objects"]}
+    combined = {}
+    for one in sets:
+        combined = merge_patch(combined, one)
+    combined.pop("extends", None)
+    if combined:
+        patch = overlay(combined, patch)
     text = json.dumps(patch, indent=1) + "\n"
     old = open(path).read() if os.path.exists(path) else None
     if old != text:
@@ -152,27 +172,34 @@ def finished(run_dir, scene_text):
 
 
 def run_level(args, scene_path, scene_text, run_dir):
-    """Runs (or resumes) one level; returns mpm's exit code."""
+    """Runs (or resumes) one level; returns mpm's exit code. A checkpoint is resumed only when
+    the marker (the level scene's text, written before the run starts and after the previous
+    run's checkpoint and summary are gone) matches this level's scene."""
     os.makedirs(run_dir, exist_ok=True)
     marker = os.path.join(run_dir, "ladder_scene.json")
     resumable = (os.path.exists(os.path.join(run_dir, "checkpoint.bin"))
                  and os.path.exists(marker) and open(marker).read() == scene_text)
     prefix = [args.mpirun, "-np", str(args.ranks)] if args.ranks > 1 else []
-    common = ["--threads", str(args.threads), "-q"] + [x for s in args.set for x in ("--set", s)]
     if resumable:
         cmd = prefix + [args.mpm, "run", "--restart", run_dir, "--threads", str(args.threads),
                         "-q"]
     else:
+        for stale in ("ladder_scene.json", "checkpoint.bin", "summary.json"):
+            if os.path.exists(os.path.join(run_dir, stale)):
+                os.remove(os.path.join(run_dir, stale))
         with open(marker, "w") as f:
             f.write(scene_text)
-        cmd = prefix + [args.mpm, "run", scene_path, "--out", run_dir, "--overwrite"] + common
+        cmd = prefix + [args.mpm, "run", scene_path, "--out", run_dir, "--overwrite",
+                        "--threads", str(args.threads), "-q"]
     print(f"ladder: {'resuming' if resumable else 'running'} {os.path.basename(run_dir)}: "
           f"{shlex.join(cmd)}", flush=True)
     with open(os.path.join(run_dir, "ladder.log"), "a") as log:
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
+        # Its own session: Ctrl-C reaches the ladder only, which passes on exactly one SIGINT
+        # (mpm then writes its checkpoint; a second one would kill it outright).
+        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
         try:
             return proc.wait()
-        except KeyboardInterrupt:  # mpm writes its checkpoint on SIGINT; wait for it
+        except KeyboardInterrupt:
             proc.send_signal(signal.SIGINT)
             proc.wait()
             raise
@@ -183,8 +210,7 @@ def fingerprint_of(args, scene_path):
     summary.json), from --mpm or else this tree's build; None when neither knows the option."""
     for mpm in (args.mpm, os.path.join(ROOT, "build", "bin", "mpm")):
         try:
-            done = subprocess.run([mpm, "check", scene_path, "--fingerprint"]
-                                  + [x for s in args.set for x in ("--set", s)],
+            done = subprocess.run([mpm, "check", scene_path, "--fingerprint"],
                                   capture_output=True, text=True, timeout=600)
         except OSError:
             continue
@@ -235,7 +261,7 @@ def gauge_peaks(run_dir):
 def taylor_measures(run_dir, scene, rod):
     """Lf and Dm [m] of the rod from the first and last snapshots (campaigns/taylor/taylor.py's
     measures, with the seed offsets read from the first snapshot: exact at t = 0)."""
-    import numpy as np  # noqa: F401 (vtu needs it)
+    import numpy as np
     import vtu
     name, obj = rod
     snaps = vtu.snapshots(run_dir)
@@ -252,10 +278,20 @@ def taylor_measures(run_dir, scene, rod):
                                                       + (p[:, 2] - axis[2]) ** 2) ** 0.5
 
     X0, x = first["points"][mine], last["points"][mine]
+    # The anvil is the grid's x- face; a rod that bounced off a `wall` anvil is measured from
+    # its impact face where it lay at its lowest over the snapshots (taylor.py's face_lift).
+    anvil = scene["grid"]["lower"][0]
+    face_lift = 0.0
+    if scene["grid"].get("boundary", {}).get("x-") == "wall":
+        lowest = min(vtu.read_vtu(f)["points"][mine][:, 0].min() for _, f in snaps)
+        face_lift = float(x[:, 0].min() - lowest)
+    x = x - np.array([anvil + face_lift, 0.0, 0.0])
     axial = g["top"][0] - X0[:, 0].max()
     radial = g["radius"] - radius(X0).max()
-    Lf = x[:, 0].max() - g["bottom"][0] + axial
-    near = x[:, 0] < g["bottom"][0] + ANVIL_LAYER
+    Lf = x[:, 0].max() + axial
+    near = x[:, 0] < ANVIL_LAYER
+    if not near.any():
+        raise ValueError("no particle of the rod within 0.5 mm of the anvil")
     Dm = 2.0 * (radius(x[near]).max() + radial)
     return float(Lf), float(Dm)
 
@@ -276,7 +312,9 @@ def observables_of(scene, rod):
         c = max(range(len(v)), key=lambda i: abs(v[i]))
         out.append((f"{fastest} residual velocity",
                     f"/observables/objects/{fastest}/mean_velocity [m~1s]/{c}", "m/s"))
-    for n in sorted(objects):
+    # Peak pressures, sampled at the history rows; not for a Taylor rod, whose observables are its
+    # shape (its scenes write few rows: the rows are also its snapshots).
+    for n in sorted(objects) if rod is None else []:
         out.append((f"{n} peak pressure", f"/observables/objects/{n}/max_pressure [Pa]", "Pa"))
     units = {"velocity": "m/s", "strain": "-", "pressure": "Pa"}
     for g, spec in sorted(scene.get("output", {}).get("gauges", {}).items()):
@@ -287,14 +325,12 @@ def observables_of(scene, rod):
     return out
 
 
-def read_run(run_dir, scene, rod, observables):
-    try:
-        with open(os.path.join(run_dir, "summary.json")) as f:
-            s = json.load(f)
-    except (OSError, ValueError):
+def read_run(run_dir, scene_text, scene, rod, observables):
+    """The level's observables, or None unless its run completed for this very level scene."""
+    if not finished(run_dir, scene_text):
         return None
-    if s.get("status") != "completed":
-        return None
+    with open(os.path.join(run_dir, "summary.json")) as f:
+        s = json.load(f)
     peaks = gauge_peaks(run_dir)
     values = {}
     for name, pointer, unit in observables:
@@ -337,15 +373,20 @@ def analyse(runs, observables):
         asym, why = (gci.asymptotic_check(finest, triples[1] if len(triples) > 1 else None)
                      if finest else (None, "fewer than three levels"))
         status = (finest["condition"] if finest else "fewer than three levels")
-        if finest and finest["order"] is not None:
-            status = "extrapolated" if finest["condition"] == "monotonic" else (
-                "extrapolated (oscillatory convergence)")
+        monotonic = bool(finest and finest["condition"] == "monotonic" and finest["order"])
+        if monotonic:
+            status = "extrapolated"
+        elif finest and finest["condition"] == "oscillatory":
+            status = (f"oscillatory convergence: no extrapolation; error bounded by half the "
+                      f"range, +-{100 * finest['oscillation_band']:.2g} %"
+                      if finest["oscillation_band"] is not None else "oscillatory convergence")
         result[name] = {"name": name, "path": pointer, "unit": unit,
                         "levels": [r["level"] for r in ladder_runs], "h [m]": hs, "values": vals,
                         "triples": triples, "status": status,
-                        "extrapolated": finest["extrapolated"] if finest else None,
-                        "order": finest["order"] if finest else None,
-                        "gci_fine [-]": finest["gci_fine"] if finest else None,
+                        "extrapolated": finest["extrapolated"] if monotonic else None,
+                        "order": finest["order"] if monotonic else None,
+                        "gci_fine [-]": finest["gci_fine"] if monotonic else None,
+                        "gci_conservative [-]": finest["gci_conservative"] if monotonic else None,
                         "asymptotic": asym, "asymptotic_reason": why}
     return result
 
@@ -405,8 +446,11 @@ def write_outputs(args, scene_file, runs, observables, result, plot):
             f.write(text)
     lines = [f"# Grid-convergence ladder: {table['scene']}", "",
              f"Command: `{args.command_line}` (commit {table['commit']}, {table['date']}). "
-             "Definitions: docs/accuracy.md#grid-convergence-ladders. GCI: Celik et al. (2008), "
-             f"safety factor {gci.SAFETY_FACTOR}.", "",
+             "Definitions: docs/accuracy.md#grid-convergence-ladders. GCI_fine: Celik et al. "
+             f"(2008), safety factor {gci.SAFETY_FACTOR}, a band about the finest level's value; "
+             "conservative GCI: Oberkampf & Roy (2010), safety factor 3 and the order limited to "
+             f"[0.5, {gci.FORMAL_ORDER:g}] when it is more than 10 % from the formal order "
+             f"{gci.FORMAL_ORDER:g}.", "",
              "| level | cells | h [m] | particles | steps | particle-steps | wall [s] | threads x ranks "
              "| energy_error |", "|---|---|---|---|---|---|---|---|---|"]
     for lv in table["levels"]:
@@ -415,19 +459,21 @@ def write_outputs(args, scene_file, runs, observables, result, plot):
                      f"{fmt(float(lv['particle_steps']), 3)} | {fmt(lv['wall_time [s]'], 4)} | "
                      f"{lv['threads']} x {lv['ranks']} | {fmt(lv['energy_error [-]'], 3)} |")
     lines += ["", "| observable | " + " | ".join(f"x{lv['level']:g}" for lv in table["levels"])
-              + " | extrapolated | order p | GCI_fine (finest) | x1 error vs extrapolated | "
-              "status | asymptotic range |",
-              "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|"]
+              + " | extrapolated | order p | GCI_fine (finest) | conservative GCI | "
+              "x1 error vs extrapolated | status | asymptotic range |",
+              "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|---|"]
+
+    def pct(x):
+        return f"{100 * x:.2g} %" if x is not None else "-"
+
     for res in result.values():
-        ext, v0 = res["extrapolated"], (res["values"][0] if res["values"] else None)
-        coarsest = next((v for v, lv in zip(res["values"], res["levels"]) if lv == 1.0), None)
-        err = (coarsest - ext) / abs(ext) if (coarsest is not None and ext) else None
-        del v0
+        ext = res["extrapolated"]
+        x1 = next((v for v, lv in zip(res["values"], res["levels"]) if lv == 1.0), None)
+        err = (x1 - ext) / abs(ext) if (x1 is not None and ext) else None
         lines.append(f"| {res['name']} [{res['unit']}] | "
                      + " | ".join(fmt(v) for v in res["values"])
-                     + f" | {fmt(ext)} | {fmt(res['order'], 3)} | "
-                     + (f"{100 * res['gci_fine [-]']:.2g} %" if res["gci_fine [-]"] is not None
-                        else "-")
+                     + f" | {fmt(ext)} | {fmt(res['order'], 3)} | {pct(res['gci_fine [-]'])} | "
+                     + f"{pct(res['gci_conservative [-]'])}"
                      + f" | {(f'{100 * err:+.1f} %' if err is not None else '-')} | "
                      f"{res['status']} | {res['asymptotic']}: {res['asymptotic_reason']} |")
     lines += ["", "Every consecutive triple (finest first): condition, order, extrapolated value, "
@@ -608,9 +654,18 @@ def main(argv):
               file=sys.stderr)
         return 2
     try:
+        sets = [json.loads(s) for s in args.set]
+        if any(not isinstance(x, dict) for x in sets):
+            print("ladder: --set: expected a JSON object (a merge patch), e.g. "
+                  "'{\"time\": {\"max_time\": 1e-5}}'", file=sys.stderr)
+            return 1
+    except ValueError as e:
+        print(f"ladder: --set: not JSON: {e}", file=sys.stderr)
+        return 1
+    try:
         scene = load_resolved(args.scene)
-        for s in args.set:
-            scene = merge_patch(scene, json.loads(s))
+        for x in sets:
+            scene = merge_patch(scene, x)
         scene["grid"]["cells"], scene["grid"]["lower"], scene["grid"]["upper"]
         scene["time"]["max_time"]
     except (OSError, ValueError, KeyError, TypeError) as e:
@@ -626,6 +681,17 @@ def main(argv):
     os.makedirs(os.path.join(args.out, "scenes"), exist_ok=True)
     runs_root = args.runs or os.path.join(args.out, "runs")
     os.makedirs(runs_root, exist_ok=True)
+    seen = {}
+    for lv in sorted(args.levels):
+        cells = tuple(level_cells(scene, lv))
+        if cells in seen:
+            ap.error(f"--levels: {seen[cells]:g} and {lv:g} give the same cells {list(cells)}")
+        seen[cells] = lv
+        ratios = [c / c0 for c, c0 in zip(cells, scene["grid"]["cells"])]
+        if any(abs(r / lv - 1.0) > 0.02 for r in ratios):
+            print(f"ladder: warning: level {lv:g} refines the axes by "
+                  f"{', '.join(f'{r:.3f}' for r in ratios)} (whole cells): the representative h "
+                  "takes it into account, but the refinement is not uniform", file=sys.stderr)
     plan = [(lv, None) for lv in sorted(args.levels)]
     plan += [(lv, int(p)) for lv in sorted(args.ppc_levels) for p in args.particles_per_cell]
     runs, failed = [], []
@@ -633,7 +699,7 @@ def main(argv):
         name = run_name(level, ppc)
         scene_path = os.path.join(args.out, "scenes", name + ".json")
         text = write_level_scene(scene_path, args.scene, scene, level, ppc, args.checkpoint_steps,
-                                 rod)
+                                 rod, sets)
         run_dir = os.path.join(runs_root, name)
         if not args.analyse_only and not finished(run_dir, text):
             try:
@@ -648,7 +714,7 @@ def main(argv):
         runs.append({"name": name, "level": level, "ppc": ppc, "cells": cells,
                      "scene_path": scene_path,
                      "h": representative_h(scene, cells),
-                     "data": read_run(run_dir, scene, rod, observables)})
+                     "data": read_run(run_dir, text, scene, rod, observables)})
     for r in runs:  # runs made before summary.json carried the fingerprint: ask mpm check
         if r["data"] and not r["data"]["fingerprint"]:
             r["data"]["fingerprint"] = fingerprint_of(args, r["scene_path"])
