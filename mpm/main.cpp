@@ -2,7 +2,7 @@
 //   mpm run SCENE.json [--out DIR] [--threads N] [--set JSON]... [--progress] [--overwrite]
 //           [--inject-fault KIND:STEP[:PARTICLE]]...
 //   mpm run --restart DIR [--threads N]
-//   mpm check SCENE.json [--threads N] [--set JSON]...
+//   mpm check SCENE.json [--threads N] [--set JSON]... [--ranks N] [--fingerprint]
 //   mpm study SCENE_DIR --out DIR [--threads N] [--cases LIST] [--no-plot]
 //   mpm study --ladder LEVELS SCENE.json --out DIR [--threads N] [--ranks N] [--set JSON]...
 //   mpm plot RUN [--out FIG]
@@ -23,6 +23,7 @@
 #include "mpm/input/scene_reader.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"
+#include "mpm/run/scene_fingerprint.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/simulation/simulation.hpp"
 #include "support/command_line.hpp"
@@ -131,6 +132,9 @@ int run_main(int argc, char** argv) {
                    "rank (docs/mpi.md)")
       ->type_name("N")
       ->check(CLI::PositiveNumber);
+  bool fingerprint_only = false;
+  check->add_flag("--fingerprint", fingerprint_only,
+                  "print only the scene fingerprint (16 hex digits; docs/mpm.md#output)");
   study
       ->add_option("SCENE_DIR", scene_file,
                    "folder of case*.json (+ recommended.json); with --ladder a scene file")
@@ -240,6 +244,10 @@ int run_main(int argc, char** argv) {
          impact::cli::set_origins(scene_file, patches).attribute(scene.warnings))
       std::cerr << "mpm: warning: " << w << '\n';
     if (verbosity.verbose) std::cerr << scene.resolved.dump(2) << '\n';
+    if (check->parsed() && fingerprint_only) {
+      std::cout << impact::mpm::scene_fingerprint(scene.resolved) << '\n';
+      return 0;
+    }
     if (check->parsed()) {
       std::cout << scene.resolved.dump(2) << '\n';
       const int threads = impact::mpm::run_threads(options.threads);

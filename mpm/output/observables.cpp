@@ -23,6 +23,7 @@ Gauges::Gauges(const Scene& scene, const Particles& initial, const Communicator*
     const char* unit = g.type == GaugeType::velocity ? "m/s"
                        : g.type == GaugeType::strain ? "-"
                                                      : "Pa";
+    gauge.unit = unit;
     gauge.column = "gauge_" + g.name + " [" + unit + "]";
     gauge.type = g.type;
     gauge.component = g.component;
@@ -42,6 +43,12 @@ std::vector<std::string> Gauges::columns() const {
   std::vector<std::string> c;
   for (const Gauge& g : gauges_) c.push_back(g.column);
   return c;
+}
+
+std::vector<std::string> Gauges::units() const {
+  std::vector<std::string> u;
+  for (const Gauge& g : gauges_) u.push_back(g.unit);
+  return u;
 }
 
 std::vector<double> Gauges::read(const Particles& P) const {

@@ -43,6 +43,8 @@ class Gauges {
   /// "gauge_<name> [m/s]" (velocity), "[-]" (strain), "[Pa]" (pressure), in scene order (names
   /// sorted).
   std::vector<std::string> columns() const;
+  /// Each gauge's unit, columns() order: "m/s", "-" or "Pa".
+  std::vector<std::string> units() const;
   /// The current readings, columns() order (P: the particles this rank holds).
   std::vector<double> read(const Particles& P) const;
   /// The seed indices of gauge g's members, ascending.
@@ -51,6 +53,7 @@ class Gauges {
  private:
   struct Gauge {
     std::string column;
+    std::string unit;
     GaugeType type;
     int component;
   };

@@ -31,6 +31,7 @@ void write_header(CheckpointWriter& w, const CheckpointHeader& h) {
   w.value(h.time);
   w.value(h.scene_hash);
   w.text(h.working_directory);
+  w.text(h.scene_file);
 }
 
 CheckpointHeader read_header(CheckpointReader& r) {
@@ -55,6 +56,7 @@ CheckpointHeader read_header(CheckpointReader& r) {
   h.time = r.value<double>();
   h.scene_hash = r.value<std::uint64_t>();
   h.working_directory = r.text();
+  h.scene_file = r.text();
   return h;
 }
 
@@ -66,7 +68,7 @@ std::filesystem::path checkpoint_file(const std::filesystem::path& dir, int rank
 }
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const RunState& run,
-                      std::uint64_t scene_hash) {
+                      std::uint64_t scene_hash, const std::string& scene_file) {
   CheckpointHeader h;
   h.threads = sim.threads();
   h.ranks = sim.ranks();
@@ -76,6 +78,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
   h.time = sim.time();
   h.scene_hash = scene_hash;
   h.working_directory = std::filesystem::current_path().string();
+  h.scene_file = scene_file;
   write_file_atomically(file, [&](std::ostream& o) {
     CheckpointWriter w(o);
     write_header(w, h);
@@ -86,6 +89,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
     w.value(run.history_bytes);
     w.value(run.history_rows);
     w.array("observables", run.observables);
+    w.array("gauge_extrema", run.gauge_extrema);
     w.section("snapshots", run.snapshots.size(), 0);
     for (const auto& [t, name] : run.snapshots) {
       w.value(t);
@@ -146,6 +150,7 @@ RunState read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
   run.history_bytes = r.value<std::uint64_t>();
   run.history_rows = r.value<std::uint64_t>();
   r.array("observables", run.observables);
+  r.array("gauge_extrema", run.gauge_extrema);
   const std::uint64_t snapshots = r.section("snapshots", 0);
   for (std::uint64_t i = 0; i < snapshots; ++i) {
     const double t = r.value<double>();

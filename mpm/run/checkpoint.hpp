@@ -6,12 +6,13 @@
 //   - the Simulation's time, step, signal speed (the next dt), failure/conversion/fault counters,
 //   - every ledger accumulator,
 //   - the run loop's next output time, the bytes and rows of history.csv written so far, the
-//     observables' running maxima, the .pvd entries, the wall time so far.
+//     observables' running maxima and the gauges' extrema, the .pvd entries, the wall time so far.
 // The grid holds nothing across steps (it is rebuilt from the particles every step), nor do the
 // stencils.
 // Format (little-endian, native doubles): the 16-byte magic "IMPACT-MPM-CKPT\n", u32 format
 // version, u32 byte-order mark 0x01020304, u32 sizeof(double), the header (thread count,
-// particle count, step, time, FNV-1a hash of DIR/scene.json, the working directory of the run),
+// particle count, step, time, FNV-1a hash of DIR/scene.json, the working directory of the run,
+// the scene file it was started from),
 // then tagged sections (u32 tag length, tag, u64 element count, u32 element size, the elements),
 // and last the u64 FNV-1a hash of every byte before it. Written through write_file_atomically
 // (checkpoint.bin.tmp, then a rename): a kill while writing leaves the previous checkpoint.
@@ -31,8 +32,8 @@ class Simulation;
 
 // 2: outflow, no face work; 3: failure cause; 4: particle ids (ranks); 5: the flow-stress law's
 // internal variable (PointState::flow_internal); 6: the boxes of the domain decomposition (three
-// axes' boundaries, was the slabs along x)
-inline constexpr std::uint32_t kCheckpointVersion = 6;
+// axes' boundaries, was the slabs along x); 7: the gauges' extrema and the scene file's path
+inline constexpr std::uint32_t kCheckpointVersion = 7;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 /// Rank r's checkpoint in DIR: checkpoint.bin for rank 0 (and a one-rank run),
 /// checkpoint.rank<r>.bin for the others.
@@ -49,6 +50,9 @@ struct CheckpointHeader {
   double time = 0.0;
   std::uint64_t scene_hash = 0;   ///< fnv1a of DIR/scene.json as written
   std::string working_directory;  ///< of the run (material paths in scene.json are relative to it)
+  /// The scene file the run was started from, absolute (its ladder table is looked for beside
+  /// it, mpm/run/discretization_error.hpp); empty when the run had none.
+  std::string scene_file;
 };
 
 /// The run loop's state beside the Simulation's.
@@ -57,13 +61,15 @@ struct RunState {
   std::uint64_t history_bytes = 0;  ///< history.csv so far (header included)
   std::uint64_t history_rows = 0;
   std::vector<double> observables;                        ///< Observables::state()
+  std::vector<double> gauge_extrema;                      ///< GaugeExtrema::state()
   std::vector<std::pair<double, std::string>> snapshots;  ///< .pvd entries
   double wall_time = 0.0;                                 ///< [s] of the step loop so far, all runs
 };
 
-/// Writes `file` atomically from the Simulation and the run state.
+/// Writes `file` atomically from the Simulation and the run state; `scene_file`: the scene file
+/// the run was started from (CheckpointHeader::scene_file).
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const RunState& run,
-                      std::uint64_t scene_hash);
+                      std::uint64_t scene_hash, const std::string& scene_file);
 /// Reads the header only (magic, version, byte order first); throws CheckpointError.
 CheckpointHeader read_checkpoint_header(const std::filesystem::path& file);
 /// Loads `file` into `sim` (built from the same scene with the checkpoint's thread count, on the

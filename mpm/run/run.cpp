@@ -12,12 +12,14 @@
 
 #include "models/core/input.hpp"
 #include "mpm/run/checkpoint.hpp"
+#include "mpm/run/discretization_error.hpp"
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/output_directory.hpp"
 #include "mpm/run/progress.hpp"
 #include "mpm/run/run_outputs.hpp"
 #include "mpm/run/run_status.hpp"
+#include "mpm/run/scene_fingerprint.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/threads/threads.hpp"
 #include "support/atomic_file.hpp"
@@ -34,6 +36,14 @@ std::string read_text(const fs::path& file) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// `file` made absolute against the working directory (empty stays empty).
+std::string absolute_path(const std::string& file) {
+  if (file.empty()) return file;
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(file, ec);
+  return ec ? std::string() : absolute.lexically_normal().string();
 }
 
 bool is_signal(const FaultInjection& f) {
@@ -61,8 +71,11 @@ class WallClock {
 // its outputs, checkpoints, signals and reports, then the summary. On several ranks every rank
 // steps its box and writes its snapshot piece and checkpoint; the gauges, observables and the
 // summary are reduced over the ranks, and rank 0 writes history.csv, the .pvtu/.pvd and the
-// summary. No rank ever holds another's particles.
-int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume) {
+// summary. No rank ever holds another's particles. `origin`: the scene file the run was started
+// from (empty: none), whose ladder table gives the summary's error bar; the checkpoint records it
+// as an absolute path, for a restart.
+int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume,
+           const std::string& origin) {
   const Communicator* comm =
       options.comm != nullptr && options.comm->size() > 1 ? options.comm : nullptr;
   const bool root = comm == nullptr || comm->root();
@@ -74,6 +87,8 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   }
   const std::string scene_text = scene.resolved.dump(2) + '\n';
   const std::uint64_t scene_hash = fnv1a(scene_text.data(), scene_text.size());
+  // Before the run: the material files as the run read them.
+  const std::string fingerprint = scene_fingerprint(scene.resolved);
   if (!resume) {
     // Every rank looks, and they agree (a collective call: none looks after rank 0 removed).
     std::string unfinished = options.overwrite ? "" : unfinished_run(dir);
@@ -143,9 +158,10 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   if (!resume) write_outputs(true, sim.steps());
   double next_output = resume ? resumed.next_output : scene.output.interval;
   // Every rank writes its own file; rank 0's also holds the outputs' positions.
+  const std::string origin_absolute = absolute_path(origin);
   const auto checkpoint = [&] {
     const RunState state = outputs.state(next_output, wall.seconds());
-    write_checkpoint(checkpoint_file(dir, sim.rank()), sim, state, scene_hash);
+    write_checkpoint(checkpoint_file(dir, sim.rank()), sim, state, scene_hash, origin_absolute);
     if (comm) comm->barrier();  // every file in place before the status names the checkpoint
     status_file.checkpointed(sim.steps(), sim.time());
   };
@@ -237,7 +253,8 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   }
   const double seconds = wall.seconds();
   Json summary = run_summary(sim, sim.particles(), status, message, seconds, outputs.observables(),
-                             &outputs.paths());
+                             outputs.gauge_extrema(), &outputs.paths());
+  summary["scene_fingerprint"] = fingerprint;
   if (!root) return code;
   outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   summary["phase_seconds [s]"] = phases;
@@ -254,6 +271,9 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
                                {"y", sim.boxes().axis(1).first_cells()},
                                {"z", sim.boxes().axis(2).first_cells()}}}};
   }
+  // Last: the ladder's pointers read the summary as written.
+  if (auto error = discretization_error(origin, fingerprint, summary))
+    summary["discretization_error"] = std::move(*error);
   write_file_atomically(dir / "summary.json",
                         [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
   status_file.write(sim, seconds, status, message);  // last: every file is then in place
@@ -278,8 +298,8 @@ int run_threads(int requested) {
 int run(const Scene& scene, const RunOptions& options) {
   return run_in(
       scene, options,
-      options.out_dir.empty() ? fs::path(scene.output.directory) : fs::path(options.out_dir),
-      false);
+      options.out_dir.empty() ? fs::path(scene.output.directory) : fs::path(options.out_dir), false,
+      scene.file);
 }
 
 int restart(const std::string& directory, const RunOptions& options) {
@@ -339,7 +359,7 @@ int restart(const std::string& directory, const RunOptions& options) {
          " (results would not be bit-identical; --threads N overrides with a warning)"});
   }
   try {
-    return run_in(scene, o, dir, true);
+    return run_in(scene, o, dir, true, header.scene_file);
   } catch (const CheckpointError& e) {
     throw InputError({e.what()});
   }

@@ -4,6 +4,7 @@ namespace impact::mpm {
 
 RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Communicator* comm)
     : gauges_(scene, seeded, comm),
+      gauge_extrema_(gauges_.units()),
       observables_(scene, seeded, comm),
       faulted_column_(scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle),
       comm_(comm) {}
@@ -14,7 +15,10 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
   std::vector<std::string> columns = gauges_.columns();
   if (faulted_column_) columns.push_back("faulted_particles [-]");
   const std::string history_file = (dir / "history.csv").string();
-  if (resumed) observables_.restore(resumed->observables);
+  if (resumed) {
+    observables_.restore(resumed->observables);
+    gauge_extrema_.restore(resumed->gauge_extrema);
+  }
   const bool root = comm_ == nullptr || comm_->root();
   if (root && resumed) {
     history_.emplace(history_file, ledger, columns, resumed->history_bytes, resumed->history_rows);
@@ -30,6 +34,7 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
 void RunOutputs::write_history(const Simulation& sim, const Particles& P) {
   observables_.sample(P, sim.time());  // max pressure: sampled at history rows
   std::vector<double> extra = gauges_.read(P);
+  gauge_extrema_.sample(extra, sim.time());  // the gauges' columns of this row
   if (faulted_column_) extra.push_back(double(sim.faulted_particles()));
   if (history_) history_->write(sim.ledger(), extra);
 }
@@ -43,6 +48,7 @@ RunState RunOutputs::state(double next_output, double wall) const {
                   history_ ? history_->bytes() : 0,
                   history_ ? history_->rows() : 0,
                   observables_.state(),
+                  gauge_extrema_.state(),
                   snapshots_ ? snapshots_->entries() : decltype(RunState::snapshots){},
                   wall};
 }

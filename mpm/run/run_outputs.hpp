@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "mpm/output/gauge_extrema.hpp"
 #include "mpm/output/observables.hpp"
 #include "mpm/output/output.hpp"
 #include "mpm/output/particle_paths.hpp"
@@ -32,8 +33,8 @@ class RunOutputs {
   void before_step(const Particles& P) { paths_->before_step(P); }
   void after_step(const Particles& P, double time, double dt) { paths_->after_step(P, time, dt); }
 
-  /// A history row of sim's ledger with the gauges of P (the observables are sampled with it);
-  /// P: the particles this rank holds.
+  /// A history row of sim's ledger with the gauges of P (the observables and the gauges' extrema
+  /// are sampled with it); P: the particles this rank holds.
   void write_history(const Simulation& sim, const Particles& P);
   /// A snapshot of P numbered `index` (the step, or step + 1 for the state a failure left).
   void write_snapshot(const Particles& P, long index, double time);
@@ -47,10 +48,13 @@ class RunOutputs {
     paths_->write(dir, scene, scene.file, start);
   }
   const Observables& observables() const { return observables_; }
+  /// The gauges' extrema over the history rows so far (summary.json "gauges").
+  const GaugeExtrema& gauge_extrema() const { return gauge_extrema_; }
   const ParticlePaths& paths() const { return *paths_; }
 
  private:
   Gauges gauges_;
+  GaugeExtrema gauge_extrema_;
   Observables observables_;
   std::optional<ParticlePaths> paths_;
   bool faulted_column_;

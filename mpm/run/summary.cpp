@@ -8,6 +8,7 @@
 
 #include "mpm/parallel/decomposition_plan.hpp"
 #include "mpm/run/memory.hpp"
+#include "mpm/run/scene_fingerprint.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
@@ -120,13 +121,14 @@ Json check_report(const Scene& scene, int threads, int ranks) {
       scene.time.max_dt);
   report["stable_dt [s]"] = dt;
   report["estimated_steps"] = std::ceil(scene.time.max_time / dt);
+  report["scene_fingerprint"] = scene_fingerprint(scene.resolved);
   if (ranks > 1) report["decomposition"] = plan_decomposition(scene, P, ranks);
   return report;
 }
 
 Json run_summary(const Simulation& sim, const Particles& P, const std::string& status,
                  const std::string& message, double wall, const Observables& observables,
-                 const ParticlePaths* paths) {
+                 const GaugeExtrema& gauges, const ParticlePaths* paths) {
   const Scene& scene = sim.scene();
   const Communicator* comm = sim.communicator();
   Json summary = particle_report(scene, P, sim.threads(), comm);
@@ -151,6 +153,8 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
   summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
   summary["final"] = row_json(sim.ledger());
   summary["observables"] = observables.summary(P);
+  for (std::size_t g = 0; g < scene.output.gauges.size() && g < gauges.size(); ++g)
+    summary["gauges"][scene.output.gauges[g].name].update(gauges.json(g));
   summary["units"] = {{"time", "s"},
                       {"energy", "J"},
                       {"momentum", "kg m/s"},

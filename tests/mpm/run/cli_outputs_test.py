@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """What `mpm run` and `mpm check` write, against numbers derived here from the scene.
 
-  cli_outputs_test.py MPM WORK_DIR run|check|set|rerun|unfinished
+  cli_outputs_test.py MPM WORK_DIR run|check|set|rerun|unfinished|fingerprint
 
 run: the rigid translation (data/scenes/verification/rigid_translation.json: a 20 mm aluminium
   cube, 2 particles per cell per axis in 5 mm cells, at (30, -20, 10) m/s on a free grid) to
@@ -36,6 +36,10 @@ unfinished: a run stopped by SIGTERM (injected at step 5, checkpoint written) is
   byte for byte); `--restart` continues it and removes a snapshot the checkpoint does not list
   (planted: step_999999.vtu) and nothing else; after a second SIGTERM, `--overwrite` starts over
   (no checkpoint left, every snapshot named by the .pvd).
+fingerprint: `mpm check --fingerprint` on the rigid translation prints 16 lowercase hex digits and
+  a newline, nothing else on stdout, exit 0; the same with a --set of output keys only, another
+  with a --set of the grid; it is the "scene_fingerprint" of `mpm check`'s report and of the
+  summary.json of `mpm run` with the same --set (time.max_time 1e-6).
 """
 import json
 import math
@@ -210,6 +214,36 @@ def check_set(mpm, work):
     assert written["time"]["max_time"] == 1e-6, written["time"]
 
 
+def check_fingerprint(mpm, work):
+    def fingerprint(*patches):
+        sets = [a for p in patches for a in ("--set", json.dumps(p))]
+        stdout = run_mpm(mpm, ["check", RIGID, "--fingerprint"] + sets)
+        assert re.fullmatch(r"[0-9a-f]{16}\n", stdout), repr(stdout)
+        return stdout.strip()
+
+    short = {"time": {"max_time": 1e-6}}
+    base = fingerprint(short)
+    print(f"rigid translation to 1e-6 s: fingerprint {base}")
+    assert fingerprint(short, {"output": {"interval": 1e-7, "directory": "x"}}) == base
+    assert fingerprint(short, {"grid": {"cells": [24, 24, 24]}}) != base
+    assert fingerprint() != base  # max_time 2e-4: another run
+    report = run_mpm(mpm, ["check", RIGID, "--set", json.dumps(short)])
+    decoder, docs, i = json.JSONDecoder(), [], 0
+    while i < len(report):  # the resolved scene, then the report
+        if report[i].isspace():
+            i += 1
+            continue
+        doc, i = decoder.raw_decode(report, i)
+        docs.append(doc)
+    assert docs[-1]["scene_fingerprint"] == base, docs[-1].get("scene_fingerprint")
+    out = os.path.join(work, "fingerprint")
+    shutil.rmtree(out, ignore_errors=True)
+    run_mpm(mpm, ["run", RIGID, "--out", out, "--threads", "1", "--set", json.dumps(short)])
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    assert summary["scene_fingerprint"] == base, summary["scene_fingerprint"]
+
+
 def run_mpm_code(mpm, args):
     done = subprocess.run([mpm] + args, capture_output=True, text=True)
     return done.returncode, done.stdout, done.stderr
@@ -328,5 +362,5 @@ if __name__ == "__main__":
     mpm_program, work_dir, what = sys.argv[1:4]
     os.makedirs(work_dir, exist_ok=True)
     {"run": check_run, "check": check_check, "set": check_set, "rerun": check_rerun,
-     "unfinished": check_unfinished}[what](mpm_program, work_dir)
+     "unfinished": check_unfinished, "fingerprint": check_fingerprint}[what](mpm_program, work_dir)
     print("OK")

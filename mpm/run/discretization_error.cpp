@@ -1,0 +1,156 @@
+#include "mpm/run/discretization_error.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace impact::mpm {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A malformed table: the reason, naming the key path.
+struct Unreadable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+const Json& member(const Json& node, const std::string& key, const std::string& path) {
+  if (!node.is_object()) throw Unreadable(path + ": expected an object");
+  const auto it = node.find(key);
+  if (it == node.end()) throw Unreadable(path + "/" + key + ": missing");
+  return *it;
+}
+
+std::string string_at(const Json& node, const std::string& key, const std::string& path) {
+  const Json& v = member(node, key, path);
+  if (!v.is_string()) throw Unreadable(path + "/" + key + ": expected a string, got " + v.dump());
+  return v.get<std::string>();
+}
+
+// A number or null (the ladder could not extrapolate).
+Json number_or_null(const Json& node, const std::string& key, const std::string& path) {
+  const Json& v = member(node, key, path);
+  if (!v.is_number() && !v.is_null())
+    throw Unreadable(path + "/" + key + ": expected a number or null, got " + v.dump());
+  return v;
+}
+
+const Json& array_at(const Json& node, const std::string& key, const std::string& path) {
+  const Json& v = member(node, key, path);
+  if (!v.is_array()) throw Unreadable(path + "/" + key + ": expected an array");
+  return v;
+}
+
+// The observable's entry: the table's numbers with this run's value and its relative error. A
+// pointer that is not one gives a status instead; nullopt when it names no number here.
+std::optional<Json> observable(const Json& o, const std::string& path, const Json& summary) {
+  Json out = {{"path", string_at(o, "path", path)},
+              {"extrapolated", number_or_null(o, "extrapolated", path)},
+              {"gci_fine [-]", number_or_null(o, "gci_fine [-]", path)},
+              {"order", number_or_null(o, "order", path)},
+              {"status", string_at(o, "status", path)}};
+  Json::json_pointer pointer;
+  try {
+    pointer = Json::json_pointer(out["path"].get<std::string>());
+  } catch (const Json::exception&) {  // not a JSON pointer (RFC 6901)
+    out["status"] = "path not found in this run's summary";
+    return out;
+  }
+  const Json* found = nullptr;
+  try {
+    if (summary.contains(pointer)) found = &summary.at(pointer);
+  } catch (const Json::exception&) {  // e.g. "/a/b" where /a is an array: not found
+  }
+  if (found == nullptr || !found->is_number()) return std::nullopt;
+  const double value = found->get<double>();
+  out["value"] = value;
+  const Json& extrapolated = out["extrapolated"];
+  const double x = extrapolated.is_number() ? extrapolated.get<double>() : 0.0;
+  out["error [-]"] = x != 0.0 ? Json((value - x) / std::abs(x)) : Json(nullptr);
+  return out;
+}
+
+Json from_table(const std::string& table, const Json& doc, const std::string& fingerprint,
+                const Json& summary) {
+  if (!doc.is_object()) throw Unreadable("/: expected an object");
+  const Json& levels = array_at(doc, "levels", "");
+  const Json* match = nullptr;
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const std::string path = "/levels/" + std::to_string(i);
+    const std::string f = string_at(levels[i], "fingerprint", path);
+    const Json& level = member(levels[i], "level", path);
+    if (!level.is_number())
+      throw Unreadable(path + "/level: expected a number, got " + level.dump());
+    if (f == fingerprint && match == nullptr) match = &levels[i];
+  }
+  const Json& observables = array_at(doc, "observables", "");
+  const std::string commit = string_at(doc, "commit", "");
+  if (match == nullptr) {
+    return {
+        {"table", table},
+        {"status", "no level of the ladder matches this scene (fingerprint " + fingerprint + ")"}};
+  }
+  Json entries = Json::object();
+  for (std::size_t i = 0; i < observables.size(); ++i) {
+    const std::string path = "/observables/" + std::to_string(i);
+    const std::string name = string_at(observables[i], "name", path);
+    if (auto entry = observable(observables[i], path, summary)) entries[name] = std::move(*entry);
+  }
+  return {{"table", table},
+          {"level", (*match)["level"]},
+          {"ladder_commit", commit},
+          {"observables", entries}};
+}
+
+}  // namespace
+
+fs::path ladder_table_path(const fs::path& scene_file) {
+  return scene_file.parent_path() / (scene_file.stem().string() + ".ladder.json");
+}
+
+Json discretization_error_of(const std::string& table, const std::string& text,
+                             const std::string& fingerprint, const Json& summary) {
+  const auto unreadable = [&](const std::string& why) {
+    return Json{{"table", table}, {"status", "unreadable: " + why}};
+  };
+  try {
+    const Json doc = Json::parse(text);
+    return from_table(table, doc, fingerprint, summary);
+  } catch (const Unreadable& e) {
+    return unreadable(e.what());
+  } catch (const Json::parse_error& e) {
+    return unreadable(std::string("not JSON (") + e.what() + ")");
+  } catch (const std::exception& e) {  // anything else the table provokes: still no failure
+    return unreadable(e.what());
+  }
+}
+
+std::optional<Json> discretization_error(const std::string& scene_file,
+                                         const std::string& fingerprint, const Json& summary) {
+  if (scene_file.empty()) return std::nullopt;
+  fs::path table;
+  try {
+    table = ladder_table_path(scene_file);
+    std::error_code ec;
+    if (!fs::exists(table, ec)) return std::nullopt;
+  } catch (const std::exception&) {  // a path the filesystem refuses: no table there
+    return std::nullopt;
+  }
+  const auto unreadable = [&](const std::string& why) {
+    return Json{{"table", table.string()}, {"status", "unreadable: " + why}};
+  };
+  try {
+    std::error_code ec;
+    if (!fs::is_regular_file(table, ec)) return unreadable("not a regular file");
+    std::ifstream in(table, std::ios::binary);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in || in.bad()) return unreadable("cannot read the file");
+    return discretization_error_of(table.string(), text, fingerprint, summary);
+  } catch (const std::exception& e) {
+    return unreadable(std::string("cannot read the file (") + e.what() + ")");
+  }
+}
+
+}  // namespace impact::mpm

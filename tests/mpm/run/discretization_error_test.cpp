@@ -1,0 +1,185 @@
+// The error bar from a ladder table (summary.json "discretization_error", docs/mpm.md#output;
+// mpm/run/discretization_error.hpp) on tables and summaries written here:
+// - a level with this run's fingerprint: per observable the run's value at its JSON pointer, the
+//   table's extrapolated value, order, GCI and status, and error = (value - extrapolated) /
+//   abs(extrapolated), null when the extrapolated value is null or 0; an observable whose pointer
+//   names no number here is left out; a string that is no JSON pointer gives that observable
+//   the status "path not found in this run's summary";
+// - no matching level: the status sentence with the fingerprint;
+// - malformed tables (not JSON, wrong types, missing keys): "unreadable: <reason>" naming the
+//   key path, never an exception (a directory where the table would be: not a regular file);
+// - the table is "<stem>.ladder.json" beside the scene file; none there: no key.
+#include <unistd.h>
+
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+#include <fstream>
+
+#include "mpm/run/discretization_error.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kMine = "0123456789abcdef";
+
+Json summary() {
+  return {{"observables", {{"crater", {{"depth [m]", 0.009}, {"object", "target"}}}}},
+          {"final", {{"energy_error", -1e-3}}}};
+}
+
+Json observable(const std::string& name, const std::string& path, const Json& extrapolated) {
+  return {{"name", name},
+          {"path", path},
+          {"unit", "m"},
+          {"values", {0.0095, 0.0091, nullptr}},
+          {"extrapolated", extrapolated},
+          {"order", 1.06},
+          {"gci_fine [-]", 0.05},
+          {"status", "extrapolated"}};
+}
+
+Json table(const std::string& fingerprint = kMine) {
+  return {{"scene", "data/scenes/sphere_cylinder/recommended.json"},
+          {"command", "python3 -m campaigns.study.ladder"},
+          {"commit", "750b794"},
+          {"date", "2026-11-28"},
+          {"levels",
+           {{{"level", 1.0}, {"fingerprint", "ffffffffffffffff"}, {"cells", {50, 20, 20}}},
+            {{"level", 2.0}, {"fingerprint", fingerprint}, {"cells", {100, 40, 40}}}}},
+          {"observables",
+           {observable("crater depth", "/observables/crater/depth [m]", 0.0084),
+            observable("no extrapolation", "/observables/crater/depth [m]", nullptr),
+            observable("zero", "/final/energy_error", 0.0),
+            observable("missing", "/observables/crater/volume [m^3]", 1.0),
+            observable("not a number", "/observables/crater/object", 1.0),
+            observable("into a string", "/observables/crater/object/x", 1.0),
+            observable("bad pointer", "observables/crater", 1.0)}}};
+}
+
+Json of(const Json& t) {
+  return discretization_error_of("T.ladder.json", t.dump(), kMine, summary());
+}
+
+std::string status_of(const std::string& text) {
+  const Json e = discretization_error_of("T.ladder.json", text, kMine, summary());
+  BOOST_TEST(e.at("table") == "T.ladder.json");
+  BOOST_TEST(!e.contains("observables"));
+  return e.at("status").get<std::string>();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mpm_discretization_error)
+
+BOOST_AUTO_TEST_CASE(a_matching_level_gives_each_observables_error) {
+  const Json e = of(table());
+  BOOST_TEST_MESSAGE(e.dump(2));
+  BOOST_TEST(e.at("table") == "T.ladder.json");
+  BOOST_TEST(e.at("level").get<double>() == 2.0);
+  BOOST_TEST(e.at("ladder_commit") == "750b794");
+  BOOST_TEST(!e.contains("status"));
+  const Json& o = e.at("observables");
+  const Json& depth = o.at("crater depth");
+  BOOST_TEST(depth.at("path") == "/observables/crater/depth [m]");
+  BOOST_TEST(depth.at("value").get<double>() == 0.009);
+  BOOST_TEST(depth.at("extrapolated").get<double>() == 0.0084);
+  BOOST_TEST(depth.at("error [-]").get<double>() == (0.009 - 0.0084) / 0.0084);
+  BOOST_TEST(depth.at("gci_fine [-]").get<double>() == 0.05);
+  BOOST_TEST(depth.at("order").get<double>() == 1.06);
+  BOOST_TEST(depth.at("status") == "extrapolated");
+  // No extrapolated value, or 0: no relative error.
+  BOOST_TEST(o.at("no extrapolation").at("error [-]").is_null());
+  BOOST_TEST(o.at("no extrapolation").at("value").get<double>() == 0.009);
+  BOOST_TEST(o.at("zero").at("error [-]").is_null());
+  BOOST_TEST(o.at("zero").at("value").get<double>() == -1e-3);
+  // A pointer that names no number in this summary: left out.
+  BOOST_TEST(!o.contains("missing"));
+  BOOST_TEST(!o.contains("not a number"));
+  BOOST_TEST(!o.contains("into a string"));
+  // Not a JSON pointer at all: that observable only.
+  BOOST_TEST(o.at("bad pointer").at("status") == "path not found in this run's summary");
+  BOOST_TEST(!o.at("bad pointer").contains("value"));
+  BOOST_TEST(o.size() == 4u);
+}
+
+BOOST_AUTO_TEST_CASE(no_matching_level_says_so) {
+  const Json e = of(table("aaaaaaaaaaaaaaaa"));
+  BOOST_TEST(e == Json({{"table", "T.ladder.json"},
+                        {"status", "no level of the ladder matches this scene (fingerprint " +
+                                       kMine + ")"}}));
+}
+
+BOOST_AUTO_TEST_CASE(a_malformed_table_is_unreadable_naming_the_key_path) {
+  const auto starts = [](const std::string& status, const std::string& reason) {
+    BOOST_TEST(status.rfind("unreadable: " + reason, 0) == 0u, status << " / " << reason);
+  };
+  starts(status_of("{\"levels\": ["), "not JSON");
+  starts(status_of(""), "not JSON");
+  starts(status_of("[1, 2]"), "/: expected an object");
+  Json t = table();
+  t.erase("levels");
+  starts(status_of(t.dump()), "/levels: missing");
+  t = table();
+  t["levels"] = "many";
+  starts(status_of(t.dump()), "/levels: expected an array");
+  t = table();
+  t["levels"][1]["fingerprint"] = 12345;
+  starts(status_of(t.dump()), "/levels/1/fingerprint: expected a string, got 12345");
+  t = table();
+  t["levels"][0] = 7;
+  starts(status_of(t.dump()), "/levels/0: expected an object");
+  t = table();
+  t["levels"][0].erase("level");
+  starts(status_of(t.dump()), "/levels/0/level: missing");
+  t = table();
+  t["levels"][1]["level"] = "fine";
+  starts(status_of(t.dump()), "/levels/1/level: expected a number, got \"fine\"");
+  t = table();
+  t.erase("commit");
+  starts(status_of(t.dump()), "/commit: missing");
+  t = table();
+  t["observables"] = Json::object();
+  starts(status_of(t.dump()), "/observables: expected an array");
+  t = table();
+  t["observables"][0].erase("name");
+  starts(status_of(t.dump()), "/observables/0/name: missing");
+  t = table();
+  t["observables"][2]["extrapolated"] = "0.0084";
+  starts(status_of(t.dump()), "/observables/2/extrapolated: expected a number or null");
+  t = table();
+  t["observables"][1]["gci_fine [-]"] = Json::array();
+  starts(status_of(t.dump()), "/observables/1/gci_fine [-]: expected a number or null");
+  t = table();
+  t["observables"][0]["path"] = nullptr;
+  starts(status_of(t.dump()), "/observables/0/path: expected a string, got null");
+  t = table();
+  t["observables"][3]["status"] = false;
+  starts(status_of(t.dump()), "/observables/3/status: expected a string");
+}
+
+BOOST_AUTO_TEST_CASE(the_table_beside_the_scene_file_or_none) {
+  BOOST_TEST(ladder_table_path("data/scenes/sphere_cylinder/recommended.json") ==
+             fs::path("data/scenes/sphere_cylinder/recommended.ladder.json"));
+  const fs::path dir =
+      fs::temp_directory_path() / ("mpm_discretization_error_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string scene = (dir / "s.json").string();
+  BOOST_TEST(!discretization_error(scene, kMine, summary()).has_value());
+  BOOST_TEST(!discretization_error("", kMine, summary()).has_value());
+  std::ofstream(dir / "s.ladder.json") << table().dump(2);
+  const auto e = discretization_error(scene, kMine, summary());
+  BOOST_REQUIRE(e.has_value());
+  BOOST_TEST(e->at("table") == (dir / "s.ladder.json").string());
+  BOOST_TEST(e->at("observables").size() == 4u);
+  fs::create_directories(dir / "d.ladder.json");  // a directory where the table would be
+  const auto d = discretization_error((dir / "d.json").string(), kMine, summary());
+  BOOST_REQUIRE(d.has_value());
+  BOOST_TEST(d->at("status") == "unreadable: not a regular file");
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
