@@ -43,14 +43,34 @@ const Json& array_at(const Json& node, const std::string& key, const std::string
   return v;
 }
 
+// The relative error of `value` against the extrapolated value (null when there is none or 0).
+void set_error(Json& out, double value) {
+  out["value"] = value;
+  const Json& extrapolated = out["extrapolated"];
+  const double x = extrapolated.is_number() ? extrapolated.get<double>() : 0.0;
+  out["error [-]"] = x != 0.0 ? Json((value - x) / std::abs(x)) : Json(nullptr);
+}
+
 // The observable's entry: the table's numbers with this run's value and its relative error. A
-// pointer that is not one gives a status instead; nullopt when it names no number here.
-std::optional<Json> observable(const Json& o, const std::string& path, const Json& summary) {
-  Json out = {{"path", string_at(o, "path", path)},
+// pointer that is not one gives a status instead; nullopt when it names no number here. A null
+// path marks an observable the summary does not hold (a Taylor rod's Lf and Dm, measured from
+// snapshots by campaigns/study/ladder.py): its value is the ladder's own for the matching level
+// (`level_index` into "values"), which this run repeats bit for bit (same fingerprint).
+std::optional<Json> observable(const Json& o, const std::string& path, const Json& summary,
+                               std::size_t level_index) {
+  const Json& named = member(o, "path", path);
+  Json out = {{"path", named.is_null() ? Json(nullptr) : Json(string_at(o, "path", path))},
               {"extrapolated", number_or_null(o, "extrapolated", path)},
               {"gci_fine [-]", number_or_null(o, "gci_fine [-]", path)},
               {"order", number_or_null(o, "order", path)},
               {"status", string_at(o, "status", path)}};
+  if (named.is_null()) {
+    const Json& values = array_at(o, "values", path);
+    if (level_index >= values.size() || !values[level_index].is_number()) return std::nullopt;
+    set_error(out, values[level_index].get<double>());
+    out["value_source"] = "the ladder's run of this level (campaigns/study/ladder.py)";
+    return out;
+  }
   Json::json_pointer pointer;
   try {
     pointer = Json::json_pointer(out["path"].get<std::string>());
@@ -64,11 +84,7 @@ std::optional<Json> observable(const Json& o, const std::string& path, const Jso
   } catch (const Json::exception&) {  // e.g. "/a/b" where /a is an array: not found
   }
   if (found == nullptr || !found->is_number()) return std::nullopt;
-  const double value = found->get<double>();
-  out["value"] = value;
-  const Json& extrapolated = out["extrapolated"];
-  const double x = extrapolated.is_number() ? extrapolated.get<double>() : 0.0;
-  out["error [-]"] = x != 0.0 ? Json((value - x) / std::abs(x)) : Json(nullptr);
+  set_error(out, found->get<double>());
   return out;
 }
 
@@ -77,13 +93,17 @@ Json from_table(const std::string& table, const Json& doc, const std::string& fi
   if (!doc.is_object()) throw Unreadable("/: expected an object");
   const Json& levels = array_at(doc, "levels", "");
   const Json* match = nullptr;
+  std::size_t match_index = 0;
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const std::string path = "/levels/" + std::to_string(i);
     const std::string f = string_at(levels[i], "fingerprint", path);
     const Json& level = member(levels[i], "level", path);
     if (!level.is_number())
       throw Unreadable(path + "/level: expected a number, got " + level.dump());
-    if (f == fingerprint && match == nullptr) match = &levels[i];
+    if (f == fingerprint && match == nullptr) {
+      match = &levels[i];
+      match_index = i;
+    }
   }
   const Json& observables = array_at(doc, "observables", "");
   const std::string commit = string_at(doc, "commit", "");
@@ -96,7 +116,8 @@ Json from_table(const std::string& table, const Json& doc, const std::string& fi
   for (std::size_t i = 0; i < observables.size(); ++i) {
     const std::string path = "/observables/" + std::to_string(i);
     const std::string name = string_at(observables[i], "name", path);
-    if (auto entry = observable(observables[i], path, summary)) entries[name] = std::move(*entry);
+    if (auto entry = observable(observables[i], path, summary, match_index))
+      entries[name] = std::move(*entry);
   }
   return {{"table", table},
           {"level", (*match)["level"]},

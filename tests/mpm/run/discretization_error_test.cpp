@@ -105,6 +105,22 @@ BOOST_AUTO_TEST_CASE(a_matching_level_gives_each_observables_error) {
   BOOST_TEST(o.size() == 4u);
 }
 
+// A null path (Lf, Dm: measured by the ladder from snapshots, not in summary.json): the value is
+// the ladder's own at the matching level (the second: values[1]), marked as such.
+BOOST_AUTO_TEST_CASE(an_observable_without_a_path_takes_the_ladders_value_of_the_level) {
+  Json t = table();
+  t["observables"][0]["path"] = nullptr;
+  const Json e = of(t);
+  const Json& depth = e.at("observables").at("crater depth");
+  BOOST_TEST(depth.at("path").is_null());
+  BOOST_TEST(depth.at("value").get<double>() == 0.0091);
+  BOOST_TEST(depth.at("error [-]").get<double>() == (0.0091 - 0.0084) / 0.0084);
+  BOOST_TEST(depth.at("value_source").get<std::string>().find("ladder") != std::string::npos);
+  // No number for the level (a failed run there): left out.
+  t["observables"][0]["values"] = {0.0095, nullptr};
+  BOOST_TEST(!of(t).at("observables").contains("crater depth"));
+}
+
 BOOST_AUTO_TEST_CASE(no_matching_level_says_so) {
   const Json e = of(table("aaaaaaaaaaaaaaaa"));
   BOOST_TEST(e == Json({{"table", "T.ladder.json"},
@@ -153,8 +169,12 @@ BOOST_AUTO_TEST_CASE(a_malformed_table_is_unreadable_naming_the_key_path) {
   t["observables"][1]["gci_fine [-]"] = Json::array();
   starts(status_of(t.dump()), "/observables/1/gci_fine [-]: expected a number or null");
   t = table();
+  t["observables"][0]["path"] = 1;
+  starts(status_of(t.dump()), "/observables/0/path: expected a string, got 1");
+  t = table();
   t["observables"][0]["path"] = nullptr;
-  starts(status_of(t.dump()), "/observables/0/path: expected a string, got null");
+  t["observables"][0]["values"] = "0.0091";
+  starts(status_of(t.dump()), "/observables/0/values: expected an array");
   t = table();
   t["observables"][3]["status"] = false;
   starts(status_of(t.dump()), "/observables/3/status: expected a string");

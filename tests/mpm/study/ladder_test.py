@@ -7,7 +7,8 @@ wrote (ladder.csv), by another route than campaigns/study/gci.py's fixed point: 
 (phi3 - phi2) / (phi2 - phi1) = (h3^p - h2^p) / (h2^p - h1^p) (phi = phi0 + C h^p through the three
 points) by bisection, and phi0 = phi1 - C h1^p. Also: the cells of each level, a second invocation
 runs nothing again, a level stopped part-way resumes from its checkpoint to the same values,
-and Lf shortens and Dm grows from the undeformed rod.
+`mpm run` of a copy of the scene with the ladder table beside it reports the level-1 values and
+their error against the extrapolation (summary.json "discretization_error"), and Lf shortens and Dm grows from the undeformed rod.
 
   ladder_test.py MPM_BINARY"""
 
@@ -49,8 +50,20 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "ladder")
+        # A copy of the scene elsewhere (its material path made absolute) with the ladder table
+        # beside it: `mpm run` of the copy finds the table and its level by the fingerprint.
+        copy_dir = os.path.join(tmp, "scene")
+        os.makedirs(copy_dir)
+        with open(SCENE) as f:
+            scene = json.load(f)
+        for m in scene["materials"].values():
+            m["file"] = os.path.normpath(os.path.join(os.path.dirname(SCENE), m["file"]))
+        copy = os.path.join(copy_dir, "taylor_rod.json")
+        with open(copy, "w") as f:
+            json.dump(scene, f)
         cmd = [sys.executable, LADDER, SCENE, "--out", out, "--levels", "1,2,3", "--threads", "2",
-               "--mpm", mpm, "--no-plot"]
+               "--mpm", mpm, "--no-plot", "--table",
+               os.path.join(copy_dir, "taylor_rod.ladder.json")]
         subprocess.run(cmd, check=True)
         with open(os.path.join(out, "ladder.json")) as f:
             table = json.load(f)
@@ -88,6 +101,25 @@ def main():
             print(f"ladder_test: {name} {phi} -> order {p:.4f}, limit {phi0:.6g} (reported "
                   f"{reported['order']:.4f}, {reported['extrapolated']:.6g}, GCI "
                   f"{reported['gci_fine [-]']:.3g})")
+        # The error bar of a run of the scene: the level-1 values and their error against the
+        # ladder's extrapolation, in summary.json.
+        run1 = os.path.join(tmp, "run1")
+        subprocess.run([mpm, "run", copy, "--out", run1, "--threads", "2", "-q"], check=True)
+        with open(os.path.join(run1, "summary.json")) as f:
+            bar = json.load(f).get("discretization_error", {})
+        if bar.get("level") != 1.0:
+            failures.append(f"the run's discretization_error: {bar}")
+        for name in ("Lf", "Dm"):
+            o = bar.get("observables", {}).get(name, {})
+            want = next(float(r["value"]) for r in rows if r["observable"] == name
+                        and r["run"] == "x1")
+            reported = next(x for x in table["observables"] if x["name"] == name)
+            ext = reported["extrapolated"]
+            if ext is None:
+                continue
+            error = o.get("error [-]", 1e9)
+            if o.get("value") != want or abs(error - (want - ext) / abs(ext)) > 1e-15:
+                failures.append(f"{name}: error bar {o} against x1 {want}, extrapolated {ext}")
         stamps = {d: os.path.getmtime(os.path.join(out, "runs", d, "summary.json"))
                   for d in ("x1", "x2", "x3")}
         again = subprocess.run(cmd, capture_output=True, text=True, check=True)
