@@ -213,7 +213,9 @@ int run_main(int argc, char** argv) {
   std::vector<impact::Json> patches;
   try {
     patches = impact::cli::patches_of(set_texts);
-    if (study->parsed() && !ladder_levels.empty()) {
+    if (study->parsed() && study->get_option("--ladder")->count() > 0) {
+      if (ladder_levels.empty())
+        return usage_error("study --ladder: expected levels, e.g. --ladder 1,1.5,2.25");
       if (!cases.empty()) return usage_error("study --ladder runs one scene: no --cases");
       impact::mpm::LadderOptions ladder;
       ladder.scene_file = scene_file;

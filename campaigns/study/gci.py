@@ -161,11 +161,14 @@ FORMAL_ORDER = 1.0  # explicit MPM on shocks, contact and plasticity: first orde
 def conservative_gci(e_a, r21, p, formal_order=FORMAL_ORDER):
     """The GCI of Roache (1998) as Oberkampf & Roy (2010, sec. 8.7) recommend it when the observed
     order p is more than 10 % from the formal one: safety factor 3 and the order limited to
-    min(max(0.5, p), formal); within 10 % it is Celik's GCI_fine with Fs = 1.25."""
+    min(max(0.5, p), formal), and never below Celik's; within 10 % it is Celik's GCI_fine with
+    Fs = 1.25."""
+    celik = SAFETY_FACTOR * e_a / (r21 ** p - 1.0)
     if abs(p - formal_order) <= 0.1 * formal_order:
-        return SAFETY_FACTOR * e_a / (r21 ** p - 1.0)
+        return celik
     used = min(max(0.5, p), formal_order)
-    return 3.0 * e_a / (r21 ** used - 1.0)
+    # Never below Celik's: with p < 0.5 the limited order would give the smaller band.
+    return max(celik, 3.0 * e_a / (r21 ** used - 1.0))
 
 
 def ladder(values, h, safety_factor=SAFETY_FACTOR):

@@ -51,6 +51,8 @@ sys.path.insert(0, HERE)
 import gci  # noqa: E402
 
 ANVIL_LAYER = 0.5e-3  # Dm: particles within this distance of the anvil [m] (campaigns/taylor)
+# Observed orders a first-order method can plausibly show; outside, the extrapolation is flagged.
+PLAUSIBLE_ORDER = (0.5, 2.0)
 
 
 # --- the scene -----------------------------------------------------------------------------------
@@ -99,17 +101,31 @@ def dimension(scene):
     return len(scene["grid"]["cells"])
 
 
+THIN_AXIS = 3  # an axis of fewer cells is a slice's thickness (a 1-D bar, a plate): not refined
+
+
+def refined_axes(scene):
+    """The axes a ladder refines: those of at least THIN_AXIS cells (all, if none is)."""
+    cells = scene["grid"]["cells"]
+    axes = [i for i, c in enumerate(cells) if c >= THIN_AXIS]
+    return axes or list(range(len(cells)))
+
+
 def representative_h(scene, cells):
-    """(cell volume)^(1/D) [m] (Celik et al. 2008, eq. 1; cells of one size)."""
+    """(cell volume)^(1/D) [m] over the refined axes (Celik et al. 2008, eq. 1; cells of one
+    size): a thin axis that keeps its cells does not enter the refinement."""
     lo, up = scene["grid"]["lower"], scene["grid"]["upper"]
+    axes = refined_axes(scene)
     vol = 1.0
-    for a, b, n in zip(lo, up, cells):
-        vol *= (b - a) / n
-    return vol ** (1.0 / len(cells))
+    for i in axes:
+        vol *= (up[i] - lo[i]) / cells[i]
+    return vol ** (1.0 / len(axes))
 
 
 def level_cells(scene, level):
-    return [max(1, int(math.floor(c * level + 0.5))) for c in scene["grid"]["cells"]]
+    axes = refined_axes(scene)
+    return [max(1, int(math.floor(c * level + 0.5))) if i in axes else c
+            for i, c in enumerate(scene["grid"]["cells"])]
 
 
 def run_name(level, ppc=None):
@@ -286,12 +302,14 @@ def taylor_measures(run_dir, scene, rod):
         lowest = min(vtu.read_vtu(f)["points"][mine][:, 0].min() for _, f in snaps)
         face_lift = float(x[:, 0].min() - lowest)
     x = x - np.array([anvil + face_lift, 0.0, 0.0])
+    # Failed particles are debris, not the rod's shape (with erosion off there are none).
+    intact = (last["failed"][mine] < 0.5) if "failed" in last else np.ones(len(x), bool)
     axial = g["top"][0] - X0[:, 0].max()
     radial = g["radius"] - radius(X0).max()
-    Lf = x[:, 0].max() + axial
-    near = x[:, 0] < ANVIL_LAYER
+    Lf = x[intact, 0].max() + axial
+    near = (x[:, 0] < ANVIL_LAYER) & intact
     if not near.any():
-        raise ValueError("no particle of the rod within 0.5 mm of the anvil")
+        raise ValueError("no intact particle of the rod within 0.5 mm of the anvil")
     Dm = 2.0 * (radius(x[near]).max() + radial)
     return float(Lf), float(Dm)
 
@@ -375,11 +393,19 @@ def analyse(runs, observables):
         status = (finest["condition"] if finest else "fewer than three levels")
         monotonic = bool(finest and finest["condition"] == "monotonic" and finest["order"])
         if monotonic:
-            status = "extrapolated"
+            p = finest["order"]
+            status = "extrapolated" if PLAUSIBLE_ORDER[0] <= p <= PLAUSIBLE_ORDER[1] else (
+                f"extrapolated with an implausible order {p:.2g} (outside "
+                f"[{PLAUSIBLE_ORDER[0]:g}, {PLAUSIBLE_ORDER[1]:g}]): read the conservative GCI")
         elif finest and finest["condition"] == "oscillatory":
             status = (f"oscillatory convergence: no extrapolation; error bounded by half the "
                       f"range, +-{100 * finest['oscillation_band']:.2g} %"
                       if finest["oscillation_band"] is not None else "oscillatory convergence")
+        # The verdict on the asymptotic range goes into the status, which mpm run's error bar
+        # carries into summary.json: an extrapolation outside it is an estimate, not an answer.
+        status += {True: "; in the asymptotic range (two triples agree)",
+                   False: f"; not in the asymptotic range ({why})",
+                   None: f"; asymptotic range not tested ({why})"}[asym]
         result[name] = {"name": name, "path": pointer, "unit": unit,
                         "levels": [r["level"] for r in ladder_runs], "h [m]": hs, "values": vals,
                         "triples": triples, "status": status,
@@ -420,7 +446,9 @@ def write_outputs(args, scene_file, runs, observables, result, plot):
                             d["ranks"]])
     ladder_runs = sorted([r for r in runs if r["ppc"] is None and r["data"]], key=lambda r: r["h"])
     table = {
-        "scene": os.path.relpath(os.path.abspath(scene_file), ROOT),
+        "scene": (os.path.relpath(os.path.abspath(scene_file), ROOT)
+                  if os.path.abspath(scene_file).startswith(ROOT + os.sep)
+                  else os.path.abspath(scene_file)),
         "command": args.command_line, "commit": git_commit(),
         "date": datetime.date.today().isoformat(),
         "definitions": "docs/accuracy.md#grid-convergence-ladders",
@@ -460,8 +488,8 @@ def write_outputs(args, scene_file, runs, observables, result, plot):
                      f"{lv['threads']} x {lv['ranks']} | {fmt(lv['energy_error [-]'], 3)} |")
     lines += ["", "| observable | " + " | ".join(f"x{lv['level']:g}" for lv in table["levels"])
               + " | extrapolated | order p | GCI_fine (finest) | conservative GCI | "
-              "x1 error vs extrapolated | status | asymptotic range |",
-              "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|---|"]
+              "x1 error vs extrapolated | status |",
+              "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|"]
 
     def pct(x):
         return f"{100 * x:.2g} %" if x is not None else "-"
@@ -475,7 +503,7 @@ def write_outputs(args, scene_file, runs, observables, result, plot):
                      + f" | {fmt(ext)} | {fmt(res['order'], 3)} | {pct(res['gci_fine [-]'])} | "
                      + f"{pct(res['gci_conservative [-]'])}"
                      + f" | {(f'{100 * err:+.1f} %' if err is not None else '-')} | "
-                     f"{res['status']} | {res['asymptotic']}: {res['asymptotic_reason']} |")
+                     f"{res['status']} |")
     lines += ["", "Every consecutive triple (finest first): condition, order, extrapolated value, "
               "GCI_fine.", ""]
     for res in result.values():
@@ -666,12 +694,26 @@ def main(argv):
         scene = load_resolved(args.scene)
         for x in sets:
             scene = merge_patch(scene, x)
-        scene["grid"]["cells"], scene["grid"]["lower"], scene["grid"]["upper"]
-        scene["time"]["max_time"]
-    except (OSError, ValueError, KeyError, TypeError) as e:
+        g = scene["grid"]
+        if not (isinstance(g["cells"], list) and all(isinstance(c, int) and c >= 1
+                                                    for c in g["cells"])
+                and len(g["lower"]) == len(g["upper"]) == len(g["cells"]) in (2, 3)
+                and all(isinstance(a, (int, float)) and isinstance(b, (int, float)) and b > a
+                        for a, b in zip(g["lower"], g["upper"]))
+                and isinstance(scene["time"]["max_time"], (int, float))):
+            raise ValueError("expected /grid/cells whole numbers >= 1, /grid/lower and /grid/upper "
+                             "numbers (upper > lower) of the same length 2 or 3, and a number "
+                             "/time/max_time")
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, IndexError) as e:
         print(f"ladder: {args.scene}: cannot read the scene's grid (/grid/cells, /grid/lower, "
               f"/grid/upper) and /time/max_time: {e}", file=sys.stderr)
         return 2
+    for path, what in ((args.out, "--out"), (args.runs, "--runs")):
+        if path and os.path.exists(path) and not os.path.isdir(path):
+            ap.error(f"{what} {path}: exists and is not a directory")
+    if args.table and (os.path.isdir(args.table) or not os.path.isdir(
+            os.path.dirname(os.path.abspath(args.table)))):
+        ap.error(f"--table {args.table}: expected a file path in an existing directory")
     if not args.analyse_only and not os.access(args.mpm, os.X_OK):
         print(f"ladder: --mpm {args.mpm}: not an executable (build it: cmake --build build)",
               file=sys.stderr)
@@ -694,6 +736,21 @@ def main(argv):
                   "takes it into account, but the refinement is not uniform", file=sys.stderr)
     plan = [(lv, None) for lv in sorted(args.levels)]
     plan += [(lv, int(p)) for lv in sorted(args.ppc_levels) for p in args.particles_per_cell]
+    if not args.analyse_only:  # every level's scene is checked before anything runs
+        problems = []
+        for level, ppc in plan:
+            path = os.path.join(args.out, "scenes", run_name(level, ppc) + ".json")
+            write_level_scene(path, args.scene, scene, level, ppc, args.checkpoint_steps, rod,
+                              sets)
+            done = subprocess.run([args.mpm, "check", path, "--threads", "1"],
+                                  capture_output=True, text=True)
+            if done.returncode != 0:
+                problems.append(f"level {run_name(level, ppc)} (exit {done.returncode}): "
+                                + (done.stderr.strip() or done.stdout.strip()))
+        if problems:
+            print("ladder: a level's scene is refused; nothing was run:\n" + "\n".join(problems),
+                  file=sys.stderr)
+            return 2
     runs, failed = [], []
     for level, ppc in plan:
         name = run_name(level, ppc)

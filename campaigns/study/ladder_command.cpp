@@ -1,5 +1,6 @@
 #include "campaigns/study/ladder_command.hpp"
 
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -40,7 +41,20 @@ int run_ladder(const LadderOptions& options) {
   if (!options.plot || !python.matplotlib) argv.emplace_back("--no-plot");
   if (options.plot && !python.matplotlib)
     std::cerr << "mpm study --ladder: python3 cannot import matplotlib: tables only\n";
-  return spawn_process(argv, false);
+  // Ctrl-C reaches the whole process group: the script stops its level (one SIGINT to mpm, which
+  // writes its checkpoint) and exits 130. This process waits for it instead of dying first and
+  // handing the prompt back while the checkpoint is still being written. A handler that does
+  // nothing, unlike SIG_IGN, is not inherited: the script keeps the default.
+  struct sigaction quiet {
+  }, old_int{}, old_term{};
+  quiet.sa_handler = [](int) {};
+  sigemptyset(&quiet.sa_mask);
+  sigaction(SIGINT, &quiet, &old_int);
+  sigaction(SIGTERM, &quiet, &old_term);
+  const int code = spawn_process(argv, false);
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
+  return code;
 }
 
 }  // namespace impact::mpm

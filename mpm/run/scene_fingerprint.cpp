@@ -9,7 +9,17 @@ namespace impact::mpm {
 Json fingerprint_document(const Json& resolved) {
   Json doc = resolved;
   if (!doc.is_object()) return doc;
-  doc.erase("output");
+  // Of the output settings only those the observables depend on: the history interval (the
+  // peaks are sampled at its rows) and the gauges' and crater's definitions. Where files go,
+  // snapshots, fields and checkpoints change no number of the run.
+  if (doc.contains("output") && doc["output"].is_object()) {
+    Json kept = Json::object();
+    for (const char* key : {"interval", "gauges", "crater"})
+      if (doc["output"].contains(key)) kept[key] = doc["output"][key];
+    doc["output"] = kept;
+  } else {
+    doc.erase("output");
+  }
   doc.erase("description");
   if (!doc.contains("materials") || !doc["materials"].is_object()) return doc;
   for (auto& item : doc["materials"].items()) {

@@ -3,8 +3,9 @@
 // convergence ladder (mpm/run/discretization_error.hpp). It is the 64-bit FNV-1a of the compact
 // dump (keys sorted) of the resolved scene document, as `mpm run` writes it to DIR/scene.json,
 // with
-//   - the top-level keys "output" and "description" removed (where and what a run writes, and
-//     free text, change no result), and
+//   - "description" removed and of "output" only "interval", "gauges" and "crater" kept (where
+//     and what a run writes, and free text, change no result; the history interval sets the rows
+//     at which peaks are sampled, and the gauges and crater define observables), and
 //   - every material {"file": PATH, "overrides": O} replaced by the content of its file with O
 //     applied (RFC 7396), the document the material reader validates: the fingerprint depends on
 //     the material's values, not on the working directory or where the repository is cloned.

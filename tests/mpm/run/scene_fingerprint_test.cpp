@@ -2,7 +2,8 @@
 // docs/mpm.md#output) of data/scenes/verification/rigid_translation.json (extends
 // elastic_base.json, one material file with overrides):
 // - 16 lowercase hex digits;
-// - an output-only change (directory, interval, gauges) or a new description keeps it;
+// - a change of where or what a run writes (directory, snapshots, fields, checkpoints) or a new
+//   description keeps it; one of the history interval or the gauges changes it;
 // - a grid, time, solver, physics or object change changes it, and so does a material value
 //   (an override, or the material file's own content in a copy);
 // - the scene copied into another directory, its material path rewritten to reach the same file
@@ -56,8 +57,15 @@ BOOST_AUTO_TEST_CASE(sixteen_hex_digits_kept_by_output_changed_by_physics) {
   BOOST_TEST(std::regex_match(base, std::regex("[0-9a-f]{16}")));
   BOOST_TEST(fingerprint() == base);
   // Where and what a run writes, and free text: the same scene.
-  BOOST_TEST(fingerprint({{"output", {{"directory", "elsewhere"}, {"interval", 1e-6}}}}) == base);
+  BOOST_TEST(fingerprint({{"output",
+                           {{"directory", "elsewhere"},
+                            {"snapshots", false},
+                            {"fields", {"velocity"}},
+                            {"checkpoint_interval_steps", 10}}}}) == base);
   BOOST_TEST(fingerprint({{"description", "another text"}}) == base);
+  // What the observables depend on: the history interval (peaks are sampled at its rows) and
+  // the gauges' and crater's definitions.
+  BOOST_TEST(fingerprint({{"output", {{"interval", 1e-6}}}}) != base);
   BOOST_TEST(
       fingerprint(
           {{"output",
@@ -67,7 +75,7 @@ BOOST_AUTO_TEST_CASE(sixteen_hex_digits_kept_by_output_changed_by_physics) {
                  {"object", "block"},
                  {"component", "x"},
                  {"region", {{"lower", {0.02, 0.02, 0.02}}, {"upper", {0.04, 0.04, 0.04}}}}}}}},
-             {"snapshots", true}}}}) == base);
+             {"snapshots", true}}}}) != base);
   // Anything the solution depends on: another scene.
   const std::vector<Json> changes = {
       {{"grid", {{"cells", {24, 24, 24}}}}},
