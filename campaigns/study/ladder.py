@@ -428,7 +428,7 @@ def git_commit():
         return "unknown"
 
 
-def write_outputs(args, scene_file, runs, observables, result, plot):
+def write_outputs(args, scene_file, runs, observables, result, plot, scene_objects=None):
     out = args.out
     with open(os.path.join(out, "ladder.csv"), "w", newline="") as f:
         w = csv.writer(f)
@@ -512,7 +512,8 @@ def write_outputs(args, scene_file, runs, observables, result, plot):
                  + (f"{100 * t['gci_fine']:.2g} %" if t["gci_fine"] is not None else "-")
                  for t in res["triples"]]
         lines.append(f"- **{res['name']}**: " + ("; ".join(parts) if parts else "no triple"))
-    lines += ppc_lines(runs, observables)
+    first = next(iter(scene_objects.values()), {}) if scene_objects else {}
+    lines += ppc_lines(runs, observables, (first.get("particles_per_cell") or [2])[0])
     with open(os.path.join(out, "ladder.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     if plot:
@@ -520,39 +521,45 @@ def write_outputs(args, scene_file, runs, observables, result, plot):
         draw_cost(out, table, result)
 
 
-def ppc_lines(runs, observables):
+def ppc_lines(runs, observables, base_ppc=2):
     """Particles per cell apart from cells: at each level with --particles-per-cell runs, each
-    observable's spread over the particle counts (max - min, relative to the main ladder's value
-    there) beside its change from the next coarser grid (relative likewise)."""
+    observable per particle count, its spread over the counts (max - min, relative to the main
+    ladder's value there), the change from the scene's count to the next larger one, and beside
+    them its change from the next coarser grid (relative likewise)."""
     ppc_runs = [r for r in runs if r["ppc"] is not None and r["data"]]
     if not ppc_runs:
         return []
+    counts = sorted({r["ppc"] for r in ppc_runs})
     main = sorted([r for r in runs if r["ppc"] is None and r["data"]], key=lambda r: r["level"])
-    base_ppc = "scene's"
     lines = ["", "Particles per cell per axis at fixed grids (quadrature against grid error): "
-             "values per particle count; spread = (max - min) / |value at the scene's count|; grid "
-             "= |value - value one level coarser| / |value| at the scene's count.", "",
-             "| level | observable | " + " | ".join(
-                 f"{p} per axis" for p in sorted({r['ppc'] for r in ppc_runs})) +
-             f" | {base_ppc} | spread over particle counts | grid change |",
-             "|---|---|" + "---|" * (len({r['ppc'] for r in ppc_runs}) + 3)]
+             "values per particle count; spread = (max - min) / |value at the scene's count|; "
+             "next count = |value at the next larger count - value at the scene's| / |value at the "
+             "scene's|; grid = |value - value one level coarser| / |value|, at the scene's count.",
+             "", "| level | observable | " + " | ".join(f"{p} per axis" for p in counts)
+             + " | scene's | spread over particle counts | next count | grid change |",
+             "|---|---|" + "---|" * (len(counts) + 4)]
+
+    def rel(a, b):
+        return f"{100 * abs(a - b) / abs(b):.1f} %" if (a is not None and b) else "-"
+
     for level in sorted({r["level"] for r in ppc_runs}):
         here = {r["ppc"]: r for r in ppc_runs if r["level"] == level}
         ref = next((r for r in main if r["level"] == level), None)
         coarser = [r for r in main if r["level"] < level]
         coarser = coarser[-1] if coarser else None
         for name, _, _ in observables:
-            vals = [here[p]["data"]["values"].get(name) for p in sorted(here)]
+            vals = [here[p]["data"]["values"].get(name) if p in here else None for p in counts]
             v_ref = ref["data"]["values"].get(name) if ref else None
             known = [v for v in vals + [v_ref] if v is not None]
             spread = ((max(known) - min(known)) / abs(v_ref)
                       if v_ref and len(known) > 1 else None)
+            larger = next((v for p, v in zip(counts, vals) if v is not None and p > base_ppc),
+                          None)
             v_c = coarser["data"]["values"].get(name) if coarser else None
-            grid = abs(v_ref - v_c) / abs(v_ref) if (v_ref and v_c is not None) else None
             lines.append(f"| x{level:g} | {name} | " + " | ".join(fmt(v) for v in vals)
                          + f" | {fmt(v_ref)} | "
                          + (f"{100 * spread:.1f} %" if spread is not None else "-") + " | "
-                         + (f"{100 * grid:.1f} %" if grid is not None else "-") + " |")
+                         + rel(larger, v_ref) + " | " + rel(v_c, v_ref) + " |")
     return lines
 
 
@@ -776,7 +783,8 @@ def main(argv):
         if r["data"] and not r["data"]["fingerprint"]:
             r["data"]["fingerprint"] = fingerprint_of(args, r["scene_path"])
     result = analyse(runs, observables)
-    write_outputs(args, args.scene, runs, observables, result, not args.no_plot)
+    write_outputs(args, args.scene, runs, observables, result, not args.no_plot,
+                  scene.get("objects", {}))
     print(f"ladder: {os.path.join(args.out, 'ladder.md')}" + (f", table {args.table}"
                                                                 if args.table else ""))
     if failed:

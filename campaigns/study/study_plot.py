@@ -269,20 +269,25 @@ def discretization_error_lines(case):
     lines = head + [
         f"This run is level x{g(d.get('level'))} of the ladder in {d.get('table')} (made at commit "
         f"{d.get('ladder_commit', '?')}). error = (this run - extrapolated) / abs(extrapolated); "
-        "the extrapolated value is Richardson's from the ladder's three finest levels, GCI_fine its "
-        "uncertainty band (Celik et al. 2008, safety factor 1.25), order p the observed one.",
+        "the extrapolated value is Richardson's from the ladder's three finest levels, GCI_fine "
+        "the uncertainty band of the finest level's value (Celik et al. 2008, safety factor 1.25; "
+        "not this run's), the conservative GCI Oberkampf & Roy's (2010), order p the observed "
+        "one. An extrapolation outside the asymptotic range (see status) is an estimate, not an "
+        "answer (docs/accuracy.md#grid-convergence-ladders).",
         "",
-        "| observable | this run | extrapolated | error | GCI_fine of the finest level | order p | "
-        "status |",
-        "|---|---|---|---|---|---|---|",
+        "| observable | this run | extrapolated | error | GCI_fine of the finest level | "
+        "conservative GCI | order p | status |",
+        "|---|---|---|---|---|---|---|---|",
     ]
     for name, o in d["observables"].items():
         if not isinstance(o, dict):
             continue
-        gci = o.get("gci_fine [-]")
+        def band(x):
+            return f"{100 * x:.2g} %" if isinstance(x, (int, float)) else "-"
+
         lines.append(f"| {name} | {g(o.get('value'))} | {g(o.get('extrapolated'))} | "
-                     f"{pct(o.get('error [-]'))} | "
-                     f"{(f'{100 * gci:.2g} %' if isinstance(gci, (int, float)) else '-')} | "
+                     f"{pct(o.get('error [-]'))} | {band(o.get('gci_fine [-]'))} | "
+                     f"{band(o.get('gci_conservative [-]'))} | "
                      f"{g(o.get('order'))} | {o.get('status', '')} |")
     return lines + [""]
 

@@ -64,6 +64,9 @@ std::optional<Json> observable(const Json& o, const std::string& path, const Jso
               {"gci_fine [-]", number_or_null(o, "gci_fine [-]", path)},
               {"order", number_or_null(o, "order", path)},
               {"status", string_at(o, "status", path)}};
+  // Optional (tables before it lack it): the conservative GCI of Oberkampf & Roy (2010).
+  if (o.contains("gci_conservative [-]"))
+    out["gci_conservative [-]"] = number_or_null(o, "gci_conservative [-]", path);
   if (named.is_null()) {
     const Json& values = array_at(o, "values", path);
     if (level_index >= values.size() || !values[level_index].is_number()) return std::nullopt;

@@ -41,7 +41,14 @@ Json observable(const std::string& name, const std::string& path, const Json& ex
           {"status", "extrapolated"}};
 }
 
-Json table(const std::string& fingerprint = kMine) {
+Json table(const std::string& fingerprint = kMine);
+
+Json with_conservative(Json o) {
+  o["gci_conservative [-]"] = 0.12;
+  return o;
+}
+
+Json table(const std::string& fingerprint) {
   return {{"scene", "data/scenes/sphere_cylinder/recommended.json"},
           {"command", "python3 -m campaigns.study.ladder"},
           {"commit", "750b794"},
@@ -50,7 +57,7 @@ Json table(const std::string& fingerprint = kMine) {
            {{{"level", 1.0}, {"fingerprint", "ffffffffffffffff"}, {"cells", {50, 20, 20}}},
             {{"level", 2.0}, {"fingerprint", fingerprint}, {"cells", {100, 40, 40}}}}},
           {"observables",
-           {observable("crater depth", "/observables/crater/depth [m]", 0.0084),
+           {with_conservative(observable("crater depth", "/observables/crater/depth [m]", 0.0084)),
             observable("no extrapolation", "/observables/crater/depth [m]", nullptr),
             observable("zero", "/final/energy_error", 0.0),
             observable("missing", "/observables/crater/volume [m^3]", 1.0),
@@ -90,6 +97,8 @@ BOOST_AUTO_TEST_CASE(a_matching_level_gives_each_observables_error) {
   BOOST_TEST(depth.at("gci_fine [-]").get<double>() == 0.05);
   BOOST_TEST(depth.at("order").get<double>() == 1.06);
   BOOST_TEST(depth.at("status") == "extrapolated");
+  BOOST_TEST(depth.at("gci_conservative [-]").get<double>() == 0.12);
+  BOOST_TEST(!o.at("zero").contains("gci_conservative [-]"));  // optional: absent, not invented
   // No extrapolated value, or 0: no relative error.
   BOOST_TEST(o.at("no extrapolation").at("error [-]").is_null());
   BOOST_TEST(o.at("no extrapolation").at("value").get<double>() == 0.009);
