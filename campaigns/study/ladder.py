@@ -44,6 +44,7 @@ import shlex
 import signal
 import subprocess
 import sys
+import textwrap
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -623,7 +624,8 @@ def draw(out, result):
         ax.set_xlim(left=0.0)
         ax.set_xlabel("representative cell size h [mm]")
         ax.set_ylabel(f"{res['name']} [{res['unit']}]")
-        ax.set_title(f"{res['name']}: {res['status']}", fontsize=9)
+        ax.set_title("\n".join(textwrap.wrap(f"{res['name']}: {res['status']}", 75)),
+                     fontsize=7)
         ax.legend(fontsize=8)
         fig.tight_layout()
         safe = "".join(c if c.isalnum() else "_" for c in res["name"])
