@@ -196,7 +196,7 @@ def run_level(args, scene_path, scene_text, run_dir):
     marker = os.path.join(run_dir, "ladder_scene.json")
     resumable = (os.path.exists(os.path.join(run_dir, "checkpoint.bin"))
                  and os.path.exists(marker) and open(marker).read() == scene_text)
-    prefix = [args.mpirun, "-np", str(args.ranks)] if args.ranks > 1 else []
+    prefix = shlex.split(args.mpirun) + ["-np", str(args.ranks)] if args.ranks > 1 else []
     if resumable:
         cmd = prefix + [args.mpm, "run", "--restart", run_dir, "--threads", str(args.threads),
                         "-q"]
@@ -294,17 +294,21 @@ def taylor_measures(run_dir, scene, rod):
         return abs(p[:, 1] - axis[1]) if planar else ((p[:, 1] - axis[1]) ** 2
                                                       + (p[:, 2] - axis[2]) ** 2) ** 0.5
 
-    X0, x = first["points"][mine], last["points"][mine]
+    # The particles' order (and on several ranks their grouping) differs between snapshots:
+    # each snapshot is masked by its own object ids.
+    mine_last = last["object"] == index
+    X0, x = first["points"][mine], last["points"][mine_last]
     # The anvil is the grid's x- face; a rod that bounced off a `wall` anvil is measured from
     # its impact face where it lay at its lowest over the snapshots (taylor.py's face_lift).
     anvil = scene["grid"]["lower"][0]
     face_lift = 0.0
     if scene["grid"].get("boundary", {}).get("x-") == "wall":
-        lowest = min(vtu.read_vtu(f)["points"][mine][:, 0].min() for _, f in snaps)
+        lowest = min(snap["points"][snap["object"] == index][:, 0].min()
+                     for snap in (vtu.read_vtu(f) for _, f in snaps))
         face_lift = float(x[:, 0].min() - lowest)
     x = x - np.array([anvil + face_lift, 0.0, 0.0])
     # Failed particles are debris, not the rod's shape (with erosion off there are none).
-    intact = (last["failed"][mine] < 0.5) if "failed" in last else np.ones(len(x), bool)
+    intact = (last["failed"][mine_last] < 0.5) if "failed" in last else np.ones(len(x), bool)
     axial = g["top"][0] - X0[:, 0].max()
     radial = g["radius"] - radius(X0).max()
     Lf = x[intact, 0].max() + axial
@@ -666,7 +670,8 @@ def main(argv):
     ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--set", action="append", default=[], help="JSON merge patch over the scene")
     ap.add_argument("--mpm", default=os.path.join(ROOT, "build", "bin", "mpm"))
-    ap.add_argument("--mpirun", default="mpirun")
+    ap.add_argument("--mpirun", default="mpirun",
+                    help="the MPI launcher with its options, e.g. 'mpirun --oversubscribe'")
     ap.add_argument("--checkpoint-steps", type=int, default=200)
     ap.add_argument("--runs", default=None, help="where the runs go (default OUT/runs)")
     ap.add_argument("--table", default=None)

@@ -2,6 +2,7 @@
 UInt64 headers, little endian; mpm/output/vtu_writer.cpp): positions and point-data arrays as numpy
 arrays. No VTK needed; ParaView reads the same files directly."""
 
+import os
 import re
 
 import numpy as np
@@ -12,7 +13,14 @@ _ARRAY = re.compile(rb'<DataArray type="(\w+)"(?: Name="(\w+)")? NumberOfCompone
 
 
 def read_vtu(path):
-    """{"points": (n, 3) array [m], field name: (n,) or (n, k) array} of one snapshot."""
+    """{"points": (n, 3) array [m], field name: (n,) or (n, k) array} of one snapshot. A .pvtu
+    (a run on several MPI ranks: one .vtu piece per rank) gives its pieces concatenated in the
+    order it lists them."""
+    if path.endswith(".pvtu"):
+        with open(path) as f:
+            sources = re.findall(r'<Piece Source="([^"]+)"', f.read())
+        pieces = [read_vtu(os.path.join(os.path.dirname(path), s)) for s in sources]
+        return {k: np.concatenate([p[k] for p in pieces]) for k in pieces[0]} if pieces else {}
     with open(path, "rb") as f:
         blob = f.read()
     start = blob.index(b'<AppendedData encoding="raw">')
