@@ -57,7 +57,7 @@ void set_error(Json& out, double value) {
 // snapshots by campaigns/study/ladder.py): its value is the ladder's own for the matching level
 // (`level_index` into "values"), which this run repeats bit for bit (same fingerprint).
 std::optional<Json> observable(const Json& o, const std::string& path, const Json& summary,
-                               std::size_t level_index) {
+                               std::size_t level_index, std::size_t level_count) {
   const Json& named = member(o, "path", path);
   Json out = {{"path", named.is_null() ? Json(nullptr) : Json(string_at(o, "path", path))},
               {"extrapolated", number_or_null(o, "extrapolated", path)},
@@ -69,7 +69,16 @@ std::optional<Json> observable(const Json& o, const std::string& path, const Jso
     out["gci_conservative [-]"] = number_or_null(o, "gci_conservative [-]", path);
   if (named.is_null()) {
     const Json& values = array_at(o, "values", path);
-    if (level_index >= values.size() || !values[level_index].is_number()) return std::nullopt;
+    if (values.size() != level_count) {
+      throw Unreadable(path + "/values: expected one entry per level (" +
+                       std::to_string(level_count) + "), got " + std::to_string(values.size()));
+    }
+    const Json& v = values[level_index];
+    if (!v.is_number() && !v.is_null()) {
+      throw Unreadable(path + "/values/" + std::to_string(level_index) +
+                       ": expected a number or null, got " + v.dump());
+    }
+    if (v.is_null()) return std::nullopt;  // that level's run gave no value
     set_error(out, values[level_index].get<double>());
     out["value_source"] = "the ladder's run of this level (campaigns/study/ladder.py)";
     return out;
@@ -103,6 +112,12 @@ Json from_table(const std::string& table, const Json& doc, const std::string& fi
     const Json& level = member(levels[i], "level", path);
     if (!level.is_number())
       throw Unreadable(path + "/level: expected a number, got " + level.dump());
+    for (std::size_t j = 0; j < i; ++j) {
+      if (levels[j]["fingerprint"] == f) {
+        throw Unreadable(path + "/fingerprint: the same as /levels/" + std::to_string(j) +
+                         "/fingerprint (two levels cannot be one scene)");
+      }
+    }
     if (f == fingerprint && match == nullptr) {
       match = &levels[i];
       match_index = i;
@@ -119,7 +134,7 @@ Json from_table(const std::string& table, const Json& doc, const std::string& fi
   for (std::size_t i = 0; i < observables.size(); ++i) {
     const std::string path = "/observables/" + std::to_string(i);
     const std::string name = string_at(observables[i], "name", path);
-    if (auto entry = observable(observables[i], path, summary, match_index))
+    if (auto entry = observable(observables[i], path, summary, match_index, levels.size()))
       entries[name] = std::move(*entry);
   }
   return {{"table", table},

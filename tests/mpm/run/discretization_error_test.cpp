@@ -34,7 +34,7 @@ Json observable(const std::string& name, const std::string& path, const Json& ex
   return {{"name", name},
           {"path", path},
           {"unit", "m"},
-          {"values", {0.0095, 0.0091, nullptr}},
+          {"values", {0.0095, 0.0091}},
           {"extrapolated", extrapolated},
           {"order", 1.06},
           {"gci_fine [-]", 0.05},
@@ -75,6 +75,11 @@ std::string status_of(const std::string& text) {
   BOOST_TEST(e.at("table") == "T.ladder.json");
   BOOST_TEST(!e.contains("observables"));
   return e.at("status").get<std::string>();
+}
+
+// The status of an unreadable table starts with the reason, naming the key path.
+void starts(const std::string& status, const std::string& reason) {
+  BOOST_TEST(status.rfind("unreadable: " + reason, 0) == 0u, status << " / " << reason);
 }
 
 }  // namespace
@@ -128,6 +133,20 @@ BOOST_AUTO_TEST_CASE(an_observable_without_a_path_takes_the_ladders_value_of_the
   // No number for the level (a failed run there): left out.
   t["observables"][0]["values"] = {0.0095, nullptr};
   BOOST_TEST(!of(t).at("observables").contains("crater depth"));
+  // Not one entry per level, or a string: the table is unreadable, not silently short.
+  t["observables"][0]["values"] = {0.0095};
+  starts(status_of(t.dump()), "/observables/0/values: expected one entry per level (2), got 1");
+  t["observables"][0]["values"] = {0.0095, "0.0091"};
+  starts(status_of(t.dump()), "/observables/0/values/1: expected a number or null");
+}
+
+// Two levels with one fingerprint would name one run twice: the table is unreadable.
+BOOST_AUTO_TEST_CASE(two_levels_with_one_fingerprint_make_the_table_unreadable) {
+  Json t = table();
+  t["levels"][0]["fingerprint"] = kMine;
+  starts(status_of(t.dump()),
+         "/levels/1/fingerprint: the same as /levels/0/fingerprint (two levels cannot be one "
+         "scene)");
 }
 
 BOOST_AUTO_TEST_CASE(no_matching_level_says_so) {
@@ -138,9 +157,6 @@ BOOST_AUTO_TEST_CASE(no_matching_level_says_so) {
 }
 
 BOOST_AUTO_TEST_CASE(a_malformed_table_is_unreadable_naming_the_key_path) {
-  const auto starts = [](const std::string& status, const std::string& reason) {
-    BOOST_TEST(status.rfind("unreadable: " + reason, 0) == 0u, status << " / " << reason);
-  };
   starts(status_of("{\"levels\": ["), "not JSON");
   starts(status_of(""), "not JSON");
   starts(status_of("[1, 2]"), "/: expected an object");
