@@ -2,7 +2,8 @@
 index of three solutions on systematically refined grids, as the ASME V&V 20 procedure states it
 in Celik, Ghia, Roache, Freitas, Coleman & Raad (2008), "Procedure for estimation and reporting of
 uncertainty due to discretization in CFD applications", J. Fluids Eng. 130, 078001 (the GCI of
-Roache 1994, J. Fluids Eng. 116, 405). Standard library only (docs/accuracy.md#grid-convergence-ladders).
+Roache 1994, J. Fluids Eng. 116, 405). Standard library only
+(docs/accuracy.md#grid-convergence-ladders).
 
 Notation as in Celik et al. (2008), grid 1 the finest:
   h_i        representative cell size, h = (volume / cells)^(1/D)  (their eq. 1)

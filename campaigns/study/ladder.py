@@ -484,8 +484,8 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
              "conservative GCI: Oberkampf & Roy (2010), safety factor 3 and the order limited to "
              f"[0.5, {gci.FORMAL_ORDER:g}] when it is more than 10 % from the formal order "
              f"{gci.FORMAL_ORDER:g}.", "",
-             "| level | cells | h [m] | particles | steps | particle-steps | wall [s] | threads x ranks "
-             "| energy_error |", "|---|---|---|---|---|---|---|---|---|"]
+             "| level | cells | h [m] | particles | steps | particle-steps | wall [s] "
+             "| threads x ranks | energy_error |", "|---|---|---|---|---|---|---|---|---|"]
     for lv in table["levels"]:
         lines.append(f"| x{lv['level']:g} | {' x '.join(map(str, lv['cells']))} | "
                      f"{fmt(lv['h [m]'])} | {lv['particles']} | {lv['steps']} | "

@@ -9,13 +9,13 @@ wrote (ladder.csv), by another route than campaigns/study/gci.py's fixed point: 
 points) by bisection, and phi0 = phi1 - C h1^p. Also: the cells of each level, a second invocation
 runs nothing again, a level stopped part-way resumes from its checkpoint to the same values,
 `mpm run` of a copy of the scene with the ladder table beside it reports the level-1 values and
-their error against the extrapolation (summary.json "discretization_error"), and Lf shortens and Dm grows from the undeformed rod.
+their error against the extrapolation (summary.json "discretization_error"), and Lf shortens and Dm
+grows from the undeformed rod.
 
   ladder_test.py MPM_BINARY"""
 
 import csv
 import json
-import math
 import os
 import subprocess
 import sys
