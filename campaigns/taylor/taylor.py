@@ -31,7 +31,11 @@ Parameter sets (calibration kept apart from validation: none is tuned to a Taylo
   table1   data/materials/al6061_t6.json as shipped (the report's Table 1 Johnson-Cook set);
   fit_all  `pointdriver fit data/fits/al6061_t6_all.json` run first, here, from the stress-strain
            curves alone (docs/fitting.md); its material file is what the scenes use;
-  fit_room `pointdriver fit data/fits/al6061_t6_room_temperature.json`, likewise.
+  fit_room `pointdriver fit data/fits/al6061_t6_room_temperature.json`, likewise;
+  scg      data/materials/al6061_t6_scg.json as shipped (Steinberg's 1996 SCG set and EOS, unfitted);
+  fit_za   `pointdriver fit data/fits/al6061_t6_za_all.json`: Zerilli-Armstrong (fcc) fitted to
+           fit_all's curves;
+  fit_ptw  `pointdriver fit data/fits/al6061_t6_ptw_all.json`: Preston-Tonks-Wallace, likewise.
 Failure modes:
   off                erosion none: no failure detection (physics.erosion = none);
   shipped            the material file's failure stack (JC damage, TEPLA, Drucker-Becker, erosion);
@@ -71,8 +75,12 @@ import vtu  # noqa: E402
 REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 DATA = os.path.join(REPO, "data", "experiments", "taylor", "house1995.csv")
 MATERIAL = os.path.join(REPO, "data", "materials", "al6061_t6.json")
+PUBLISHED = {"table1": MATERIAL,
+             "scg": os.path.join(REPO, "data", "materials", "al6061_t6_scg.json")}
 FITS = {"fit_all": "data/fits/al6061_t6_all.json",
-        "fit_room": "data/fits/al6061_t6_room_temperature.json"}
+        "fit_room": "data/fits/al6061_t6_room_temperature.json",
+        "fit_za": "data/fits/al6061_t6_za_all.json",
+        "fit_ptw": "data/fits/al6061_t6_ptw_all.json"}
 COMPRESSION_AWARE = {"constitutive_model": {
     "damage": {"cutoff_triaxiality": -1.0 / 3.0},
     "tepla": {"porosity_growth": "tension"},
@@ -466,12 +474,12 @@ def main():
             sys.exit(f"taylor: --failure: unknown mode '{f}' (off, shipped, compression_aware)")
     materials = {}
     for s in sets:
-        if s == "table1":
-            materials[s] = MATERIAL
+        if s in PUBLISHED:
+            materials[s] = PUBLISHED[s]
         elif s in FITS:
             materials[s] = fit_material(s, out_dir, a.pointdriver)
         else:
-            sys.exit(f"taylor: --sets: unknown set '{s}' (table1, {', '.join(FITS)})")
+            sys.exit(f"taylor: --sets: unknown set '{s}' ({', '.join([*PUBLISHED, *FITS])})")
     jobs = []
     for s in sets:
         for f in failures:

@@ -27,7 +27,7 @@ import vtu  # noqa: E402
 CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
 CAUSE_COLOURS = {"none": "#c8c8c8", "melting": "tab:orange", "tepla": "tab:red",
                  "drucker": "tab:blue", "becker": "tab:green"}
-SET_MARKERS = {"table1": "s", "fit_all": "o", "fit_room": "^"}
+SET_MARKERS = {"table1": "s", "fit_all": "o", "fit_room": "^", "scg": "D", "fit_za": "v", "fit_ptw": "P"}
 PROFILE_SHOTS = ["H3", "H8", "H10", "H13", "H16", "H21"]
 TEXT_COLUMNS = {"set", "failure", "anvil", "geometry", "shot", "message", "last_snapshot"}
 
