@@ -3,8 +3,9 @@
 
   materials_test.py POINTDRIVER MPM MATERIAL_CHECK WORK_DIR
 
-For data/materials/ofhc_copper_{jc,za,scg,mts}.json (Johnson & Cook 1983, Zerilli & Armstrong
-1987, Steinberg 1996, Follansbee & Kocks 1988), tantalum_{ptw,scg}.json (Preston, Tonks & Wallace 2003; Steinberg 1996), armco_iron_jc.json and
+For data/materials/ofhc_copper_{jc,za,scg,mts,ptw}.json (Johnson & Cook 1983, Zerilli &
+Armstrong 1987, Steinberg 1996, Follansbee & Kocks 1988, Preston, Tonks & Wallace 2003),
+tantalum_{ptw,scg}.json (Preston, Tonks & Wallace 2003; Steinberg 1996), armco_iron_jc.json and
 steel_4340_jc.json (Johnson & Cook 1983) and ti6al4v_{jc,scg}.json (Lesuer 2000; Steinberg
 1996):
 - `material_check` accepts the file.
@@ -35,7 +36,7 @@ sys.path.insert(0, HERE)
 from laws_in_programs_test import flow_stress, mts  # noqa: E402  (the papers' equations)
 
 MATERIALS = ["ofhc_copper_jc", "ofhc_copper_za", "ofhc_copper_scg", "ofhc_copper_mts",
-             "tantalum_ptw", "tantalum_scg", "armco_iron_jc", "steel_4340_jc",
+             "ofhc_copper_ptw", "tantalum_ptw", "tantalum_scg", "armco_iron_jc", "steel_4340_jc",
              "ti6al4v_jc", "ti6al4v_scg"]
 RATES = (1e-3, 1e3, 1e4)
 
