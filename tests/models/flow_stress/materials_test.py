@@ -6,8 +6,8 @@
 For data/materials/ofhc_copper_{jc,za,scg,mts,ptw}.json (Johnson & Cook 1983, Zerilli &
 Armstrong 1987, Steinberg 1996, Follansbee & Kocks 1988, Preston, Tonks & Wallace 2003),
 tantalum_{ptw,scg}.json (Preston, Tonks & Wallace 2003; Steinberg 1996), armco_iron_jc.json and
-steel_4340_jc.json (Johnson & Cook 1983) and ti6al4v_{jc,scg}.json (Lesuer 2000; Steinberg
-1996):
+steel_4340_jc.json (Johnson & Cook 1983), ti6al4v_{jc,scg}.json (Lesuer 2000; Steinberg
+1996) and al6061_t6_scg.json (Steinberg 1996):
 - `material_check` accepts the file.
 - `pointdriver run`: uniaxial stress to 20 % at 1e-3, 1e3 and 1e4 /s, isothermal at 294 and
   600 K. At the last step the von Mises stress equals the file's law at the step's plastic
@@ -37,7 +37,7 @@ from laws_in_programs_test import flow_stress, mts  # noqa: E402  (the papers' e
 
 MATERIALS = ["ofhc_copper_jc", "ofhc_copper_za", "ofhc_copper_scg", "ofhc_copper_mts",
              "ofhc_copper_ptw", "tantalum_ptw", "tantalum_scg", "armco_iron_jc", "steel_4340_jc",
-             "ti6al4v_jc", "ti6al4v_scg"]
+             "ti6al4v_jc", "ti6al4v_scg", "al6061_t6_scg"]
 RATES = (1e-3, 1e3, 1e4)
 
 
