@@ -29,6 +29,33 @@ double modulus(const NadalLePoacShearModulus& n, double mu0, const ModulusCondit
          J;
 }
 
+// d mu / d T of each form at fixed p and rho (the derivative of the expression above).
+double slope(const ConstantShearModulus&, double, const ModulusConditions&) {
+  return 0.0;
+}
+double slope(const VarshniShearModulus& v, double, const ModulusConditions& c) {
+  const double T = c.temperature, m = std::expm1(v.T0 / T);
+  return -v.D * (m + 1.0) * v.T0 / (T * T) / (m * m);
+}
+double slope(const SteinbergShearModulus& s, double, const ModulusConditions&) {
+  return s.dG_dT;
+}
+// mu = N / J with N = A (1 - t) + rho k_B T / (C m_atom), A = mu0 + G'_p p / eta^(1/3), t = T /
+// T_m; J = 1 + exp(-(1 + 1/zeta) / u), u = 1 + zeta / (1 - t): dJ/dt = (J - 1)(1 + zeta) / ((1 - t)
+// u)^2.
+double slope(const NadalLePoacShearModulus& n, double mu0, const ModulusConditions& c) {
+  const double Tm = c.melt_temperature, t = c.temperature / Tm;
+  if (t >= 1.0 + n.zeta) return 0.0;
+  const double u = 1.0 + n.zeta / (1.0 - t);
+  const double J = 1.0 + std::exp(-(1.0 + 1.0 / n.zeta) / u);
+  const double dJ_dt = (J - 1.0) * (1.0 + n.zeta) / (((1.0 - t) * u) * ((1.0 - t) * u));
+  const double atom = n.molar_mass / kAvogadro;
+  const double A = mu0 + n.dG_dp * c.pressure / std::cbrt(c.compression);
+  const double N = A * (1.0 - t) + c.density * kBoltzmann * c.temperature / (n.C * atom);
+  const double dN_dT = -A / Tm + c.density * kBoltzmann / (n.C * atom);
+  return dN_dT / J - N * dJ_dt / (J * J * Tm);
+}
+
 // Each form's reader: its parameters, with their ranges ("type" and unknown keys are the caller's).
 ConstantShearModulus read_model(JsonReader&, const ConstantShearModulus*) {
   return {};
@@ -58,6 +85,13 @@ NadalLePoacShearModulus read_model(JsonReader& r, const NadalLePoacShearModulus*
 
 double shear_modulus(const ShearModulusLaw& law, double mu0, const ModulusConditions& c) {
   return std::max(std::visit([&](const auto& l) { return modulus(l, mu0, c); }, law), 0.0);
+}
+
+ModulusWithSlope shear_modulus_with_slope(const ShearModulusLaw& law, double mu0,
+                                          const ModulusConditions& c) {
+  const double mu = shear_modulus(law, mu0, c);
+  if (mu <= 0.0) return {0.0, 0.0};
+  return {mu, std::visit([&](const auto& l) { return slope(l, mu0, c); }, law)};
 }
 
 bool is_constant(const ShearModulusLaw& law) {

@@ -72,6 +72,16 @@ using ShearModulusLaw = std::variant<ConstantShearModulus, VarshniShearModulus,
 
 /// mu [Pa] of `law` with mu0 [Pa] under the conditions.
 double shear_modulus(const ShearModulusLaw& law, double mu0, const ModulusConditions& c);
+
+/// mu [Pa] (shear_modulus(), the same expression) and d mu / d T [Pa/K] at fixed pressure and
+/// density, for a law that scales its stresses by mu (the Mechanical Threshold Stress law's
+/// optional shear_modulus block): 0 where mu is floored.
+struct ModulusWithSlope {
+  double mu = 0.0;   ///< [Pa]
+  double d_T = 0.0;  ///< [Pa/K]
+};
+ModulusWithSlope shear_modulus_with_slope(const ShearModulusLaw& law, double mu0,
+                                          const ModulusConditions& c);
 bool is_constant(const ShearModulusLaw& law);
 
 /// Reads {"type", ...} (the block is optional: constant).

@@ -8,6 +8,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "models/material/material.hpp"
 
@@ -42,6 +43,35 @@ BOOST_AUTO_TEST_CASE(every_form_equals_its_papers_equation) {
       close(shear_modulus(np, 50e9, {700.0, 10e9, 1.05, 9400.0, 1356.0}), 46432539574.56053));
   BOOST_TEST(close(shear_modulus(np, 50e9, {300.0, 0.0, 1.0, 8960.0, 1356.0}), 45108269206.74808));
   BOOST_TEST(shear_modulus(np, 50e9, {1500.0, 0.0, 1.0, 8960.0, 1356.0}) == 0.0);  // T^ > 1 + zeta
+}
+
+// shear_modulus_with_slope: mu is shear_modulus()'s, bit for bit, and d mu / d T its central
+// difference at fixed p and rho (the MTS law's d sigma / d T uses it); 0 where mu is floored.
+BOOST_AUTO_TEST_CASE(the_slope_is_the_temperature_derivative_of_the_same_expression) {
+  const std::vector<ShearModulusLaw> laws = {ConstantShearModulus{},
+                                             VarshniShearModulus{3.0e9, 180.0},
+                                             SteinbergShearModulus{1.45e-11 * 69e9, -1.3e-4 * 69e9},
+                                             NadalLePoacShearModulus{1.8, 0.04, 0.080, 55.947e-3}};
+  for (const ShearModulusLaw& law : laws)
+    for (const double T : {150.0, 294.0, 700.0, 1500.0}) {
+      const ModulusConditions c{T, 2e9, 1.01, 7900.0, 1793.0};
+      const ModulusWithSlope m = shear_modulus_with_slope(law, 90e9, c);
+      const double h = 1e-3 * T;
+      ModulusConditions up = c, down = c;
+      up.temperature += h;
+      down.temperature -= h;
+      const double fd = (shear_modulus(law, 90e9, up) - shear_modulus(law, 90e9, down)) / (2 * h);
+      BOOST_TEST_CONTEXT(model_type(law) << " at " << T << " K") {
+        BOOST_TEST(m.mu == shear_modulus(law, 90e9, c));
+        BOOST_TEST(std::abs(m.d_T - fd) <= 1e-5 * std::max(std::abs(fd), 1e3));
+      }
+    }
+  // Floored (Nadal-Le Poac above T_m (1 + zeta)): mu 0, slope 0.
+  const ModulusWithSlope hot =
+      shear_modulus_with_slope(NadalLePoacShearModulus{1.8, 0.04, 0.080, 55.947e-3}, 90e9,
+                               {1900.0, 0.0, 1.0, 7810.0, 1793.0});
+  BOOST_TEST(hot.mu == 0.0);
+  BOOST_TEST(hot.d_T == 0.0);
 }
 
 BOOST_AUTO_TEST_CASE(the_reader_defaults_to_constant_and_names_missing_constants) {
