@@ -19,6 +19,27 @@ Modulus varshni(const MechanicalThresholdStressParams& p, double T) {
   return {p.mu0 - p.D / (e - 1.0), -p.D * e * p.T0 / (T * T) / ((e - 1.0) * (e - 1.0))};
 }
 
+/// The law's mu and d mu / d T: its own Varshni, or the nested block's catalogue form.
+Modulus modulus(const MechanicalThresholdStressParams& p, const FlowConditions& c) {
+  if (!p.shear_modulus) return varshni(p, c.temperature);
+  const ModulusConditions mc{c.temperature, c.pressure, c.compression, c.density,
+                             c.melt_temperature > 0.0 ? c.melt_temperature : p.melt_temperature};
+  const ModulusWithSlope m = shear_modulus_with_slope(*p.shear_modulus, p.mu0, mc);
+  return {m.mu, m.d_T};
+}
+
+/// A hardening-rate fit c0 + c1 ln(rate) + c2 sqrt(rate) - c3 T held at 0 where it is negative
+/// (theta_0 and theta_IV; see the header), with its derivatives (0 on the clamped side).
+struct Rate {
+  double value = 0.0, d_rate = 0.0, d_T = 0.0;
+};
+Rate hardening_rate(double c0, double c1, double c2, double c3, double rate, bool rate_clamped,
+                    double T) {
+  const double value = c0 + c1 * std::log(rate) + c2 * std::sqrt(rate) - c3 * T;
+  if (!(value > 0.0)) return {0.0, 0.0, 0.0};
+  return {value, rate_clamped ? 0.0 : c1 / rate + 0.5 * c2 / std::sqrt(rate), -c3};
+}
+
 /// A thermal-activation factor S = [1 - x^(1/q)]^(1/p), x = k T / (g0 b^3 mu) ln(eps0 / rate),
 /// with its derivatives in rate and T.
 struct Activation {
@@ -40,14 +61,15 @@ Activation activation(double g0, double eps0, double p_exp, double q_exp, double
   return {S, dS_dx * dx_drate, dS_dx * dx_dT};
 }
 
-/// theta(sigma_e, rate, T) = theta_0 (1 - F(X)) and its derivatives in rate and T.
+/// theta(sigma_e, rate, T) = theta_0 (1 - F(X)) + theta_IV F(X) and its derivatives in rate and
+/// T.
 struct Hardening {
   double theta = 0.0, d_rate = 0.0, d_T = 0.0;
 };
 Hardening hardening(const MechanicalThresholdStressParams& p, double sigma_e, double rate,
                     bool rate_clamped, double T, const Modulus& m) {
-  const double theta0 = p.a0 + p.a1 * std::log(rate) + p.a2 * std::sqrt(rate) - p.a3 * T;
-  const double dtheta0_drate = rate_clamped ? 0.0 : p.a1 / rate + 0.5 * p.a2 / std::sqrt(rate);
+  const Rate theta0 = hardening_rate(p.a0, p.a1, p.a2, p.a3, rate, rate_clamped, T);
+  const Rate theta_iv = hardening_rate(p.aIV0, p.aIV1, p.aIV2, p.aIV3, rate, rate_clamped, T);
   const double c_es = kBoltzmann / (p.g0_es * p.burgers * p.burgers * p.burgers);
   const double log_ratio = std::log(rate / p.eps0_es);
   const double sigma_es = p.sigma_es0 * std::exp(c_es * T / m.mu * log_ratio);
@@ -59,21 +81,38 @@ Hardening hardening(const MechanicalThresholdStressParams& p, double sigma_e, do
   const double F = t / tanh_alpha;
   const double dF_dX = p.alpha * (1.0 - t * t) / tanh_alpha;
   const double dX_drate = -X / sigma_es * dses_drate, dX_dT = -X / sigma_es * dses_dT;
-  return {theta0 * (1.0 - F), dtheta0_drate * (1.0 - F) - theta0 * dF_dX * dX_drate,
-          -p.a3 * (1.0 - F) - theta0 * dF_dX * dX_dT};
+  Hardening h{theta0.value * (1.0 - F), theta0.d_rate * (1.0 - F) - theta0.value * dF_dX * dX_drate,
+              theta0.d_T * (1.0 - F) - theta0.value * dF_dX * dX_dT};
+  if (theta_iv.value > 0.0) {  // stage IV adds its terms (none without: stage III bit for bit)
+    h.theta += theta_iv.value * F;
+    h.d_rate += theta_iv.d_rate * F + theta_iv.value * dF_dX * dX_drate;
+    h.d_T += theta_iv.d_T * F + theta_iv.value * dF_dX * dX_dT;
+  }
+  return h;
 }
 
 }  // namespace
 
-MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate, double T) {
+MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate,
+                       const FlowConditions& c) {
+  const double T = c.temperature;
   const bool clamped = rate < p.minimum_strain_rate;
   const double r = clamped ? p.minimum_strain_rate : rate;
-  const Modulus m = varshni(p, T);
+  const Modulus m = modulus(p, c);
   const Hardening h = hardening(p, 0.0, r, clamped, T, m);
   const double c_es = kBoltzmann / (p.g0_es * p.burgers * p.burgers * p.burgers);
-  return {m.mu, activation(p.g0_i, p.eps0_i, p.p_i, p.q_i, p.burgers, r, clamped, T, m).S,
-          activation(p.g0_e, p.eps0_e, p.p_e, p.q_e, p.burgers, r, clamped, T, m).S, h.theta,
-          p.sigma_es0 * std::exp(c_es * T / m.mu * std::log(r / p.eps0_es))};
+  return {m.mu,
+          activation(p.g0_i, p.eps0_i, p.p_i, p.q_i, p.burgers, r, clamped, T, m).S,
+          activation(p.g0_e, p.eps0_e, p.p_e, p.q_e, p.burgers, r, clamped, T, m).S,
+          h.theta,
+          p.sigma_es0 * std::exp(c_es * T / m.mu * std::log(r / p.eps0_es)),
+          hardening_rate(p.aIV0, p.aIV1, p.aIV2, p.aIV3, r, clamped, T).value};
+}
+
+MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate, double T) {
+  FlowConditions c;
+  c.temperature = T;
+  return mts_factors(p, rate, c);
 }
 
 FlowStress flow_stress(const MechanicalThresholdStressParams& p, double ep, double rate,
@@ -81,17 +120,21 @@ FlowStress flow_stress(const MechanicalThresholdStressParams& p, double ep, doub
   const double T = c.temperature;
   const bool clamped = rate < p.minimum_strain_rate;
   const double r = clamped ? p.minimum_strain_rate : rate;
-  const Modulus m = varshni(p, T);
+  const Modulus m = modulus(p, c);
+  // A catalogue form floored at 0 (above its range: no shear stiffness, as molten).
+  if (p.shear_modulus && !(m.mu > 0.0)) return {p.sigma_a, 0.0, 0.0, 0.0};
   const Activation Si = activation(p.g0_i, p.eps0_i, p.p_i, p.q_i, p.burgers, r, clamped, T, m);
   const Activation Se = activation(p.g0_e, p.eps0_e, p.p_e, p.q_e, p.burgers, r, clamped, T, m);
   const Hardening h = hardening(p, c.internal, r, clamped, T, m);
-  const double d_ep = std::max(ep - c.start_plastic_strain, 0.0);
-  const double sigma_e = c.internal + h.theta * d_ep;
+  double d_ep = std::max(ep - c.start_plastic_strain, 0.0);
+  double sigma_e = c.internal + h.theta * d_ep;
+  double theta = h.theta;
+  if (sigma_e < 0.0) sigma_e = theta = d_ep = 0.0;  // held at 0: nothing varies it there
   const double scale = m.mu / p.mu0;
   const double thermal = Si.S * p.sigma_i + Se.S * sigma_e;
   FlowStress f;
   f.value = p.sigma_a + thermal * scale;
-  f.d_plastic_strain = Se.S * h.theta * scale;
+  f.d_plastic_strain = Se.S * theta * scale;
   f.d_rate = (Si.d_rate * p.sigma_i + Se.d_rate * sigma_e + Se.S * h.d_rate * d_ep) * scale;
   f.d_temperature = (Si.d_T * p.sigma_i + Se.d_T * sigma_e + Se.S * h.d_T * d_ep) * scale +
                     thermal * m.d_T / p.mu0;
@@ -102,12 +145,14 @@ double internal_after(const MechanicalThresholdStressParams& p, double internal,
                       double rate, const FlowConditions& c) {
   const bool clamped = rate < p.minimum_strain_rate;
   const double r = clamped ? p.minimum_strain_rate : rate;
-  const Modulus m = varshni(p, c.temperature);
-  return internal + hardening(p, internal, r, clamped, c.temperature, m).theta * d_ep;
+  const Modulus m = modulus(p, c);
+  if (p.shear_modulus && !(m.mu > 0.0)) return internal;
+  return std::max(internal + hardening(p, internal, r, clamped, c.temperature, m).theta * d_ep,
+                  0.0);
 }
 
 MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThresholdStressParams*,
-                                         double, double) {
+                                         double, double melt_temperature) {
   using P = MechanicalThresholdStressParams;
   P p;
   r.ignore("type");
@@ -133,18 +178,39 @@ MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThreshol
   number("eps0_e", &P::eps0_e, Range::positive(), "MTS structure reference rate [1/s]");
   number("p_e", &P::p_e, Range::open_closed(0.0, 1.0), "MTS structure exponent p_e [-]");
   number("q_e", &P::q_e, Range::closed(1.0, 2.0), "MTS structure exponent q_e [-]");
-  stress("a0", &P::a0, Range::non_negative(), "MTS hardening rate a0 [Pa]");
+  // a0 may be negative: the hardening-rate fits of Banerjee (2007) are polynomials whose terms
+  // together, not a0 alone, are the positive rate (Rc 30: a0 = -5210 MPa).
+  stress("a0", &P::a0, Range::any(), "MTS hardening rate a0 [Pa]");
   number("a1", &P::a1, Range::any(), "MTS hardening rate a1 (per ln rate) [Pa]");
   number("a2", &P::a2, Range::any(), "MTS hardening rate a2 (per sqrt rate) [Pa s^0.5]");
   number("a3", &P::a3, Range::any(), "MTS hardening rate a3 (per K) [Pa/K]");
+  // Stage IV (Banerjee 2007 eq. 8; Goto et al. 2000): optional, 0 without.
+  p.aIV0 = r.quantity_or("aIV0", 0.0, Quantity::stress, Range::any(),
+                         "MTS stage-IV hardening rate aIV0 [Pa]");
+  p.aIV1 = r.number_or("aIV1", 0.0, Range::any(), "MTS stage-IV rate aIV1 (per ln rate) [Pa]");
+  p.aIV2 =
+      r.number_or("aIV2", 0.0, Range::any(), "MTS stage-IV rate aIV2 (per sqrt rate) [Pa s^0.5]");
+  p.aIV3 = r.number_or("aIV3", 0.0, Range::any(), "MTS stage-IV rate aIV3 (per K) [Pa/K]");
   number("alpha", &P::alpha, Range::positive(), "MTS tanh hardening shape alpha [-]");
   stress("sigma_es0", &P::sigma_es0, Range::positive(), "MTS saturation stress sigma_es0 [Pa]");
   number("g0_es", &P::g0_es, Range::positive(), "MTS saturation activation energy g0_es [-]");
   number("eps0_es", &P::eps0_es, Range::positive(), "MTS saturation reference rate [1/s]");
   number("burgers", &P::burgers, Range::open_closed(0.0, 1e-8), "Burgers vector b [m]");
   stress("mu0", &P::mu0, Range::positive(), "MTS shear modulus at 0 K mu0 [Pa]");
-  stress("D", &P::D, Range::non_negative(), "Varshni D [Pa]");
-  number("T0", &P::T0, Range::non_negative(), "Varshni T0 [K]");
+  if (auto block =
+          r.optional_child("shear_modulus", "the law's shear modulus mu (absent: Varshni)")) {
+    p.shear_modulus = read_shear_modulus(*block);
+    p.melt_temperature = melt_temperature;
+    for (const char* key : {"D", "T0"}) {
+      if (!r.has(key)) continue;
+      r.problems().add(r.key_path(key),
+                       "Varshni's key beside a shear_modulus block: give the modulus once");
+      r.ignore(key);  // named once, above, not again as unknown
+    }
+  } else {
+    stress("D", &P::D, Range::non_negative(), "Varshni D [Pa]");
+    number("T0", &P::T0, Range::non_negative(), "Varshni T0 [K]");
+  }
   p.minimum_strain_rate = r.number_or("minimum_strain_rate", 1e-6, Range::positive(),
                                       "slowest rate the law is evaluated at [1/s]");
   r.reject_unknown_keys();
@@ -152,7 +218,13 @@ MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThreshol
 }
 
 Json to_json(const MechanicalThresholdStressParams& p) {
-  return parameters_to_json(p);
+  Json j = parameters_to_json(p);
+  if (p.shear_modulus) {  // the block replaces Varshni's keys (read_law refuses both)
+    j.erase("D");
+    j.erase("T0");
+    j["shear_modulus"] = to_json(*p.shear_modulus);
+  }
+  return j;
 }
 
 }  // namespace impact

@@ -53,10 +53,31 @@ LAWS = {
 KB = 1.380649e-23
 
 
-def mts(law, rate, T):
-    """MTS pieces at one rate and T: mu/mu0, S_i, S_e, and theta(sigma_e) (Banerjee 2007)."""
+def nadal_le_poac(block, mu0, T, p, rho, rho0, Tm):
+    """Nadal & Le Poac (2003), J. Appl. Phys. 93:2472, eq. (9)-(10): mu(p, T) with T^ = T / T_m,
+    J(T^) = 1 + exp(-(1 + 1/zeta) / (1 + zeta / (1 - T^))), floored at 0 (none above 1 + zeta)."""
+    Th = T / Tm
+    if Th >= 1 + block["zeta"]:
+        return 0.0
+    J = 1 + math.exp(-(1 + 1 / block["zeta"]) / (1 + block["zeta"] / (1 - Th)))
+    atom = block["molar_mass"] / NA
+    mu = ((mu0 + block["dG_dp"] * p / (rho / rho0) ** (1 / 3)) * (1 - Th)
+          + rho * KB * T / (block["C"] * atom)) / J
+    return max(mu, 0.0)
+
+
+def mts(law, rate, T, p=0.0, rho=0.0, material=None):
+    """MTS pieces at one rate and T: mu/mu0, S_i, S_e, and theta(sigma_e) (Banerjee 2007), at
+    pressure p and density rho where the modulus reads them (Nadal-Le Poac, as Banerjee 2007)."""
     rate = max(rate, 1e-6)
-    mu = law["mu0"] - law["D"] / (math.exp(law["T0"] / T) - 1)
+    block = law.get("shear_modulus")
+    if block is None:  # the law's own Varshni modulus (Banerjee eq. 10)
+        mu = law["mu0"] - law["D"] / (math.exp(law["T0"] / T) - 1)
+    elif block["type"] == "nadal_le_poac":
+        mu = nadal_le_poac(block, law["mu0"], T, p, rho, material["density"],
+                           material["melt_temperature"])
+    else:
+        raise ValueError(block["type"])
     b3 = law["burgers"] ** 3
 
     def S(g0, eps0, p, q):
@@ -66,13 +87,24 @@ def mts(law, rate, T):
         y = 1 - x ** (1 / q)
         return 0.0 if y <= 0 else y ** (1 / p)
     ses = law["sigma_es0"] * (rate / law["eps0_es"]) ** (KB * T / (law["g0_es"] * b3 * mu))
-    theta0 = law["a0"] + law["a1"] * math.log(rate) + law["a2"] * math.sqrt(rate) - law["a3"] * T
 
-    def theta(se):
-        return theta0 * (1 - math.tanh(law["alpha"] * se / ses) / math.tanh(law["alpha"]))
+    def fit(c0, c1, c2, c3):  # a hardening rate >= 0: a negative fit is held at 0
+        return max(c0 + c1 * math.log(rate) + c2 * math.sqrt(rate) - c3 * T, 0.0)
+    theta0 = fit(law["a0"], law["a1"], law["a2"], law["a3"])
+    theta_iv = fit(*(law.get(k, 0.0) for k in ("aIV0", "aIV1", "aIV2", "aIV3")))
+
+    def theta(se):  # stage III to IV (Banerjee 2007 eq. 8; Goto et al. 2000)
+        F = math.tanh(law["alpha"] * se / ses) / math.tanh(law["alpha"])
+        return theta0 * (1 - F) + theta_iv * F
     # No intrinsic barrier (sigma_i = 0, an fcc metal): its activation keys need not be given.
     Si = S(law["g0_i"], law["eps0_i"], law["p_i"], law["q_i"]) if law["sigma_i"] > 0 else 0.0
     return (mu / law["mu0"], Si, S(law["g0_e"], law["eps0_e"], law["p_e"], law["q_e"]), theta)
+
+
+def structure_update(law, sigma_e, d_ep, rate, T, p, rho, material):
+    """sigma_e after d_ep, held >= 0 (a stress the dislocation density carries)."""
+    theta = mts(law, rate, T, p, rho, material)[3]
+    return max(sigma_e + theta(sigma_e) * d_ep, 0.0)
 
 
 def flow_stress(law, ep, rate, T, p, rho, material, sigma_e=0.0):
@@ -113,7 +145,7 @@ def flow_stress(law, ep, rate, T, p, rho, material, sigma_e=0.0):
         r = max(rate, 1e-6)
         return law["K"] * (law["eps0"] + ep) ** law["n"] * (1 + (r / law["D"]) ** (1 / law["q"]))
     if law["type"] == "mechanical_threshold_stress":
-        ratio, Si, Se, _ = mts(law, rate, T)
+        ratio, Si, Se, _ = mts(law, rate, T, p, rho, material)
         return law["sigma_a"] + (Si * law["sigma_i"] + Se * sigma_e) * ratio
     raise ValueError(law["type"])
 
@@ -154,9 +186,11 @@ def main(pointdriver, mpm, work):
             for prev, row in zip(rows[:-1], rows[1:]):  # the law's update, step by step
                 d_ep = float(row["plastic_strain [-]"]) - float(prev["plastic_strain [-]"])
                 if d_ep > 0:
-                    theta = mts(law, float(row["plastic_strain_rate [1/s]"]),
-                                float(prev["temperature [K]"]))[3]
-                    sigma_e += theta(sigma_e) * d_ep
+                    sigma_e = structure_update(law, sigma_e, d_ep,
+                                               float(row["plastic_strain_rate [1/s]"]),
+                                               float(prev["temperature [K]"]),
+                                               float(prev["pressure [Pa]"]),
+                                               float(row["density [kg/m^3]"]), material)
         expected = flow_stress(law, ep, rate, float(before["temperature [K]"]),
                                float(before["pressure [Pa]"]), float(last["density [kg/m^3]"]),
                                material, sigma_e)

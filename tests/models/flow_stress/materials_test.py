@@ -7,7 +7,8 @@ For data/materials/ofhc_copper_{jc,za,scg,mts,ptw}.json (Johnson & Cook 1983, Ze
 Armstrong 1987, Steinberg 1996, Follansbee & Kocks 1988, Preston, Tonks & Wallace 2003),
 tantalum_{ptw,scg}.json (Preston, Tonks & Wallace 2003; Steinberg 1996), armco_iron_jc.json and
 steel_4340_jc.json (Johnson & Cook 1983), ti6al4v_{jc,scg}.json (Lesuer 2000; Steinberg
-1996) and al6061_t6_scg.json (Steinberg 1996):
+1996), al6061_t6_scg.json (Steinberg 1996), steel_4340_mts_rc{30,38,45,49}.json (Banerjee 2007:
+stage IV, the Nadal-Le Poac modulus) and steel_hy100_mts.json (Goto et al. 2000):
 - `material_check` accepts the file.
 - `pointdriver run`: uniaxial stress to 20 % at 1e-3, 1e3 and 1e4 /s, isothermal at 294 and
   600 K. At the last step the von Mises stress equals the file's law at the step's plastic
@@ -33,11 +34,12 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, HERE)
-from laws_in_programs_test import flow_stress, mts  # noqa: E402  (the papers' equations)
+from laws_in_programs_test import flow_stress, structure_update  # noqa: E402  (the papers')
 
 MATERIALS = ["ofhc_copper_jc", "ofhc_copper_za", "ofhc_copper_scg", "ofhc_copper_mts",
              "ofhc_copper_ptw", "tantalum_ptw", "tantalum_scg", "armco_iron_jc", "steel_4340_jc",
-             "ti6al4v_jc", "ti6al4v_scg", "al6061_t6_scg"]
+             "ti6al4v_jc", "ti6al4v_scg", "al6061_t6_scg", "steel_4340_mts_rc30",
+             "steel_4340_mts_rc38", "steel_4340_mts_rc45", "steel_4340_mts_rc49", "steel_hy100_mts"]
 RATES = (1e-3, 1e3, 1e4)
 
 
@@ -52,18 +54,20 @@ def law_of(material):
     return None if law["type"] == "johnson_cook" else law  # None: the material's JC block
 
 
-def structure_stress(law, rows):
+def structure_stress(law, rows, material):
     """MTS: sigma_e at the last row, the law's update theta(sigma_e,n, rate, T_n) d_ep summed
-    over the rows (Follansbee & Kocks 1988); 0 for the laws without an internal variable."""
+    over the rows (Follansbee & Kocks 1988), at each step's start temperature and pressure and
+    end density; 0 for the laws without an internal variable."""
     if law is None or law["type"] != "mechanical_threshold_stress":
         return 0.0
     sigma_e = 0.0
     for prev, row in zip(rows[:-1], rows[1:]):
         d_ep = float(row["plastic_strain [-]"]) - float(prev["plastic_strain [-]"])
         if d_ep > 0:
-            theta = mts(law, float(row["plastic_strain_rate [1/s]"]),
-                        float(prev["temperature [K]"]))[3]
-            sigma_e += theta(sigma_e) * d_ep
+            sigma_e = structure_update(law, sigma_e, d_ep, float(row["plastic_strain_rate [1/s]"]),
+                                       float(prev["temperature [K]"]),
+                                       float(prev["pressure [Pa]"]),
+                                       float(row["density [kg/m^3]"]), material)
     return sigma_e
 
 
@@ -92,7 +96,7 @@ def check_point_driver(pointdriver, name, path_to, material, work):
                                    float(before["temperature [K]"]),
                                    float(before["pressure [Pa]"]),
                                    float(last["density [kg/m^3]"]), material,
-                                   structure_stress(law, rows))
+                                   structure_stress(law, rows, material))
             got = float(last["von_mises [Pa]"])
             print(f"{name}, {T:.0f} K, {rate:g} /s: ep {ep:.4f}, von Mises {got:.6e} Pa, "
                   f"the law {expected:.6e} Pa")
