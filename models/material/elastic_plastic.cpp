@@ -1,5 +1,6 @@
 #include "models/material/elastic_plastic.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -66,9 +67,14 @@ bool ElasticPlastic::molten(const PointState& s) const {
 double ElasticPlastic::shear_modulus_of(const PointState& s) const {
   if (is_constant(p_.shear_modulus_model)) return p_.shear_modulus;
   const double J = lane_algebra::determinant(to_lanes(s.F));
-  return shear_modulus(
-      p_.shear_modulus_model, p_.shear_modulus,
-      {s.temperature, -s.stress.trace() / 3.0, 1.0 / J, p_.density / J, melting_temperature_of(s)});
+  const double melt = melting_temperature_of(s);
+  // With melting off the point stays solid above T_m, so a form that vanishes at melting
+  // (Nadal-Le Poac, SCG's floor) is held at its value at T_m: a solid whose modulus went to zero
+  // under a standing deviatoric stress would turn that stress into an unbounded plastic strain
+  // (the return's increment is the overstress over 3 mu) and heat without limit.
+  const double T = p_.melting.do_melting ? s.temperature : std::min(s.temperature, melt);
+  return shear_modulus(p_.shear_modulus_model, p_.shear_modulus,
+                       {T, -s.stress.trace() / 3.0, 1.0 / J, p_.density / J, melt});
 }
 
 double ElasticPlastic::wave_speed(double rho, double internal_energy) const {
