@@ -151,6 +151,13 @@ double internal_after(const MechanicalThresholdStressParams& p, double internal,
                   0.0);
 }
 
+// Finite bounds on the hardening polynomials' coefficients, so that a typo (1e300) is refused
+// here rather than stalling a return: 1000 GPa for the constant term (the 4340 fits' largest is
+// 41 GPa), 100 GPa per unit of ln(rate) or sqrt(rate) (0.22 GPa), 10 GPa/K (0.11 GPa/K).
+const Range kRateTerm0 = Range::closed(-1e12, 1e12);
+const Range kRateTerm = Range::closed(-1e11, 1e11);
+const Range kPerKelvin = Range::closed(-1e10, 1e10);
+
 MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThresholdStressParams*,
                                          double, double melt_temperature) {
   using P = MechanicalThresholdStressParams;
@@ -180,23 +187,22 @@ MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThreshol
   number("q_e", &P::q_e, Range::closed(1.0, 2.0), "MTS structure exponent q_e [-]");
   // a0 may be negative: the hardening-rate fits of Banerjee (2007) are polynomials whose terms
   // together, not a0 alone, are the positive rate (Rc 30: a0 = -5210 MPa).
-  stress("a0", &P::a0, Range::any(), "MTS hardening rate a0 [Pa]");
-  number("a1", &P::a1, Range::any(), "MTS hardening rate a1 (per ln rate) [Pa]");
-  number("a2", &P::a2, Range::any(), "MTS hardening rate a2 (per sqrt rate) [Pa s^0.5]");
-  number("a3", &P::a3, Range::any(), "MTS hardening rate a3 (per K) [Pa/K]");
+  stress("a0", &P::a0, kRateTerm0, "MTS hardening rate a0 [Pa]");
+  number("a1", &P::a1, kRateTerm, "MTS hardening rate a1 (per ln rate) [Pa]");
+  number("a2", &P::a2, kRateTerm, "MTS hardening rate a2 (per sqrt rate) [Pa s^0.5]");
+  number("a3", &P::a3, kPerKelvin, "MTS hardening rate a3 (per K) [Pa/K]");
   // Stage IV (Banerjee 2007 eq. 8; Goto et al. 2000): optional, 0 without.
-  p.aIV0 = r.quantity_or("aIV0", 0.0, Quantity::stress, Range::any(),
+  p.aIV0 = r.quantity_or("aIV0", 0.0, Quantity::stress, kRateTerm0,
                          "MTS stage-IV hardening rate aIV0 [Pa]");
-  p.aIV1 = r.number_or("aIV1", 0.0, Range::any(), "MTS stage-IV rate aIV1 (per ln rate) [Pa]");
-  p.aIV2 =
-      r.number_or("aIV2", 0.0, Range::any(), "MTS stage-IV rate aIV2 (per sqrt rate) [Pa s^0.5]");
-  p.aIV3 = r.number_or("aIV3", 0.0, Range::any(), "MTS stage-IV rate aIV3 (per K) [Pa/K]");
+  p.aIV1 = r.number_or("aIV1", 0.0, kRateTerm, "MTS stage-IV rate aIV1 (per ln rate) [Pa]");
+  p.aIV2 = r.number_or("aIV2", 0.0, kRateTerm, "MTS stage-IV rate aIV2 (per sqrt rate) [Pa s^0.5]");
+  p.aIV3 = r.number_or("aIV3", 0.0, kPerKelvin, "MTS stage-IV rate aIV3 (per K) [Pa/K]");
   number("alpha", &P::alpha, Range::positive(), "MTS tanh hardening shape alpha [-]");
   stress("sigma_es0", &P::sigma_es0, Range::positive(), "MTS saturation stress sigma_es0 [Pa]");
   number("g0_es", &P::g0_es, Range::positive(), "MTS saturation activation energy g0_es [-]");
   number("eps0_es", &P::eps0_es, Range::positive(), "MTS saturation reference rate [1/s]");
   number("burgers", &P::burgers, Range::open_closed(0.0, 1e-8), "Burgers vector b [m]");
-  stress("mu0", &P::mu0, Range::positive(), "MTS shear modulus at 0 K mu0 [Pa]");
+  stress("mu0", &P::mu0, Range::open_closed(0.0, 2e12), "MTS shear modulus at 0 K mu0 [Pa]");
   if (auto block =
           r.optional_child("shear_modulus", "the law's shear modulus mu (absent: Varshni)")) {
     p.shear_modulus = read_shear_modulus(*block);
