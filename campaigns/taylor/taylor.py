@@ -48,9 +48,9 @@ columns, `shot`, `D0 [m]`, `L0 [m]`, `U0 [m/s]`, `T0 [K]` required (`L0_over_D0 
 absent), the measurements `Lf [m]`, `Dm [m]`, `Xf [m]` optional: one left empty is reported (the
 prediction is printed) and not judged (no error, not in the error statistics).
 
-A run whose directory holds the result of the same scene (result.json, written when it finished)
-is not run again: a campaign stopped part-way resumes where it was, and a ladder can be extended
-one level at a time into the same OUT.
+A run whose directory holds the result of the same scene and material file content (result.json,
+written when it finished) is not run again: a campaign stopped part-way resumes where it was, and
+a ladder can be extended one level at a time into the same OUT.
 
 Writes OUT/results.csv (one row per run, SI units), OUT/results.md (errors per set, shot table,
 resolution ladder), OUT/profiles/*.csv and the figures OUT/lf_dm_vs_speed.png,
@@ -62,6 +62,7 @@ last snapshot is kept).
 import argparse
 import concurrent.futures
 import csv
+import hashlib
 import json
 import math
 import os
@@ -295,15 +296,23 @@ def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     return out, profile
 
 
-def finished(run_dir, the_scene):
-    """The row and profile of a run of this very scene that finished before (result.json), or
-    None: a stopped campaign resumes, and a finished run is not repeated."""
+def material_digest(material):
+    """SHA-256 of the material file's text: the scene names the file, and a re-fit rewrites it
+    in place, so the content is part of what a finished run was a run of."""
+    with open(material, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def finished(run_dir, the_scene, digest):
+    """The row and profile of a run of this very scene and material that finished before
+    (result.json), or None: a stopped campaign resumes, and a finished run is not repeated."""
     try:
         with open(os.path.join(run_dir, "result.json")) as f:
             done = json.load(f)
     except (OSError, ValueError):
         return None
-    return done if done.get("scene") == the_scene else None
+    same = done.get("scene") == the_scene and done.get("material_sha256") == digest
+    return done if same else None
 
 
 def run_one(job):
@@ -317,7 +326,8 @@ def run_one(job):
     run_dir = os.path.join(runs_dir, run_tag, shot["shot"])
     os.makedirs(run_dir, exist_ok=True)
     the_scene = scene(shot, material, failure, n, anvil, geometry)
-    done = finished(run_dir, the_scene)
+    digest = material_digest(material)
+    done = finished(run_dir, the_scene, digest)
     if done is not None:
         row, profile = done["row"], [tuple(p) for p in done["profile"]]
         record_shape(row, shot, profile, out_dir, tag)
@@ -356,7 +366,8 @@ def run_one(job):
           f"{m['failed_core']}), {row['elapsed [s]']:.0f} s", flush=True)
     row["last_snapshot"] = os.path.relpath(snaps[-1][1], out_dir)  # relative to OUT
     with open(os.path.join(run_dir, "result.json"), "w") as f:
-        json.dump({"scene": the_scene, "row": row, "profile": profile}, f)
+        json.dump({"scene": the_scene, "material_sha256": digest, "row": row, "profile": profile},
+                  f)
     return row, profile
 
 
@@ -463,7 +474,13 @@ def main():
             sys.exit(f"taylor: --shots: unknown shot(s) {unknown}; the data file has "
                      f"{shots[0]['shot']}..{shots[-1]['shot']}")
         shots = [s for s in shots if s["shot"] in wanted]
-    levels = [int(n) for n in a.cells_per_radius.split(",")]
+    try:
+        levels = [int(n) for n in a.cells_per_radius.split(",")]
+    except ValueError:
+        levels = []
+    if not levels or min(levels) < 1:
+        sys.exit(f"taylor: --cells-per-radius: expected whole numbers >= 1, comma separated "
+                 f"(got '{a.cells_per_radius}')")
     ladder = set(a.ladder_shots.split(",")) if a.ladder_shots else None
     failures = a.failure.split(",")
     anvil = parse_anvil(a.anvil)

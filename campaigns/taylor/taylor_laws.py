@@ -24,6 +24,8 @@ SET_ORDER = ("table1", "fit_all", "fit_room", "scg", "fit_za", "fit_ptw")
 SET_LABELS = {"table1": "JC, Table 1 (published)", "fit_all": "JC, fitted",
               "fit_room": "JC, fitted (room temperature)", "scg": "SCG, Steinberg (published)",
               "fit_za": "ZA fcc, fitted", "fit_ptw": "PTW, fitted"}
+REQUIRED = ("set", "failure", "cells_per_radius", "shot", "exit_code", "L0_over_D0 [-]",
+            "Lf_error [%]", "Dm_error [%]")
 MARKERS = {"table1": "s", "fit_all": "o", "fit_room": "^", "scg": "D", "fit_za": "v",
            "fit_ptw": "P"}
 
@@ -43,7 +45,14 @@ def load(campaign):
     if not os.path.isfile(path):
         sys.exit(f"taylor_laws: {path}: not found (run campaigns/taylor/taylor.py first)")
     with open(path, newline="") as f:
-        rows = [r for r in csv.DictReader(f) if r["failure"] == "off"]
+        reader = csv.DictReader(f)
+        missing = [c for c in REQUIRED if c not in (reader.fieldnames or [])]
+        if missing:
+            sys.exit(f"taylor_laws: {path}: not a taylor.py results table (no column "
+                     f"{', '.join(missing)})")
+        rows = [r for r in reader if r["failure"] == "off"]
+    if not rows:
+        sys.exit(f"taylor_laws: {path}: no run with failure off")
     for r in rows:
         r["ok"] = r["exit_code"] == "0"
         r["aspect"] = float(r["L0_over_D0 [-]"])
