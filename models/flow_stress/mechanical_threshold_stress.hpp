@@ -135,7 +135,9 @@ struct MtsFactors {
 /// At the conditions' temperature, pressure and density.
 MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate,
                        const FlowConditions& c);
-/// At temperature T and no pressure (the Varshni modulus reads no more).
+/// At temperature T and no pressure (the Varshni modulus reads no more). With a nested modulus
+/// that reads the density (Nadal-Le Poac's rho k_B T / (C m)), use the FlowConditions form: here
+/// the density is 0 and that term is dropped.
 MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate, double T);
 
 /// Reads every parameter above ("minimum_strain_rate" optional, default 1e-6 /s; aIV0..aIV3
