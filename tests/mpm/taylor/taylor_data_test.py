@@ -121,20 +121,34 @@ def main(work):
     check(taylor_report.richardson((12, 16, 24), [1.0, 1.1, 1.3]) is None, "growing differences")
     check(taylor_report.richardson((12, 16, 24), [1.0, 1.0, 1.1]) is None, "no change, then one")
 
-    # Resuming: the result of this very scene, or nothing.
+    # Resuming: the result of this very scene and material content, or nothing.
     sc = taylor.scene(house[7], taylor.MATERIAL, "off", 6, geometry="axisymmetric")
+    digest = taylor.material_digest(taylor.MATERIAL)
     run = os.path.join(work, "run")
     os.makedirs(run, exist_ok=True)
     if os.path.exists(os.path.join(run, "result.json")):
         os.remove(os.path.join(run, "result.json"))
-    check(taylor.finished(run, sc) is None, "no result.json: not finished")
+    check(taylor.finished(run, sc, digest) is None, "no result.json: not finished")
     with open(os.path.join(run, "result.json"), "w") as f:
-        json.dump({"scene": sc, "row": {"Lf [m]": 0.0114}, "profile": [[0.1, 0.2, 0.3]]}, f)
-    done = taylor.finished(run, json.loads(json.dumps(sc)))
+        json.dump({"scene": sc, "material_sha256": digest, "row": {"Lf [m]": 0.0114},
+                   "profile": [[0.1, 0.2, 0.3]]}, f)
+    done = taylor.finished(run, json.loads(json.dumps(sc)), digest)
     check(done is not None and done["row"] == {"Lf [m]": 0.0114}, f"finished: {done}")
     check(taylor.finished(run, taylor.scene(house[7], taylor.MATERIAL, "off", 8,
-                                            geometry="axisymmetric")) is None,
+                                            geometry="axisymmetric"), digest) is None,
           "another scene in the same directory: not finished")
+    # A material file rewritten in place (a re-fit) under the same name: not the same run.
+    refit = os.path.join(work, "refit.json")
+    with open(taylor.MATERIAL) as f:
+        text = f.read()
+    with open(refit, "w") as f:
+        f.write(text)
+    before = taylor.material_digest(refit)
+    with open(refit, "w") as f:
+        f.write(text.replace('"A": 324.0e6', '"A": 325.0e6'))
+    check(taylor.material_digest(refit) != before, "the digest follows the file's content")
+    check(taylor.finished(run, sc, taylor.material_digest(refit)) is None,
+          "the same scene with another material content: not finished")
 
     for what in failures:
         print("FAILED:", what)
