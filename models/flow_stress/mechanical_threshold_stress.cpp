@@ -91,11 +91,34 @@ Hardening hardening(const MechanicalThresholdStressParams& p, double sigma_e, do
   return h;
 }
 
+/// The law's parameters at temperature T, without the block: above its T_c, the block's set.
+MechanicalThresholdStressParams at_temperature(const MechanicalThresholdStressParams& p, double T) {
+  MechanicalThresholdStressParams q = p;
+  q.above_critical_temperature.reset();
+  if (!p.above_critical_temperature || !(T > p.above_critical_temperature->T_c)) return q;
+  const MtsAboveCriticalTemperature& a = *p.above_critical_temperature;
+  q.sigma_i = a.sigma_i;
+  q.g0_i = a.g0_i;
+  q.sigma_es0 = a.sigma_es0;
+  q.g0_es = a.g0_es;
+  q.a0 = a.a0;
+  q.a1 = a.a1;
+  q.a2 = a.a2;
+  q.a3 = a.a3;
+  q.aIV0 = a.aIV0;
+  q.aIV1 = a.aIV1;
+  q.aIV2 = a.aIV2;
+  q.aIV3 = a.aIV3;
+  return q;
+}
+
 }  // namespace
 
-MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate,
+MtsFactors mts_factors(const MechanicalThresholdStressParams& law, double rate,
                        const FlowConditions& c) {
   const double T = c.temperature;
+  if (law.above_critical_temperature) return mts_factors(at_temperature(law, T), rate, c);
+  const MechanicalThresholdStressParams& p = law;
   const bool clamped = rate < p.minimum_strain_rate;
   const double r = clamped ? p.minimum_strain_rate : rate;
   const Modulus m = modulus(p, c);
@@ -115,9 +138,11 @@ MtsFactors mts_factors(const MechanicalThresholdStressParams& p, double rate, do
   return mts_factors(p, rate, c);
 }
 
-FlowStress flow_stress(const MechanicalThresholdStressParams& p, double ep, double rate,
+FlowStress flow_stress(const MechanicalThresholdStressParams& law, double ep, double rate,
                        const FlowConditions& c) {
   const double T = c.temperature;
+  if (law.above_critical_temperature) return flow_stress(at_temperature(law, T), ep, rate, c);
+  const MechanicalThresholdStressParams& p = law;
   const bool clamped = rate < p.minimum_strain_rate;
   const double r = clamped ? p.minimum_strain_rate : rate;
   const Modulus m = modulus(p, c);
@@ -141,8 +166,11 @@ FlowStress flow_stress(const MechanicalThresholdStressParams& p, double ep, doub
   return f;
 }
 
-double internal_after(const MechanicalThresholdStressParams& p, double internal, double d_ep,
+double internal_after(const MechanicalThresholdStressParams& law, double internal, double d_ep,
                       double rate, const FlowConditions& c) {
+  if (law.above_critical_temperature)
+    return internal_after(at_temperature(law, c.temperature), internal, d_ep, rate, c);
+  const MechanicalThresholdStressParams& p = law;
   const bool clamped = rate < p.minimum_strain_rate;
   const double r = clamped ? p.minimum_strain_rate : rate;
   const Modulus m = modulus(p, c);
@@ -219,6 +247,28 @@ MechanicalThresholdStressParams read_law(JsonReader& r, const MechanicalThreshol
   }
   p.minimum_strain_rate = r.number_or("minimum_strain_rate", 1e-6, Range::positive(),
                                       "slowest rate the law is evaluated at [1/s]");
+  if (auto block = r.optional_child("above_critical_temperature",
+                                    "the set that replaces the law's above T_c")) {
+    MtsAboveCriticalTemperature a;
+    a.T_c = block->number("T_c", Range::positive(), "MTS critical temperature T_c [K]");
+    a.sigma_i = block->quantity("sigma_i", Quantity::stress, Range::non_negative(),
+                                "MTS intrinsic barrier above T_c [Pa]");
+    a.g0_i = block->number("g0_i", Range::positive(), "MTS g0_i above T_c [-]");
+    a.sigma_es0 = block->quantity("sigma_es0", Quantity::stress, Range::positive(),
+                                  "MTS saturation stress above T_c [Pa]");
+    a.g0_es = block->number("g0_es", Range::positive(), "MTS g0_es above T_c [-]");
+    a.a0 = block->quantity("a0", Quantity::stress, kRateTerm0, "MTS a0 above T_c [Pa]");
+    a.a1 = block->number("a1", kRateTerm, "MTS a1 above T_c [Pa]");
+    a.a2 = block->number("a2", kRateTerm, "MTS a2 above T_c [Pa s^0.5]");
+    a.a3 = block->number("a3", kPerKelvin, "MTS a3 above T_c [Pa/K]");
+    a.aIV0 =
+        block->quantity_or("aIV0", 0.0, Quantity::stress, kRateTerm0, "MTS aIV0 above T_c [Pa]");
+    a.aIV1 = block->number_or("aIV1", 0.0, kRateTerm, "MTS aIV1 above T_c [Pa]");
+    a.aIV2 = block->number_or("aIV2", 0.0, kRateTerm, "MTS aIV2 above T_c [Pa s^0.5]");
+    a.aIV3 = block->number_or("aIV3", 0.0, kPerKelvin, "MTS aIV3 above T_c [Pa/K]");
+    block->reject_unknown_keys();
+    p.above_critical_temperature = a;
+  }
   r.reject_unknown_keys();
   return p;
 }
@@ -229,6 +279,15 @@ Json to_json(const MechanicalThresholdStressParams& p) {
     j.erase("D");
     j.erase("T0");
     j["shear_modulus"] = to_json(*p.shear_modulus);
+  }
+  if (const auto& a = p.above_critical_temperature) {
+    j["above_critical_temperature"] = {{"T_c", a->T_c},     {"sigma_i", a->sigma_i},
+                                       {"g0_i", a->g0_i},   {"sigma_es0", a->sigma_es0},
+                                       {"g0_es", a->g0_es}, {"a0", a->a0},
+                                       {"a1", a->a1},       {"a2", a->a2},
+                                       {"a3", a->a3},       {"aIV0", a->aIV0},
+                                       {"aIV1", a->aIV1},   {"aIV2", a->aIV2},
+                                       {"aIV3", a->aIV3}};
   }
   return j;
 }

@@ -50,6 +50,19 @@
 
 namespace impact {
 
+/// Banerjee (2007, section 4.5) fits 4340 steel with one set of the temperature-sensitive
+/// parameters below T_c = 1040 K (martensite, per temper) and another above it (austenite, every
+/// temper): above T_c these replace the law's. The flow stress jumps at T_c, as in the paper.
+struct MtsAboveCriticalTemperature {
+  double T_c = 0.0;                                       ///< the switch temperature [K]
+  double sigma_i = 0.0;                                   ///< [Pa]
+  double g0_i = 1.0;                                      ///< [-]
+  double sigma_es0 = 0.0;                                 ///< [Pa]
+  double g0_es = 1.0;                                     ///< [-]
+  double a0 = 0.0, a1 = 0.0, a2 = 0.0, a3 = 0.0;          ///< theta_0's, as the law's [Pa ...]
+  double aIV0 = 0.0, aIV1 = 0.0, aIV2 = 0.0, aIV3 = 0.0;  ///< theta_IV's [Pa ...]
+};
+
 struct MechanicalThresholdStressParams {
   double sigma_a = 0.0;               ///< athermal stress [Pa]
   double sigma_i = 0.0;               ///< intrinsic barrier stress [Pa] (0 for fcc metals)
@@ -81,6 +94,8 @@ struct MechanicalThresholdStressParams {
   /// The nested "shear_modulus" block's form (absent: Varshni from mu0, D, T0 above).
   std::optional<ShearModulusLaw> shear_modulus;
   double melt_temperature = 0.0;  ///< the material's T_m [K], for a form that reads T_m
+  /// The nested "above_critical_temperature" block (absent: one set at every temperature).
+  std::optional<MtsAboveCriticalTemperature> above_critical_temperature;
 
   static constexpr std::string_view kType = "mechanical_threshold_stress";
   static constexpr LawParameter<MechanicalThresholdStressParams> kParameters[] = {

@@ -66,9 +66,19 @@ def nadal_le_poac(block, mu0, T, p, rho, rho0, Tm):
     return max(mu, 0.0)
 
 
+def mts_law_at(law, T):
+    """Above T_c, the set of an "above_critical_temperature" block in place of the law's
+    (Banerjee 2007: 4340's austenite set above 1040 K)."""
+    above = law.get("above_critical_temperature")
+    if above is None or not T > above["T_c"]:
+        return law
+    return {**law, **{k: v for k, v in above.items() if k != "T_c"}}
+
+
 def mts(law, rate, T, p=0.0, rho=0.0, material=None):
     """MTS pieces at one rate and T: mu/mu0, S_i, S_e, and theta(sigma_e) (Banerjee 2007), at
     pressure p and density rho where the modulus reads them (Nadal-Le Poac, as Banerjee 2007)."""
+    law = mts_law_at(law, T)
     rate = max(rate, 1e-6)
     block = law.get("shear_modulus")
     if block is None:  # the law's own Varshni modulus (Banerjee eq. 10)
@@ -146,7 +156,7 @@ def flow_stress(law, ep, rate, T, p, rho, material, sigma_e=0.0):
         return law["K"] * (law["eps0"] + ep) ** law["n"] * (1 + (r / law["D"]) ** (1 / law["q"]))
     if law["type"] == "mechanical_threshold_stress":
         ratio, Si, Se, _ = mts(law, rate, T, p, rho, material)
-        return law["sigma_a"] + (Si * law["sigma_i"] + Se * sigma_e) * ratio
+        return law["sigma_a"] + (Si * mts_law_at(law, T)["sigma_i"] + Se * sigma_e) * ratio
     raise ValueError(law["type"])
 
 
