@@ -84,6 +84,7 @@ Observables::Observables(const Scene& scene, const Particles& initial, const Com
       crater_(scene.output.crater),
       dx_(scene.grid.spacing()(0)),
       axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
+      units_(ExtensiveUnits::of(scene.grid.per_metre_of_thickness())),
       comm_(comm) {
   for (const SceneObject& o : scene.objects) names_.push_back(o.name);
   if (!crater_) return;
@@ -187,9 +188,9 @@ Json Observables::summary(const Particles& P) const {
     // (its momentum too: the ledger books the axial component only, ledger.hpp).
     if (axisymmetric_) v(1) = v(2) = 0.0;
     const bool sampled = std::isfinite(max_pressure_[o]);
-    objects[names_[o]] = {{"mass [kg]", s[0]},
+    objects[names_[o]] = {{"mass [" + units_.mass + "]", s[0]},
                           {"mean_velocity [m/s]", Json::array({v(0), v(1), v(2)})},
-                          {"kinetic_energy [J]", s[4]},
+                          {"kinetic_energy [" + units_.energy + "]", s[4]},
                           {"max_pressure [Pa]", sampled ? max_pressure_[o] : 0.0},
                           {"max_pressure_time [s]", max_pressure_time_[o]}};
   }

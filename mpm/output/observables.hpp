@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/ledger/extensive_units.hpp"
 #include "mpm/output/particle_sets.hpp"
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/particles/particles.hpp"
@@ -98,6 +99,7 @@ class Observables {
   /// An axisymmetric grid (scene.hpp GridGeometry): the bodies are rings about the x axis, so
   /// their mean velocity is axial and the crater's axis is the axis of symmetry.
   bool axisymmetric_ = false;
+  ExtensiveUnits units_;  ///< of the objects' mass and kinetic energy (plane strain: per metre)
   ParticleSets face_;          ///< crater: the face layer's particles (set 0)
   std::vector<Vec3> face_x0_;  ///< and their initial positions, in seed-index order
   const Communicator* comm_;
