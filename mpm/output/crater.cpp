@@ -92,10 +92,9 @@ Crater crater_of(const std::vector<double>& u, const std::vector<double>& y,
       break;
     }
   }
+  c.depth = floor - far;
   if (!rim) {
-    c.depth = floor - far;
-    c.rim_displacement = far;
-    c.status = "no rim: the face's surface rises to its edge; depth below the far field";
+    c.status = "no rim: the face's surface rises to its edge (no diameter)";
     return c;
   }
   // The ring's own mean radius and height: a parabola through its neighbours overshoots where the
@@ -105,7 +104,8 @@ Crater crater_of(const std::vector<double>& u, const std::vector<double>& y,
   c.rim_radius = r;
   c.diameter = 2.0 * r;
   c.rim_displacement = u_rim;
-  c.depth = floor - u_rim;
+  c.rim_to_floor = floor - u_rim;
+  c.rim_height = far - u_rim;
   double inside = 0.0;
   for (std::size_t i = 0; i < u.size(); ++i) inside += radius(i) < r ? 1.0 : 0.0;
   c.crater_fraction = inside / double(u.size());
@@ -180,8 +180,10 @@ Json Crater::json(const std::string& object, double face) const {
           {"depth [m]", depth},
           {"diameter [m]", or_null(diameter)},
           {"rim_radius [m]", or_null(rim_radius)},
+          {"rim_to_floor_depth [m]", or_null(rim_to_floor)},
+          {"rim_height [m]", or_null(rim_height)},
           {"floor_displacement [m]", floor_displacement},
-          {"rim_displacement [m]", rim_displacement},
+          {"rim_displacement [m]", or_null(rim_displacement)},
           {"far_field_displacement [m]", far_field_displacement},
           {"axis_yz [m]", Json::array({axis_y, axis_z})},
           {"ring_width [m]", ring_width},

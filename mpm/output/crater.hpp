@@ -15,11 +15,13 @@
 //   rim     = the rim crest: going out from the deepest ring, the first ring below the half-depth
 //             level (far + (floor - far)/2) whose outer neighbour lies lower, u(k+1) >= u(k);
 //             its mean radius and mean u (to within a ring width, which shrinks with h);
-//   depth    = floor - u_rim (rim-to-floor depth), diameter = 2 R_rim (rim-crest diameter),
-//             as crater morphometry measures them (Pike 1977): both move with the surface around
-//             the crater, not with the plate.
-// Without a rim (the face rises to its edge) the diameter is null and the depth is measured
-// below the far field, with a status saying so.
+//   depth   = floor - far: how deep the crater goes below the surface as the target's own motion
+//             has moved it (the apparent depth below the original surface, which moved);
+//   diameter = 2 R_rim, the rim-crest diameter of crater morphometry (Pike 1977), which moves
+//             with the surface around the crater; and the rim-to-floor depth floor - u_rim and
+//             the rim's height far - u_rim (Pike's d_r and the raised rim).
+// Without a rim (the face rises to its edge) the diameter and the rim's measures are null, with a
+// status saying so.
 // The axis: output.crater's axis_y/axis_z, or the axis of symmetry (axisymmetric), or the mean
 // current (y, z) of the particles below the half-depth level (the bowl's lower half).
 // On several ranks the face layer is gathered on every rank (a few layers of cells): every rank
@@ -39,17 +41,19 @@
 namespace impact::mpm {
 
 struct Crater {
-  double depth = 0.0;                   ///< rim-to-floor, or below the far field without a rim [m]
-  std::optional<double> diameter;       ///< rim-crest diameter [m]; none without a rim
-  std::optional<double> rim_radius;     ///< [m]
-  double floor_displacement = 0.0;      ///< max u [m]
-  double rim_displacement = 0.0;        ///< u at the rim crest [m] (the far field without a rim)
-  double far_field_displacement = 0.0;  ///< median u [m]: the target's rigid and far-field motion
-  double axis_y = 0.0, axis_z = 0.0;    ///< the axis [m] (axisymmetric: 0, the axis of symmetry)
-  double ring_width = 0.0;              ///< [m]
-  double crater_fraction = 0.0;         ///< face particles inside the rim / all [-]
-  std::size_t face_particles = 0;       ///< the face layer: abs(X0_x - face) <= dx
-  std::string status;                   ///< "rim found", or why there is none
+  double depth = 0.0;                      ///< the floor below the far field [m]
+  std::optional<double> diameter;          ///< rim-crest diameter [m]; none without a rim
+  std::optional<double> rim_radius;        ///< [m]
+  std::optional<double> rim_to_floor;      ///< floor - u_rim [m]
+  std::optional<double> rim_height;        ///< far - u_rim: how far the rim stands out [m]
+  std::optional<double> rim_displacement;  ///< u at the rim crest [m]
+  double floor_displacement = 0.0;         ///< max u [m]
+  double far_field_displacement = 0.0;     ///< median u [m]: the target's rigid, far-field motion
+  double axis_y = 0.0, axis_z = 0.0;       ///< the axis [m] (axisymmetric: 0, the axis of symmetry)
+  double ring_width = 0.0;                 ///< [m]
+  double crater_fraction = 0.0;            ///< face particles inside the rim / all [-]
+  std::size_t face_particles = 0;          ///< the face layer: abs(X0_x - face) <= dx
+  std::string status;                      ///< "rim found", or why there is none
   /// summary.json "crater".
   Json json(const std::string& object, double face) const;
 };

@@ -1,12 +1,12 @@
 // The crater measure (mpm/output/crater.hpp, docs/mpm.md#output) on face layers written here,
 // whose answers follow by hand:
 // - a ring profile with a bowl, a raised rim and a flat far field: the rim is the first ring
-//   below the half-depth level whose outer neighbour lies lower; depth = floor - rim height,
-//   diameter = twice the rim ring's mean radius;
+//   below the half-depth level whose outer neighbour lies lower; depth = floor - far field (the
+//   median), diameter = twice the rim ring's mean radius, rim-to-floor = floor - rim;
 // - the same face moved rigidly by 1 mm: the same depth and diameter (issue 52: the measure from
 //   initial positions added the plate's own motion to the depth), the far field 1 mm further;
-// - a face that rises to its edge (no rim): no diameter, the depth below the far field (the
-//   median), and a status that says so; a rigidly translating face: no crater at all;
+// - a face that rises to its edge (no rim): no diameter, the depth below the far field, and a
+//   status that says so; a rigidly translating face: no crater at all;
 // - in 3D without a given axis: the axis through the bowl's lower half, the centre of a
 //   symmetric bowl.
 #include "mpm/output/crater.hpp"
@@ -65,8 +65,10 @@ BOOST_AUTO_TEST_CASE(the_rim_is_the_first_low_ring_past_the_half_depth_level) {
   BOOST_REQUIRE(c.diameter.has_value());
   BOOST_TEST(*c.rim_radius == 5.5e-3, tt::tolerance(1e-12));
   BOOST_TEST(*c.diameter == 11e-3, tt::tolerance(1e-12));
-  BOOST_TEST(c.rim_displacement == -0.2e-3, tt::tolerance(1e-12));
-  BOOST_TEST(c.depth == 5.2e-3, tt::tolerance(1e-12));
+  BOOST_TEST(*c.rim_displacement == -0.2e-3, tt::tolerance(1e-12));
+  BOOST_TEST(c.depth == 4.7e-3, tt::tolerance(1e-12));
+  BOOST_TEST(*c.rim_to_floor == 5.2e-3, tt::tolerance(1e-12));
+  BOOST_TEST(*c.rim_height == 0.5e-3, tt::tolerance(1e-12));
   // Inside the rim: rings 0-4 and ring 5's inner particle, 11 of 40.
   BOOST_TEST(c.crater_fraction == 11.0 / 40.0);
   BOOST_TEST(c.axis_y == 0.0);
@@ -78,9 +80,10 @@ BOOST_AUTO_TEST_CASE(a_rigid_motion_of_the_target_changes_neither_depth_nor_diam
   const Crater moved = axisymmetric(rings_of(bowl(), 1e-3));
   BOOST_TEST(moved.depth == at_rest.depth, tt::tolerance(1e-12));
   BOOST_TEST(*moved.diameter == *at_rest.diameter, tt::tolerance(1e-12));
+  BOOST_TEST(*moved.rim_to_floor == *at_rest.rim_to_floor, tt::tolerance(1e-12));
   BOOST_TEST(moved.far_field_displacement == at_rest.far_field_displacement + 1e-3,
              tt::tolerance(1e-12));
-  // What the measure from initial positions reported: the floor, 6 mm, against 5.2 mm.
+  // What the measure from initial positions reported: the floor, 6 mm, against 4.7 mm.
   BOOST_TEST(moved.floor_displacement == 6e-3, tt::tolerance(1e-12));
 }
 
@@ -91,6 +94,7 @@ BOOST_AUTO_TEST_CASE(a_face_without_a_rim_has_no_diameter_and_a_depth_below_the_
   BOOST_TEST_MESSAGE(c.status);
   BOOST_TEST(!c.diameter.has_value());
   BOOST_TEST(c.json("plate", 0.0).at("diameter [m]").is_null());
+  BOOST_TEST(c.json("plate", 0.0).at("rim_to_floor_depth [m]").is_null());
   BOOST_TEST(c.status.find("no rim") == 0u);
   // The median of 40 values: the mean of rings 9 and 10's, 2.75 and 2.5 mm.
   BOOST_TEST(c.far_field_displacement == 2.625e-3, tt::tolerance(1e-12));
@@ -119,7 +123,8 @@ BOOST_AUTO_TEST_CASE(the_axis_of_a_3d_crater_runs_through_the_lower_half_of_its_
   const Crater c = crater_of(u, y, z, kW, std::nullopt, false);
   BOOST_TEST(c.axis_y == cy, tt::tolerance(1e-12));
   BOOST_TEST(c.axis_z == cz, tt::tolerance(1e-12));
-  BOOST_TEST(c.depth == 3e-3, tt::tolerance(1e-12));  // the rim at the original surface, u = 0
+  BOOST_TEST(c.depth == 3e-3, tt::tolerance(1e-12));          // the far field at rest
+  BOOST_TEST(*c.rim_to_floor == 3e-3, tt::tolerance(1e-12));  // the rim on the original surface
   // Given, the axis is taken as it is.
   const Crater given = crater_of(u, y, z, kW, std::array<double, 2>{0.0, 0.0}, false);
   BOOST_TEST(given.axis_y == 0.0);
