@@ -70,8 +70,9 @@ import subprocess
 import sys
 import time
 
+# campaigns/study/vtu.py reads the snapshots with NumPy: imported where a run is measured, so
+# that --help, the usage errors and the table of shots need the standard library only.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
-import vtu  # noqa: E402
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 DATA = os.path.join(REPO, "data", "experiments", "taylor", "house1995.csv")
@@ -89,17 +90,26 @@ COMPRESSION_AWARE = {"constitutive_model": {
 PPC = 2                 # particles per cell per axis
 GEOMETRIES = ("3d", "axisymmetric")
 MEASURED = ("Lf", "Dm", "Xf")
+JUDGED = ("Lf", "Dm")   # Xf is reported, never judged (docs/taylor.md): no error is computed
 ANVIL_LAYER = 0.5e-3    # Dm from the particles within this distance of the anvil [m]
 PLASTIC_EDGE = 2e-3     # Xf: the cross-section mean plastic strain below which a section is undeformed
 CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
 
 
+class InputError(Exception):
+    """A table of shots that cannot be read: the message names the file, row and column (exit 2)."""
+
+
 def read_shots(path=DATA):
     """The shots of a table in the columns of house1995.csv. The measurements Lf, Dm, Xf may be
     left empty (or the column left out): None, reported and not judged. Anything else missing or
-    not a positive number stops with the file, row and column."""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+    not a positive number raises InputError with the file, row and column."""
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except (OSError, UnicodeDecodeError, csv.Error) as e:
+        raise InputError(f"taylor: {path}: cannot read the table of shots: "
+                         f"{getattr(e, 'strerror', None) or e}")
 
     def number(r, row, column, required):
         text = (r.get(column) or "").strip()
@@ -111,16 +121,16 @@ def read_shots(path=DATA):
             value = float("nan")
         if not (math.isfinite(value) and value > 0.0):
             what = "a number > 0" + ("" if required else " or empty (not measured)")
-            sys.exit(f"taylor: {path}: row {row} ({r.get('shot') or '?'}), column '{column}': "
-                     f"'{text}' is not {what}")
+            raise InputError(f"taylor: {path}: row {row} ({r.get('shot') or '?'}), column "
+                             f"'{column}': '{text}' is not {what}")
         return value
 
     shots, names = [], set()
     for row, r in enumerate(rows, start=2):  # row 1 is the header
         name = (r.get("shot") or "").strip()
         if not name or name in names:
-            sys.exit(f"taylor: {path}: row {row}: the column 'shot' needs a name, unique in the "
-                     f"file (got '{name}')")
+            raise InputError(f"taylor: {path}: row {row}: the column 'shot' needs a name, unique "
+                             f"in the file (got '{name}')")
         names.add(name)
         shot = {"shot": name, "D0": number(r, row, "D0 [m]", True),
                 "L0": number(r, row, "L0 [m]", True), "U0": number(r, row, "U0 [m/s]", True),
@@ -131,7 +141,7 @@ def read_shots(path=DATA):
             shot[key] = number(r, row, f"{key} [m]", False)
         shots.append(shot)
     if not shots:
-        sys.exit(f"taylor: {path}: no shots")
+        raise InputError(f"taylor: {path}: no shots")
     return shots
 
 
@@ -247,11 +257,14 @@ def measure(x, plastic_strain, shot, cells_per_radius, face_lift=0.0, geometry="
         profile.append(((b + 0.5) * h, r[inside].max() + radial, mean_ep))
         if mean_ep >= PLASTIC_EDGE:
             edge = (b + 1) * h
-    return Lf, Dm, Lf - edge, profile
+    # The last plastic bin's upper edge lies up to one bin beyond the rear end when the whole
+    # rod yielded: the undeformed length is then 0, not a negative length.
+    return Lf, Dm, Lf - min(edge, Lf), profile
 
 
 def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     """Lf, Dm, Xf, the profile and the failure counts of a finished run (module docstring)."""
+    import vtu
     snaps = vtu.snapshots(run_dir)
     first, last = vtu.read_vtu(snaps[0][1]), vtu.read_vtu(snaps[-1][1])
     rod0 = first["object"] == max(first["object"])
@@ -355,6 +368,7 @@ def run_one(job):
     row.update(m)
     record_shape(row, shot, profile, out_dir, tag)
     # Keep the last snapshot (the failure-cause figure); drop the others (tens of MB per run).
+    import vtu
     snaps = vtu.snapshots(run_dir)
     for _, f in snaps[:-1]:
         os.remove(f)
@@ -379,9 +393,11 @@ def shape_text(row):
 
 
 def record_shape(row, shot, profile, out_dir, tag):
-    """Errors against the experiment into `row` (empty where the shot has no measurement: not
-    judged); the profile into OUT/profiles/<tag>_<shot>.csv."""
-    for key in MEASURED:
+    """Errors of Lf and Dm against the experiment into `row` (empty where the shot has no
+    measurement: not judged; Xf is never judged); the profile into
+    OUT/profiles/<tag>_<shot>.csv."""
+    row.pop("Xf_error [%]", None)  # rows of campaigns before Xf was left unjudged
+    for key in JUDGED:
         row[f"{key}_error [%]"] = ("" if shot[key] is None
                                    else 100.0 * (row[f"{key} [m]"] / shot[key] - 1.0))
     prof_dir = os.path.join(out_dir, "profiles")
@@ -395,6 +411,7 @@ def record_shape(row, shot, profile, out_dir, tag):
 def reextract(out_dir, data=DATA):
     """Re-measures Lf, Dm, Xf and the profiles of OUT/results.csv from the runs' last snapshots
     (after a change of the measures; nothing is re-run)."""
+    import vtu
     with open(os.path.join(out_dir, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     shots = {s["shot"]: s for s in read_shots(data)}
@@ -425,9 +442,18 @@ def fit_material(name, out_dir, pointdriver):
     return os.path.join(fit_dir, files[0])
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # a usage error exits 1 (argparse's 2 is our input error)
+        self.print_usage(sys.stderr)
+        print(f"taylor: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def main(argv=None):
+    """Exit codes: 0 done, 1 usage error, 2 input error (the table of shots), 3 a run failed or an
+    output could not be written, 130 interrupted (Ctrl-C)."""
+    ap = Parser(prog="taylor.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("out")
     ap.add_argument("--sets", default="table1,fit_all")
     ap.add_argument("--failure", default="off", help="comma list of off, shipped, compression_aware")
@@ -455,7 +481,23 @@ def main():
     ap.add_argument("--reextract", action="store_true",
                     help="re-measure the runs of OUT/results.csv from their last snapshots, then "
                          "redo the report (no run)")
-    a = ap.parse_args()
+    a = ap.parse_args(argv)
+    try:
+        return campaign(a)
+    except InputError as e:
+        print(e, file=sys.stderr)
+        return 2
+    except OSError as e:
+        print(f"taylor: {e.filename or a.out}: cannot write: {e.strerror}", file=sys.stderr)
+        return 3
+    except KeyboardInterrupt:
+        print("taylor: interrupted; run the same command again to resume (finished runs are "
+              "kept)", file=sys.stderr)
+        return 130
+
+
+def campaign(a):
+    """The campaign of the parsed options `a` (module docstring); its exit code."""
     out_dir = os.path.abspath(a.out)
     if a.reextract:
         reextract(out_dir, a.data)
@@ -535,7 +577,7 @@ def main():
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
         import taylor_report  # noqa: E402  (matplotlib only when plotting)
         taylor_report.report(out_dir)
-    return 1 if any(r["exit_code"] != 0 for r in rows) else 0
+    return 3 if any(r["exit_code"] != 0 for r in rows) else 0
 
 
 if __name__ == "__main__":
