@@ -48,17 +48,24 @@ def order_text(p):
     return f"{p:.3g}"
 
 
-def range_text(rng, digits=3):
+def range_text(rng):
     """A ladder's range (the table's "range": low, high, unit, order_low, order_high) as
     '7.61-8.07 mm for p in [1, 2]' (Richardson over the plausible orders), or
-    '15.5-53.3 mm over the finest 3 levels' (no power law behind the levels); 'low to high'
-    where a value is negative. None or an incomplete range: '-'."""
+    '15-53 mm over the finest 3 levels' (no power law behind the levels); 'low to high' where a
+    value is negative. The ends carry the decimals that give the span two significant digits (a
+    range of one value, to round-off: 4 significant digits). None or an incomplete range: '-'."""
     if not isinstance(rng, dict) or not all(isinstance(rng.get(k), (int, float))
                                             for k in ("low", "high")):
         return "-"
     unit = rng.get("unit", "")
     factor, label = display_unit(unit, [rng["low"], rng["high"]])
-    lo, hi = number(rng["low"], factor, digits), number(rng["high"], factor, digits)
+    span = abs(rng["high"] - rng["low"]) / factor
+    size = max(abs(rng["high"]), abs(rng["low"])) / factor
+    if span > 1e-6 * size and math.isfinite(span):  # else one value up to round-off
+        decimals = max(0, 1 - math.floor(math.log10(span)))
+        lo, hi = (f"{rng['low'] / factor:.{decimals}f}", f"{rng['high'] / factor:.{decimals}f}")
+    else:
+        lo = hi = number(rng["low"], factor)
     span = lo if lo == hi else (f"{lo} to {hi}" if rng["low"] < 0 or rng["high"] < 0
                                 else f"{lo}-{hi}")
     text = span + ("" if label in ("", "-") else f" {label}")

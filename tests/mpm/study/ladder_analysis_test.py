@@ -11,9 +11,10 @@ ladders):
 - "speed" [m/s] = 5 + 2 (h / 1 mm)^3, with the coarsest value moved so that the coarser triple
   converges with another order: the finest triple's p = 3 lies outside [0.5, 2]: not quotable;
   range Richardson's for p in [1, 2], in closed form phi1 + (phi1 - phi2)/(r^q - 1) with
-  r = 2, phi1 = 7, phi2 = 21: [2.333..., -7], i.e. "-7 to 2.33 m/s for p in [1, 2]".
+  r = 2, phi1 = 7, phi2 = 21: [2.333..., -7], i.e. "-7.0 to 2.3 m/s for p in [1, 2]" (the ends
+  to the decimals that give the span two significant digits).
 - "pressure" [Pa]: 3e9, 2e9, 4e9, 1e9 from the finest: oscillatory, not quotable, the band of
-  the finest three, "2-4 GPa over the finest 3 levels".
+  the finest three, "2.0-4.0 GPa over the finest 3 levels".
 No signed percentage may stand in a row that is not quotable; every table of ladder.md renders;
 the ladder table carries "quotable", "verdict" and "range" {low, high, unit, order_low,
 order_high, levels, basis}; the figures are drawn, and the cost chart only for a quotable
@@ -104,10 +105,10 @@ def main():
             "depth [mm]": "| depth [mm] | 7 | 6 | 5 | 4 | in the asymptotic range | 8 mm for p = 1 "
                           "| 8 | 1 | 18 | 18 | -50 |",
             "speed [m/s]": "| speed [m/s] | 7 | 21 | 59 | 259 | order 3 outside the plausible "
-                           "[0.5, 2]; not in the asymptotic range | -7 to 2.33 m/s for p in [1, 2] "
+                           "[0.5, 2]; not in the asymptotic range | -7.0 to 2.3 m/s for p in [1, 2] "
                            "| - | 3 | - | - | - |",
             "pressure [GPa]": "| pressure [GPa] | 3 | 2 | 4 | 1 | oscillatory convergence; "
-                              "not in the asymptotic range | 2-4 GPa over the finest 3 levels | - "
+                              "not in the asymptotic range | 2.0-4.0 GPa over the finest 3 levels | - "
                               "| - | - | - | - |",
         }
         for name, line in want.items():

@@ -6,7 +6,7 @@ study (summary.json and history.csv written here, no mpm run):
 - a quotable entry ("quotable": true): this run's value, the extrapolated value, the signed error
   against it, GCI_fine and the order, each number with its unit;
 - an entry that is not quotable: the verdict and the range of converged values
-  ("... : 3.09-13.9 m/s for p in [0.5, 1]"), with '-' where an extrapolation, an error or a GCI
+  ("... : 3-14 m/s for p in [0.5, 1]"), with '-' where an extrapolation, an error or a GCI
   would be, even though the entry carries an "error [-]" (-180.9 % before);
 - an entry of a ladder table made before ranges existed (no "quotable"): its status and where the
   range would come from, no percentage.
@@ -55,7 +55,7 @@ WANT = {
                     "asymptotic range |",
     "sphere residual velocity": "| sphere residual velocity [m/s] | -18.47 m/s | - | - | - | - | "
                                 "order 0.353 outside the plausible [0.5, 2]; not in the "
-                                "asymptotic range: 3.09-13.9 m/s for p in [0.5, 1] |",
+                                "asymptotic range: 3-14 m/s for p in [0.5, 1] |",
     "crater diameter": "| crater diameter [mm] | 16 mm | - | - | - | - | monotonic divergence; "
                        "not in the asymptotic range: no range in the ladder table (re-analyse it: "
                        "campaigns/study/ladder.py --analyse-only) |",
