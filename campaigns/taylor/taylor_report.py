@@ -33,7 +33,8 @@ CAUSE_COLOURS = {"none": "#c8c8c8", "melting": "tab:orange", "tepla": "tab:red",
                  "drucker": "tab:blue", "becker": "tab:green"}
 SET_MARKERS = {"table1": "s", "fit_all": "o", "fit_room": "^", "scg": "D", "fit_za": "v", "fit_ptw": "P"}
 PROFILE_SHOTS = ["H3", "H8", "H10", "H13", "H16", "H21"]
-TEXT_COLUMNS = {"set", "failure", "anvil", "geometry", "shot", "message", "last_snapshot"}
+TEXT_COLUMNS = {"set", "failure", "anvil", "geometry", "shot", "message", "last_snapshot",
+                "material_reached_faces", "confined_attempts"}
 
 
 def load(out):
@@ -451,6 +452,20 @@ def report(out, draw=True):
     ft = failure_table(rows)
     if ft:
         lines += ["", "## Failed particles by cause", ""] + ft
+    confined = [r for r in rows if r.get("material_reached_faces")]
+    enlarged = [r for r in rows if r.get("confined_attempts") and not r.get(
+        "material_reached_faces")]
+    if confined or enlarged:
+        lines += ["", "## Grids enlarged, and runs whose material reached an outer face", "",
+                  "A run whose mushroom reached the grid's outer face (y+, z+: a mirror) is run "
+                  "again on a grid 1.5 times wider (docs/taylor.md); those still confined are "
+                  "flagged: their Lf and Dm may be wrong.", ""]
+        lines += [f"- {r['set']} {r['failure']} {r['cells_per_radius']} {r['shot']}: "
+                  + (f"CONFINED at {r['radial_extent_over_R0 [-]']:.3g} R0: "
+                     f"{r['material_reached_faces']}" if r in confined else
+                     f"grid {r['radial_extent_over_R0 [-]']:.3g} R0")
+                  + (f" (before: {r['confined_attempts']})" if r.get("confined_attempts")
+                     else "") for r in confined + enlarged]
     stopped = [r for r in rows if not r["ok"]]
     if stopped:
         lines += ["", "## Stopped runs", ""] + [

@@ -160,6 +160,69 @@ def main(work):
         check(not bad and tables >= 4, f"{campaign}: results.md tables {tables}, delimiter rows "
               f"short (line, header, delimiter): {bad}")
 
+    # The grid's radial extent follows the mushroom: while material reaches y+ or z+ (summary.json
+    # "material_reached_faces"), the shot runs again 1.5 times wider, each attempt in its own
+    # directory; the last attempt's faces and the earlier ones go into the row and onto stderr.
+    # run_attempt stands in for mpm here: the mushroom reaches 3.8 R0 (the 600 m/s shot).
+    import contextlib
+    import io
+    calls = []
+
+    def fake_attempt(mushroom):
+        def attempt(job, run_dir, radial):
+            calls.append((os.path.basename(run_dir), round(radial, 6)))
+            face = [{"face": "y+", "condition": "symmetric", "first_time [s]": 2.1e-5,
+                     "particles": 40}] if mushroom >= radial - 0.2 else []
+            return {"Lf [m]": 0.01, "Dm [m]": 0.02, "Xf [m]": 0.0,
+                    "radial_extent_over_R0 [-]": radial}, [(0.0, 0.0, 0.0)], face
+        return attempt
+
+    real_attempt = taylor.run_attempt
+    fast = dict(house[7], shot="U600", U0=600.0)
+    job = (fast, "table1", taylor.MATERIAL, "off", 6, work, os.path.join(work, "runs"), "mpm", 1,
+           ("mirror", 0.0), "3d")
+    try:
+        for mushroom, radials, still in ((3.8, [2.2, 3.3, 4.95], False), (1.7, [2.2], False),
+                                         (9.0, [2.2, 3.3, 4.95, 7.425], True)):
+            calls.clear()
+            taylor.run_attempt = fake_attempt(mushroom)
+            err = io.StringIO()
+            with contextlib.redirect_stderr(err):
+                row, _ = taylor.run_one(job)
+            check([r for _, r in calls] == radials and calls[0][0] == "U600"
+                  and all(d == f"U600_radial{r:.4g}" for d, r in calls[1:]),
+                  f"mushroom {mushroom} R0: attempts {calls}")
+            check(abs(row["radial_extent_over_R0 [-]"] - radials[-1]) < 1e-12
+                  and (row["material_reached_faces"] != "") == still
+                  and row["confined_attempts"].count(" R0: y+ (symmetric) at 21.0 us, 40 "
+                                                     "particles") == len(radials) - 1,
+                  f"mushroom {mushroom} R0: row {row}")
+            lines = err.getvalue().splitlines()
+            check(len(lines) == len(radials) - 1 + still
+                  and all(line.startswith("taylor: warning: table1_off_n6 U600: material reached "
+                                          "the outer face y+ (symmetric) at 21.0 us, 40 particles")
+                          for line in lines)
+                  and (not still or lines[-1].endswith("its Lf and Dm may be confined "
+                                                       "(results.csv, material_reached_faces)")),
+                  f"mushroom {mushroom} R0: stderr {lines}")
+    finally:
+        taylor.run_attempt = real_attempt
+    # The report flags a confined run: one row of the ladder campaign above, confined.
+    import csv
+    with open(os.path.join(work, "taylor_ladder", "results.csv"), newline="") as f:
+        first = next(csv.DictReader(f))
+    first.update({"material_reached_faces": "y+ (symmetric) at 21.0 us, 40 particles",
+                  "confined_attempts": "", "radial_extent_over_R0 [-]": "7.425"})
+    with open(os.path.join(work, "taylor_ladder", "results.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, list(first), lineterminator="\n")
+        w.writeheader()
+        w.writerow(first)
+    taylor_report.report(os.path.join(work, "taylor_ladder"), draw=False)
+    with open(os.path.join(work, "taylor_ladder", "results.md")) as f:
+        report = f.read()
+    check("CONFINED at 7.42 R0: y+ (symmetric) at 21.0 us, 40 particles" in report,
+          "results.md does not flag the confined run")
+
     # Resuming: the result of this very scene and material content, or nothing.
     sc = taylor.scene(house[7], taylor.MATERIAL, "off", 6, geometry="axisymmetric")
     digest = taylor.material_digest(taylor.MATERIAL)
