@@ -502,11 +502,19 @@ def reextract(out_dir, data=DATA):
     print(f"taylor: re-measured {len(rows)} runs in {out_dir}/results.csv", flush=True)
 
 
+class RunError(Exception):
+    """A program the campaign runs failed before any shot (exit 3, one line)."""
+
+
 def fit_material(name, out_dir, pointdriver):
     """Runs `pointdriver fit` for the set (stress-strain curves only) and returns its material."""
     fit_dir = os.path.join(out_dir, "fits", name)
-    subprocess.run([pointdriver, "fit", os.path.join(REPO, FITS[name]), "--out", fit_dir,
-                    "--no-figures"], check=True, capture_output=True, cwd=REPO)
+    done = subprocess.run([pointdriver, "fit", os.path.join(REPO, FITS[name]), "--out", fit_dir,
+                           "--no-figures"], capture_output=True, text=True, cwd=REPO)
+    if done.returncode != 0:
+        last = (done.stderr.strip().splitlines() or ["no message"])[-1]
+        raise RunError(f"taylor: --sets {name}: pointdriver fit {FITS[name]} failed (exit "
+                       f"{done.returncode}): {last}")
     files = [f for f in os.listdir(fit_dir) if f.endswith(".json") and f != "fit_report.json"]
     return os.path.join(fit_dir, files[0])
 
@@ -556,6 +564,9 @@ def main(argv=None):
     except InputError as e:
         print(e, file=sys.stderr)
         return 2
+    except RunError as e:
+        print(e, file=sys.stderr)
+        return 3
     except OSError as e:
         print(f"taylor: {e.filename or a.out}: cannot write: {e.strerror}", file=sys.stderr)
         return 3
@@ -600,6 +611,11 @@ def campaign(a):
     for f in failures:
         if f not in ("off", "shipped", "compression_aware"):
             sys.exit(f"taylor: --failure: unknown mode '{f}' (off, shipped, compression_aware)")
+    for program, option in ((a.mpm, "--mpm"), (a.pointdriver, "--pointdriver")):
+        if (option == "--mpm" or any(s in FITS for s in sets)) and not os.access(program,
+                                                                                 os.X_OK):
+            sys.exit(f"taylor: {option} {program}: not an executable (build it: cmake --build "
+                     "build)")
     materials = {}
     for s in sets:
         if s in PUBLISHED:

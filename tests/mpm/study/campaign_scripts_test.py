@@ -4,8 +4,8 @@ campaigns/study, campaigns/taylor and campaigns/benchmark with a `__main__` bloc
 `#!/usr/bin/env python3` and is executable, and `SCRIPT --help`, run as a program, exits 0 with its
 usage on stdout and nothing on stderr while `import numpy` fails (a directory holding a numpy.py
 that raises ImportError comes first on PYTHONPATH): the options are read before NumPy is needed.
-Also the Taylor campaign's exit codes without NumPy: a usage error 1, an unreadable table of
-shots 2, each one line on stderr naming the option or the file.
+Also the Taylor campaign's exit codes without NumPy: a usage error 1 (also a missing --mpm), an
+unreadable table of shots 2, each one line on stderr naming the option or the file.
 
   campaign_scripts_test.py"""
 
@@ -67,7 +67,10 @@ def main():
                 (["--data", os.path.join(tmp, "none.csv")], 2,
                  f"taylor: {os.path.join(tmp, 'none.csv')}: cannot read the table of shots: "
                  "No such file or directory"),
-                (["--bogus"], 1, "taylor: unrecognized arguments: --bogus")]:
+                (["--bogus"], 1, "taylor: unrecognized arguments: --bogus"),
+                (["--mpm", os.path.join(tmp, "no_mpm")], 1,
+                 f"taylor: --mpm {os.path.join(tmp, 'no_mpm')}: not an executable (build it: "
+                 "cmake --build build)")]:
             done = subprocess.run([sys.executable, taylor, out] + args, capture_output=True,
                                   text=True, env=env, cwd=tmp, timeout=60)
             last = done.stderr.strip().splitlines()[-1:] or [""]
