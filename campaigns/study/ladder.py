@@ -420,6 +420,8 @@ def verdict(finest, asym, count, band=gci.PLAUSIBLE_ORDER):
         reasons.append({"oscillatory": "oscillatory convergence",
                         "no difference": "no difference between levels"}.get(
                             finest["condition"], finest["condition"]))
+    elif finest["order"] is None:
+        reasons.append("no observed order")
     elif not band[0] <= finest["order"] <= band[1]:
         reasons.append(f"order {finest['order']:.3g} outside the plausible "
                        f"[{band[0]:g}, {band[1]:g}]")
