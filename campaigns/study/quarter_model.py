@@ -154,7 +154,8 @@ def main():
             f.write(f"| {name} | {p} | {s} | {t:.1f} |\n")
         f.write(f"\nCost ratio quarter/full: {cost['quarter'][2] / cost['full'][2]:.3f} "
                 f"(particles {cost['quarter'][0] / cost['full'][0]:.3f}).\n\n")
-        f.write("| observable [unit] | full | quarter (x4 if extensive) | relative difference [-] |\n"
+        f.write("| observable [unit] | full | quarter (x4 if extensive) | "
+                "relative difference [-] |\n"
                 "|---|---:|---:|---:|\n")
         for k, fv, qv, d in rows:
             f.write(f"| {k} | {fv:.6g} | {qv:.6g} | {d:+.2e} |\n")

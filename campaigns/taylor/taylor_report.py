@@ -93,8 +93,8 @@ def group(rows, *keys):
 
 def summary_table(rows):
     lines = ["| set | failure | cells per radius [-] | runs (ok) [-] | Lf error mean / mean abs / "
-             "worst abs [%] | Dm error mean / mean abs / worst abs [%] | failed particles (core, core under "
-             "pressure) [-] | at rest by [us] | energy error worst [%] | wall [s] |",
+             "worst abs [%] | Dm error mean / mean abs / worst abs [%] | failed particles (core, "
+             "core under pressure) [-] | at rest by [us] | energy error worst [%] | wall [s] |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     for (s, f, n), rs in sorted(group(rows, "set", "failure", "cells_per_radius").items()):
         ok = [r for r in rs if r["ok"]]
