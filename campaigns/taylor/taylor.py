@@ -436,8 +436,8 @@ def run_one(job):
         if not confined or k == MAX_ENLARGEMENTS:
             break
         larger = radial * ENLARGEMENT
-        print(f"taylor: warning: {tag} {shot['shot']}: material reached the outer face "
-              f"{reached_text(confined)} with the grid {radial:.3g} R0 from the axis: running it "
+        print(f"taylor: warning: {tag} {shot['shot']}: with the grid {radial:.3g} R0 from the "
+              f"axis, material reached its outer faces {reached_text(confined)}: running it "
               f"again at {larger:.3g} R0", file=sys.stderr, flush=True)
         earlier.append(f"{radial:.3g} R0: {reached_text(confined)}")
     row.setdefault("radial_extent_over_R0 [-]", radial)  # results of campaigns before it
@@ -446,11 +446,10 @@ def run_one(job):
     if profile is not None:
         record_shape(row, shot, profile, out_dir, tag)
         if reached:
-            print(f"taylor: warning: {tag} {shot['shot']}: material reached the outer face "
-                  f"{row['material_reached_faces']} with the grid "
-                  f"{row['radial_extent_over_R0 [-]']:.3g} R0 from the axis: its Lf and Dm may "
-                  "be confined (results.csv, material_reached_faces)", file=sys.stderr,
-                  flush=True)
+            print(f"taylor: warning: {tag} {shot['shot']}: with the grid "
+                  f"{row['radial_extent_over_R0 [-]']:.3g} R0 from the axis, material reached "
+                  f"its outer faces {row['material_reached_faces']}: its Lf and Dm may be "
+                  "confined (results.csv, material_reached_faces)", file=sys.stderr, flush=True)
     return row, profile
 
 

@@ -199,9 +199,9 @@ def main(work):
                   f"mushroom {mushroom} R0: row {row}")
             lines = err.getvalue().splitlines()
             check(len(lines) == len(radials) - 1 + still
-                  and all(line.startswith("taylor: warning: table1_off_n6 U600: material reached "
-                                          "the outer face y+ (symmetric) at 21.0 us, 40 particles")
-                          for line in lines)
+                  and all(line.startswith("taylor: warning: table1_off_n6 U600: with the grid ")
+                          and " R0 from the axis, material reached its outer faces y+ (symmetric) "
+                          "at 21.0 us, 40 particles: " in line for line in lines)
                   and (not still or lines[-1].endswith("its Lf and Dm may be confined "
                                                        "(results.csv, material_reached_faces)")),
                   f"mushroom {mushroom} R0: stderr {lines}")
