@@ -65,10 +65,15 @@ build() {  # build <preset> [CMAKE_ARG ...]
   cmake --build --preset "$1"
 }
 
+build_programs() {  # build_programs [CMAKE_ARG ...]: the release programs and the Python module
+  cmake --preset release "$@" >/dev/null  # only (no tests), into build/bin
+  cmake --build --preset programs
+}
+
 case "${1:-}" in
   main)
     install_missing_packages
-    build release
+    build_programs
     build/bin/material_check data/materials/al6061_t6.json >/dev/null
     # The report's conclusion (KeepStress, single_velocity, multiplier 0.1): writes
     # out/recommended/recommended/{history.csv, summary.json, particles.pvd, particles/*.vtu},
@@ -91,7 +96,7 @@ case "${1:-}" in
     ;;
   mpi)
     install_missing_packages "${MPI_PACKAGES[@]}"
-    build release -DIMPACT_MPI=ON
+    build_programs -DIMPACT_MPI=ON
     # As root Open MPI needs its allow flags; --oversubscribe lets RANKS exceed the cores.
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
       mpirun -np "${2:-2}" --oversubscribe build/bin/mpm run \
@@ -100,7 +105,7 @@ case "${1:-}" in
     ;;
   mpi-bench)
     install_missing_packages "${MPI_PACKAGES[@]}"
-    build release -DIMPACT_MPI=ON
+    build_programs -DIMPACT_MPI=ON
     if [ "${2:-2}" = 2 ]; then splits=(--splits 1x2x1 1x1x2); else splits=(); fi
     /usr/bin/python3 campaigns/benchmark/mpi_scaling.py build/bin/mpm build/mpi-bench --ranks "${2:-2}" \
       "${splits[@]}"
@@ -135,17 +140,17 @@ case "${1:-}" in
     ;;
   study)
     install_missing_packages
-    build release
+    build_programs
     build/bin/pointdriver convergence --out docs/figures
     ;;
   table2)
     install_missing_packages
-    build release
+    build_programs
     build/bin/mpm study data/scenes/sphere_cylinder --out docs/figures/sphere_cylinder --threads 2
     ;;
   accuracy)
     install_missing_packages
-    build release
+    build_programs
     # Variants of recommended.json (grid x1, x1.5, x2.25 per interpolation/scheme, x3 for
     # gimp/MUSL, multipliers, particles per cell) to 40 us, their observables against the
     # Richardson-extrapolated or finest run, Pareto charts (docs/accuracy.md); 77 min of runs on
@@ -157,7 +162,7 @@ case "${1:-}" in
     ;;
   quarter)
     install_missing_packages
-    build release
+    build_programs
     # The centred impact as a quarter with symmetric planes against the full model, 40 us
     # (docs/performance.md#quarter-model).
     /usr/bin/python3 campaigns/study/quarter_model.py docs/figures/quarter_model --mpm build/bin/mpm \
@@ -165,7 +170,7 @@ case "${1:-}" in
     ;;
   taylor)
     install_missing_packages
-    build release
+    build_programs
     # House et al. (1995) Taylor shots (data/experiments/taylor/) with the Table 1 set and the set
     # `pointdriver fit` gives from the stress-strain curves, failure off, 6 cells per radius, two
     # runs at a time (docs/taylor.md). Options after OUT go to the script and override these,
@@ -176,14 +181,14 @@ case "${1:-}" in
     ;;
   laws)
     install_missing_packages
-    build release
+    build_programs
     # Every flow-stress law of each shipped material at 1e-3 and 1e3 /s, 294 and 600 K
     # (docs/models.md; figures and CSV in docs/figures/; a few seconds).
     /usr/bin/python3 pointdriver/plot/material_laws.py build/bin/pointdriver docs/figures
     ;;
   stability)
     install_missing_packages
-    build release
+    build_programs
     # 112 variants (multiplier x interpolation x contact x AV x velocity) + the report's case 2
     # row, 10 us each, classified stable / energy-drifting / unstable (docs/accuracy.md).
     /usr/bin/python3 campaigns/study/stability_map.py --out docs/figures/stability --mpm build/bin/mpm \

@@ -48,7 +48,9 @@ int plot_run(const std::string& run, const std::string& figure) {
   std::vector<std::string> argv{python.command, script, run};
   if (!figure.empty()) argv.push_back("--out=" + figure);
   const int code = spawn_process(argv, false);
-  if (code == 0 || code == 2) return code;
+  // run_plot.py's documented codes, each after its own line (or, 141, in silence: stdout's
+  // reader went away): usage, input, an output it could not write, Ctrl-C.
+  if (code == 0 || code == 1 || code == 2 || code == 3 || code == 130 || code == 141) return code;
   if (code == kScriptMissingMatplotlib) {
     std::cerr << "mpm plot: matplotlib missing; install it with: " << kInstall << '\n';
     return 1;

@@ -4,6 +4,24 @@ namespace impact {
 
 namespace {
 
+// fitted_range: both bounds of each quantity, the lower below the upper.
+FittedRange read_fitted_range(JsonReader& r) {
+  FittedRange f;
+  const Range rates = Range::open(0.0, 1e12), temperatures = Range::open(0.0, 1e4);
+  f.strain_rate_min = r.number("strain_rate_min", rates, "lowest strain rate of the fit [1/s]");
+  f.strain_rate_max = r.number("strain_rate_max", rates, "highest strain rate of the fit [1/s]");
+  f.temperature_min = r.quantity("temperature_min", Quantity::temperature, temperatures,
+                                 "lowest temperature of the fit [K]");
+  f.temperature_max = r.quantity("temperature_max", Quantity::temperature, temperatures,
+                                 "highest temperature of the fit [K]");
+  if (f.strain_rate_min > f.strain_rate_max)
+    r.problems().add(r.key_path("strain_rate_max"), "expected at least strain_rate_min");
+  if (f.temperature_min > f.temperature_max)
+    r.problems().add(r.key_path("temperature_max"), "expected at least temperature_min");
+  r.reject_unknown_keys();
+  return f;
+}
+
 ObjectiveRate read_objective_rate(JsonReader& r) {
   const std::string name =
       r.choice("objective_rate", {"green_naghdi", "green_naghdi_incremental", "jaumann"},
@@ -56,6 +74,12 @@ Material read_material(const Json& document, const std::string& file, InputKeyRe
     problems.add("/melt_temperature", "expected a melting temperature above room_temperature");
   }
 
+  std::optional<FittedRange> fitted;
+  if (auto range = root.optional_child("fitted_range",
+                                       "the strain rates and temperatures the parameters were "
+                                       "fitted on (mpm warns outside them)"))
+    fitted = read_fitted_range(*range);
+
   JsonReader cm = root.child("constitutive_model", "the constitutive model and its sub-models");
   cm.choice("type", {"elastic_plastic"}, "constitutive model", "elastic_plastic");
   p.objective_rate = read_objective_rate(cm);
@@ -93,7 +117,8 @@ Material read_material(const Json& document, const std::string& file, InputKeyRe
   cm.reject_unknown_keys();
   root.reject_unknown_keys();
   problems.throw_if_any();
-  return Material{name, file, conductivity, ElasticPlastic(std::move(p)), problems.warnings()};
+  return Material{
+      name, file, conductivity, ElasticPlastic(std::move(p)), fitted, problems.warnings()};
 }
 
 Material load_material(const std::string& file, const Json& overrides) {
@@ -121,6 +146,12 @@ Json to_json(const Material& material) {
   j["thermal_conductivity"] = material.thermal_conductivity;
   j["room_temperature"] = p.room_temperature;
   j["melt_temperature"] = p.melt_temperature;
+  if (const auto& f = material.fitted_range) {
+    j["fitted_range"] = {{"strain_rate_min", f->strain_rate_min},
+                         {"strain_rate_max", f->strain_rate_max},
+                         {"temperature_min", f->temperature_min},
+                         {"temperature_max", f->temperature_max}};
+  }
   Json& cm = j["constitutive_model"];
   cm["type"] = "elastic_plastic";
   cm["objective_rate"] = p.objective_rate == ObjectiveRate::jaumann ? "jaumann"

@@ -3,6 +3,7 @@
 // a name not listed here is rejected with the list of known ones.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,11 +12,20 @@
 
 namespace impact {
 
+/// The strain rates and temperatures a material's parameters were fitted on (`fitted_range`):
+/// outside them the law extrapolates its fit (mpm run warns once per material at start when a
+/// scene's nominal strain rate or initial temperature lies outside, docs/models.md).
+struct FittedRange {
+  double strain_rate_min = 0.0, strain_rate_max = 0.0;  ///< [1/s]
+  double temperature_min = 0.0, temperature_max = 0.0;  ///< [K]
+};
+
 struct Material {
   std::string name;
   std::string file;                   ///< where it was read from (for messages)
   double thermal_conductivity = 0.0;  ///< [W/(m K)]; carried for completeness, unused (adiabatic)
   ElasticPlastic model;
+  std::optional<FittedRange> fitted_range;  ///< absent: not stated
   /// Admissible but suspicious values ("file: /key/path: why"), e.g. a likely unit slip; the
   /// reader does not print them, the command line does.
   std::vector<std::string> warnings;

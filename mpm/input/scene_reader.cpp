@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "mpm/input/scene_keys.hpp"
+#include "mpm/scene/fitted_range.hpp"
 #include "mpm/scene/grid_coverage.hpp"
 #include "mpm/scene/planar_form.hpp"
 #include "mpm/scene/seed_points.hpp"
@@ -863,6 +864,7 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   root.reject_unknown_keys();
   problems.throw_if_any();
   s.warnings.insert(s.warnings.end(), problems.warnings().begin(), problems.warnings().end());
+  for (std::string& w : fitted_range_warnings(s)) s.warnings.push_back(std::move(w));
   return s;
 }
 

@@ -59,25 +59,27 @@ double Ledger::energy_excess() const {
 }
 
 std::vector<std::string> Ledger::columns() const {
+  const auto in = [](const std::string& unit) { return " [" + unit + "]"; };
+  const std::string J = in(units_.energy), p = in(units_.momentum), I = in(units_.impulse);
   std::vector<std::string> c = {"time [s]",
-                                "kinetic_energy [J]",
-                                "strain_energy [J]",
-                                "total_energy [J]",
-                                "momentum_x [kg m/s]",
-                                "momentum_y [kg m/s]",
-                                "momentum_z [kg m/s]",
-                                "boundary_impulse_x [N s]",
-                                "boundary_impulse_y [N s]",
-                                "boundary_impulse_z [N s]"};
-  for (const std::string& s : sink_names_) c.push_back(s + " [J]");
+                                "kinetic_energy" + J,
+                                "strain_energy" + J,
+                                "total_energy" + J,
+                                "momentum_x" + p,
+                                "momentum_y" + p,
+                                "momentum_z" + p,
+                                "boundary_impulse_x" + I,
+                                "boundary_impulse_y" + I,
+                                "boundary_impulse_z" + I};
+  for (const std::string& s : sink_names_) c.push_back(s + J);
   if (with_outflow_) {
     c.insert(c.end(),
-             {"outflow_mass [kg]", "outflow_momentum_x [kg m/s]", "outflow_momentum_y [kg m/s]",
-              "outflow_momentum_z [kg m/s]", "outflow_kinetic_energy [J]"});
+             {"outflow_mass" + in(units_.mass), "outflow_momentum_x" + p, "outflow_momentum_y" + p,
+              "outflow_momentum_z" + p, "outflow_kinetic_energy" + J});
   }
   if (with_external_) {
-    c.insert(c.end(), {"external_impulse_x [N s]", "external_impulse_y [N s]",
-                       "external_impulse_z [N s]", "external_work [J]"});
+    c.insert(c.end(), {"external_impulse_x" + I, "external_impulse_y" + I, "external_impulse_z" + I,
+                       "external_work" + J});
   }
   c.push_back("energy_error [-]");
   return c;

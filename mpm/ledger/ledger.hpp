@@ -14,7 +14,8 @@
 //                      - external_work) / E0: the numerical residual (time integration and
 //                      transfers), the one term that is not physics
 // with E0 the initial kinetic energy (1 J if E0 = 0, i.e. then an absolute error in J).
-// Column names carry their unit, `name [unit]` (the point driver's convention).
+// Column names carry their unit, `name [unit]` (the point driver's convention); a plane-strain
+// run's are per metre of thickness (extensive_units.hpp).
 #pragma once
 
 #include <string>
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "models/core/tensor.hpp"
+#include "mpm/ledger/extensive_units.hpp"
 #include "mpm/ledger/totals.hpp"
 
 namespace impact::mpm {
@@ -50,11 +52,14 @@ class Ledger {
   /// `momentum_components`: 1 for each component of the particles' sum m v that is the body's
   /// momentum, 0 for one that is not: on an axisymmetric grid only the axial (x) one, since the
   /// radial momenta of a ring cancel (scene.hpp GridGeometry); the others are booked as zero.
+  /// `units`: of the columns (per metre of thickness in plane strain).
   explicit Ledger(bool with_external = false, bool with_outflow = false,
-                  const Vec3& momentum_components = Vec3::Ones())
+                  const Vec3& momentum_components = Vec3::Ones(), ExtensiveUnits units = {})
       : with_external_(with_external),
         with_outflow_(with_outflow),
-        components_(momentum_components) {}
+        components_(momentum_components),
+        units_(std::move(units)) {}
+  const ExtensiveUnits& units() const { return units_; }
 
   /// Registers an energy sink column (J, accumulated; `name` without unit: the header gets
   /// "name [J]"); returns its index for add_sink(). `in_balance`: a term of energy_error (false
@@ -122,6 +127,7 @@ class Ledger {
  private:
   bool with_external_, with_outflow_;
   Vec3 components_;
+  ExtensiveUnits units_;
   /// The components of `v` that are the body's (components_), the others +0: a product with 0
   /// would keep the sign of a negative one, and history.csv prints -0.
   Vec3 booked(const Vec3& v) const {

@@ -18,10 +18,15 @@ namespace impact::mpm {
 inline constexpr std::uint64_t kHashSeed = 0xcbf29ce484222325ULL;  ///< FNV-1a offset basis
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = kHashSeed);
 
-/// Writes values and tagged arrays, hashing every byte.
+/// Writes values and tagged arrays, hashing every byte; counting() only counts them (a
+/// checkpoint's header states its length, so that a file cut short reads as truncated).
 class CheckpointWriter {
  public:
-  explicit CheckpointWriter(std::ostream& out) : out_(out) {}
+  explicit CheckpointWriter(std::ostream& out) : out_(&out) {}
+  /// A writer that writes and hashes nothing, only counts the bytes.
+  static CheckpointWriter counting() { return CheckpointWriter(); }
+  /// Bytes written (or counted) so far, the trailer included once finish() is called.
+  std::uint64_t size() const { return size_; }
   void bytes(const void* data, std::size_t size);
   template <class T>
   void value(const T& v) {
@@ -39,8 +44,10 @@ class CheckpointWriter {
   void finish();
 
  private:
-  std::ostream& out_;
+  CheckpointWriter() = default;
+  std::ostream* out_ = nullptr;  ///< null: counting only
   std::uint64_t hash_ = kHashSeed;
+  std::uint64_t size_ = 0;
 };
 
 /// Reads what CheckpointWriter wrote; throws CheckpointError naming the file and the section.

@@ -81,35 +81,14 @@ std::vector<double> Gauges::read(const Particles& P) const {
 Observables::Observables(const Scene& scene, const Particles& initial, const Communicator* comm)
     : max_pressure_(scene.objects.size(), -std::numeric_limits<double>::infinity()),
       max_pressure_time_(scene.objects.size(), 0.0),
-      crater_(scene.output.crater),
-      dx_(scene.grid.spacing()(0)),
       axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
+      units_(ExtensiveUnits::of(scene.grid.per_metre_of_thickness())),
       comm_(comm) {
   for (const SceneObject& o : scene.objects) names_.push_back(o.name);
-  if (!crater_) return;
-  crater_object_ = scene.objects[crater_->object].name;
-  // The face layer: (seed index, initial position) of the particles this rank holds, then of
-  // every rank's, in seed-index order.
-  struct Seed {
-    std::uint64_t id;
-    double x0[3];
-  };
-  std::vector<Seed> layer;
-  for (std::size_t p = 0; p < initial.size(); ++p) {
-    if (initial.object[p] != crater_->object) continue;
-    if (std::abs(initial.x[p](0) - crater_->face) > dx_) continue;
-    layer.push_back({seed_index(initial, p), {initial.x[p](0), initial.x[p](1), initial.x[p](2)}});
-  }
-  if (ranks()) {
-    layer = comm_->concatenate(layer);
-    std::sort(layer.begin(), layer.end(), [](const Seed& a, const Seed& b) { return a.id < b.id; });
-  }
-  std::vector<std::uint64_t> ids;
-  for (const Seed& s : layer) {
-    ids.push_back(s.id);
-    face_x0_.emplace_back(s.x0[0], s.x0[1], s.x0[2]);
-  }
-  face_.add(ids, nullptr);  // already every rank's
+  if (!scene.output.crater) return;
+  crater_.emplace(scene, *scene.output.crater, initial, comm);
+  crater_object_ = scene.objects[scene.output.crater->object].name;
+  crater_face_ = scene.output.crater->face;
 }
 
 void Observables::sample(const Particles& P, double time) {
@@ -125,47 +104,6 @@ void Observables::sample(const Particles& P, double time) {
       max_pressure_time_[o] = time;
     }
   }
-}
-
-Crater Observables::crater(const Particles& P) const {
-  Crater c;
-  const std::vector<ParticleSets::Member> found = face_.find(P)[0];
-  c.face_particles = face_.ids(0).size();
-  // Depth (a maximum), then the displaced particles' count and mean (y, z): sums.
-  double depth = -std::numeric_limits<double>::infinity();
-  std::vector<double> displaced(3, 0.0);  // count, sum y, sum z
-  for (const ParticleSets::Member& m : found) {
-    const Vec3& x = P.x[m.p];
-    const double u = x(0) - face_x0_[m.i](0);
-    depth = std::max(depth, u);
-    if (u > 0.5 * dx_) {
-      displaced[0] += 1.0;
-      displaced[1] += x(1);
-      displaced[2] += x(2);
-    }
-  }
-  if (ranks()) {
-    depth = comm_->max(depth);
-    displaced = comm_->sum(displaced);
-  }
-  c.depth = c.face_particles == 0 ? 0.0 : depth;
-  c.displaced_particles = static_cast<std::size_t>(displaced[0]);
-  if (c.displaced_particles == 0) return c;
-  // On an axisymmetric grid a displaced particle is a ring about the axis of symmetry (y is its
-  // radius): the mean of the radii is no axis.
-  const bool on_axis = axisymmetric_ && !crater_->axis;
-  c.axis_y = crater_->axis ? (*crater_->axis)[0] : on_axis ? 0.0 : displaced[1] / displaced[0];
-  c.axis_z = crater_->axis ? (*crater_->axis)[1] : on_axis ? 0.0 : displaced[2] / displaced[0];
-  double r2 = 0.0;
-  for (const ParticleSets::Member& m : found) {
-    const Vec3& x = P.x[m.p];
-    if (x(0) - face_x0_[m.i](0) <= 0.5 * dx_) continue;
-    r2 =
-        std::max(r2, (x(1) - c.axis_y) * (x(1) - c.axis_y) + (x(2) - c.axis_z) * (x(2) - c.axis_z));
-  }
-  if (ranks()) r2 = comm_->max(r2);
-  c.diameter = 2.0 * std::sqrt(r2);
-  return c;
 }
 
 Json Observables::summary(const Particles& P) const {
@@ -187,23 +125,14 @@ Json Observables::summary(const Particles& P) const {
     // (its momentum too: the ledger books the axial component only, ledger.hpp).
     if (axisymmetric_) v(1) = v(2) = 0.0;
     const bool sampled = std::isfinite(max_pressure_[o]);
-    objects[names_[o]] = {{"mass [kg]", s[0]},
+    objects[names_[o]] = {{"mass [" + units_.mass + "]", s[0]},
                           {"mean_velocity [m/s]", Json::array({v(0), v(1), v(2)})},
-                          {"kinetic_energy [J]", s[4]},
+                          {"kinetic_energy [" + units_.energy + "]", s[4]},
                           {"max_pressure [Pa]", sampled ? max_pressure_[o] : 0.0},
                           {"max_pressure_time [s]", max_pressure_time_[o]}};
   }
   Json j = {{"objects", objects}};
-  if (crater_) {
-    const Crater c = crater(P);
-    j["crater"] = {{"object", crater_object_},
-                   {"face [m]", crater_->face},
-                   {"depth [m]", c.depth},
-                   {"diameter [m]", c.diameter},
-                   {"axis_yz [m]", Json::array({c.axis_y, c.axis_z})},
-                   {"face_particles", c.face_particles},
-                   {"displaced_particles", c.displaced_particles}};
-  }
+  if (crater_) j["crater"] = crater(P).json(crater_object_, crater_face_);
   return j;
 }
 

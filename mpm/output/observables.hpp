@@ -3,7 +3,8 @@
 //   mean over a fixed set of particles (one object's, initial position in a box) of a velocity
 //   component, a log-strain component or the pressure, read at every history row.
 // - Observables: summary.json "observables": per object mass, mean velocity, kinetic energy and
-//   the largest particle pressure seen at the history rows; the crater of output.crater.
+//   the largest particle pressure seen at the history rows; the crater of output.crater
+//   (mpm/output/crater.hpp).
 // Both take their particle sets from the particles as seeded (t = 0) and keep only seed-index
 // lists (and, for the crater, the initial positions of its face layer): a scene without gauges or
 // crater stores nothing per particle and does no per-step work. On several ranks every rank
@@ -15,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/ledger/extensive_units.hpp"
+#include "mpm/output/crater.hpp"
 #include "mpm/output/particle_sets.hpp"
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/particles/particles.hpp"
@@ -62,16 +65,6 @@ class Gauges {
   const Communicator* comm_;
 };
 
-/// Crater in the face x = face of an object, impact along +x (output.crater).
-struct Crater {
-  double depth = 0.0;                 ///< max over the face layer of (x - X0)_x [m]
-  double diameter = 0.0;              ///< 2 max distance of a displaced particle from the axis [m]
-  double axis_y = 0.0, axis_z = 0.0;  ///< the axis: mean current (y, z) of the displaced [m]
-                                      ///< (axisymmetric: 0, the axis of symmetry)
-  std::size_t face_particles = 0;     ///< the face layer: abs(X0_x - face) <= dx
-  std::size_t displaced_particles = 0;  ///< of those, (x - X0)_x > dx/2
-};
-
 class Observables {
  public:
   /// `initial`: the particles as seeded (t = 0), those this rank holds.
@@ -80,8 +73,8 @@ class Observables {
   /// At every history row: the running maximum pressure per object (sampled there only).
   void sample(const Particles& P, double time);
   bool has_crater() const { return crater_.has_value(); }
-  /// The crater now (output.crater must be set).
-  Crater crater(const Particles& P) const;
+  /// The crater now (output.crater must be set; collective on several ranks).
+  Crater crater(const Particles& P) const { return crater_->measure(P); }
   /// summary.json "observables": {"objects": {name: {...}}, "crater": {...}}.
   Json summary(const Particles& P) const;
   /// The running maxima (max pressure and its time per object), for a checkpoint.
@@ -92,14 +85,13 @@ class Observables {
  private:
   std::vector<std::string> names_;
   std::vector<double> max_pressure_, max_pressure_time_;
-  std::optional<CraterSpec> crater_;
+  std::optional<CraterMeasure> crater_;
   std::string crater_object_;
-  double dx_ = 0.0;
+  double crater_face_ = 0.0;
   /// An axisymmetric grid (scene.hpp GridGeometry): the bodies are rings about the x axis, so
   /// their mean velocity is axial and the crater's axis is the axis of symmetry.
   bool axisymmetric_ = false;
-  ParticleSets face_;          ///< crater: the face layer's particles (set 0)
-  std::vector<Vec3> face_x0_;  ///< and their initial positions, in seed-index order
+  ExtensiveUnits units_;  ///< of the objects' mass and kinetic energy (plane strain: per metre)
   const Communicator* comm_;
   bool ranks() const { return comm_ != nullptr && comm_->size() > 1; }
 };

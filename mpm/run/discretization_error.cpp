@@ -43,12 +43,31 @@ const Json& array_at(const Json& node, const std::string& key, const std::string
   return v;
 }
 
-// The relative error of `value` against the extrapolated value (null when there is none or 0).
+// The relative error of `value` against the extrapolated value, only where the ladder says the
+// extrapolation may be quoted (in the asymptotic range, a plausible order): elsewhere a signed
+// error against one extrapolated number misleads (issue 52: -180.9 % off an "extrapolated"
+// +22.8 m/s while every level was negative), and the entry carries the ladder's range instead.
+// null when there is no extrapolated value or it is 0.
 void set_error(Json& out, double value) {
   out["value"] = value;
   const Json& extrapolated = out["extrapolated"];
   const double x = extrapolated.is_number() ? extrapolated.get<double>() : 0.0;
-  out["error [-]"] = x != 0.0 ? Json((value - x) / std::abs(x)) : Json(nullptr);
+  const bool quotable = out["quotable"].get<bool>();
+  out["error [-]"] = quotable && x != 0.0 ? Json((value - x) / std::abs(x)) : Json(nullptr);
+}
+
+// The range the levels and the plausible orders bound (ladder.py: {"low", "high", "unit",
+// "basis"}), copied as given when it is one.
+std::optional<Json> range_of(const Json& o, const std::string& path) {
+  const auto it = o.find("range");
+  if (it == o.end() || it->is_null()) return std::nullopt;
+  if (!it->is_object()) throw Unreadable(path + "/range: expected an object or null");
+  for (const char* key : {"low", "high"}) {
+    const auto v = it->find(key);
+    if (v == it->end() || !v->is_number())
+      throw Unreadable(path + "/range/" + key + ": expected a number");
+  }
+  return *it;
 }
 
 // The observable's entry: the table's numbers with this run's value and its relative error. A
@@ -67,6 +86,13 @@ std::optional<Json> observable(const Json& o, const std::string& path, const Jso
   // Optional (tables before it lack it): the conservative GCI of Oberkampf & Roy (2010).
   if (o.contains("gci_conservative [-]"))
     out["gci_conservative [-]"] = number_or_null(o, "gci_conservative [-]", path);
+  // Whether one extrapolated value may be quoted: the table's word (tables before issue 52 lack
+  // it, and are then never quotable), and the range to quote otherwise.
+  const auto quotable = o.find("quotable");
+  if (quotable != o.end() && !quotable->is_boolean())
+    throw Unreadable(path + "/quotable: expected true or false, got " + quotable->dump());
+  out["quotable"] = quotable != o.end() && quotable->get<bool>();
+  if (auto range = range_of(o, path)) out["range"] = std::move(*range);
   if (named.is_null()) {
     const Json& values = array_at(o, "values", path);
     if (values.size() != level_count) {

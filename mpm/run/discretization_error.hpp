@@ -2,10 +2,13 @@
 // docs/mpm.md#output). campaigns/study/ladder.py runs a scene at several resolutions and writes
 // its table beside the scene file, "<stem>.ladder.json": per level the scene fingerprint
 // (mpm/run/scene_fingerprint.hpp), per observable a JSON pointer into summary.json, its
-// Richardson-extrapolated value, observed order and fine-grid GCI (Celik et al. 2008). A run
-// whose fingerprint is one of the levels' reads its own value at each pointer and reports its
-// relative error against the extrapolated value. The table is untrusted input: whatever it holds,
-// the run neither stops nor fails; a malformed table gives a status naming the key path.
+// Richardson-extrapolated value, observed order and fine-grid GCI (Celik et al. 2008), whether
+// that value may be quoted (`quotable`: the ladder is in the asymptotic range with a plausible
+// order) and the range the levels and the plausible orders bound. A run whose fingerprint is one
+// of the levels' reads its own value at each pointer and reports its relative error against the
+// extrapolated value where it is quotable, the range where it is not. The table is untrusted
+// input: whatever it holds, the run neither stops nor fails; a malformed table gives a status
+// naming the key path.
 #pragma once
 
 #include <filesystem>
@@ -23,7 +26,8 @@ std::filesystem::path ladder_table_path(const std::filesystem::path& scene_file)
 /// whose fingerprint is `fingerprint` and whose summary (as it will be written) is `summary`;
 /// nullopt when there is no table beside the scene file. Never throws:
 ///   {"table", "level", "ladder_commit", "observables": {name: {"path", "value",
-///    "extrapolated", "error [-]", "gci_fine [-]", "order", "status"}}} for a matching level,
+///    "extrapolated", "error [-]" (null unless quotable), "gci_fine [-]", "order", "status",
+///    "quotable", "range" (when the table gives one)}}} for a matching level,
 ///   {"table", "status": "no level of the ladder matches this scene (fingerprint X)"} else,
 ///   {"table", "status": "unreadable: <reason naming the key path>"} for a malformed table.
 std::optional<Json> discretization_error(const std::string& scene_file,

@@ -46,6 +46,16 @@ std::string absolute_path(const std::string& file) {
   return ec ? std::string() : absolute.lexically_normal().string();
 }
 
+// Fewer steps than this in a completed run are warned about (above).
+constexpr long kFewSteps = 10;
+
+// A scene warning that names a likely unit slip ("... looks like mm ...").
+bool mentions_a_unit_slip(const std::vector<std::string>& warnings) {
+  return std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
+    return w.find(" looks like ") != std::string::npos;
+  });
+}
+
 bool is_signal(const FaultInjection& f) {
   return f.kind == FaultInjection::Kind::sigterm || f.kind == FaultInjection::Kind::sigint;
 }
@@ -71,11 +81,12 @@ class WallClock {
 // its outputs, checkpoints, signals and reports, then the summary. On several ranks every rank
 // steps its box and writes its snapshot piece and checkpoint; the gauges, observables and the
 // summary are reduced over the ranks, and rank 0 writes history.csv, the .pvtu/.pvd and the
-// summary. No rank ever holds another's particles. `origin`: the scene file the run was started
-// from (empty: none), whose ladder table gives the summary's error bar; the checkpoint records it
-// as an absolute path, for a restart.
-int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, bool resume,
-           const std::string& origin) {
+// summary. No rank ever holds another's particles. `scene_text`: DIR/scene.json as the first run
+// wrote it (a new run writes it); `origin`: its hash, working directory and the scene file it was
+// started from (empty: none, else absolute), whose ladder table gives the summary's error bar.
+// Every checkpoint carries `origin` unchanged, so a restarted run can be restarted again.
+int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& origin,
+           const RunOptions& options, const fs::path& dir, bool resume) {
   const Communicator* comm =
       options.comm != nullptr && options.comm->size() > 1 ? options.comm : nullptr;
   const bool root = comm == nullptr || comm->root();
@@ -85,8 +96,6 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     if (root) std::cerr << "mpm: " << refusal << '\n';
     return kExitMemory;
   }
-  const std::string scene_text = scene.resolved.dump(2) + '\n';
-  const std::uint64_t scene_hash = fnv1a(scene_text.data(), scene_text.size());
   // Before the run: the material files as the run read them.
   const std::string fingerprint = scene_fingerprint(scene.resolved);
   if (!resume) {
@@ -150,18 +159,21 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     if (comm) comm->barrier();  // gone before any rank writes a piece of the same name
   }
   outputs.open(scene, dir, sim.particles(), sim.ledger(), resume ? &resumed : nullptr);
+  ProgressLine progress(options.progress && root);
   const auto write_outputs = [&](bool snapshot, long index) {
-    outputs.write_history(sim, sim.particles());
+    for (const int face : outputs.write_history(sim, sim.particles()))
+      if (root)
+        std::cerr << progress.break_line() << "mpm: warning: " << outputs.face_reach().warning(face)
+                  << '\n';
     if (root) status_file.write(sim, wall.seconds(), "running");
     if (snapshot) outputs.write_snapshot(sim.particles(), index, sim.time());
   };
   if (!resume) write_outputs(true, sim.steps());
   double next_output = resume ? resumed.next_output : scene.output.interval;
   // Every rank writes its own file; rank 0's also holds the outputs' positions.
-  const std::string origin_absolute = absolute_path(origin);
   const auto checkpoint = [&] {
     const RunState state = outputs.state(next_output, wall.seconds());
-    write_checkpoint(checkpoint_file(dir, sim.rank()), sim, state, scene_hash, origin_absolute);
+    write_checkpoint(checkpoint_file(dir, sim.rank()), sim, state, origin);
     if (comm) comm->barrier();  // every file in place before the status names the checkpoint
     status_file.checkpointed(sim.steps(), sim.time());
   };
@@ -169,7 +181,6 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   const InterruptHandlers handlers(
       options.handle_signals ||
       std::any_of(options.faults.begin(), options.faults.end(), is_signal));
-  ProgressLine progress(options.progress && root);
   FaultReport faults(progress);
   wall.restart(resume ? resumed.wall_time : 0.0);
   const long first_step = sim.steps();  // this process's steps: the halo traffic's divisor
@@ -220,7 +231,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
     code = kExitRunFailed;
     if (root) std::cerr << progress.break_line() << "mpm: run failed: " << message << '\n';
     outputs.write_snapshot(sim.particles(), sim.steps() + 1, sim.time());
-    outputs.write_history(sim, sim.particles());
+    outputs.write_history(sim, sim.particles());  // a face reached now: in the summary
     if (root) status_file.write(sim, wall.seconds(), "running");
   } catch (const std::exception& e) {  // e.g. an output that cannot be written: say so, re-throw
     try {
@@ -255,6 +266,7 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
   Json summary = run_summary(sim, sim.particles(), status, message, seconds, outputs.observables(),
                              outputs.gauge_extrema(), &outputs.paths());
   summary["scene_fingerprint"] = fingerprint;
+  summary["material_reached_faces"] = outputs.face_reach().summary();
   if (!root) return code;
   outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   summary["phase_seconds [s]"] = phases;
@@ -272,11 +284,21 @@ int run_in(const Scene& scene, const RunOptions& options, const fs::path& dir, b
                                {"z", sim.boxes().axis(2).first_cells()}}}};
   }
   // Last: the ladder's pointers read the summary as written.
-  if (auto error = discretization_error(origin, fingerprint, summary))
+  if (auto error = discretization_error(origin.scene_file, fingerprint, summary))
     summary["discretization_error"] = std::move(*error);
   write_file_atomically(dir / "summary.json",
                         [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
   status_file.write(sim, seconds, status, message);  // last: every file is then in place
+  // A run that ends in a handful of steps resolves nothing: almost always lengths or times typed
+  // in other units (a grid in mm makes the stable step a thousand times too long).
+  if (root && status == "completed" && sim.steps() < kFewSteps) {
+    std::cerr << "mpm: warning: the run completed in " << sim.steps()
+              << " step(s) to t = " << sim.time() << " s (time.max_time " << scene.time.max_time
+              << " s): too few to resolve a wave or an impact; check the scene's units (SI: "
+                 "lengths in m, times in s, speeds in m/s)"
+              << (mentions_a_unit_slip(scene.warnings) ? ", as the warnings above suggest" : "")
+              << '\n';
+  }
   if (options.report && status == "completed") {
     std::ostringstream line;
     line.precision(4);
@@ -296,10 +318,15 @@ int run_threads(int requested) {
 }
 
 int run(const Scene& scene, const RunOptions& options) {
+  const std::string scene_text = scene.resolved.dump(2) + '\n';
+  RunOrigin origin;
+  origin.scene_hash = fnv1a(scene_text.data(), scene_text.size());
+  origin.working_directory = fs::current_path().string();
+  origin.scene_file = absolute_path(scene.file);
   return run_in(
-      scene, options,
-      options.out_dir.empty() ? fs::path(scene.output.directory) : fs::path(options.out_dir), false,
-      scene.file);
+      scene, scene_text, origin, options,
+      options.out_dir.empty() ? fs::path(scene.output.directory) : fs::path(options.out_dir),
+      false);
 }
 
 int restart(const std::string& directory, const RunOptions& options) {
@@ -358,8 +385,14 @@ int restart(const std::string& directory, const RunOptions& options) {
          " threads, this process gets " + std::to_string(run_threads(o.threads)) +
          " (results would not be bit-identical; --threads N overrides with a warning)"});
   }
+  // The first run's origin, unchanged: the next restart checks scene.json against the same hash
+  // and resolves the material paths against the same directory.
+  RunOrigin origin;
+  origin.scene_hash = header.scene_hash;
+  origin.working_directory = header.working_directory;
+  origin.scene_file = header.scene_file;
   try {
-    return run_in(scene, o, dir, true, header.scene_file);
+    return run_in(scene, text, origin, o, dir, true);
   } catch (const CheckpointError& e) {
     throw InputError({e.what()});
   }

@@ -6,6 +6,7 @@ RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Commun
     : gauges_(scene, seeded, comm),
       gauge_extrema_(gauges_.units()),
       observables_(scene, seeded, comm),
+      face_reach_(scene, seeded, comm),
       faulted_column_(scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle),
       comm_(comm) {}
 
@@ -18,6 +19,7 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
   if (resumed) {
     observables_.restore(resumed->observables);
     gauge_extrema_.restore(resumed->gauge_extrema);
+    face_reach_.restore(resumed->faces_reached);
   }
   const bool root = comm_ == nullptr || comm_->root();
   if (root && resumed) {
@@ -31,12 +33,13 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
   }
 }
 
-void RunOutputs::write_history(const Simulation& sim, const Particles& P) {
+std::vector<int> RunOutputs::write_history(const Simulation& sim, const Particles& P) {
   observables_.sample(P, sim.time());  // max pressure: sampled at history rows
   std::vector<double> extra = gauges_.read(P);
   gauge_extrema_.sample(extra, sim.time());  // the gauges' columns of this row
   if (faulted_column_) extra.push_back(double(sim.faulted_particles()));
   if (history_) history_->write(sim.ledger(), extra);
+  return face_reach_.sample(P, sim.time());
 }
 
 void RunOutputs::write_snapshot(const Particles& P, long index, double time) {
@@ -49,6 +52,7 @@ RunState RunOutputs::state(double next_output, double wall) const {
                   history_ ? history_->rows() : 0,
                   observables_.state(),
                   gauge_extrema_.state(),
+                  face_reach_.state(),
                   snapshots_ ? snapshots_->entries() : decltype(RunState::snapshots){},
                   wall};
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "mpm/output/face_reach.hpp"
 #include "mpm/output/gauge_extrema.hpp"
 #include "mpm/output/observables.hpp"
 #include "mpm/output/output.hpp"
@@ -33,9 +34,10 @@ class RunOutputs {
   void before_step(const Particles& P) { paths_->before_step(P); }
   void after_step(const Particles& P, double time, double dt) { paths_->after_step(P, time, dt); }
 
-  /// A history row of sim's ledger with the gauges of P (the observables and the gauges' extrema
-  /// are sampled with it); P: the particles this rank holds.
-  void write_history(const Simulation& sim, const Particles& P);
+  /// A history row of sim's ledger with the gauges of P (the observables, the gauges' extrema and
+  /// the faces material reached are sampled with it); P: the particles this rank holds. Returns
+  /// the faces reached for the first time at this row (FaceReach::sample).
+  std::vector<int> write_history(const Simulation& sim, const Particles& P);
   /// A snapshot of P numbered `index` (the step, or step + 1 for the state a failure left).
   void write_snapshot(const Particles& P, long index, double time);
 
@@ -50,12 +52,15 @@ class RunOutputs {
   const Observables& observables() const { return observables_; }
   /// The gauges' extrema over the history rows so far (summary.json "gauges").
   const GaugeExtrema& gauge_extrema() const { return gauge_extrema_; }
+  /// The outer faces material reached (summary.json "material_reached_faces").
+  const FaceReach& face_reach() const { return face_reach_; }
   const ParticlePaths& paths() const { return *paths_; }
 
  private:
   Gauges gauges_;
   GaugeExtrema gauge_extrema_;
   Observables observables_;
+  FaceReach face_reach_;
   std::optional<ParticlePaths> paths_;
   bool faulted_column_;
   const Communicator* comm_;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "mpm/ledger/extensive_units.hpp"
 #include "mpm/parallel/decomposition_plan.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/scene_fingerprint.hpp"
@@ -69,6 +70,10 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
     s[2] += P.volume0[p];
   }
   sums = over_ranks(sums, comm);
+  const ExtensiveUnits u = ExtensiveUnits::of(scene.grid.per_metre_of_thickness());
+  const auto in = [](const char* name, const std::string& unit) {
+    return std::string(name) + " [" + unit + "]";
+  };
   Json objects = Json::object();
   double total_mass = 0.0;
   std::size_t total = 0;
@@ -80,19 +85,19 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
     const double rho = scene.materials[scene.objects[o].material].material.model.params().density;
     objects[scene.objects[o].name] = {
         {"particles", n},
-        {"mass [kg]", mass},
-        {"particle_volume [m^3]", vol},
-        {"geometric_volume [m^3]", exact},
-        {"geometric_mass [kg]", rho * exact},
+        {in("mass", u.mass), mass},
+        {in("particle_volume", u.volume), vol},
+        {in("geometric_volume", u.volume), exact},
+        {in("geometric_mass", u.mass), rho * exact},
         {"volume_ratio", exact > 0 ? vol / exact : 0.0},
-        {"kinetic_energy [J]", 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
+        {in("kinetic_energy", u.energy), 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
     total_mass += mass;
     total += n;
   }
   const MemoryEstimate memory = estimate_memory(scene, total);
   Json report = {{"objects", objects},
                  {"particles", total},
-                 {"mass [kg]", total_mass},
+                 {in("mass", u.mass), total_mass},
                  {"memory [MB]", memory.total() / 1e6},
                  {"memory_estimate", memory.json()},
                  {"memory_per_particle [B]", Particles::bytes_per_particle()},
@@ -142,7 +147,8 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
   summary["particle_steps_per_second"] =
       wall > 0 ? double(particles) * double(sim.steps()) / wall : 0.0;
   if (const auto peak = peak_resident_memory()) summary["peak_resident_memory [MB]"] = *peak / 1e6;
-  summary["initial_energy [J]"] = sim.ledger().initial_energy();
+  const ExtensiveUnits& u = sim.ledger().units();
+  summary["initial_energy [" + u.energy + "]"] = sim.ledger().initial_energy();
   summary["velocity_fields"] = sim.grid().fields();
   summary["failed_particles"] = sim.failed_particles();
   summary["failed_by_cause"] = failure_causes(P, comm);
@@ -150,15 +156,17 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
     summary["particle_paths"][scene.output.particle_paths[i].name] = paths->particle(i);
   summary["converted_particles"] = sim.converted_particles();
   summary["faulted_particles"] = sim.faulted_particles();
-  summary["initial_momentum [kg m/s]"] = vec_json(sim.ledger().initial_momentum());
+  summary["initial_momentum [" + u.momentum + "]"] = vec_json(sim.ledger().initial_momentum());
   summary["final"] = row_json(sim.ledger());
   summary["observables"] = observables.summary(P);
   for (std::size_t g = 0; g < scene.output.gauges.size() && g < gauges.size(); ++g)
     summary["gauges"][scene.output.gauges[g].name].update(gauges.json(g));
   summary["units"] = {{"time", "s"},
-                      {"energy", "J"},
-                      {"momentum", "kg m/s"},
-                      {"boundary_impulse", "N s"},
+                      {"energy", u.energy},
+                      {"momentum", u.momentum},
+                      {"boundary_impulse", u.impulse},
+                      {"mass", u.mass},
+                      {"volume", u.volume},
                       {"energy_error", "-"}};
   return summary;
 }

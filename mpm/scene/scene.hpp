@@ -63,6 +63,9 @@ struct GridSpec {
   bool planar() const { return geometry != GridGeometry::three_d; }
   /// The mesh's axes: 2 or 3.
   int dimensions() const { return planar() ? 2 : 3; }
+  /// Plane strain: masses, energies, momenta and volumes are per metre of thickness
+  /// (mpm/ledger/extensive_units.hpp).
+  bool per_metre_of_thickness() const { return geometry == GridGeometry::plane_strain; }
   /// The smallest cell edge of the mesh's axes [m] (the time step).
   double min_spacing() const {
     const Vec3 h = spacing();

@@ -43,7 +43,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
       stencils_(make_stencils(shape_)),
       ledger_(
           !scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove,
-          scene.grid.geometry == GridGeometry::axisymmetric ? Vec3(1.0, 0.0, 0.0) : Vec3::Ones()) {
+          scene.grid.geometry == GridGeometry::axisymmetric ? Vec3(1.0, 0.0, 0.0) : Vec3::Ones(),
+          ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
   census_ = {};  // needed for seeding only
   if (ranks_.several()) {
     grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));

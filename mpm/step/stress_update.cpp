@@ -32,8 +32,10 @@ double bulk_viscosity(const ArtificialViscositySpec& av, double rho, double bulk
   return rho * (av.linear * a * std::abs(trD) * l + av.quadratic * trD * trD * l * l);
 }
 
-// Why an update cannot be used (the cold path: only on a fault).
-std::string describe_fault(const Mat3& L, const Mat3& F1, const StepReport& r, bool injected) {
+// Why an update cannot be used (the cold path: only on a fault); `molten`: the point is melted (at
+// the start or the end of the step: its remedy differs).
+std::string describe_fault(const Mat3& L, const Mat3& F1, const StepReport& r, bool injected,
+                           bool molten = false) {
   std::ostringstream m;
   m.precision(9);
   if (!F1.allFinite()) {
@@ -47,6 +49,14 @@ std::string describe_fault(const Mat3& L, const Mat3& F1, const StepReport& r, b
     m << " (det F_{n+1} = " << F1.determinant() << ")";
   if (r.status == UpdateStatus::return_mapping_not_converged)
     m << " (" << r.return_iterations << " iterations)";
+  // A molten point has no shear strength; stretched beyond its equation of state's range it has
+  // no sound speed either. The documented remedy lets it fail in tension instead (docs/models.md,
+  // 4340 MTS at 1100 m/s).
+  if (molten && (r.status == UpdateStatus::non_finite_wave_speed ||
+                 r.status == UpdateStatus::eos_out_of_range))
+    m << "; the point is molten and stretched beyond its equation of state: an erosion that drops "
+         "tension (\"physics\": {\"erosion\": \"AllowNoTension\"}) lets it fail instead "
+         "(docs/models.md)";
   if (injected) m << " (injected: --inject-fault nan)";
   return m.str();
 }
@@ -146,7 +156,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
         StepReport r = batch.finish(lane_of[i], dt, s1);
         const bool inject = p == settings.inject_nan_stress;
         if (!checked(s1, r, inject)) {
-          fault(p, describe_fault(L, F1, r, inject));
+          fault(p, describe_fault(L, F1, r, inject, s0.melted || s1.melted));
           continue;
         }
         const ElasticPlastic& model = *settings.models[P.material[p]];

@@ -17,13 +17,15 @@ const CommandSpec plot_command{
     "files are overlaid with a legend, labelled by file name or by --label, one per file).\n"
     "Columns are named as in the CSV header, with or without the unit: `stress_xx` matches\n"
     "`stress_xx [Pa]`; axis labels show the units, and y columns of different units go on\n"
-    "separate panels sharing x (one per unit). The figure format follows -o (.png, .pdf,\n"
-    ".svg). Needs python3 and matplotlib (Debian: apt-get install -y python3-matplotlib); the\n"
-    "script is pointdriver/plot/plot.py (installed under share/impact), or\n"
-    "$POINTDRIVER_PLOT_SCRIPT; the interpreter $IMPACT_PYTHON, else the first of\n"
-    "/usr/bin/python3 and python3 that has matplotlib.",
+    "separate panels sharing x (one per unit); stresses in MPa or GPa. The figure format\n"
+    "follows -o (.png, .pdf, .svg; another name is a usage error) and the figure is written\n"
+    "whole or not at all. Needs python3 and matplotlib (Debian: apt-get install -y\n"
+    "python3-matplotlib); the script is pointdriver/plot/plot.py (installed under\n"
+    "share/impact), or $POINTDRIVER_PLOT_SCRIPT; the interpreter $IMPACT_PYTHON, else the\n"
+    "first of /usr/bin/python3 and python3 that has matplotlib.",
     "CSV", std::numeric_limits<std::size_t>::max(),
-    "Exit codes: 0 done, 1 usage error or python3/matplotlib missing, 2 input error.\n"};
+    "Exit codes: 0 done, 1 usage error or python3/matplotlib missing, 2 input error, 3 the\n"
+    "figure or stdout could not be written, 130 Ctrl-C, 141 stdout closed by its reader.\n"};
 
 }  // namespace
 
@@ -74,9 +76,9 @@ int command_plot(const std::vector<std::string>& args) {
   if (o.has("--logx")) a.push_back("--logx");
   if (o.has("--logy")) a.push_back("--logy");
   const PlotRun r = run_plot_script(a);
-  if (r.status == PlotRun::Status::ok) return 0;
-  std::cerr << "pointdriver plot: " << r.message << '\n';
-  return r.status == PlotRun::Status::input_error ? 2 : 1;
+  if (r.status != PlotRun::Status::ok && !said_why(r))
+    std::cerr << "pointdriver plot: " << r.message << '\n';
+  return plot_exit_code(r);
 }
 
 }  // namespace impact::pointdriver

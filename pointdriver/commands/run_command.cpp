@@ -1,6 +1,7 @@
 // pointdriver run: one path, one CSV row per step, a summary beside it, a replay file on failure.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "pointdriver/commands/commands.hpp"
 #include "pointdriver/commands/options.hpp"
@@ -72,7 +73,17 @@ int command_run(const std::vector<std::string>& args) {
       return cli::kExitFailed;
     }
   }
-  // Refused before anything is written when it cannot fit (a leg of 1e9 steps: 440 GB of CSV).
+  // The CSV is opened first, so that a place no file can be made (a read-only file system, /sys,
+  // whose free space reads 0) is reported with the system's reason, not as a CSV too large.
+  std::optional<CsvWriter> csv;
+  try {
+    csv.emplace(out.string(), path.material.model.params());
+  } catch (const std::runtime_error& e) {
+    std::cerr << "pointdriver run: " << e.what() << '\n';
+    return cli::kExitFailed;
+  }
+  // Refused before a row is written when it cannot fit (a leg of 1e9 steps: 440 GB of CSV); the
+  // opened CSV's temporary goes with `csv`, the previous CSV stays.
   const RunEstimate estimate = estimate_run(path);
   if (o.verbosity.verbose) {
     std::cerr << "pointdriver run: estimated " << estimate.rows << " rows, CSV "
@@ -87,9 +98,8 @@ int command_run(const std::vector<std::string>& args) {
   }
   RunResult r;
   try {
-    CsvWriter csv(out.string(), path.material.model.params());
-    r = run_path(path, [&](const Row& row) { csv.write(row); });
-    csv.close();
+    r = run_path(path, [&](const Row& row) { csv->write(row); });
+    csv->close();
   } catch (const std::runtime_error& e) {  // the CSV cannot be written: no partial file is left
     std::cerr << "pointdriver run: " << e.what() << '\n';
     return cli::kExitFailed;

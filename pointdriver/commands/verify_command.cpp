@@ -30,7 +30,7 @@ const CommandSpec verify_command{
     "data (CSV) of the cases and, when python3 and matplotlib are installed, the figures (PNG).",
     "", 0,
     "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed (a figure data file that\n"
-    "cannot be written fails its case) or an output could not be written.\n"};
+    "cannot be written fails its case) or an output (a figure too) could not be written.\n"};
 
 std::string fmt(double v, const char* f = "%.6g") {
   char buf[40];
@@ -56,6 +56,9 @@ struct Figure {
   std::vector<std::string> y;  ///< columns; a trailing '*' selects every column with that prefix
   std::string title;
   std::vector<std::string> labels;
+  std::string ylabel;                    ///< the quantity on the y axis (plot.py adds the unit)
+  std::string style_by;                  ///< plot.py --style-by: a line style per match, else none
+  std::vector<std::string> points = {};  ///< CSVs of measurements, drawn as points
 };
 
 const std::vector<Figure>& figures() {
@@ -65,38 +68,50 @@ const std::vector<Figure>& figures() {
        "log_strain_xx",
        {"driver_*"},
        "Johnson-Cook uniaxial stress, 4 rates x 3 temperatures",
-       {}},
+       {},
+       "axial stress sigma_xx",
+       "[0-9]+K"},
       {"adiabatic_compression_stress.png",
        {"adiabatic_compression.csv"},
        "plastic_strain",
        {"von_mises"},
        "Adiabatic compression at 4000 /s: Drucker fires at the maximum",
-       {}},
+       {},
+       "von Mises stress",
+       ""},
       {"adiabatic_compression_temperature.png",
        {"adiabatic_compression.csv"},
        "plastic_strain",
        {"temperature", "temperature_reference"},
        "Adiabatic heating: driver vs chi int sigma d eps_p / (rho cp)",
-       {}},
+       {},
+       "temperature",
+       ""},
       {"simple_shear.png",
        {"simple_shear.csv"},
        "gamma",
        {"green_naghdi_xy", "dienes_xy", "jaumann_xy", "mu_sin_gamma"},
        "Simple shear: Green-Naghdi vs Dienes (1979), Jaumann oscillates",
-       {}},
+       {},
+       "shear stress sigma_xy",
+       ""},
       {"mie_gruneisen_hugoniot.png",
        {"mie_gruneisen_path.csv", "mie_gruneisen_hugoniot.csv",
         "mie_gruneisen_hugoniot_experiments.csv"},
        "volume_ratio",
        {"pressure"},
        "Mie-Gruneisen uniaxial strain vs the Hugoniot and experiments",
-       {"driver path", "Hugoniot (closed form)", "experiments (McQueen, Mitchell, Vaidya)"}},
+       {"driver path", "Hugoniot (closed form)", "experiments (McQueen, Mitchell, Vaidya)"},
+       "pressure",
+       "",
+       {"mie_gruneisen_hugoniot_experiments.csv"}},
   };
   return list;
 }
 
-/// Draws the figures whose data exist; says so once when plotting is not possible.
-void draw_figures(const fs::path& out) {
+/// Draws the figures whose data exist; says so once when plotting is not possible. False when a
+/// figure could not be written (plot.py said which and why).
+bool draw_figures(const fs::path& out) {
   for (const Figure& f : figures()) {
     std::vector<std::string> args;
     std::vector<std::string> labels;
@@ -121,18 +136,28 @@ void draw_figures(const fs::path& out) {
     if (labels.size() == f.labels.size() && !labels.empty()) {
       for (const std::string& l : labels) args.insert(args.end(), {"--label", l});
     }
-    args.insert(args.end(), {"--title", f.title, "-o", (out / f.png).string()});
+    args.insert(args.end(), {"--title", f.title, "--ylabel", f.ylabel});
+    if (!f.style_by.empty()) args.insert(args.end(), {"--style-by", f.style_by});
+    for (const std::string& csv : f.points) {
+      if (fs::exists(out / csv)) args.insert(args.end(), {"--points", (out / csv).string()});
+    }
+    args.insert(args.end(), {"-o", (out / f.png).string()});
     const PlotRun r = run_plot_script(args);
     if (r.status == PlotRun::Status::no_python || r.status == PlotRun::Status::no_matplotlib ||
         r.status == PlotRun::Status::no_script) {
       std::cout << "figures skipped (" << r.message << "); the figure data are in " << out.string()
                 << '\n';
-      return;
+      return true;
     }
     if (r.status != PlotRun::Status::ok) {
-      std::cout << "figure " << f.png << " not drawn: " << r.message << '\n';
+      if (!said_why(r)) {
+        std::cerr << "pointdriver verify: figure " << (out / f.png).string()
+                  << " not drawn: " << r.message << '\n';
+      }
+      return false;
     }
   }
+  return true;
 }
 
 }  // namespace
@@ -223,10 +248,10 @@ int command_verify(const std::vector<std::string>& args) {
       return cli::kExitFailed;
     }
   }
-  draw_figures(out);
+  const bool drawn = draw_figures(out);
   std::cout << all.size() - static_cast<std::size_t>(failed) << " of " << all.size()
             << " checks pass; table in " << table.string() << '\n';
-  return failed == 0 ? 0 : 3;
+  return failed == 0 && drawn ? 0 : 3;
 }
 
 }  // namespace impact::pointdriver

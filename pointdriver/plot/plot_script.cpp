@@ -3,6 +3,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include "support/python_launcher.hpp"
 #include "support/shipped_file.hpp"
@@ -43,13 +44,53 @@ PlotRun run_plot_script(const std::vector<std::string>& args) {
   argv.insert(argv.end(), args.begin(), args.end());
   r.exit_code = spawn_process(argv, false);
   if (r.exit_code == 0) return r;
-  r.status = r.exit_code == 2   ? PlotRun::Status::input_error
-             : r.exit_code == 4 ? PlotRun::Status::no_matplotlib
-                                : PlotRun::Status::failed;
+  switch (r.exit_code) {  // the script's documented codes
+    case 1:
+      r.status = PlotRun::Status::usage_error;
+      break;
+    case 2:
+      r.status = PlotRun::Status::input_error;
+      break;
+    case 3:
+      r.status = PlotRun::Status::output_error;
+      break;
+    case 130:
+    case 141:
+      r.status = PlotRun::Status::stopped;
+      break;
+    case 4:
+      r.status = PlotRun::Status::no_matplotlib;
+      break;
+    default:
+      r.status = PlotRun::Status::failed;
+  }
   r.message = r.status == PlotRun::Status::no_matplotlib
                   ? std::string("matplotlib missing; install it with: ") + plot_install_hint
-                  : "plot.py exited with code " + std::to_string(r.exit_code);
+                  : std::filesystem::path(script).filename().string() + " exited with code " +
+                        std::to_string(r.exit_code);
   return r;
+}
+
+bool said_why(const PlotRun& run) {
+  using S = PlotRun::Status;
+  return run.status == S::usage_error || run.status == S::input_error ||
+         run.status == S::output_error || run.status == S::stopped;
+}
+
+int plot_exit_code(const PlotRun& run) {
+  switch (run.status) {
+    case PlotRun::Status::ok:
+      return 0;
+    case PlotRun::Status::input_error:
+      return 2;
+    case PlotRun::Status::output_error:
+    case PlotRun::Status::failed:
+      return 3;
+    case PlotRun::Status::stopped:
+      return run.exit_code;
+    default:
+      return 1;
+  }
 }
 
 }  // namespace impact::pointdriver

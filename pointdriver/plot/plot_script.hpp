@@ -21,16 +21,29 @@ struct PlotRun {
     no_python,      ///< python3 could not be started
     no_matplotlib,  ///< python3 runs but cannot import matplotlib
     no_script,      ///< plot.py not found
+    usage_error,    ///< plot.py refused its arguments (a figure name without .png/.pdf/.svg): 1
     input_error,    ///< plot.py rejected the input (missing file or column): exit 2
+    output_error,   ///< a figure or stdout could not be written: exit 3
+    stopped,        ///< Ctrl-C (130) or stdout closed by its reader (141, `| head`)
     failed          ///< any other non-zero exit
   } status = Status::ok;
   int exit_code = 0;
   std::string message;  ///< for the user, with the fix where there is one
 };
 
+/// Whether the script said why it ended on its own stderr (usage, input and output errors, one
+/// line each; stopped: Ctrl-C, or nothing when stdout's reader went away): `message` would only
+/// repeat it with less.
+bool said_why(const PlotRun& run);
+
 /// Runs `python3 plot.py args...` (no shell: arguments are passed as they are; the interpreter
 /// by support/python_launcher.hpp's rule), with plot.py's output going to this process's
 /// stdout/stderr.
 PlotRun run_plot_script(const std::vector<std::string>& args);
+
+/// The exit code of a command whose result is the figure: 0 drawn, 1 python3, matplotlib or
+/// plot.py missing or a usage error, 2 input error, 3 a figure or stdout not written (or plot.py
+/// failed otherwise), 130 and 141 as plot.py ended (Ctrl-C; stdout closed by its reader).
+int plot_exit_code(const PlotRun& run);
 
 }  // namespace impact::pointdriver

@@ -17,6 +17,7 @@
 #include "mpm/run/summary.hpp"
 #include "mpm/scene/scene.hpp"
 #include "python/bindings/bindings.hpp"
+#include "support/atomic_file.hpp"
 
 namespace impact::python {
 
@@ -65,7 +66,8 @@ class PythonSignals {
 
 /// Runs `start` (run or restart) without the GIL, polling Python's signals. Returns (exit code,
 /// message, exception raised by a signal handler or None); the message is set when the run
-/// stopped on an error it threw (an output it cannot write): `mpm run` prints it and exits 3.
+/// stopped on an error it threw: `mpm run` prints it and exits 3. Bad input and an output that
+/// cannot be written (a full disk) go on as impact.InputError and impact.OutputError.
 py::tuple run_polled(const std::function<int(const mpm::RunOptions&)>& start,
                      mpm::RunOptions options) {
   PythonSignals signals;
@@ -76,6 +78,8 @@ py::tuple run_polled(const std::function<int(const mpm::RunOptions&)>& start,
     py::gil_scoped_release release;
     code = start(options);
   } catch (const InputError&) {
+    throw;
+  } catch (const OutputError&) {  // a full disk is impact.OutputError (an OSError), not RunError
     throw;
   } catch (const std::exception& e) {
     code = mpm::kExitRunFailed;

@@ -5,8 +5,8 @@ and the fitted set and compare the rod's kinetic energy.
 
   PYTHONPATH=build/python python3 python/examples/fit_and_taylor.py [OUT_DIR]
 
-Writes OUT_DIR/fit_and_taylor.png (default docs/figures/python/) and prints the numbers quoted in
-docs/python.md.
+Writes OUT_DIR/fit_and_taylor.png (default out/python/; the committed figure is regenerated with
+OUT_DIR docs/figures/python) and prints the numbers quoted in docs/python.md.
 """
 import json
 import os
@@ -41,18 +41,25 @@ def main(out_dir):
     print(f"overall RMS: fitted {report['overall']['fitted_rms [Pa]'] / 1e6:.2f} MPa, "
           f"published {report['overall']['material_rms [Pa]'] / 1e6:.2f} MPa")
 
-    fig, (ax_fit, ax_rod) = plt.subplots(1, 2, figsize=(11, 4.2))
-    for s in report["series"]:
-        rate = s["data"]["strain_rate"]
-        if rate not in (1e-3, 0.001) and rate < 1000:
-            continue  # a readable subset: quasi-static and the fastest tests
-        line = ax_fit.plot(s["data"]["plastic_strain"], s["data"]["stress"] / 1e6, "o", ms=3,
-                           label=f"{s['data']['name']}")[0]
-        ax_fit.plot(s["fitted"]["plastic_strain"], s["fitted"]["stress"] / 1e6, "-",
-                    color=line.get_color())
+    fig, (ax_fit, ax_rod) = plt.subplots(1, 2, figsize=(12, 4.6), layout="constrained")
+    shown = [s for s in report["series"]  # a readable subset: quasi-static and the fastest tests
+             if s["data"]["strain_rate"] <= 1e-3 or s["data"]["strain_rate"] >= 1000]
+    handles = []
+    for k, s in enumerate(shown):
+        # One colour per series and its fit; past the 10 colours, squares and dashes, so that no
+        # two series look alike.
+        colour = f"C{k % 10}"
+        marker, dash = ("o", "-") if k < 10 else ("s", "--")
+        ax_fit.plot(s["data"]["plastic_strain"], s["data"]["stress"] / 1e6, marker, ms=3,
+                    color=colour)
+        ax_fit.plot(s["fitted"]["plastic_strain"], s["fitted"]["stress"] / 1e6, dash, lw=1.2,
+                    color=colour)
+        handles.append(plt.Line2D([], [], color=colour, marker=marker, ms=3, ls=dash, lw=1.2,
+                                  label=s["data"]["name"]))
     ax_fit.set(xlabel="true plastic strain [-]", ylabel="true stress [MPa]",
-               title="6061-T6, 295 K: data (markers) and fit (lines)", xlim=(0, 0.4))
-    ax_fit.legend(fontsize=6, ncol=2)
+               title="6061-T6, 295 K: data (markers) and fit (line), one colour each",
+               xlim=(0, 0.4))
+    ax_fit.legend(handles=handles, fontsize=6, ncol=2)
 
     # 2. The Taylor shot with each set: the shipped scene, its material patched.
     scene = impact.data_path("scenes", "verification", "taylor_rod.json")
@@ -64,14 +71,18 @@ def main(out_dir):
         ax_rod.plot(h["time"] * 1e6, h["kinetic_energy"], label=label)
         print(f"{label}: exit {run['exit_code']}, kinetic energy {h['kinetic_energy'][0]:.2f} -> "
               f"{h['kinetic_energy'][-1]:.3f} J, energy error {h['energy_error'][-1]:.2e}")
-    ax_rod.set(xlabel="time [us]", ylabel="kinetic energy [J]",
+    ax_rod.set(xlabel="time [us]", ylabel=f"kinetic energy [{h.units['kinetic_energy']}]",
                title="Taylor shot H8 (328 m/s), coarse rod")
     ax_rod.legend()
-    fig.tight_layout()
     figure = os.path.join(out_dir, "fit_and_taylor.png")
     fig.savefig(figure, dpi=110)
     print("wrote", figure)
 
 
+def output_directory(argv):
+    """OUT_DIR, else out/python: never the committed docs/figures/python unless asked for."""
+    return argv[0] if argv else os.path.join("out", "python")
+
+
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else os.path.join("docs", "figures", "python"))
+    main(output_directory(sys.argv[1:]))

@@ -305,9 +305,12 @@ def run_scene(scene, out, patches=None, threads=0, progress=False, base_dir=None
     ``directory``, ``warnings`` (also issued as InputWarning before the run starts), ``status``
     (status.json), ``summary`` (summary.json) and ``history`` (history.csv as a Table).
 
-    Raises InputError for bad input and for an ``out`` that cannot be written; RunError when the
-    run fails (a numerical fault, energy growth: exit code 3, the partial outputs in ``out``) or
-    is refused (the memory estimate above the available memory: exit code 4, nothing written);
+    Raises InputError for bad input and for an ``out`` that cannot be written; OutputError (an
+    OSError naming the file and the system's reason) when an output cannot be written during the
+    run (a full disk, a file-size limit; exit code 3 of ``mpm run``); RunError when the run fails
+    (a numerical fault, energy growth: exit code 3, the partial outputs in ``out``) or is refused
+    (the memory estimate above the available memory: exit code 4, nothing written, no
+    directory made);
     Ctrl-C (SIGINT, a notebook's interrupt) stops the run after the step under way, writes a
     checkpoint and raises KeyboardInterrupt, whose message says how to continue
     (``resume_scene(out)``)."""

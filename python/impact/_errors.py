@@ -20,8 +20,8 @@ InputError.__doc__ = (
 
 
 class RunError(RuntimeError):
-    """A run that failed (a numerical fault, a step the solver could not solve, an output it
-    could not write: exit code 3) or was refused (the memory estimate above the available
+    """A run that failed (a numerical fault, a step the solver could not solve: exit code 3; an
+    output it could not write is an OutputError instead) or was refused (the memory estimate above the available
     memory: exit code 4). ``reason`` is the message the programs print on stderr, ``exit_code``
     the code ``mpm run``/``pointdriver run`` would exit with, ``directory`` the run's output
     directory (scenes; None for paths), ``result`` what the run had written or computed up to the
@@ -50,16 +50,28 @@ def warn_input(messages, stacklevel):
 
 
 def writable_directory(path, argument):
-    """`path` created if missing and probed with a file; else an InputError naming `argument`
-    and the path (the run would otherwise stop at its first output)."""
+    """`path` probed with a file (its missing directories made for the probe and removed again,
+    so that a run refused before it starts leaves nothing); else an InputError naming
+    `argument` and the path (the run would otherwise stop at its first output)."""
     directory = os.fspath(path)
+    made = []  # the directories the probe creates, deepest first
     try:
         if not directory:
             raise NotADirectoryError(0, "an empty path")
+        d = os.path.abspath(directory)
+        while not os.path.lexists(d) and os.path.dirname(d) != d:
+            made.append(d)
+            d = os.path.dirname(d)
         os.makedirs(directory, exist_ok=True)
         with tempfile.TemporaryFile(dir=directory):
             pass
     except OSError as e:
         raise InputError(f"{argument}: {directory}: expected a directory the run can write "
                          f"into, got {e.strerror or e}") from None
+    finally:
+        for d in made:
+            try:
+                os.rmdir(d)
+            except OSError:
+                pass
     return directory

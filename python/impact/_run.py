@@ -74,7 +74,8 @@ class Snapshot:
 
 class Run:
     """A run directory read back by ``read_run``: ``history`` (a Table of history.csv:
-    ``time`` [s], the energy books [J], momentum [kg m/s], boundary impulse [N s], gauges),
+    ``time`` [s], the energy books [J], momentum [kg m/s], boundary impulse [N s], gauges; in
+    plane strain per metre of thickness, [J/m] ...: ``history.units`` holds the header's),
     ``summary`` (summary.json, None while the run goes on), ``status`` (status.json: ``status``
     is "running", "completed", "failed" or "interrupted"), ``scene`` (the resolved scene.json),
     ``snapshots`` (a list of Snapshot, in time order) and ``paths`` (per particle path of

@@ -22,10 +22,12 @@ class Table(dict):
 
 
 def split_header(cell):
-    """'stress_xx [Pa]' -> ('stress_xx', 'Pa'); a cell without a unit gets ''."""
+    """'stress_xx [Pa]' -> ('stress_xx', 'Pa'): the name is what comes before " [", the unit what
+    the brackets hold ('kinetic_energy [J/m]' -> ('kinetic_energy', 'J/m') in plane strain); a
+    cell without a unit gets ''."""
     cell = cell.strip()
     if cell.endswith("]") and " [" in cell:
-        name, unit = cell[:-1].rsplit(" [", 1)
+        name, unit = cell[:-1].split(" [", 1)
         return name, unit
     return cell, ""
 
@@ -41,8 +43,9 @@ def table(named_columns, **info):
 
 def read_history(directory):
     """history.csv of a run directory as a Table (``time`` [s], energies [J], momentum [kg m/s],
-    the gauges' observables in their units). A last row cut short (a run killed while writing
-    it) is left out."""
+    the gauges' observables in their units; in plane strain per metre of thickness, [J/m],
+    [(kg m/s)/m]: the units are the header's, in ``units``). A last row cut short (a run killed
+    while writing it) is left out."""
     file = os.path.join(os.fspath(directory), "history.csv")
     if not os.path.isfile(file):  # a device or a FIFO in its place would be read without end
         raise InputError(f"{file}: expected the history.csv file mpm run writes, found "

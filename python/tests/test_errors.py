@@ -1,6 +1,8 @@
 """Errors as exceptions, warnings through `warnings`: what a notebook, which never shows the C++
 side's stderr, gets from a failed, refused or badly placed run and from a likely unit slip."""
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -26,11 +28,38 @@ def test_failed_run_raises_run_error_with_the_reason(data, workdir):
 
 def test_refused_run_raises_run_error_and_writes_nothing(test_data, workdir):
     """1200^3 cells: the memory estimate refuses the scene (exit 4) before anything is seeded,
-    allocated or written."""
+    allocated or written; not even the output directory (and its missing parents) is left (an
+    empty one was, before)."""
     with pytest.raises(impact.RunError, match=r"^refusing to start: estimated memory") as caught:
-        impact.run_scene(test_data("mpm_runs", "huge_grid.json"), out="huge", threads=1)
+        impact.run_scene(test_data("mpm_runs", "huge_grid.json"), out="runs/huge", threads=1)
     assert caught.value.exit_code == 4
-    assert os.listdir("huge") == []
+    assert os.listdir(".") == []
+
+
+def test_full_disk_during_a_run_raises_output_error(data, workdir):
+    """A file-size limit of 20 kB (RLIMIT_FSIZE, as `ulimit -f`; a full disk's ENOSPC takes the
+    same path) lets scene.json (1.5 kB) through and stops the run at its first snapshot (76 kB):
+    impact.OutputError, an OSError naming the file and the system's reason, as `mpm run` exits 3
+    with it (RunError, before). In a child process: the limit would stop pytest's own files."""
+    child = f"""
+import resource, impact
+resource.setrlimit(resource.RLIMIT_FSIZE, (20000, resource.RLIM_INFINITY))
+scene = {{"extends": {data("scenes", "verification", "rigid_translation.json")!r},
+          "time": {{"max_time": 2e-5}}, "output": {{"snapshots": True}}}}
+try:
+    impact.run_scene(scene, out="full", threads=1)
+except impact.OutputError as e:
+    print(type(e).__name__, isinstance(e, OSError), e)
+except impact.RunError as e:
+    print("RunError", e)
+"""
+    done = subprocess.run([sys.executable, "-c", child], capture_output=True, text=True,
+                          env=dict(os.environ), timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("OutputError True cannot write full/particles/step_"), \
+        done.stdout
+    assert done.stdout.rstrip().endswith("(File too large)"), done.stdout
+    assert os.path.getsize(os.path.join("full", "scene.json")) > 1000
 
 
 def test_unwritable_out_raises_input_error_naming_it(data, workdir):

@@ -87,6 +87,24 @@ def test_snapshot_stress_is_the_particle_paths_stress(data, workdir):
     assert len({round(abs(path["stress_" + n][-1])) for n in ("xy", "yz", "zx")}) == 3
 
 
+def test_history_units_are_the_headers_per_metre_in_plane_strain(workdir):
+    """A plane-strain history labels its energies, momenta, masses and volumes per metre of
+    thickness (`kinetic_energy [J/m]`, `momentum_x [(kg m/s)/m]`): the columns are named by
+    what comes before " [" and keep the header's unit, as a 3D history's do."""
+    os.makedirs("plane")
+    with open(os.path.join("plane", "history.csv"), "w") as f:
+        f.write("time [s],kinetic_energy [J/m],momentum_x [(kg m/s)/m],"
+                "boundary_impulse_x [(N s)/m],outflow_mass [kg/m],energy_error [-]\n"
+                "0,12.5,1.5,0,0,0\n1e-06,12.25,1.5,-0.25,0.001,1e-15\n")
+    h = impact.read_run("plane").history
+    assert list(h) == ["time", "kinetic_energy", "momentum_x", "boundary_impulse_x",
+                       "outflow_mass", "energy_error"]
+    assert h.units == {"time": "s", "kinetic_energy": "J/m", "momentum_x": "(kg m/s)/m",
+                       "boundary_impulse_x": "(N s)/m", "outflow_mass": "kg/m",
+                       "energy_error": "-"}
+    assert list(h["kinetic_energy"]) == [12.5, 12.25] and h["outflow_mass"][1] == 0.001
+
+
 def test_read_run_of_a_directory_that_is_not_one(workdir):
     os.makedirs("empty")
     with pytest.raises(impact.InputError, match=r"^empty: expected a run directory"):

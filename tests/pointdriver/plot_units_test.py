@@ -51,11 +51,11 @@ def main(script, work):
     plot.save = lambda fig, path: figures.append(fig)
     args = argparse.Namespace(csv=[csv_file], x="time", y=["stress_xx", "temperature"],
                               output=os.path.join(work, "fig.png"), title=None, logx=False,
-                              logy=False, label=None)
+                              logy=False, label=None, ylabel=None, style_by=None, points=None)
     plot.plot_columns(args)
     axes = figures[0].axes
     labels = [a.get_ylabel() for a in axes]
-    assert labels == ["stress_xx [Pa]", "temperature [K]"], labels
+    assert labels == ["stress_xx [MPa]", "temperature [K]"], labels  # -4e8 Pa: in MPa
     # Each panel holds only its own unit's line: the temperature panel's data are the 294..334 K.
     assert [len(a.get_lines()) for a in axes] == [1, 1]
     assert list(axes[1].get_lines()[0].get_ydata()) == [294.0, 304.0, 314.0, 324.0, 334.0]

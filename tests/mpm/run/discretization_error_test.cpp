@@ -2,9 +2,10 @@
 // mpm/run/discretization_error.hpp) on tables and summaries written here:
 // - a level with this run's fingerprint: per observable the run's value at its JSON pointer, the
 //   table's extrapolated value, order, GCI and status, and error = (value - extrapolated) /
-//   abs(extrapolated), null when the extrapolated value is null or 0; an observable whose pointer
-//   names no number here is left out; a string that is no JSON pointer gives that observable
-//   the status "path not found in this run's summary";
+//   abs(extrapolated) where the table says the extrapolation is quotable, null when it is not, or
+//   the extrapolated value is null or 0 (then the table's range is carried); an observable whose
+//   pointer names no number here is left out; a string that is no JSON pointer gives that
+//   observable the status "path not found in this run's summary";
 // - no matching level: the status sentence with the fingerprint;
 // - malformed tables (not JSON, wrong types, missing keys): "unreadable: <reason>" naming the
 //   key path, never an exception (a directory where the table would be: not a regular file);
@@ -38,7 +39,8 @@ Json observable(const std::string& name, const std::string& path, const Json& ex
           {"extrapolated", extrapolated},
           {"order", 1.06},
           {"gci_fine [-]", 0.05},
-          {"status", "extrapolated"}};
+          {"status", "extrapolated"},
+          {"quotable", true}};
 }
 
 Json table(const std::string& fingerprint = kMine);
@@ -117,6 +119,35 @@ BOOST_AUTO_TEST_CASE(a_matching_level_gives_each_observables_error) {
   BOOST_TEST(o.at("bad pointer").at("status") == "path not found in this run's summary");
   BOOST_TEST(!o.at("bad pointer").contains("value"));
   BOOST_TEST(o.size() == 4u);
+}
+
+// Issue 52: where the ladder is not in the asymptotic range or its order is implausible, no
+// signed error against the one extrapolated value is given (the summary printed -180.9 % off an
+// "extrapolated" +22.8 m/s while every level was negative); the range the table gives is carried
+// instead. A table from before the key ("quotable" absent) is never quotable; a key of the wrong
+// type makes the table unreadable.
+BOOST_AUTO_TEST_CASE(an_extrapolation_that_may_not_be_quoted_gives_its_range_not_an_error) {
+  Json t = table();
+  Json& depth = t["observables"][0];
+  depth["quotable"] = false;
+  depth["status"] = "implausible order 2.4; not in the asymptotic range";
+  depth["range"] = {{"low", 0.0075}, {"high", 0.0081}, {"unit", "m"}, {"basis", "p in [1, 2.43]"}};
+  const Json e = of(t).at("observables").at("crater depth");
+  BOOST_TEST_MESSAGE(e.dump());
+  BOOST_TEST(e.at("value").get<double>() == 0.009);
+  BOOST_TEST(e.at("error [-]").is_null());
+  BOOST_TEST(e.at("quotable") == false);
+  BOOST_TEST(e.at("range").at("low").get<double>() == 0.0075);
+  BOOST_TEST(e.at("range").at("high").get<double>() == 0.0081);
+  BOOST_TEST(e.at("range").at("basis") == "p in [1, 2.43]");
+  depth.erase("quotable");
+  BOOST_TEST(of(t).at("observables").at("crater depth").at("error [-]").is_null());
+  BOOST_TEST(of(t).at("observables").at("crater depth").at("quotable") == false);
+  depth["quotable"] = "yes";
+  starts(status_of(t.dump()), "/observables/0/quotable: expected true or false");
+  depth["quotable"] = false;
+  depth["range"] = {{"low", 0.0075}};
+  starts(status_of(t.dump()), "/observables/0/range/high: expected a number");
 }
 
 // A null path (Lf, Dm: measured by the ladder from snapshots, not in summary.json): the value is

@@ -120,7 +120,8 @@ Json ladder(const std::string& fingerprint) {
                 {"extrapolated", extrapolated},
                 {"order", 2.0},
                 {"gci_fine [-]", 0.01},
-                {"status", "extrapolated"}};
+                {"status", "extrapolated"},
+                {"quotable", true}};
   };
   return {{"scene", "rigid.json"},
           {"command", "test"},

@@ -113,6 +113,27 @@ BOOST_AUTO_TEST_CASE(a_particle_without_a_wave_speed_stops_the_run_and_is_named)
   BOOST_TEST(contains(o.message, ": particle 1234 (material left_al, object left"));
   BOOST_TEST(contains(o.message, "): stress: no wave speed: the equation of state's K_s + 4 mu/3"),
              o.message);
+  BOOST_TEST(!contains(o.message, "AllowNoTension"));  // not molten: no erosion would help
+}
+
+// The same particle molten (as a 4340 MTS rod at 1100 m/s leaves it: issue 52, item 7): the stop
+// names the documented remedy, an erosion that drops tension.
+BOOST_AUTO_TEST_CASE(a_molten_particle_without_a_wave_speed_is_told_the_remedy) {
+  const Json mie_gruneisen = {
+      {"overrides",
+       {{"constitutive_model", {{"equation_of_state", {{"type", "mie_gruneisen"}}}}}}}};
+  Simulation sim(faults_scene({{"materials", {{"left_al", mie_gruneisen}}}}), 2);
+  PointState& s = sim.particles().state[1234];
+  s.F = Mat3::Identity() * std::cbrt(1.6);
+  s.internal_energy = 0.0;
+  s.melted = true;
+  const Outcome o = run_to_end(sim);
+  BOOST_TEST_REQUIRE(o.failed);
+  BOOST_TEST(contains(o.message, "): stress: no wave speed"), o.message);
+  BOOST_TEST(contains(o.message, "the point is molten and stretched beyond its equation of state: "
+                                 "an erosion that drops tension (\"physics\": {\"erosion\": "
+                                 "\"AllowNoTension\"}) lets it fail instead (docs/models.md)"),
+             o.message);
 }
 
 BOOST_AUTO_TEST_CASE(a_time_step_below_min_dt_stops_the_run_and_names_the_fastest_particle) {

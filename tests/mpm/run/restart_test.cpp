@@ -17,7 +17,10 @@
 // (a') The same with both blocks on the Mechanical Threshold Stress law, whose internal variable
 //      (PointState::flow_internal) must come back from the checkpoint.
 // (c) A restart is refused (InputError) for a checkpoint of another format version, a corrupt
-//     one (a flipped byte: checksum), a scene.json edited since, and a missing checkpoint.
+//     one (a flipped byte: checksum or length field), a truncated one (named so, with both
+//     lengths), a scene.json edited since, and a missing checkpoint.
+// (e) A run stopped and restarted three times, from the repository root with relative material
+//     paths and once from another directory, ends as the uninterrupted run.
 // (d) (a) and (b) on axisymmetric grids (axisymmetric_scenes below).
 #include <unistd.h>
 
@@ -122,11 +125,14 @@ std::vector<std::string> output_files(const fs::path& dir) {
   return files;
 }
 
-void require_same_outputs(const fs::path& a, const fs::path& b) {
+// `skip`: a file whose text may differ (the scene.json of a run started with relative material
+// paths).
+void require_same_outputs(const fs::path& a, const fs::path& b, const std::string& skip = "") {
   const auto files = output_files(a);
   BOOST_TEST(files == output_files(b));
   std::size_t same = 0;
   for (const std::string& f : files) {
+    if (f == skip) continue;
     const bool equal = read_bytes(a / f) == read_bytes(b / f);
     BOOST_TEST(equal, f << " differs");
     same += equal;
@@ -330,6 +336,51 @@ BOOST_AUTO_TEST_CASE(an_axisymmetric_run_continues_bit_for_bit_from_a_checkpoint
   }
 }
 
+// Issue 52: a restart rewrote the material paths of scene.json to absolute ones before hashing,
+// so every checkpoint of a restarted run carried another hash and the second restart was refused
+// ("scene.json: changed since the checkpoint was written"). Run from the repository root with the
+// scene named by a relative path (scene.json then holds relative material paths, as for every
+// shipped scene run from there): stopped three times (SIGTERM, SIGINT, SIGTERM) and restarted
+// three times, the second restart from another working directory, every output file is as the
+// uninterrupted run's.
+BOOST_AUTO_TEST_CASE(a_run_restarts_as_often_as_it_stops) {
+  const fs::path& a = uninterrupted();
+  const fs::path b = scratch("three_stops");
+  const fs::path here = fs::current_path();
+  fs::current_path(IMPACT_SOURCE_DIR);
+  const Scene relative = load_scene("tests/data/mpm_runs/contact_friction_av.json");
+  RunOptions options;
+  options.threads = 2;
+  options.out_dir = b.string();
+  options.faults = {{FaultInjection::Kind::sigterm, 12, 0}};
+  BOOST_TEST(run(relative, options) == 128 + 15);
+  const std::string scene_text = read_bytes(b / "scene.json");
+  BOOST_TEST(scene_text.find("\"file\": \"data/materials/") != std::string::npos,
+             "scene.json holds relative material paths");
+  const std::vector<std::pair<FaultInjection::Kind, long>> stops = {
+      {FaultInjection::Kind::sigint, 25}, {FaultInjection::Kind::sigterm, 40}};
+  const fs::path elsewhere = fs::temp_directory_path();
+  for (std::size_t i = 0; i < stops.size(); ++i) {
+    if (i == 0) fs::current_path(elsewhere);  // the material paths stay the first run's
+    RunOptions again;
+    again.faults = {{stops[i].first, stops[i].second, 0}};
+    const int code = stops[i].first == FaultInjection::Kind::sigint ? 128 + 2 : 128 + 15;
+    BOOST_TEST(restart(b.string(), again) == code, "restart " << i + 1);
+    BOOST_TEST(read_checkpoint_header(b / kCheckpointFile).step == stops[i].second);
+    BOOST_TEST(read_checkpoint_header(b / kCheckpointFile).working_directory ==
+               fs::path(IMPACT_SOURCE_DIR).string());
+    fs::current_path(IMPACT_SOURCE_DIR);
+  }
+  BOOST_REQUIRE(restart(b.string(), RunOptions{}) == 0);
+  fs::current_path(here);
+  BOOST_TEST(read_json(b / "status.json").at("status") == "completed");
+  // scene.json as the first run wrote it (the uninterrupted run's names its materials by absolute
+  // path: it was loaded by one); every other file as the uninterrupted run's.
+  BOOST_TEST(read_bytes(b / "scene.json") == scene_text);
+  require_same_outputs(a, b, "scene.json");
+  fs::remove_all(b);
+}
+
 BOOST_AUTO_TEST_CASE(a_restart_drops_history_rows_written_after_the_checkpoint) {
   const fs::path& a = uninterrupted();
   const fs::path c = scratch("c");
@@ -386,14 +437,26 @@ BOOST_AUTO_TEST_CASE(a_restart_is_refused_for_a_foreign_or_corrupt_checkpoint) {
   // (the body's layout shifts with the length of the working directory stored in the header).
   // A section tag is checked by the parser: without the trailer checked first, the flip there
   // reads as a misplaced section.
+  // Bytes 28-43 are the file's length and its complement: a flip there is corrupt too.
   for (const std::size_t at :
-       {std::size_t{40}, good.find("state"), good.size() / 4, good.size() / 2, 3 * good.size() / 4,
-        good.size() - 9, good.size() - 1}) {
+       {std::size_t{30}, std::size_t{40}, std::size_t{50}, good.find("state"), good.size() / 4,
+        good.size() / 2, 3 * good.size() / 4, good.size() - 9, good.size() - 1}) {
     std::string corrupt = good;
     corrupt[at] ^= 0x10;
     write(file, corrupt);
-    refused("checksum mismatch");
+    refused("corrupt checkpoint");
   }
+  // A file cut short (a copy, a full disk) says so, with its length and the length it should have;
+  // before, a cut anywhere read as a checksum mismatch.
+  for (const std::size_t length : {good.size() - 1, good.size() / 2, std::size_t{60}}) {
+    write(file, good.substr(0, length));
+    refused("truncated: " + std::to_string(length) + " of " + std::to_string(good.size()) +
+            " bytes");
+  }
+  write(file, good.substr(0, 20));
+  refused("truncated: 20 bytes, shorter than a checkpoint's header");
+  write(file, good + "x");
+  refused("1 bytes after the end of the checkpoint");
   write(file, good);
   const std::string scene_text = read_bytes(dir / "scene.json");
   write(dir / "scene.json", scene_text + " ");

@@ -2,7 +2,7 @@
 // - Rigid translation (v = (30, -20, 10) m/s, 200 us, through run()): every velocity gauge reads
 //   the prescribed component and every strain gauge 0 at every history row (1e-12); the summary's
 //   per-object mass, mean velocity and kinetic energy are M, v and 1/2 M v^2 (1e-12 relative);
-//   the crater in the block's x- face: depth = v_x t, diameter = the face layer's diagonal,
+//   the crater in the block's x- face: none (depth 0, no diameter), the face moved v_x t,
 //   2 sqrt(2) (L/2 - h/4), axis = the block's (y, z) centre moved by v t (1e-12 relative).
 // - Homogeneous uniaxial compression (v_x = -rate X prescribed, as uniaxial_compression_test): the
 //   strain gauge equals the mass-weighted mean of ln F_xx of its particles computed here (1e-12)
@@ -149,23 +149,19 @@ BOOST_AUTO_TEST_CASE(rigid_translation_gauges_and_observables_are_exact) {
   BOOST_TEST(ke_error < 1e-12);
   BOOST_TEST(std::abs(block["max_pressure [Pa]"].get<double>()) < 1e-3);
 
+  // The crater relative to the target's own motion (issue 52): a block that only translates has
+  // none; its face moved v_x t, the far field's displacement. (The measure from initial positions
+  // gave depth v_x t and the face layer's diagonal as diameter.)
   const Json& crater = summary["observables"]["crater"];
-  const double h4 = scene.grid.spacing()(0) / 4.0;  // the face layer: 2 particle layers, 8 x 8
-  const double diameter = 2.0 * std::sqrt(2.0) * (0.01 - h4);
-  const double depth_error = std::abs(crater["depth [m]"].get<double>() / (v(0) * t) - 1.0);
-  const double diameter_error = std::abs(crater["diameter [m]"].get<double>() / diameter - 1.0);
-  const double axis_error =
-      std::max(std::abs(crater["axis_yz [m]"][0].get<double>() / (0.03 + v(1) * t) - 1.0),
-               std::abs(crater["axis_yz [m]"][1].get<double>() / (0.03 + v(2) * t) - 1.0));
-  BOOST_TEST_MESSAGE("observables: mean velocity "
-                     << worst_mean_v << ", kinetic energy " << ke_error << ", crater depth "
-                     << depth_error << ", diameter " << diameter_error << ", axis " << axis_error
-                     << " (relative)");
+  const double far_error =
+      std::abs(crater["far_field_displacement [m]"].get<double>() / (v(0) * t) - 1.0);
+  BOOST_TEST_MESSAGE("observables: mean velocity " << worst_mean_v << ", kinetic energy "
+                                                   << ke_error << ", crater " << crater.dump());
   BOOST_TEST(crater["face_particles"].get<std::size_t>() == 128u);
-  BOOST_TEST(crater["displaced_particles"].get<std::size_t>() == 128u);
-  BOOST_TEST(depth_error < 1e-12);
-  BOOST_TEST(diameter_error < 1e-12);
-  BOOST_TEST(axis_error < 1e-12);
+  BOOST_TEST(std::abs(crater["depth [m]"].get<double>()) < 1e-12 * v(0) * t);
+  BOOST_TEST(crater["diameter [m]"].is_null());
+  BOOST_TEST(crater["status"].get<std::string>().find("no rim") == 0u);
+  BOOST_TEST(far_error < 1e-12);
   BOOST_TEST(summary["gauges"]["vx"]["particles"].get<std::size_t>() == 256u);
   std::filesystem::remove_all(dir);
 }
