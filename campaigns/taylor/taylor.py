@@ -427,7 +427,7 @@ def run_one(job):
     base = os.path.join(runs_dir, run_tag, shot["shot"])
     earlier = []
     for k in range(MAX_ENLARGEMENTS + 1):
-        radial = RADIAL_EXTENT * ENLARGEMENT ** k
+        radial = round(RADIAL_EXTENT * ENLARGEMENT ** k, 9)  # 3.3, not 3.3000000000000003
         row, profile, reached = run_attempt(job, base if k == 0 else f"{base}_radial{radial:.4g}",
                                             radial)
         if profile is None:
