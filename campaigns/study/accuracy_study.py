@@ -334,8 +334,9 @@ def analyse(out, runs, levels):
              "where the reference is the finest run itself, how far from converged the reference "
              "may still be; where that exceeds a tolerance, no run is named for it (\"reference "
              "not converged\").", "",
-             f"| observable | reference | observed order | x{second['level']:g} | "
-             "cheapest run <= 1 % | <= 5 % | <= 10 % |",
+             f"| observable [unit] | reference [the observable's unit] | observed order [-] | "
+             f"x{second['level']:g} error [%] | cheapest run <= 1 % (its wall time) | <= 5 % | "
+             "<= 10 % |",
              "|---|---|---|---|---|---|---|"]
     names = names + ["history " + h for h in history_names]
     uncertainty = {}
@@ -359,19 +360,21 @@ def analyse(out, runs, levels):
             best = min(ok, key=lambda x: x["wall"]) if ok else None
             cells.append(f"{best['name']} ({best['wall']:.1f} s)" if best else "none")
         ref = reference.get(n)
+        shown = n if "[" in n else n + " [-]"  # every row names its unit
         if n.startswith("history "):
-            lines.append(f"| {n} (max over time) | finest run | - |")
+            lines.append(f"| {shown} (max over time) | finest run | - |")
         else:
-            lines.append(f"| {n} | {ref:.4g} | {orders[n]:.2f} (Richardson) |" if n in orders
-                         else f"| {n} | {ref:.4g} | {rejected[n]:.2f} (not used: see below) |"
-                         if n in rejected else f"| {n} | {ref:.4g} | - |")
-        lines[-1] += (f" {prev * 100:.1f} % |" if prev is not None else " - |")
+            lines.append(f"| {shown} | {ref:.4g} | {orders[n]:.2f} (Richardson) |" if n in orders
+                         else f"| {shown} | {ref:.4g} | {rejected[n]:.2f} (not used: see below) |"
+                         if n in rejected else f"| {shown} | {ref:.4g} | - |")
+        lines[-1] += (f" {prev * 100:.1f} |" if prev is not None else " - |")
         lines[-1] += " " + " | ".join(cells) + " |"
     if rejected:
         lines += ["", "Not used: an order outside the accepted window, or a finer run that the "
                   "extrapolation does not predict (farther from the extrapolated value than twice "
                   "the error its order implies); the reference is then the finest run."]
-    lines += ["", "| run | status | wall [s] | particle-steps | |energy_error| |", "|---|---|---|---|---|"]
+    lines += ["", "| run | status | wall [s] | particle-steps [-] | abs(energy_error) [-] |",
+              "|---|---|---|---|---|"]
     for r in runs:
         lines.append(f"| {r['name']} | {r['status']} | {r['wall']:.1f} | {r['particle_steps']:.3g} "
                      f"| {r['obs'].get('abs_energy_error', float('nan')):.3g} |")

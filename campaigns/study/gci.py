@@ -24,11 +24,18 @@ law is behind it, and Stern et al. bound its error by half the range of the thre
 |R*| >= 1 divergence (no order, no extrapolation, no GCI), e21 = 0 or e32 = 0 none either.
 The monotonic order is the power law's (observed_order); the conservative GCI of Oberkampf & Roy
 (2010) is given beside Celik's (conservative_gci).
+
+What a ladder lets a reader quote (docs/accuracy.md#grid-convergence-ladders): one extrapolated
+value with its GCI only when the finest triple is quotable (monotonic, its order within
+PLAUSIBLE_ORDER, and in the asymptotic range); otherwise the range that the levels and the
+plausible orders bound (converged_range), never an error against one extrapolated number.
 """
 
 import math
 
 SAFETY_FACTOR = 1.25  # Fs for three or more grids (Roache 1998; Celik et al. 2008, eq. 6)
+# Observed orders a first-order method can plausibly show; outside, an extrapolation is not quoted.
+PLAUSIBLE_ORDER = (0.5, 2.0)
 
 
 def representative_h(volume, cells, dimension):
@@ -209,3 +216,48 @@ def asymptotic_check(finest, next_coarser):
         return False, (f"the coarser triple's extrapolation {b['extrapolated']:.6g} lies outside "
                        f"the band {a['phi1']:.6g} +- {band:.3g}")
     return True, "orders agree within 25 % and the coarser extrapolation lies in the GCI band"
+
+
+def richardson(phi1, phi2, r21, p):
+    """Richardson's extrapolation of the two finest values with order p (Celik et al. 2008,
+    eq. 4): phi1 + (phi1 - phi2) / (r21^p - 1)."""
+    return phi1 + (phi1 - phi2) / (r21 ** p - 1.0)
+
+
+def plausible_orders(observed, formal=FORMAL_ORDER, band=PLAUSIBLE_ORDER):
+    """(low, high, clamped): the orders from the formal one to the observed one, each end limited
+    to the plausible band; clamped tells that the observed order lay outside the band."""
+    lo, hi = sorted((observed, formal))
+    clamp = lambda p: min(max(p, band[0]), band[1])  # noqa: E731
+    return clamp(lo), clamp(hi), not band[0] <= observed <= band[1]
+
+
+def converged_range(phi, h, formal=FORMAL_ORDER, band=PLAUSIBLE_ORDER):
+    """The range of converged values that the finest triple phi = (phi1, phi2, phi3) on
+    h = (h1, h2, h3) (grid 1 the finest) and the plausible orders bound:
+    - monotonic convergence with observed order p: Richardson's extrapolation (richardson) for
+      every order between the formal order and p, each end limited to the plausible band
+      (plausible_orders): low and high are its values at the two ends of that interval (it is
+      monotonic in the order);
+    - anything else (oscillatory, divergent, no difference): no power law bounds the converged
+      value; the band of the three values.
+    Returns {"low", "high", "order_low", "order_high" (None unless monotonic), "observed_order",
+    "clamped", "condition"}."""
+    t = gci_triple(phi, h)
+    out = {"condition": t["condition"], "observed_order": t["order"], "order_low": None,
+           "order_high": None, "clamped": False}
+    if t["condition"] == "monotonic" and t["order"]:
+        lo, hi, clamped = plausible_orders(t["order"], formal, band)
+        ends = [richardson(phi[0], phi[1], t["r21"], q) for q in (lo, hi)]
+        out.update(low=min(ends), high=max(ends), order_low=lo, order_high=hi, clamped=clamped)
+    else:
+        out.update(low=min(phi), high=max(phi))
+    return out
+
+
+def quotable(triple, asymptotic, band=PLAUSIBLE_ORDER):
+    """May the finest triple's one extrapolated value and its GCI be quoted: it converges
+    monotonically, its order lies within the plausible band, and the asymptotic check
+    (asymptotic_check) passed (True; None, untested, is not enough)."""
+    return bool(triple and triple["condition"] == "monotonic" and triple["order"]
+                and band[0] <= triple["order"] <= band[1] and asymptotic is True)

@@ -31,7 +31,12 @@
    h with the extrapolated value and its GCI band). --table PATH also writes the ladder table there
    (e.g. data/scenes/sphere_cylinder/recommended.ladder.json, which `mpm run` of that scene reads
    to put the error bar into its summary).
-Exit codes: 0 done, 1 usage error, 2 input error (the scene), 3 a run failed (analysed without it).
+A Taylor rod whose shape cannot be measured (its anvil layer all failed: the shipped failure stack)
+has no Lf and Dm; the table's verdict and a warning on stderr say why and how to measure them
+(failure off: --set '{"physics": {"erosion": "none"}}').
+Exit codes: 0 done, 1 usage error, 2 input error (the scene), 3 a run failed (analysed without it)
+or an output could not be written (one line naming the path and the reason), 130 Ctrl-C (a level
+being run writes its checkpoint; the same command resumes).
 """
 
 import argparse
@@ -50,10 +55,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 import gci  # noqa: E402
+import quantity_format  # noqa: E402
 
 ANVIL_LAYER = 0.5e-3  # Dm: particles within this distance of the anvil [m] (campaigns/taylor)
-# Observed orders a first-order method can plausibly show; outside, the extrapolation is flagged.
-PLAUSIBLE_ORDER = (0.5, 2.0)
 
 
 # --- the scene -----------------------------------------------------------------------------------
@@ -275,9 +279,18 @@ def gauge_peaks(run_dir):
     return out
 
 
+NO_FAILURE = '{"physics": {"erosion": "none"}}'  # how the Taylor campaign measures shapes
+
+
+class NotMeasured(Exception):
+    """Why a run's Lf and Dm could not be measured, and how they can be (one line)."""
+
+
 def taylor_measures(run_dir, scene, rod):
-    """Lf and Dm [m] of the rod from the first and last snapshots (campaigns/taylor/taylor.py's
-    measures, with the seed offsets read from the first snapshot: exact at t = 0)."""
+    """(Lf, Dm [m], note) of the rod from the first and last snapshots (campaigns/taylor/
+    taylor.py's measures, with the seed offsets read from the first snapshot: exact at t = 0);
+    note tells how many particles failed (debris, not measured), or is None. NotMeasured when
+    no intact particle lies within 0.5 mm of the anvil."""
     import numpy as np
     import vtu
     name, obj = rod
@@ -311,12 +324,18 @@ def taylor_measures(run_dir, scene, rod):
     intact = (last["failed"][mine_last] < 0.5) if "failed" in last else np.ones(len(x), bool)
     axial = g["top"][0] - X0[:, 0].max()
     radial = g["radius"] - radius(X0).max()
-    Lf = x[intact, 0].max() + axial
+    failed = int(len(x) - intact.sum())
+    note = (f"{failed} of {len(x)} particles of the rod failed (debris, not measured)"
+            if failed else None)
     near = (x[:, 0] < ANVIL_LAYER) & intact
     if not near.any():
-        raise ValueError("no intact particle of the rod within 0.5 mm of the anvil")
+        raise NotMeasured(f"{failed} of {len(x)} particles of the rod failed and none intact "
+                          "lies within 0.5 mm of the anvil; measure the shape with failure off, "
+                          f"as the Taylor campaign does: --set '{NO_FAILURE}'"
+                          if failed else "no particle of the rod lies within 0.5 mm of the anvil")
+    Lf = x[intact, 0].max() + axial
     Dm = 2.0 * (radius(x[near]).max() + radial)
-    return float(Lf), float(Dm)
+    return float(Lf), float(Dm), note
 
 
 def observables_of(scene, rod):
@@ -355,21 +374,29 @@ def read_run(run_dir, scene_text, scene, rod, observables):
     with open(os.path.join(run_dir, "summary.json")) as f:
         s = json.load(f)
     peaks = gauge_peaks(run_dir)
-    values = {}
+    values, notes = {}, {}
     for name, pointer, unit in observables:
         v = None
         if name.startswith("gauge "):
             v = peaks.get(name[len("gauge "):-len(" peak")], (None, None))[1]
         elif name in ("Lf", "Dm"):
+            if "Lf" in values or "Lf" in notes:
+                continue
             try:
-                values["Lf"], values["Dm"] = taylor_measures(run_dir, scene, rod)
-            except (OSError, ValueError, IndexError, KeyError):
-                pass
+                values["Lf"], values["Dm"], note = taylor_measures(run_dir, scene, rod)
+                if note:
+                    notes["Lf"] = notes["Dm"] = note
+            except NotMeasured as e:
+                notes["Lf"] = notes["Dm"] = f"not measured: {e}"
+            except (OSError, ValueError, IndexError, KeyError) as e:
+                notes["Lf"] = notes["Dm"] = (f"not measured: the snapshots of {run_dir} could "
+                                             f"not be read ({type(e).__name__}: {e})")
             continue
         else:
             v = pointer_get(s, pointer)
         values[name] = v
-    return {"values": values, "particles": s.get("particles"), "steps": s.get("steps"),
+    return {"values": values, "notes": notes, "particles": s.get("particles"),
+            "steps": s.get("steps"),
             "wall": s.get("wall_time [s]"), "threads": s.get("threads"), "ranks": s.get("ranks"),
             "fingerprint": s.get("scene_fingerprint"),
             "energy_error": s.get("final", {}).get("energy_error [-]")}
@@ -383,8 +410,71 @@ def fmt(x, digits=4):
     return f"{x:.{digits}g}"
 
 
+def verdict(finest, asym, count, band=gci.PLAUSIBLE_ORDER):
+    """Why the finest triple's extrapolation may or may not be quoted, short: 'in the asymptotic
+    range' when it may (gci.quotable), else every reason that applies, joined by '; '."""
+    if finest is None:
+        return f"{count} level{'s' if count != 1 else ''}: fewer than three"
+    reasons = []
+    if finest["condition"] != "monotonic":
+        reasons.append({"oscillatory": "oscillatory convergence",
+                        "no difference": "no difference between levels"}.get(
+                            finest["condition"], finest["condition"]))
+    elif finest["order"] is None:
+        reasons.append("no observed order")
+    elif not band[0] <= finest["order"] <= band[1]:
+        reasons.append(f"order {finest['order']:.3g} outside the plausible "
+                       f"[{band[0]:g}, {band[1]:g}]")
+    reasons.append({True: "in the asymptotic range", False: "not in the asymptotic range",
+                    None: "asymptotic range not tested (a fourth level is needed)"}[asym])
+    if asym is True and reasons[:-1]:
+        reasons.pop()  # two agreeing triples do not make an oscillation or an odd order quotable
+    return "; ".join(reasons)
+
+
+def range_of(values, hs, unit):
+    """The ladder table's "range" of an observable (gci.converged_range on the finest triple; the
+    levels' values with fewer than three): low, high [unit], the orders it spans (null unless
+    monotonic), the number of levels behind it and its basis in words; None without a value."""
+    pairs = [(v, x) for v, x in zip(values, hs) if v is not None and math.isfinite(v)]
+    if not pairs:
+        return None
+    if len(pairs) < 3:
+        vals = [v for v, _ in pairs]
+        return {"low": min(vals), "high": max(vals), "unit": unit, "order_low": None,
+                "order_high": None, "levels": len(vals),
+                "basis": "fewer than three levels: the band of the levels' values"}
+    phi, h = [v for v, _ in pairs[:3]], [x for _, x in pairs[:3]]
+    r = gci.converged_range(phi, h)
+    out = {"low": r["low"], "high": r["high"], "unit": unit, "order_low": r["order_low"],
+           "order_high": r["order_high"], "levels": 3}
+    if r["order_low"] is not None:
+        out["basis"] = (f"Richardson's extrapolation of the finest triple for every order from "
+                        f"the formal {gci.FORMAL_ORDER:g} to the observed "
+                        f"{r['observed_order']:.3g}"
+                        + (f", limited to the plausible [{gci.PLAUSIBLE_ORDER[0]:g}, "
+                           f"{gci.PLAUSIBLE_ORDER[1]:g}]" if r["clamped"] else ""))
+    else:
+        out["basis"] = (f"{r['condition']}: no power law bounds the converged value; the band "
+                        "of the finest three levels' values")
+    return out
+
+
+def level_notes(ladder_runs, name):
+    """['at x1, x2: NOTE', ...]: what the runs say about an observable's measurement (failed
+    particles, or why it is not measured), the levels with the same note grouped."""
+    grouped = {}
+    for r in ladder_runs:
+        note = r["data"].get("notes", {}).get(name)
+        if note:
+            grouped.setdefault(note, []).append(f"x{r['level']:g}")
+    return [f"at {', '.join(levels)}: {note}" for note, levels in grouped.items()]
+
+
 def analyse(runs, observables):
-    """Per observable: the Celik triples of the main ladder (finest first) and the answer."""
+    """Per observable: the Celik triples of the main ladder (finest first) and the answer: the
+    finest triple's extrapolation, whether it may be quoted, and the range of converged values
+    (docs/accuracy.md#grid-convergence-ladders)."""
     ladder_runs = sorted([r for r in runs if r["ppc"] is None and r["data"]],
                          key=lambda r: r["h"])
     result = {}
@@ -397,11 +487,12 @@ def analyse(runs, observables):
                      if finest else (None, "fewer than three levels"))
         status = (finest["condition"] if finest else "fewer than three levels")
         monotonic = bool(finest and finest["condition"] == "monotonic" and finest["order"])
+        band = gci.PLAUSIBLE_ORDER
         if monotonic:
             p = finest["order"]
-            status = "extrapolated" if PLAUSIBLE_ORDER[0] <= p <= PLAUSIBLE_ORDER[1] else (
+            status = "extrapolated" if band[0] <= p <= band[1] else (
                 f"extrapolated with an implausible order {p:.2g} (outside "
-                f"[{PLAUSIBLE_ORDER[0]:g}, {PLAUSIBLE_ORDER[1]:g}]): read the conservative GCI")
+                f"[{band[0]:g}, {band[1]:g}]): read the conservative GCI")
         elif finest and finest["condition"] == "oscillatory":
             status = (f"oscillatory convergence: no extrapolation; error bounded by half the "
                       f"range, +-{100 * finest['oscillation_band']:.2g} %"
@@ -411,6 +502,13 @@ def analyse(runs, observables):
         status += {True: "; in the asymptotic range (two triples agree)",
                    False: f"; not in the asymptotic range ({why})",
                    None: f"; asymptotic range not tested ({why})"}[asym]
+        count = sum(v is not None for v in vals)
+        notes = level_notes(ladder_runs, name)
+        if notes:
+            status += "; " + "; ".join(notes)
+        why_not = verdict(finest, asym, count)
+        if finest is None and any("not measured" in n for n in notes):
+            why_not = "; ".join(notes)
         result[name] = {"name": name, "path": pointer, "unit": unit,
                         "levels": [r["level"] for r in ladder_runs], "h [m]": hs, "values": vals,
                         "triples": triples, "status": status,
@@ -418,7 +516,10 @@ def analyse(runs, observables):
                         "order": finest["order"] if monotonic else None,
                         "gci_fine [-]": finest["gci_fine"] if monotonic else None,
                         "gci_conservative [-]": finest["gci_conservative"] if monotonic else None,
-                        "asymptotic": asym, "asymptotic_reason": why}
+                        "asymptotic": asym, "asymptotic_reason": why,
+                        "quotable": gci.quotable(finest, asym),
+                        "verdict": why_not, "notes": notes,
+                        "range": range_of(vals, hs, unit)}
     return result
 
 
@@ -479,42 +580,59 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
             f.write(text)
     lines = [f"# Grid-convergence ladder: {table['scene']}", "",
              f"Command: `{args.command_line}` (commit {table['commit']}, {table['date']}). "
-             "Definitions: docs/accuracy.md#grid-convergence-ladders. GCI_fine: Celik et al. "
+             "Definitions: docs/accuracy.md#grid-convergence-ladders. An extrapolated value, its "
+             "GCI and the error of level x1 against it are given only where the finest triple is "
+             "quotable (monotonic, an order within the plausible "
+             f"[{gci.PLAUSIBLE_ORDER[0]:g}, {gci.PLAUSIBLE_ORDER[1]:g}] and in the asymptotic "
+             "range); elsewhere the verdict and the range of converged values that the levels "
+             "and the plausible orders bound. GCI_fine: Celik et al. "
              f"(2008), safety factor {gci.SAFETY_FACTOR}, a band about the finest level's value; "
              "conservative GCI: Oberkampf & Roy (2010), safety factor 3 and the order limited to "
              f"[0.5, {gci.FORMAL_ORDER:g}] when it is more than 10 % from the formal order "
              f"{gci.FORMAL_ORDER:g}.", "",
-             "| level | cells | h [m] | particles | steps | particle-steps | wall [s] "
-             "| threads x ranks | energy_error |", "|---|---|---|---|---|---|---|---|---|"]
+             "| level [-] | cells [-] | h [mm] | particles [-] | steps [-] | particle-steps [-] "
+             "| wall [s] | threads x ranks [-] | energy_error [-] |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for lv in table["levels"]:
         lines.append(f"| x{lv['level']:g} | {' x '.join(map(str, lv['cells']))} | "
-                     f"{fmt(lv['h [m]'])} | {lv['particles']} | {lv['steps']} | "
+                     f"{fmt(1e3 * lv['h [m]'])} | {lv['particles']} | {lv['steps']} | "
                      f"{fmt(float(lv['particle_steps']), 3)} | {fmt(lv['wall_time [s]'], 4)} | "
                      f"{lv['threads']} x {lv['ranks']} | {fmt(lv['energy_error [-]'], 3)} |")
-    lines += ["", "| observable | " + " | ".join(f"x{lv['level']:g}" for lv in table["levels"])
-              + " | extrapolated | order p | GCI_fine (finest) | conservative GCI | "
-              "x1 error vs extrapolated | status |",
-              "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|"]
+    lines += ["", "| observable [unit] | " + " | ".join(f"x{lv['level']:g}"
+                                                       for lv in table["levels"])
+              + " | verdict | range of converged values | extrapolated | observed order p [-] | "
+              "GCI_fine (finest) [%] | conservative GCI [%] | x1 error vs extrapolated [%] |",
+              "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|---|"]
 
-    def pct(x):
-        return f"{100 * x:.2g} %" if x is not None else "-"
+    def pct(x, signed=False):
+        return "-" if x is None else (f"{100 * x:+.2g}" if signed else f"{100 * x:.2g}")
 
     for res in result.values():
-        ext = res["extrapolated"]
+        factor, label = quantity_format.display_unit(res["unit"], res["values"])
+        ext = res["extrapolated"] if res["quotable"] else None
         x1 = next((v for v, lv in zip(res["values"], res["levels"]) if lv == 1.0), None)
         err = (x1 - ext) / abs(ext) if (x1 is not None and ext) else None
-        lines.append(f"| {res['name']} [{res['unit']}] | "
-                     + " | ".join(fmt(v) for v in res["values"])
-                     + f" | {fmt(ext)} | {fmt(res['order'], 3)} | {pct(res['gci_fine [-]'])} | "
-                     + f"{pct(res['gci_conservative [-]'])}"
-                     + f" | {(f'{100 * err:+.1f} %' if err is not None else '-')} | "
-                     f"{res['status']} |")
-    lines += ["", "Every consecutive triple (finest first): condition, order, extrapolated value, "
-              "GCI_fine.", ""]
+        lines.append(f"| {res['name']} [{label}] | "
+                     + " | ".join(quantity_format.number(v, factor) for v in res["values"])
+                     + f" | {res['verdict']} | {quantity_format.range_text(res['range'])} | "
+                     f"{quantity_format.number(ext, factor)} | "
+                     f"{fmt(res['order'], 3)} | "
+                     f"{pct(res['gci_fine [-]'] if ext is not None else None)} | "
+                     f"{pct(res['gci_conservative [-]'] if ext is not None else None)} | "
+                     f"{pct(err, signed=True)} |")
+    lines += ["", "Every consecutive triple (finest first): its cell sizes, condition, observed "
+              "order, Richardson's extrapolation with that order and GCI_fine (a triple's own "
+              "figures: quote none of them unless the table above calls the observable "
+              "quotable).", ""]
     for res in result.values():
-        parts = [f"({', '.join(fmt(x, 3) for x in t['h'])}) m: {t['condition']}, "
-                 f"p {fmt(t['order'], 3)}, {fmt(t['extrapolated'])}, "
-                 + (f"{100 * t['gci_fine']:.2g} %" if t["gci_fine"] is not None else "-")
+        factor, label = quantity_format.display_unit(res["unit"], res["values"])
+        parts = [f"({', '.join(fmt(1e3 * x, 3) for x in t['h'])}) mm: {t['condition']}, "
+                 f"p {fmt(t['order'], 3)}, "
+                 + (quantity_format.number(t["extrapolated"], factor)
+                    + ("" if label == "-" else f" {label}")
+                    if t["extrapolated"] is not None else "-") + ", "
+                 + (f"GCI_fine {100 * t['gci_fine']:.2g} %" if t["gci_fine"] is not None
+                    else "-")
                  for t in res["triples"]]
         lines.append(f"- **{res['name']}**: " + ("; ".join(parts) if parts else "no triple"))
     first = next(iter(scene_objects.values()), {}) if scene_objects else {}
@@ -540,45 +658,52 @@ def ppc_lines(runs, observables, base_ppc=2):
              "values per particle count; spread = (max - min) / |value at the scene's count|; "
              "next count = |value at the next larger count - value at the scene's| / |value at the "
              "scene's|; grid = |value - value one level coarser| / |value|, at the scene's count.",
-             "", "| level | observable | " + " | ".join(f"{p} per axis" for p in counts)
-             + " | scene's | spread over particle counts | next count | grid change |",
+             "", "| level [-] | observable [unit] | " + " | ".join(f"{p} per axis" for p in counts)
+             + " | scene's | spread over particle counts [%] | next count [%] | grid change [%] |",
              "|---|---|" + "---|" * (len(counts) + 4)]
 
     def rel(a, b):
-        return f"{100 * abs(a - b) / abs(b):.1f} %" if (a is not None and b) else "-"
+        return f"{100 * abs(a - b) / abs(b):.1f}" if (a is not None and b) else "-"
 
     for level in sorted({r["level"] for r in ppc_runs}):
         here = {r["ppc"]: r for r in ppc_runs if r["level"] == level}
         ref = next((r for r in main if r["level"] == level), None)
         coarser = [r for r in main if r["level"] < level]
         coarser = coarser[-1] if coarser else None
-        for name, _, _ in observables:
+        for name, _, unit in observables:
             vals = [here[p]["data"]["values"].get(name) if p in here else None for p in counts]
             v_ref = ref["data"]["values"].get(name) if ref else None
             known = [v for v in vals + [v_ref] if v is not None]
+            factor, label = quantity_format.display_unit(unit, known)
             spread = ((max(known) - min(known)) / abs(v_ref)
                       if v_ref and len(known) > 1 else None)
             larger = next((v for p, v in zip(counts, vals) if v is not None and p > base_ppc),
                           None)
             v_c = coarser["data"]["values"].get(name) if coarser else None
-            lines.append(f"| x{level:g} | {name} | " + " | ".join(fmt(v) for v in vals)
-                         + f" | {fmt(v_ref)} | "
-                         + (f"{100 * spread:.1f} %" if spread is not None else "-") + " | "
+            lines.append(f"| x{level:g} | {name} [{label}] | "
+                         + " | ".join(quantity_format.number(v, factor) for v in vals)
+                         + f" | {quantity_format.number(v_ref, factor)} | "
+                         + (f"{100 * spread:.1f}" if spread is not None else "-") + " | "
                          + rel(larger, v_ref) + " | " + rel(v_c, v_ref) + " |")
     return lines
 
 
 def draw_cost(out, table, result):
     """Speed against accuracy: each level's |value - extrapolated| / |extrapolated| against its
-    particle-steps and wall time, one curve per observable that has an extrapolated value."""
+    particle-steps and wall time, one curve per quotable observable (an extrapolation that may
+    not be quoted is no reference to measure an error against). Without one, no chart (and a
+    stale one from an earlier analysis of OUT is removed)."""
+    path = os.path.join(out, "ladder_cost.png")
+    curves = [r for r in result.values() if r["quotable"] and r["extrapolated"]]
+    if not curves:
+        if os.path.exists(path):
+            os.remove(path)
+        return
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        return
-    curves = [r for r in result.values() if r["extrapolated"]]
-    if not curves:
         return
     cost = {lv["level"]: (lv["particle_steps"], lv["wall_time [s]"]) for lv in table["levels"]}
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
@@ -590,19 +715,24 @@ def draw_cost(out, table, result):
             continue
         for i, ax in enumerate(axes):
             ax.loglog([c[i] for c, _ in pts], [e for _, e in pts], "o-", label=res["name"])
-    axes[0].set_xlabel("particle-steps")
+    axes[0].set_xlabel("particle-steps [-]")
     axes[1].set_xlabel("wall time [s]")
-    axes[0].set_ylabel("|value - extrapolated| / |extrapolated|")
+    axes[0].set_ylabel("|value - extrapolated| / |extrapolated| [-]")
     axes[1].legend(fontsize=7)
     for ax in axes:
         ax.grid(True, which="both", alpha=0.3)
-    fig.suptitle(f"{table['scene']}: error against the ladder's extrapolated value", fontsize=9)
+    fig.suptitle(f"{table['scene']}: error against the ladder's extrapolated value "
+                 "(quotable observables)", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "ladder_cost.png"), dpi=110)
+    fig.savefig(path, dpi=110)
     plt.close(fig)
 
 
 def draw(out, result):
+    """OUT/ladder_<observable>.png: the levels' values against h, in one display unit per figure
+    (quantity_format), with, at h = 0, the extrapolated value and the finest level's GCI_fine band
+    where the observable is quotable, else the range of converged values; the axes hold every
+    point and band drawn."""
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -611,26 +741,51 @@ def draw(out, result):
         print("ladder: matplotlib missing: no figures (apt-get install python3-matplotlib)")
         return
     for res in result.values():
-        pts = [(h, v) for h, v in zip(res["h [m]"], res["values"]) if v is not None]
+        pts = [(1e3 * h, v) for h, v in zip(res["h [m]"], res["values"]) if v is not None]
         if not pts:
             continue
-        fig, ax = plt.subplots(figsize=(5.5, 4))
-        ax.plot([1e3 * h for h, _ in pts], [v for _, v in pts], "o-", label="runs")
-        ext = res["extrapolated"]
-        if ext is not None:
+        rng = res["range"]
+        shown = [v for _, v in pts] + ([rng["low"], rng["high"]] if rng else [])
+        factor, label = quantity_format.display_unit(res["unit"], shown)
+        fig, ax = plt.subplots(figsize=(5.8, 4.2))
+        ax.plot([h for h, _ in pts], [v / factor for _, v in pts], "o-", label="levels")
+        ys = [v / factor for _, v in pts]
+        x_max = max(h for h, _ in pts)
+        width = 0.035 * x_max
+        if res["quotable"]:
+            ext, finest = res["extrapolated"] / factor, pts[0]
             # GCI_fine is the band about the finest level's value (Celik et al. 2008, eq. 6).
-            band = (res["gci_fine [-]"] or 0.0) * abs(pts[0][1])
-            ax.axhline(ext, color="k", ls="--", lw=1,
-                       label=f"extrapolated (p = {res['order']:.2f})")
-            ax.errorbar([1e3 * pts[0][0]], [pts[0][1]], yerr=[band], color="C3", capsize=4,
+            band = (res["gci_fine [-]"] or 0.0) * abs(finest[1]) / factor
+            ax.plot([0.0], [ext], "k*", ms=11, label=f"extrapolated, p = {res['order']:.3g}")
+            ax.plot([0.0, finest[0]], [ext, finest[1] / factor], "k--", lw=0.8)
+            ax.errorbar([finest[0]], [finest[1] / factor], yerr=[band], color="C3", capsize=4,
                         fmt="none", label="finest level +- GCI_fine")
-            ax.plot([0.0], [ext], "k*", ms=9)
-        ax.set_xlim(left=0.0)
+            ys += [ext, finest[1] / factor - band, finest[1] / factor + band]
+        elif rng:
+            lo, hi = rng["low"] / factor, rng["high"] / factor
+            if rng["order_low"] is not None and len(pts) >= 2:
+                # The power laws through the two finest levels with the range's end orders.
+                (h1, v1), (h2, v2) = pts[0], pts[1]
+                for q, style in ((rng["order_low"], ":"), (rng["order_high"], "--")):
+                    ext = gci.richardson(v1, v2, h2 / h1, q)
+                    hs = [h1 * i / 40.0 for i in range(41)]
+                    ax.plot(hs, [(ext + (v1 - ext) * (x / h1) ** q) / factor for x in hs],
+                            style, color="C2", lw=0.9, label=f"power law, p = {q:.3g}")
+            ax.fill_between([-width, width], [lo, lo], [max(hi, lo), max(hi, lo)], color="C2",
+                            alpha=0.35, lw=0)
+            ax.plot([0.0, 0.0], [lo, hi], "-", color="C2", lw=3,
+                    label="range: " + quantity_format.range_text(rng))
+            ys += [lo, hi]
+        span = (max(ys) - min(ys)) or max(abs(max(ys)), 1e-300)
+        ax.set_ylim(min(ys) - 0.08 * span, max(ys) + 0.08 * span)
+        ax.set_xlim(-2 * width, 1.05 * x_max)
+        ax.axvline(0.0, color="0.7", lw=0.6)
         ax.set_xlabel("representative cell size h [mm]")
-        ax.set_ylabel(f"{res['name']} [{res['unit']}]")
-        ax.set_title("\n".join(textwrap.wrap(f"{res['name']}: {res['status']}", 75)),
-                     fontsize=7)
-        ax.legend(fontsize=8)
+        ax.set_ylabel(f"{res['name']} [{label}]")
+        ax.set_title("\n".join(textwrap.wrap(f"{res['name']}: {res['verdict']}", 70)),
+                     fontsize=8)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7, loc="best")
         fig.tight_layout()
         safe = "".join(c if c.isalnum() else "_" for c in res["name"])
         fig.savefig(os.path.join(out, f"ladder_{safe}.png"), dpi=110)
@@ -656,7 +811,47 @@ class Parser(argparse.ArgumentParser):
         sys.exit(1)
 
 
+class OutputError(Exception):
+    """An output (directory or file) that could not be written: exit 3, one line."""
+
+
+def writing(what):
+    """A context that turns an OSError while writing `what` into an OutputError naming the path
+    and the reason."""
+    class Guard:
+        def __enter__(self):
+            return self
+
+        def __exit__(self, kind, error, tb):
+            if kind is not None and issubclass(kind, OSError):
+                path = error.filename or what
+                raise OutputError(f"{path}: cannot be written ({what}): "
+                                  f"{error.strerror or error}") from None
+            return False
+    return Guard()
+
+
 def main(argv):
+    """Exit codes: module docstring; an output that cannot be written 3, Ctrl-C 130, each with
+    one line on stderr."""
+    try:
+        return ladder_main(argv)
+    except OutputError as e:
+        print(f"ladder: {e}", file=sys.stderr)
+        return 3
+    except KeyboardInterrupt:
+        print("ladder: interrupted; run the same command again to resume (finished levels are "
+              "kept)", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # stdout closed (e.g. piped into head): nothing more to say
+        try:
+            sys.stdout = open(os.devnull, "w")
+        except OSError:
+            pass
+        return 3
+
+
+def ladder_main(argv):
     ap = Parser(prog="ladder.py", description=__doc__.split("\n")[0])
     ap.add_argument("scene")
     ap.add_argument("--out", required=True)
@@ -734,9 +929,11 @@ def main(argv):
         return 1
     rod = taylor_rod(scene)
     observables = observables_of(scene, rod)
-    os.makedirs(os.path.join(args.out, "scenes"), exist_ok=True)
     runs_root = args.runs or os.path.join(args.out, "runs")
-    os.makedirs(runs_root, exist_ok=True)
+    with writing("--out"):
+        os.makedirs(os.path.join(args.out, "scenes"), exist_ok=True)
+    with writing("--runs" if args.runs else "--out"):
+        os.makedirs(runs_root, exist_ok=True)
     seen = {}
     for lv in sorted(args.levels):
         cells = tuple(level_cells(scene, lv))
@@ -754,8 +951,9 @@ def main(argv):
         problems = []
         for level, ppc in plan:
             path = os.path.join(args.out, "scenes", run_name(level, ppc) + ".json")
-            write_level_scene(path, args.scene, scene, level, ppc, args.checkpoint_steps, rod,
-                              sets)
+            with writing("a level's scene"):
+                write_level_scene(path, args.scene, scene, level, ppc, args.checkpoint_steps, rod,
+                                  sets)
             done = subprocess.run([args.mpm, "check", path, "--threads", "1"],
                                   capture_output=True, text=True)
             if done.returncode != 0:
@@ -769,12 +967,14 @@ def main(argv):
     for level, ppc in plan:
         name = run_name(level, ppc)
         scene_path = os.path.join(args.out, "scenes", name + ".json")
-        text = write_level_scene(scene_path, args.scene, scene, level, ppc, args.checkpoint_steps,
-                                 rod, sets)
+        with writing("a level's scene"):
+            text = write_level_scene(scene_path, args.scene, scene, level, ppc,
+                                     args.checkpoint_steps, rod, sets)
         run_dir = os.path.join(runs_root, name)
         if not args.analyse_only and not finished(run_dir, text):
             try:
-                code = run_level(args, scene_path, text, run_dir)
+                with writing("--runs" if args.runs else "--out"):
+                    code = run_level(args, scene_path, text, run_dir)
             except KeyboardInterrupt:
                 print("ladder: interrupted; run the same command again to resume", file=sys.stderr)
                 return 130
@@ -790,8 +990,16 @@ def main(argv):
         if r["data"] and not r["data"]["fingerprint"]:
             r["data"]["fingerprint"] = fingerprint_of(args, r["scene_path"])
     result = analyse(runs, observables)
-    write_outputs(args, args.scene, runs, observables, result, not args.no_plot,
-                  scene.get("objects", {}))
+    said = {}
+    for res in result.values():  # Lf and Dm share their reason: one line for both
+        for note in res["notes"]:
+            if "not measured" in note:
+                said.setdefault(note, []).append(res["name"])
+    for note, names in said.items():
+        print(f"ladder: warning: {' and '.join(names)} {note}", file=sys.stderr)
+    with writing("the ladder's outputs"):
+        write_outputs(args, args.scene, runs, observables, result, not args.no_plot,
+                      scene.get("objects", {}))
     print(f"ladder: {os.path.join(args.out, 'ladder.md')}" + (f", table {args.table}"
                                                                 if args.table else ""))
     if failed:

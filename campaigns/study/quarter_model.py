@@ -149,16 +149,17 @@ def main():
     with open(os.path.join(a.out, "quarter.md"), "w") as f:
         f.write(f"Centred impact, {a.max_time * 1e6:g} us, {a.threads} threads "
                 f"(`campaigns/study/quarter_model.py`).\n\n")
-        f.write("| run | particles | steps | wall time [s] |\n|---|---:|---:|---:|\n")
+        f.write("| run | particles [-] | steps [-] | wall time [s] |\n|---|---:|---:|---:|\n")
         for name, (p, s, t) in cost.items():
             f.write(f"| {name} | {p} | {s} | {t:.1f} |\n")
         f.write(f"\nCost ratio quarter/full: {cost['quarter'][2] / cost['full'][2]:.3f} "
                 f"(particles {cost['quarter'][0] / cost['full'][0]:.3f}).\n\n")
-        f.write("| observable | full | quarter (x4 if extensive) | relative difference |\n"
+        f.write("| observable [unit] | full | quarter (x4 if extensive) | "
+                "relative difference [-] |\n"
                 "|---|---:|---:|---:|\n")
         for k, fv, qv, d in rows:
             f.write(f"| {k} | {fv:.6g} | {qv:.6g} | {d:+.2e} |\n")
-        f.write("\n| gauge history | peak of the full model | max difference / peak |\n"
+        f.write("\n| gauge history [unit] | peak of the full model | max difference / peak [-] |\n"
                 "|---|---:|---:|\n")
         for name, peak, worst in gauge_rows:
             f.write(f"| {name} | {peak:.4g} | {worst:.2e} |\n")

@@ -7,14 +7,17 @@ OUT holds one directory per case (history.csv, summary.json, scene.json, as `mpm
 Writes
   OUT/<case>/energy.png  left: kinetic, strain and total energy [J] vs time [us] of the case (solid)
                          and of case01 (dashed), plus any further ledger energy terms (thin lines);
-                         right: the momentum components [kg m/s], the case and case01.
+                         right: the momentum components [kg m/s], the case and case01, and per
+                         component the case's balance p - boundary impulse - body-force impulse
+                         (dotted; conserved: a flat line).
   OUT/summary.csv        one row per case, header cells `name [unit]`, full precision.
   OUT/summary.md         the same as a markdown table, 4 significant digits.
 --no-figures writes the table only (needs no matplotlib).
 history.csv columns are read by name, so ledger columns added later are picked up: every `[J]`
 column between boundary_impulse_z and energy_error is drawn and tabulated at the end time.
 
-Exit codes: 0 done, 1 usage error, 2 input error, 4 matplotlib missing.
+Exit codes: 0 done, 1 usage error, 2 input error, 3 an output could not be written, 4 matplotlib
+missing, 130 interrupted (Ctrl-C).
 `mpm study` runs this script; it can also be run directly.
 """
 
@@ -26,6 +29,9 @@ import os
 import re
 import sys
 import textwrap
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import quantity_format  # noqa: E402
 
 MISSING_MATPLOTLIB = 4
 REFERENCE = "case01"
@@ -250,9 +256,22 @@ def write_tables(out, cases):
         f.write("\n".join(lines))
 
 
+def entry_unit(entry):
+    """The SI unit of a discretization_error entry: its range's, else the one its JSON pointer
+    into summary.json names ('/observables/crater/depth [m]'; '~1' is '/')."""
+    rng = entry.get("range")
+    if isinstance(rng, dict) and isinstance(rng.get("unit"), str):
+        return rng["unit"]
+    m = re.search(r"\[([^\]]*)\]", entry.get("path") or "")
+    return m.group(1).replace("~1", "/") if m else ""
+
+
 def discretization_error_lines(case):
     """The error bar of a run whose scene has a grid-convergence ladder table (summary.json
-    "discretization_error", written by mpm run; docs/accuracy.md#grid-convergence-ladders)."""
+    "discretization_error", written by mpm run; docs/accuracy.md#grid-convergence-ladders). One
+    extrapolated value, this run's signed error against it and GCI_fine only where the ladder
+    calls the observable quotable ("quotable": true); elsewhere the verdict and the range of
+    converged values, never a percentage against one extrapolated number."""
     d = case.summary.get("discretization_error")
     if not isinstance(d, dict):
         return []
@@ -260,35 +279,51 @@ def discretization_error_lines(case):
     if "observables" not in d:
         return head + [f"Ladder table {d.get('table', '?')}: {d.get('status', '?')}.", ""]
 
-    def g(x, unit=""):
-        return f"{x:.4g}{unit}" if isinstance(x, (int, float)) and not isinstance(x, bool) else "-"
-
-    def pct(x):
-        return f"{100 * x:+.1f} %" if isinstance(x, (int, float)) else "-"
+    def num(x):
+        return isinstance(x, (int, float)) and not isinstance(x, bool)
 
     lines = head + [
-        f"This run is level x{g(d.get('level'))} of the ladder in {d.get('table')} (made at commit "
-        f"{d.get('ladder_commit', '?')}). error = (this run - extrapolated) / abs(extrapolated); "
-        "the extrapolated value is Richardson's from the ladder's three finest levels, GCI_fine "
-        "the uncertainty band of the finest level's value (Celik et al. 2008, safety factor 1.25; "
-        "not this run's), the conservative GCI Oberkampf & Roy's (2010), order p the observed "
-        "one. An extrapolation outside the asymptotic range (see status) is an estimate, not an "
-        "answer (docs/accuracy.md#grid-convergence-ladders).",
+        f"This run is level x{quantity_format.number(d.get('level'))} of the ladder in "
+        f"{d.get('table')} (made at commit {d.get('ladder_commit', '?')}). Where the ladder's "
+        "finest triple is quotable (monotonic convergence, an order within the plausible "
+        "[0.5, 2], in the asymptotic range), the extrapolated value is Richardson's from its "
+        "three finest levels, error = (this run - extrapolated) / abs(extrapolated), GCI_fine the "
+        "uncertainty band of the finest level's value (Celik et al. 2008, safety factor 1.25; "
+        "not this run's) and p the observed order. Elsewhere no single converged value can be "
+        "quoted: the verdict and the range of converged values that the levels and the "
+        "plausible orders bound (docs/accuracy.md#grid-convergence-ladders).",
         "",
-        "| observable | this run | extrapolated | error | GCI_fine of the finest level | "
-        "conservative GCI | order p | status |",
-        "|---|---|---|---|---|---|---|---|",
+        "| observable [unit] | this run | extrapolated | error [%] | GCI_fine of the finest level "
+        "[%] | order p [-] | verdict and range of converged values |",
+        "|---|---|---|---|---|---|---|",
     ]
     for name, o in d["observables"].items():
         if not isinstance(o, dict):
             continue
-        def band(x):
-            return f"{100 * x:.2g} %" if isinstance(x, (int, float)) else "-"
+        unit = entry_unit(o)
+        rng = o.get("range") if isinstance(o.get("range"), dict) else None
+        shown = [o.get("value"), o.get("extrapolated")] + (
+            [rng.get("low"), rng.get("high")] if rng else [])
+        factor, label = quantity_format.display_unit(unit, shown)
 
-        lines.append(f"| {name} | {g(o.get('value'))} | {g(o.get('extrapolated'))} | "
-                     f"{pct(o.get('error [-]'))} | {band(o.get('gci_fine [-]'))} | "
-                     f"{band(o.get('gci_conservative [-]'))} | "
-                     f"{g(o.get('order'))} | {o.get('status', '')} |")
+        def cell(x):
+            text = quantity_format.number(x, factor)
+            return text if text == "-" or label in ("", "-") else f"{text} {label}"
+
+        if o.get("quotable") is True and num(o.get("extrapolated")):
+            error = (f"{100 * o['error [-]']:+.1f}" if num(o.get("error [-]")) else "-")
+            gci_fine = (f"{100 * o['gci_fine [-]']:.2g}" if num(o.get("gci_fine [-]")) else "-")
+            order = quantity_format.number(o.get("order"), 1.0, 3)
+            lines.append(f"| {name} [{label}] | {cell(o.get('value'))} | "
+                         f"{cell(o['extrapolated'])} | {error} | {gci_fine} | {order} | "
+                         f"quotable: {o.get('verdict', 'in the asymptotic range')} |")
+            continue
+        verdict = o.get("verdict") or o.get("status") or "not quotable"
+        where = (quantity_format.range_text(rng) if rng else
+                 "no range in the ladder table (re-analyse it: campaigns/study/ladder.py "
+                 "--analyse-only)")
+        lines.append(f"| {name} [{label}] | {cell(o.get('value'))} | - | - | - | - | "
+                     f"{verdict}: {where} |")
     return lines + [""]
 
 
@@ -316,6 +351,21 @@ def short(text, limit=150):
     return text if len(text) <= limit else text[: limit - 3].rstrip() + "..."
 
 
+def momentum_balances(history):
+    """{axis: [p - boundary impulse - body-force impulse per row]} for x, y and z (the axes whose
+    boundary impulse the history has): each is constant where momentum is conserved."""
+    out = {}
+    for axis in "xyz":
+        if not (history.has(f"momentum_{axis}") and history.has(f"boundary_impulse_{axis}")):
+            continue
+        external = (history.col(f"external_impulse_{axis}")
+                    if history.has(f"external_impulse_{axis}") else [0.0] * history.rows)
+        out[axis] = [p - j - e for p, j, e in zip(history.col(f"momentum_{axis}"),
+                                                  history.col(f"boundary_impulse_{axis}"),
+                                                  external)]
+    return out
+
+
 def draw_case(plt, case, reference):
     fig, (ax_e, ax_p) = plt.subplots(1, 2, figsize=(13, 5))
     runs = [(case, "-")]
@@ -331,17 +381,23 @@ def draw_case(plt, case, reference):
             ax_e.plot(t, h.col(name), style, color=f"C{i + 2}", lw=0.8, label=f"{name} ({c.name})")
         for name, color in [("momentum_x", "C0"), ("momentum_y", "C1"), ("momentum_z", "C2")]:
             ax_p.plot(t, h.col(name), style, color=color, lw=1.5, label=f"{name} ({c.name})")
-        # The conserved quantity: momentum minus what the faces exerted (the far end of the
-        # cylinder lies on the x+ face, whose reaction turns p_x around after ~18 us).
-        if c is case and "boundary_impulse_x" in h.columns:
-            px = [p - j for p, j in zip(h.col("momentum_x"), h.col("boundary_impulse_x"))]
-            ax_p.plot(t, px, ":", color="k", lw=1.5, label=f"momentum_x - boundary_impulse_x ({c.name})")
+        # The conserved quantities, one per component: momentum minus what the faces (and body
+        # forces) exerted. The far end of the cylinder lies on the x+ face, whose reaction turns
+        # p_x around after ~18 us; the y and z faces take up the sideways momentum likewise, so
+        # p_y and p_z move without any drift: their balances are drawn too.
+        # y and z are often both zero: z dash-dotted and thinner, so that neither hides.
+        styles = {"x": (":", 2.0, "C0"), "y": (":", 2.6, "C1"), "z": ("-.", 1.2, "C2")}
+        for axis, balance in (momentum_balances(h) if c is case else {}).items():
+            line, width, color = styles[axis]
+            ax_p.plot(t, balance, line, color=color, lw=width,
+                      label=f"momentum_{axis} - impulses_{axis} ({c.name}, conserved)")
     ax_e.set_xlabel("time [µs]")
     ax_e.set_ylabel("energy [J]")
     ax_e.set_title("energy (this case solid" + (f", {REFERENCE} dashed)" if len(runs) > 1 else ")"))
     ax_p.set_xlabel("time [µs]")
     ax_p.set_ylabel("momentum [kg m/s]")
-    ax_p.set_title("momentum")
+    ax_p.set_title("momentum (dotted, dash-dotted: minus the faces' and body forces' impulses: "
+                   "conserved)", fontsize=9)
     for ax in (ax_e, ax_p):
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7)
@@ -383,6 +439,13 @@ def main():
     except InputError as e:
         sys.stderr.write(f"study_plot.py: {e}\n")
         return 2
+    except OSError as e:  # an output that cannot be written (read-only, full, a special file)
+        sys.stderr.write(f"study_plot.py: {e.filename or args.out}: cannot be written: "
+                         f"{e.strerror or e}\n")
+        return 3
+    except KeyboardInterrupt:
+        sys.stderr.write("study_plot.py: interrupted\n")
+        return 130
     return 0
 
 

@@ -21,7 +21,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "study"))
 import taylor  # noqa: E402
-import vtu  # noqa: E402
 
 
 def main():
@@ -31,6 +30,7 @@ def main():
     ap.add_argument("--cells-per-radius", default="3,4,6,8")
     ap.add_argument("--mpm", default=os.path.join(taylor.REPO, "build", "bin", "mpm"))
     a = ap.parse_args()
+    import vtu  # NumPy: only once the options are read (--help needs the standard library only)
     shot = next(s for s in taylor.read_shots() if s["shot"] == a.shot)
     print("cells/radius,core max tension [Pa],core max compression [Pa]")
     with tempfile.TemporaryDirectory() as work:

@@ -28,8 +28,13 @@ COLUMNS = [  # (output header, source column, factor to SI)
 
 
 def main(argv):
+    usage = "usage: convert_house1995.py SOURCE_CSV OUT_CSV"
+    if len(argv) == 2 and argv[1] in ("-h", "--help"):
+        print(usage + "\n\n" + __doc__)
+        return 0
     if len(argv) != 3:
-        print(__doc__, file=sys.stderr)
+        print(f"{usage}\nconvert_house1995.py: expected two arguments, got {len(argv) - 1}",
+              file=sys.stderr)
         return 1
     with open(argv[1], newline="") as f:
         rows = list(csv.DictReader(f))

@@ -8,7 +8,12 @@
 
 For every parameter set x failure mode x resolution x shot it generates a scene (the rod along x,
 its impact face on the x- face of the grid, the anvil), runs `mpm run`, and measures on the last
-snapshot. Geometry (--geometry, one per OUT):
+snapshot. The grid reaches 2.2 R0 from the axis; where the mushroom's material reaches that outer
+face (mpm's summary.json "material_reached_faces"), the shot is run again with the grid 1.5 times
+wider, up to three times (7.4 R0): results.csv records the extent used
+(`radial_extent_over_R0 [-]`), the faces the last attempt's material still reached
+(`material_reached_faces`, empty: none) and the attempts before (`confined_attempts`); stderr
+says so for each. Geometry (--geometry, one per OUT):
   3d            a quarter model: mirror planes y = 0 and z = 0 (the default);
   axisymmetric  the r-z section on a 2D grid (docs/scenes.md#2d-grids): x the axis, y the radius,
                 the grid's y- face the axis; every particle a ring, 2 x 2 per cell.
@@ -70,8 +75,9 @@ import subprocess
 import sys
 import time
 
+# campaigns/study/vtu.py reads the snapshots with NumPy: imported where a run is measured, so
+# that --help, the usage errors and the table of shots need the standard library only.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
-import vtu  # noqa: E402
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 DATA = os.path.join(REPO, "data", "experiments", "taylor", "house1995.csv")
@@ -89,17 +95,32 @@ COMPRESSION_AWARE = {"constitutive_model": {
 PPC = 2                 # particles per cell per axis
 GEOMETRIES = ("3d", "axisymmetric")
 MEASURED = ("Lf", "Dm", "Xf")
+JUDGED = ("Lf", "Dm")   # Xf is reported, never judged (docs/taylor.md): no error is computed
 ANVIL_LAYER = 0.5e-3    # Dm from the particles within this distance of the anvil [m]
 PLASTIC_EDGE = 2e-3     # Xf: the cross-section mean plastic strain below which a section is undeformed
 CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
+# The grid's radial extent from the rod's axis [R0]: House's widest mushroom (H3, Dm/D0 = 1.69)
+# leaves 2-3 cells to the face; a mushroom that reaches the face (a faster shot) is run again on
+# a grid ENLARGEMENT times wider, at most MAX_ENLARGEMENTS times (docs/taylor.md).
+RADIAL_EXTENT = 2.2
+ENLARGEMENT = 1.5
+MAX_ENLARGEMENTS = 3
+
+
+class InputError(Exception):
+    """A table of shots that cannot be read: the message names the file, row and column (exit 2)."""
 
 
 def read_shots(path=DATA):
     """The shots of a table in the columns of house1995.csv. The measurements Lf, Dm, Xf may be
     left empty (or the column left out): None, reported and not judged. Anything else missing or
-    not a positive number stops with the file, row and column."""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+    not a positive number raises InputError with the file, row and column."""
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except (OSError, UnicodeDecodeError, csv.Error) as e:
+        raise InputError(f"taylor: {path}: cannot read the table of shots: "
+                         f"{getattr(e, 'strerror', None) or e}")
 
     def number(r, row, column, required):
         text = (r.get(column) or "").strip()
@@ -111,16 +132,16 @@ def read_shots(path=DATA):
             value = float("nan")
         if not (math.isfinite(value) and value > 0.0):
             what = "a number > 0" + ("" if required else " or empty (not measured)")
-            sys.exit(f"taylor: {path}: row {row} ({r.get('shot') or '?'}), column '{column}': "
-                     f"'{text}' is not {what}")
+            raise InputError(f"taylor: {path}: row {row} ({r.get('shot') or '?'}), column "
+                             f"'{column}': '{text}' is not {what}")
         return value
 
     shots, names = [], set()
     for row, r in enumerate(rows, start=2):  # row 1 is the header
         name = (r.get("shot") or "").strip()
         if not name or name in names:
-            sys.exit(f"taylor: {path}: row {row}: the column 'shot' needs a name, unique in the "
-                     f"file (got '{name}')")
+            raise InputError(f"taylor: {path}: row {row}: the column 'shot' needs a name, unique "
+                             f"in the file (got '{name}')")
         names.add(name)
         shot = {"shot": name, "D0": number(r, row, "D0 [m]", True),
                 "L0": number(r, row, "L0 [m]", True), "U0": number(r, row, "U0 [m/s]", True),
@@ -131,7 +152,7 @@ def read_shots(path=DATA):
             shot[key] = number(r, row, f"{key} [m]", False)
         shots.append(shot)
     if not shots:
-        sys.exit(f"taylor: {path}: no shots")
+        raise InputError(f"taylor: {path}: no shots")
     return shots
 
 
@@ -157,11 +178,13 @@ def parse_anvil(text):
     sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall or wall:MU with MU in [0, 10]")
 
 
-def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0), geometry="3d"):
+def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0), geometry="3d",
+          radial=None):
+    """The shot's scene (module docstring), its grid `radial` R0 from the axis (default
+    RADIAL_EXTENT; run_one enlarges it when the mushroom reaches the face)."""
     R0 = 0.5 * shot["D0"]
     dx = R0 / cells_per_radius
-    # The mushroom reaches up to ~1.8 R0 (House H3: Dm/D0 = 1.69): the grid leaves 2.2 R0.
-    ny = math.ceil(2.2 * R0 / dx)
+    ny = math.ceil((RADIAL_EXTENT if radial is None else radial) * R0 / dx)
     overrides = {}
     if failure == "compression_aware":
         overrides = COMPRESSION_AWARE
@@ -247,11 +270,15 @@ def measure(x, plastic_strain, shot, cells_per_radius, face_lift=0.0, geometry="
         profile.append(((b + 0.5) * h, r[inside].max() + radial, mean_ep))
         if mean_ep >= PLASTIC_EDGE:
             edge = (b + 1) * h
-    return Lf, Dm, Lf - edge, profile
+    # The last plastic bin's upper edge lies up to one bin beyond the rear end when the whole
+    # rod yielded: the undeformed length is then 0, not a negative length.
+    return Lf, Dm, Lf - min(edge, Lf), profile
 
 
 def extract(run_dir, shot, cells_per_radius, geometry="3d"):
-    """Lf, Dm, Xf, the profile and the failure counts of a finished run (module docstring)."""
+    """(Lf, Dm, Xf and the failure counts, the profile, the outer faces material reached) of a
+    finished run (module docstring)."""
+    import vtu
     snaps = vtu.snapshots(run_dir)
     first, last = vtu.read_vtu(snaps[0][1]), vtu.read_vtu(snaps[-1][1])
     rod0 = first["object"] == max(first["object"])
@@ -273,6 +300,7 @@ def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     causes = last["failure_cause"][rod0]
     with open(f"{run_dir}/summary.json") as f:
         summary = json.load(f)
+    reached = summary.get("material_reached_faces") or []  # absent: no face reached
     with open(f"{run_dir}/history.csv", newline="") as f:
         hist = list(csv.DictReader(f))
     e0 = float(hist[0]["total_energy [J]"])
@@ -293,7 +321,7 @@ def extract(run_dir, shot, cells_per_radius, geometry="3d"):
            "steps": summary["steps"], "wall_time [s]": summary["wall_time [s]"]}
     for i, c in enumerate(CAUSES[1:], start=1):
         out[f"failed_{c}"] = int((failed & (causes == i)).sum())
-    return out, profile
+    return out, profile, reached
 
 
 def material_digest(material):
@@ -315,24 +343,34 @@ def finished(run_dir, the_scene, digest):
     return done if same else None
 
 
-def run_one(job):
+def reached_text(reached):
+    """'y+ (symmetric) at 21.3 us, 40 particles; ...' of summary.json "material_reached_faces",
+    or '' when no material reached an outer face it did not start near."""
+    return "; ".join(f"{f.get('face', '?')} ({f.get('condition', '?')}) at "
+                     f"{1e6 * f.get('first_time [s]', float('nan')):.1f} us, "
+                     f"{f.get('particles', '?')} particles" for f in reached)
+
+
+def radial_faces(reached):
+    """The faces of `reached` a larger radial extent moves away: y+ and z+ (the x faces are the
+    anvil and the rear, which the rod only leaves)."""
+    return [f for f in reached if f.get("face") in ("y+", "z+")]
+
+
+def run_attempt(job, run_dir, radial):
+    """One run of the job's shot with the grid `radial` R0 from the axis, or its result from an
+    earlier invocation (result.json of this very scene and material): (row, profile, reached),
+    profile None when mpm failed; reached is summary.json's "material_reached_faces" (absent:
+    none)."""
     shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads, anvil, geometry = job
     tag = f"{set_name}_{failure}_n{n}"
-    # Campaigns with different anvils or geometries may share --runs: each has its own run
-    # directories.
-    run_tag = tag if anvil[0] == "mirror" else f"{tag}_wall{anvil[1]:g}"
-    if geometry != "3d":
-        run_tag += f"_{geometry}"
-    run_dir = os.path.join(runs_dir, run_tag, shot["shot"])
     os.makedirs(run_dir, exist_ok=True)
-    the_scene = scene(shot, material, failure, n, anvil, geometry)
+    the_scene = scene(shot, material, failure, n, anvil, geometry, radial)
     digest = material_digest(material)
     done = finished(run_dir, the_scene, digest)
     if done is not None:
-        row, profile = done["row"], [tuple(p) for p in done["profile"]]
-        record_shape(row, shot, profile, out_dir, tag)
         print(f"taylor: {tag} {shot['shot']}: done before ({run_dir}/result.json)", flush=True)
-        return row, profile
+        return done["row"], [tuple(p) for p in done["profile"]], done.get("reached", [])
     scene_file = os.path.join(run_dir, "scene_in.json")
     with open(scene_file, "w") as f:
         json.dump(the_scene, f, indent=1)
@@ -345,16 +383,17 @@ def run_one(job):
            "L0_over_D0 [-]": shot["aspect"], "U0 [m/s]": shot["U0"], "L0 [m]": shot["L0"],
            "D0 [m]": shot["D0"], "Lf_exp [m]": shot["Lf"], "Dm_exp [m]": shot["Dm"],
            "Xf_exp [m]": shot["Xf"], "exit_code": proc.returncode,
-           "elapsed [s]": time.time() - start}
+           "elapsed [s]": time.time() - start, "radial_extent_over_R0 [-]": radial}
     if proc.returncode != 0:
         row["message"] = (proc.stderr.strip().splitlines() or ["?"])[-1]
         print(f"taylor: {tag} {shot['shot']} FAILED (exit {proc.returncode}): {row['message']}",
               flush=True)
-        return row, None
-    m, profile = extract(run_dir, shot, n, geometry)
+        return row, None, []
+    m, profile, reached = extract(run_dir, shot, n, geometry)
     row.update(m)
     record_shape(row, shot, profile, out_dir, tag)
     # Keep the last snapshot (the failure-cause figure); drop the others (tens of MB per run).
+    import vtu
     snaps = vtu.snapshots(run_dir)
     for _, f in snaps[:-1]:
         os.remove(f)
@@ -363,11 +402,54 @@ def run_one(job):
                 f'<DataSet timestep="{snaps[-1][0]!r}" part="0" '
                 f'file="{os.path.relpath(snaps[-1][1], run_dir)}"/>\n</Collection>\n</VTKFile>\n')
     print(f"taylor: {tag} {shot['shot']}: {shape_text(row)}, failed {m['failed']} (core "
-          f"{m['failed_core']}), {row['elapsed [s]']:.0f} s", flush=True)
+          f"{m['failed_core']}), grid {radial:.3g} R0, {row['elapsed [s]']:.0f} s", flush=True)
     row["last_snapshot"] = os.path.relpath(snaps[-1][1], out_dir)  # relative to OUT
     with open(os.path.join(run_dir, "result.json"), "w") as f:
-        json.dump({"scene": the_scene, "material_sha256": digest, "row": row, "profile": profile},
-                  f)
+        json.dump({"scene": the_scene, "material_sha256": digest, "row": row, "profile": profile,
+                   "reached": reached}, f)
+    return row, profile, reached
+
+
+def run_one(job):
+    """The job's shot on a grid wide enough for its mushroom: first RADIAL_EXTENT R0 from the
+    axis; while material reaches the y+ or z+ face (summary.json "material_reached_faces"), again
+    with the extent ENLARGEMENT times larger, at most MAX_ENLARGEMENTS times (each attempt in its
+    own run directory, so that a stopped campaign resumes every one). The row of the last
+    attempt, with the faces its material reached (empty: none) and the attempts before it;
+    a run still confined is reported on stderr."""
+    shot, set_name, material, failure, n, out_dir, runs_dir, mpm, threads, anvil, geometry = job
+    tag = f"{set_name}_{failure}_n{n}"
+    # Campaigns with different anvils or geometries may share --runs: each has its own run
+    # directories.
+    run_tag = tag if anvil[0] == "mirror" else f"{tag}_wall{anvil[1]:g}"
+    if geometry != "3d":
+        run_tag += f"_{geometry}"
+    base = os.path.join(runs_dir, run_tag, shot["shot"])
+    earlier = []
+    for k in range(MAX_ENLARGEMENTS + 1):
+        radial = round(RADIAL_EXTENT * ENLARGEMENT ** k, 9)  # 3.3, not 3.3000000000000003
+        row, profile, reached = run_attempt(job, base if k == 0 else f"{base}_radial{radial:.4g}",
+                                            radial)
+        if profile is None:
+            break
+        confined = radial_faces(reached)
+        if not confined or k == MAX_ENLARGEMENTS:
+            break
+        larger = radial * ENLARGEMENT
+        print(f"taylor: warning: {tag} {shot['shot']}: with the grid {radial:.3g} R0 from the "
+              f"axis, material reached its outer faces {reached_text(confined)}: running it "
+              f"again at {larger:.3g} R0", file=sys.stderr, flush=True)
+        earlier.append(f"{radial:.3g} R0: {reached_text(confined)}")
+    row.setdefault("radial_extent_over_R0 [-]", radial)  # results of campaigns before it
+    row["material_reached_faces"] = reached_text(reached) if profile is not None else ""
+    row["confined_attempts"] = "; ".join(earlier)
+    if profile is not None:
+        record_shape(row, shot, profile, out_dir, tag)
+        if reached:
+            print(f"taylor: warning: {tag} {shot['shot']}: with the grid "
+                  f"{row['radial_extent_over_R0 [-]']:.3g} R0 from the axis, material reached "
+                  f"its outer faces {row['material_reached_faces']}: its Lf and Dm may be "
+                  "confined (results.csv, material_reached_faces)", file=sys.stderr, flush=True)
     return row, profile
 
 
@@ -379,9 +461,11 @@ def shape_text(row):
 
 
 def record_shape(row, shot, profile, out_dir, tag):
-    """Errors against the experiment into `row` (empty where the shot has no measurement: not
-    judged); the profile into OUT/profiles/<tag>_<shot>.csv."""
-    for key in MEASURED:
+    """Errors of Lf and Dm against the experiment into `row` (empty where the shot has no
+    measurement: not judged; Xf is never judged); the profile into
+    OUT/profiles/<tag>_<shot>.csv."""
+    row.pop("Xf_error [%]", None)  # rows of campaigns before Xf was left unjudged
+    for key in JUDGED:
         row[f"{key}_error [%]"] = ("" if shot[key] is None
                                    else 100.0 * (row[f"{key} [m]"] / shot[key] - 1.0))
     prof_dir = os.path.join(out_dir, "profiles")
@@ -395,6 +479,7 @@ def record_shape(row, shot, profile, out_dir, tag):
 def reextract(out_dir, data=DATA):
     """Re-measures Lf, Dm, Xf and the profiles of OUT/results.csv from the runs' last snapshots
     (after a change of the measures; nothing is re-run)."""
+    import vtu
     with open(os.path.join(out_dir, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     shots = {s["shot"]: s for s in read_shots(data)}
@@ -416,18 +501,35 @@ def reextract(out_dir, data=DATA):
     print(f"taylor: re-measured {len(rows)} runs in {out_dir}/results.csv", flush=True)
 
 
+class RunError(Exception):
+    """A program the campaign runs failed before any shot (exit 3, one line)."""
+
+
 def fit_material(name, out_dir, pointdriver):
     """Runs `pointdriver fit` for the set (stress-strain curves only) and returns its material."""
     fit_dir = os.path.join(out_dir, "fits", name)
-    subprocess.run([pointdriver, "fit", os.path.join(REPO, FITS[name]), "--out", fit_dir,
-                    "--no-figures"], check=True, capture_output=True, cwd=REPO)
+    done = subprocess.run([pointdriver, "fit", os.path.join(REPO, FITS[name]), "--out", fit_dir,
+                           "--no-figures"], capture_output=True, text=True, cwd=REPO)
+    if done.returncode != 0:
+        last = (done.stderr.strip().splitlines() or ["no message"])[-1]
+        raise RunError(f"taylor: --sets {name}: pointdriver fit {FITS[name]} failed (exit "
+                       f"{done.returncode}): {last}")
     files = [f for f in os.listdir(fit_dir) if f.endswith(".json") and f != "fit_report.json"]
     return os.path.join(fit_dir, files[0])
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # a usage error exits 1 (argparse's 2 is our input error)
+        self.print_usage(sys.stderr)
+        print(f"taylor: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def main(argv=None):
+    """Exit codes: 0 done, 1 usage error, 2 input error (the table of shots), 3 a run failed or an
+    output could not be written, 130 interrupted (Ctrl-C)."""
+    ap = Parser(prog="taylor.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("out")
     ap.add_argument("--sets", default="table1,fit_all")
     ap.add_argument("--failure", default="off", help="comma list of off, shipped, compression_aware")
@@ -455,7 +557,26 @@ def main():
     ap.add_argument("--reextract", action="store_true",
                     help="re-measure the runs of OUT/results.csv from their last snapshots, then "
                          "redo the report (no run)")
-    a = ap.parse_args()
+    a = ap.parse_args(argv)
+    try:
+        return campaign(a)
+    except InputError as e:
+        print(e, file=sys.stderr)
+        return 2
+    except RunError as e:
+        print(e, file=sys.stderr)
+        return 3
+    except OSError as e:
+        print(f"taylor: {e.filename or a.out}: cannot write: {e.strerror}", file=sys.stderr)
+        return 3
+    except KeyboardInterrupt:
+        print("taylor: interrupted; run the same command again to resume (finished runs are "
+              "kept)", file=sys.stderr)
+        return 130
+
+
+def campaign(a):
+    """The campaign of the parsed options `a` (module docstring); its exit code."""
     out_dir = os.path.abspath(a.out)
     if a.reextract:
         reextract(out_dir, a.data)
@@ -489,6 +610,11 @@ def main():
     for f in failures:
         if f not in ("off", "shipped", "compression_aware"):
             sys.exit(f"taylor: --failure: unknown mode '{f}' (off, shipped, compression_aware)")
+    for program, option in ((a.mpm, "--mpm"), (a.pointdriver, "--pointdriver")):
+        if (option == "--mpm" or any(s in FITS for s in sets)) and not os.access(program,
+                                                                                 os.X_OK):
+            sys.exit(f"taylor: {option} {program}: not an executable (build it: cmake --build "
+                     "build)")
     materials = {}
     for s in sets:
         if s in PUBLISHED:
@@ -535,7 +661,7 @@ def main():
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
         import taylor_report  # noqa: E402  (matplotlib only when plotting)
         taylor_report.report(out_dir)
-    return 1 if any(r["exit_code"] != 0 for r in rows) else 0
+    return 3 if any(r["exit_code"] != 0 for r in rows) else 0
 
 
 if __name__ == "__main__":

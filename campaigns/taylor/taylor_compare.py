@@ -70,9 +70,10 @@ def main():
     lines = ["# Axisymmetric against the 3D quarter model", "",
              "Written by campaigns/taylor/taylor_compare.py (difference: axisymmetric / 3D - 1; "
              "wall: mpm's run time, each on its own machine load).", "",
-             "| set | failure | cells/radius | shots | Lf axi - 3d mean / worst abs [%] | "
+             "| set | failure | cells per radius [-] | shots [-] | "
+             "Lf axi - 3d mean / worst abs [%] | "
              "Dm axi - 3d mean / worst abs [%] | energy error axi / 3d worst abs [%] | "
-             "wall 3d / axi (sum) |", "|---|---|---|---|---|---|---|---|"]
+             "wall 3d / axi (sum) [-] |", "|---|---|---|---|---|---|---|---|"]
     groups = defaultdict(list)
     for e in table:
         groups[(e["set"], e["failure"], int(e["cells_per_radius"]))].append(e)
@@ -85,7 +86,8 @@ def main():
             f"{100 * max(abs(e['energy_error axi [-]']) for e in es):.2f} / "
             f"{100 * max(abs(e['energy_error 3d [-]']) for e in es):.2f} | "
             f"{sum(e['wall 3d [s]'] for e in es) / sum(e['wall axi [s]'] for e in es):.1f} |")
-    lines += ["", "| set | cells/radius | shot | Lf axi / 3d [mm] | diff [%] | Dm axi / 3d [mm] | "
+    lines += ["", "| set | cells per radius [-] | shot | Lf axi / 3d [mm] | diff [%] | "
+              "Dm axi / 3d [mm] | "
               "diff [%] | wall axi / 3d [s] |", "|---|---|---|---|---|---|---|---|"]
     for e in table:
         lines.append(

@@ -111,9 +111,9 @@ def write(out, summary):
     def fmt(v):
         return "-" if v is None else f"{v:+.2f}"
 
-    lines = ["| anvil | set | Lf mean / mean abs / worst [%] | Lf within 3 % | "
+    lines = ["| anvil | set | Lf mean / mean abs / worst [%] | Lf within 3 % [shots] | "
              "Lf mean by L0/D0 " + " / ".join(groups) + " [%] | Dm mean / mean abs / worst [%] | "
-             "Dm within 5 % | Dm mean by L0/D0 " + " / ".join(groups) + " [%] |",
+             "Dm within 5 % [shots] | Dm mean by L0/D0 " + " / ".join(groups) + " [%] |",
              "|---|---|---|---|---|---|---|---|"]
     for e in summary:
         cells = [e["anvil"], f"`{e['set']}` ({SET_LABELS.get(e['set'], e['set'])})"]

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Tables and figures of a Taylor-impact campaign (campaigns/taylor/taylor.py OUT).
 
-  python3 campaigns/taylor/taylor_report.py OUT
+  campaigns/taylor/taylor_report.py OUT [--tables-only]
 
-Reads OUT/results.csv and OUT/profiles/, writes OUT/results.md and the figures
+Reads OUT/results.csv and OUT/profiles/, writes OUT/results.md and (unless --tables-only, which
+needs neither NumPy nor matplotlib) the figures
 OUT/lf_dm_vs_speed.png, OUT/profiles.png, OUT/failure_causes_<set>_<failure>.png (failure modes
 other than off) and OUT/ladder.png (when more than one resolution was run). With three or more
 resolutions, also OUT/convergence.csv: per shot, Lf and Dm extrapolated from the three finest
@@ -11,9 +12,13 @@ levels (Richardson, with the observed order; `richardson` below) and the errors 
 and of the extrapolation against the experiment.
 
 A shot whose measurement is empty in the data table has no error: its prediction is in the tables
-and it is left out of the error statistics (not judged).
+and it is left out of the error statistics (not judged). Xf is never judged.
+
+Exit codes: 0 done, 1 usage error, 2 input error (OUT/results.csv missing or unreadable),
+3 an output could not be written, 130 interrupted.
 """
 
+import argparse
 import csv
 import math
 import os
@@ -22,14 +27,14 @@ from collections import defaultdict
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
 import gci  # noqa: E402
-import vtu  # noqa: E402
 
 CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
 CAUSE_COLOURS = {"none": "#c8c8c8", "melting": "tab:orange", "tepla": "tab:red",
                  "drucker": "tab:blue", "becker": "tab:green"}
 SET_MARKERS = {"table1": "s", "fit_all": "o", "fit_room": "^", "scg": "D", "fit_za": "v", "fit_ptw": "P"}
 PROFILE_SHOTS = ["H3", "H8", "H10", "H13", "H16", "H21"]
-TEXT_COLUMNS = {"set", "failure", "anvil", "geometry", "shot", "message", "last_snapshot"}
+TEXT_COLUMNS = {"set", "failure", "anvil", "geometry", "shot", "message", "last_snapshot",
+                "material_reached_faces", "confined_attempts"}
 
 
 def load(out):
@@ -87,9 +92,9 @@ def group(rows, *keys):
 
 
 def summary_table(rows):
-    lines = ["| set | failure | cells/radius | runs (ok) | Lf error mean / mean abs / worst abs [%] "
-             "| Dm error mean / mean abs / worst abs [%] | failed particles (core, core under "
-             "pressure) | at rest by [us] | energy error worst [%] | wall [s] |",
+    lines = ["| set | failure | cells per radius [-] | runs (ok) [-] | Lf error mean / mean abs / "
+             "worst abs [%] | Dm error mean / mean abs / worst abs [%] | failed particles (core, "
+             "core under pressure) [-] | at rest by [us] | energy error worst [%] | wall [s] |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     for (s, f, n), rs in sorted(group(rows, "set", "failure", "cells_per_radius").items()):
         ok = [r for r in rs if r["ok"]]
@@ -119,12 +124,13 @@ def shot_table(rows, failure="off"):
     sets = sorted(finest)
     by = {(r["set"], r["shot"]): r for r in rows
           if r["failure"] == failure and r["cells_per_radius"] == finest[r["set"]]}
-    head = "| shot | L0/D0 | U0 [m/s] | Lf exp [mm] | " + " | ".join(
+    head = "| shot | L0/D0 [-] | U0 [m/s] | Lf exp [mm] | " + " | ".join(
         f"Lf {s} [mm] (%)" for s in sets) + " | Dm exp [mm] | " + " | ".join(
         f"Dm {s} [mm] (%)" for s in sets) + " | Xf exp [mm] | " + " | ".join(
         f"Xf {s} [mm]" for s in sets) + " |"
     lines = [f"Failure {failure}, at {', '.join(f'{s}: {finest[s]}' for s in sets)} cells per "
-             "radius.", "", head, "|" + "---|" * (5 + 3 * len(sets))]
+             "radius; Xf is reported, never judged (0: the plastic edge reached the rear end).", "",
+             head, "|" + "---|" * (6 + 3 * len(sets))]
     shots = sorted({(r["order"], r["shot"]) for r in rows})
     for _, sh in shots:
         ref = next((by[(s, sh)] for s in sets if (s, sh) in by), None)
@@ -252,8 +258,8 @@ def convergence(rows, out=None):
                     cells[key] += " | " + (f"{1e3 * alt[1]:.3f} ({alt[0]:.2f})" if alt else "-")
             table.append(entry)
             lines.append(f"| {sh} | {cells['Lf']} | {cells['Dm']} |")
-        lines += ["", "| cells per radius | shots judged (Lf / Dm) | Lf error mean / mean abs / "
-                  "worst abs [%] | "
+        lines += ["", "| cells per radius [-] | shots judged (Lf / Dm) [-] | Lf error mean / "
+                  "mean abs / worst abs [%] | "
                   "Dm error mean / mean abs / worst abs [%] |", "|---|---|---|---|"]
         names = {"ext": "extrapolated from the three finest",
                  "alt": f"extrapolated from {'/'.join(map(str, triple or ()))}"}
@@ -276,9 +282,10 @@ def failure_table(rows):
     fr = [r for r in rows if r["failure"] != "off" and r["ok"]]
     if not fr:
         return []
-    lines = ["| set | failure | cells/radius | shot | particles | failed | melting | tepla | "
-             "drucker | becker | core failed (of) | core under pressure | reported unstable | "
-             "Lf [mm] (% of failure off) |", "|" + "---|" * 14]
+    lines = ["| set | failure | cells per radius [-] | shot | particles [-] | failed [-] | "
+             "melting [-] | tepla [-] | drucker [-] | becker [-] | core failed (of) [-] | "
+             "core under pressure [-] | reported unstable [-] | Lf [mm] (% of failure off) |",
+             "|" + "---|" * 14]
     off = {(r["set"], r["cells_per_radius"], r["shot"]): r for r in rows
            if r["failure"] == "off" and r["ok"]}
     for r in sorted(fr, key=lambda r: (r["set"], r["failure"], r["cells_per_radius"],
@@ -295,6 +302,7 @@ def failure_table(rows):
 
 
 def figures(out, rows):
+    import vtu
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -419,7 +427,8 @@ def figures(out, rows):
         plt.close(fig)
 
 
-def report(out):
+def report(out, draw=True):
+    """OUT/results.md from OUT/results.csv, and the figures unless draw is False."""
     rows = load(out)
     lines = ["# Taylor impact campaign", "",
              "Written by campaigns/taylor/taylor_report.py from results.csv (errors: simulation / "
@@ -443,6 +452,20 @@ def report(out):
     ft = failure_table(rows)
     if ft:
         lines += ["", "## Failed particles by cause", ""] + ft
+    confined = [r for r in rows if r.get("material_reached_faces")]
+    enlarged = [r for r in rows if r.get("confined_attempts") and not r.get(
+        "material_reached_faces")]
+    if confined or enlarged:
+        lines += ["", "## Grids enlarged, and runs whose material reached an outer face", "",
+                  "A run whose mushroom reached the grid's outer face (y+, z+: a mirror) is run "
+                  "again on a grid 1.5 times wider (docs/taylor.md); those still confined are "
+                  "flagged: their Lf and Dm may be wrong.", ""]
+        lines += [f"- {r['set']} {r['failure']} {r['cells_per_radius']} {r['shot']}: "
+                  + (f"CONFINED at {r['radial_extent_over_R0 [-]']:.3g} R0: "
+                     f"{r['material_reached_faces']}" if r in confined else
+                     f"grid {r['radial_extent_over_R0 [-]']:.3g} R0")
+                  + (f" (before: {r['confined_attempts']})" if r.get("confined_attempts")
+                     else "") for r in confined + enlarged]
     stopped = [r for r in rows if not r["ok"]]
     if stopped:
         lines += ["", "## Stopped runs", ""] + [
@@ -450,9 +473,45 @@ def report(out):
             f"{int(r['exit_code'])}: {r.get('message', '')}" for r in stopped]
     with open(os.path.join(out, "results.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
-    figures(out, rows)
-    print(f"taylor: wrote {out}/results.md and the figures")
+    if draw:
+        figures(out, rows)
+    print(f"taylor: wrote {out}/results.md" + (" and the figures" if draw else ""))
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # a usage error exits 1 (argparse's 2 is our input error)
+        self.print_usage(sys.stderr)
+        print(f"taylor_report: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def main(argv):
+    ap = Parser(prog="taylor_report.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("out", help="the campaign's directory (campaigns/taylor/taylor.py OUT)")
+    ap.add_argument("--tables-only", action="store_true",
+                    help="write results.md only (no figures: needs neither NumPy nor matplotlib)")
+    args = ap.parse_args(argv)
+    table = os.path.join(args.out, "results.csv")
+    if not os.path.isfile(table):
+        print(f"taylor_report: {table}: no such file (run campaigns/taylor/taylor.py "
+              f"{args.out} first)", file=sys.stderr)
+        return 2
+    try:
+        report(args.out, not args.tables_only)
+    except (KeyError, ValueError) as e:
+        print(f"taylor_report: {table}: not a campaign's table ({type(e).__name__}: {e})",
+              file=sys.stderr)
+        return 2
+    except OSError as e:
+        print(f"taylor_report: {e.filename or args.out}: cannot write: {e.strerror}",
+              file=sys.stderr)
+        return 3
+    except KeyboardInterrupt:
+        print("taylor_report: interrupted", file=sys.stderr)
+        return 130
+    return 0
 
 
 if __name__ == "__main__":
-    report(sys.argv[1])
+    sys.exit(main(sys.argv[1:]))

@@ -108,6 +108,39 @@ tris = gci.ladder(vals, hs)
 if gci.asymptotic_check(tris[0], tris[1])[0] is not False:
     failures.append("a ladder whose coarse triple does not contract passed the asymptotic check")
 
+# The range of converged values (gci.converged_range): on phi = 2 - 0.3 h^p at h = 1/3, 1/2.25,
+# 1/1.5 (r21 = 4/3), Richardson's extrapolation of the two finest values with order q is, in
+# closed form, phi1 + (phi1 - phi2) / (r21^q - 1); the range spans q from the formal order 1 to
+# the observed p, each end limited to [0.5, 2]; at q = p it is the power law's limit 2 exactly.
+hs = (1 / 3, 1 / 2.25, 1 / 1.5)
+for p, q_lo, q_hi, clamped in ((1.5, 1.0, 1.5, False), (3.0, 1.0, 2.0, True),
+                               (0.3, 0.5, 1.0, True), (0.7, 0.7, 1.0, False)):
+    phi = tuple(2.0 - 0.3 * x ** p for x in hs)
+    rich = [phi[0] + (phi[0] - phi[1]) / ((4.0 / 3.0) ** q - 1.0) for q in (q_lo, q_hi)]
+    got = gci.converged_range(phi, hs)
+    if (abs(got["order_low"] - q_lo) > 1e-9 or abs(got["order_high"] - q_hi) > 1e-9
+            or got["clamped"] != clamped or abs(got["low"] - min(rich)) > 1e-12
+            or abs(got["high"] - max(rich)) > 1e-12):
+        failures.append(f"range of the power law p = {p}: {got}, want orders [{q_lo}, {q_hi}], "
+                        f"values {sorted(rich)}")
+    if p in (q_lo, q_hi) and min(abs(r - 2.0) for r in rich) > 1e-12:
+        failures.append(f"range of p = {p}: the end at the observed order is not the limit 2")
+# Oscillatory and divergent triples: no power law; the band of the three values, no orders.
+for phi, condition in (((1.0, 1.2, 0.9), "oscillatory"),
+                       ((1.0, 1.2, 1.3), "monotonic divergence"), ((1.0, 1.0, 1.3), "no difference")):
+    got = gci.converged_range(phi, (1.0, 2.0, 4.0))
+    if (got["condition"] != condition or got["low"] != min(phi) or got["high"] != max(phi)
+            or got["order_low"] is not None or got["order_high"] is not None):
+        failures.append(f"range of {phi}: {got}")
+# Quotable: monotonic, order within [0.5, 2], and the asymptotic check passed (not untested).
+mono = gci.gci_triple(tuple(2.0 - 0.3 * x ** 1.5 for x in hs), hs)
+steep = gci.gci_triple(tuple(2.0 - 0.3 * x ** 3.0 for x in hs), hs)
+oscillating = gci.gci_triple((1.0, 1.2, 0.9), (1.0, 2.0, 4.0))
+if [gci.quotable(mono, True), gci.quotable(mono, None), gci.quotable(mono, False),
+        gci.quotable(steep, True), gci.quotable(oscillating, True), gci.quotable(None, True)] != [
+        True, False, False, False, False, False]:
+    failures.append("quotable")
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
