@@ -93,6 +93,8 @@ std::optional<Json> observable(const Json& o, const std::string& path, const Jso
     throw Unreadable(path + "/quotable: expected true or false, got " + quotable->dump());
   out["quotable"] = quotable != o.end() && quotable->get<bool>();
   if (auto range = range_of(o, path)) out["range"] = std::move(*range);
+  // The short verdict (tables before issue 52 lack it: then the status says it at length).
+  if (o.contains("verdict")) out["verdict"] = string_at(o, "verdict", path);
   if (named.is_null()) {
     const Json& values = array_at(o, "values", path);
     if (values.size() != level_count) {

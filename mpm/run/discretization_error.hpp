@@ -27,7 +27,7 @@ std::filesystem::path ladder_table_path(const std::filesystem::path& scene_file)
 /// nullopt when there is no table beside the scene file. Never throws:
 ///   {"table", "level", "ladder_commit", "observables": {name: {"path", "value",
 ///    "extrapolated", "error [-]" (null unless quotable), "gci_fine [-]", "order", "status",
-///    "quotable", "range" (when the table gives one)}}} for a matching level,
+///    "quotable", "range" and "verdict" (when the table gives them)}}} for a matching level,
 ///   {"table", "status": "no level of the ladder matches this scene (fingerprint X)"} else,
 ///   {"table", "status": "unreadable: <reason naming the key path>"} for a malformed table.
 std::optional<Json> discretization_error(const std::string& scene_file,

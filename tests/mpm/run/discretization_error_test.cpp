@@ -132,6 +132,7 @@ BOOST_AUTO_TEST_CASE(an_extrapolation_that_may_not_be_quoted_gives_its_range_not
   depth["quotable"] = false;
   depth["status"] = "implausible order 2.4; not in the asymptotic range";
   depth["range"] = {{"low", 0.0075}, {"high", 0.0081}, {"unit", "m"}, {"basis", "p in [1, 2.43]"}};
+  depth["verdict"] = "order 2.43 outside the plausible [0.5, 2]; not in the asymptotic range";
   const Json e = of(t).at("observables").at("crater depth");
   BOOST_TEST_MESSAGE(e.dump());
   BOOST_TEST(e.at("value").get<double>() == 0.009);
@@ -140,9 +141,14 @@ BOOST_AUTO_TEST_CASE(an_extrapolation_that_may_not_be_quoted_gives_its_range_not
   BOOST_TEST(e.at("range").at("low").get<double>() == 0.0075);
   BOOST_TEST(e.at("range").at("high").get<double>() == 0.0081);
   BOOST_TEST(e.at("range").at("basis") == "p in [1, 2.43]");
+  BOOST_TEST(e.at("verdict") ==
+             "order 2.43 outside the plausible [0.5, 2]; not in the asymptotic range");
   depth.erase("quotable");
   BOOST_TEST(of(t).at("observables").at("crater depth").at("error [-]").is_null());
   BOOST_TEST(of(t).at("observables").at("crater depth").at("quotable") == false);
+  depth["verdict"] = 3;
+  starts(status_of(t.dump()), "/observables/0/verdict: expected a string");
+  depth["verdict"] = "not in the asymptotic range";
   depth["quotable"] = "yes";
   starts(status_of(t.dump()), "/observables/0/quotable: expected true or false");
   depth["quotable"] = false;
