@@ -130,9 +130,10 @@ BOOST_AUTO_TEST_CASE(a_molten_particle_without_a_wave_speed_is_told_the_remedy) 
   const Outcome o = run_to_end(sim);
   BOOST_TEST_REQUIRE(o.failed);
   BOOST_TEST(contains(o.message, "): stress: no wave speed"), o.message);
-  BOOST_TEST(contains(o.message, "the point is molten and stretched beyond its equation of state: "
-                                 "an erosion that drops tension (\"physics\": {\"erosion\": "
-                                 "\"AllowNoTension\"}) lets it fail instead (docs/models.md)"),
+  BOOST_TEST(contains(o.message,
+                      "the point is molten and stretched beyond its equation of state: "
+                      "an erosion that drops tension (\"physics\": {\"erosion\": "
+                      "\"AllowNoTension\"}) lets it fail instead (docs/models.md)"),
              o.message);
 }
 
