@@ -74,6 +74,19 @@ std::size_t ParticlePaths::find(Track& t, const Particles& P) const {
   return P.size();
 }
 
+void ParticlePaths::begin_at(const Particles& P) {
+  struct Start {
+    std::uint32_t track;
+    PointState state;
+  };
+  std::vector<Start> mine;
+  for (std::uint32_t i = 0; i < tracks_.size(); ++i) {
+    const std::size_t p = find(tracks_[i], P);
+    if (p < P.size()) mine.push_back({i, P.state[p]});
+  }
+  for (const Start& s : comm_ ? comm_->concatenate(mine) : mine) tracks_[s.track].start = s.state;
+}
+
 void ParticlePaths::before_step(const Particles& P) {
   for (Track& t : tracks_) {
     const std::size_t p = find(t, P);

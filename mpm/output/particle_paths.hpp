@@ -30,9 +30,15 @@ namespace impact::mpm {
 class ParticlePaths {
  public:
   /// Picks, for every output.particle_paths entry, the particle of its object whose position in
-  /// `initial` (the particles as the run starts, those this rank holds) is nearest to the entry's
-  /// position; of equally near ones the lowest seed index. Collective on several ranks (`comm`).
+  /// `initial` (the particles as seeded, those this rank holds: also for a restarted run, which
+  /// must follow the particle the first run followed) is nearest to the entry's position; of
+  /// equally near ones the lowest seed index. Collective on several ranks (`comm`).
   ParticlePaths(const Scene& scene, const Particles& initial, const Communicator* comm = nullptr);
+
+  /// A restarted run: the paths begin at the restored particles `P` (each track's start state
+  /// becomes its particle's there; the particles were chosen by their seeded positions, as the
+  /// first run chose them). Collective on several ranks.
+  void begin_at(const Particles& P);
 
   bool empty() const { return tracks_.empty(); }
   /// The seed index of path i's particle (scene order).

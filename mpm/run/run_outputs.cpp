@@ -7,12 +7,13 @@ RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Commun
       gauge_extrema_(gauges_.units()),
       observables_(scene, seeded, comm),
       face_reach_(scene, seeded, comm),
+      paths_(std::in_place, scene, seeded, comm),
       faulted_column_(scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle),
       comm_(comm) {}
 
 void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, const Particles& P,
                       const Ledger& ledger, const RunState* resumed) {
-  paths_.emplace(scene, P, comm_);
+  if (resumed) paths_->begin_at(P);  // the particles chosen as seeded, from their state now
   std::vector<std::string> columns = gauges_.columns();
   if (faulted_column_) columns.push_back("faulted_particles [-]");
   const std::string history_file = (dir / "history.csv").string();
