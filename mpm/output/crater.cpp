@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace impact::mpm {
 
@@ -13,113 +14,149 @@ std::uint64_t seed_index(const Particles& P, std::size_t p) {
   return P.id.empty() ? p : P.id[p];
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const std::size_t m = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(m), v.end());
-  const double upper = v[m];
-  if (v.size() % 2 == 1) return upper;
-  return 0.5 * (*std::max_element(v.begin(), v.begin() + std::ptrdiff_t(m)) + upper);
+// The weighted median of u: the smallest u at which the weight below it reaches half.
+double weighted_median(std::vector<FacePoint> face) {
+  std::sort(face.begin(), face.end(),
+            [](const FacePoint& a, const FacePoint& b) { return a.u < b.u; });
+  double total = 0.0;
+  for (const FacePoint& q : face) total += q.weight;
+  double below = 0.0;
+  for (const FacePoint& q : face) {
+    below += q.weight;
+    if (below >= 0.5 * total) return q.u;
+  }
+  return face.back().u;
 }
 
 struct Ring {
-  double n = 0.0, r = 0.0, u = 0.0;  // count, mean radius, mean u
+  double w = 0.0, r = 0.0, u = 0.0;  // weight, then the weighted mean radius and u
 };
+
+// The target's extent along +x from the face at (y, z), in steps of a hundredth of a cell.
+double thickness_along_x(const Geometry& g, double face, double y, double z, double dx,
+                         double upper) {
+  const double step = 0.01 * dx;
+  double x = face + 0.5 * step;
+  while (x < upper && inside(g, Vec3(x, y, z))) x += step;
+  return x - 0.5 * step - face;
+}
 
 }  // namespace
 
-Crater crater_of(const std::vector<double>& u, const std::vector<double>& y,
-                 const std::vector<double>& z, double ring_width,
-                 const std::optional<std::array<double, 2>>& axis, bool axisymmetric) {
+Crater crater_of(const std::vector<FacePoint>& face, double ring_width,
+                 const std::optional<std::array<double, 2>>& axis, bool axisymmetric,
+                 std::optional<double> thickness) {
   Crater c;
   c.ring_width = ring_width;
-  c.face_particles = u.size();
-  if (u.empty()) {
+  c.face_particles = face.size();
+  c.thickness = thickness;
+  if (face.empty()) {
     c.status = "no face particle";
     return c;
   }
-  c.floor_displacement = *std::max_element(u.begin(), u.end());
-  c.far_field_displacement = median(u);
+  c.floor_displacement =
+      std::max_element(face.begin(), face.end(), [](const FacePoint& a, const FacePoint& b) {
+        return a.u < b.u;
+      })->u;
+  c.far_field_displacement = weighted_median(face);
   const double far = c.far_field_displacement, floor = c.floor_displacement;
   const double half = far + 0.5 * (floor - far);
+  c.depth = floor - far;
   // The axis: given, the axis of symmetry, or the bowl's lower half's mean position.
   if (axis) {
     c.axis_y = (*axis)[0];
     c.axis_z = (*axis)[1];
   } else if (!axisymmetric) {
     double n = 0.0, sy = 0.0, sz = 0.0;
-    for (std::size_t i = 0; i < u.size(); ++i) {
-      if (u[i] < half) continue;
+    for (const FacePoint& q : face) {
+      if (q.u < half) continue;
       n += 1.0;
-      sy += y[i];
-      sz += z[i];
+      sy += q.y;
+      sz += q.z;
     }
     c.axis_y = sy / n;  // n >= 1: the deepest particle is at or below half
     c.axis_z = sz / n;
   }
   // An axisymmetric particle is a ring: its y is its radius (the axis is y = 0 there).
-  const auto radius = [&](std::size_t i) {
-    return axisymmetric ? std::abs(y[i]) : std::hypot(y[i] - c.axis_y, z[i] - c.axis_z);
+  const auto radius = [&](const FacePoint& q) {
+    return axisymmetric ? std::abs(q.y) : std::hypot(q.y - c.axis_y, q.z - c.axis_z);
   };
-  // The rings' profile.
-  double largest = 0.0;
-  for (std::size_t i = 0; i < u.size(); ++i) largest = std::max(largest, radius(i));
-  std::vector<Ring> rings(static_cast<std::size_t>(largest / ring_width) + 1);
-  for (std::size_t i = 0; i < u.size(); ++i) {
-    const double r = radius(i);
-    Ring& k = rings[std::min(rings.size() - 1, static_cast<std::size_t>(r / ring_width))];
-    k.n += 1.0;
-    k.r += r;
-    k.u += u[i];
+  if (!(floor > far)) {
+    c.status = "no crater: the face moved as a whole";
+    return c;
   }
-  std::vector<Ring> profile;  // the rings that hold particles, outwards
+  // The rings' weighted profile, from the floor on the axis outwards.
+  double largest = 0.0;
+  for (const FacePoint& q : face) largest = std::max(largest, radius(q));
+  std::vector<Ring> rings(static_cast<std::size_t>(largest / ring_width) + 1);
+  for (const FacePoint& q : face) {
+    const double r = radius(q);
+    Ring& k = rings[std::min(rings.size() - 1, static_cast<std::size_t>(r / ring_width))];
+    k.w += q.weight;
+    k.r += q.weight * r;
+    k.u += q.weight * q.u;
+  }
+  std::vector<Ring> profile = {{1.0, 0.0, floor}};
   for (Ring& k : rings) {
-    if (k.n == 0.0) continue;
-    k.r /= k.n;
-    k.u /= k.n;
+    if (k.w == 0.0) continue;
+    k.r /= k.w;
+    k.u /= k.w;
     profile.push_back(k);
   }
-  // The deepest ring, then outwards the first ring below the half-depth level whose outer
-  // neighbour lies lower (a larger or equal u): the rim crest.
-  const std::size_t deepest = static_cast<std::size_t>(
-      std::max_element(profile.begin(), profile.end(),
-                       [](const Ring& a, const Ring& b) { return a.u < b.u; }) -
-      profile.begin());
-  std::optional<std::size_t> rim;
-  for (std::size_t k = deepest + 1; k + 1 < profile.size(); ++k) {
-    if (profile[k].u < half && profile[k + 1].u >= profile[k].u) {
-      rim = k;
+  // The half-depth radius: the first fall to the half-depth level, linear between the points.
+  std::optional<std::size_t> past;
+  for (std::size_t k = 1; k < profile.size(); ++k) {
+    if (profile[k].u <= half) {
+      past = k;
       break;
     }
   }
-  c.depth = floor - far;
-  if (!rim) {
-    c.status = "no rim: the face's surface rises to its edge (no diameter)";
-    return c;
+  std::ostringstream status;
+  if (!past) {
+    status << "no wall: the surface stays below half the depth out to the face's edge (no "
+              "diameter)";
+  } else {
+    const Ring& a = profile[*past - 1];
+    const Ring& b = profile[*past];
+    const double r_half = a.r + (a.u - half) / (a.u - b.u) * (b.r - a.r);
+    c.diameter = 2.0 * r_half;
+    // A raised rim: the first ring past the half-depth radius whose outer neighbour lies lower and
+    // which stands above the far field.
+    double rim_radius = r_half;
+    for (std::size_t k = *past; k + 1 < profile.size(); ++k) {
+      if (profile[k + 1].u < profile[k].u) continue;
+      if (profile[k].u < far) {
+        rim_radius = profile[k].r;
+        c.rim_diameter = 2.0 * rim_radius;
+        c.rim_to_floor = floor - profile[k].u;
+        c.rim_height = far - profile[k].u;
+      }
+      break;
+    }
+    double inside = 0.0, total = 0.0;
+    for (const FacePoint& q : face) {
+      total += q.weight;
+      inside += radius(q) < rim_radius ? q.weight : 0.0;
+    }
+    c.crater_fraction = inside / total;
+    status << "crater; " << (c.rim_diameter ? "a raised rim" : "no raised rim");
+    if (c.crater_fraction > 0.5)
+      status << "; it covers more than half of the face: the median is no far field";
   }
-  // The ring's own mean radius and height: a parabola through its neighbours overshoots where the
-  // inner one is the crater's steep wall (the rod on the plate: 4.03 mm and 0.66 mm against the
-  // ring's 3.80 mm and 0.82 mm).
-  const double r = profile[*rim].r, u_rim = profile[*rim].u;
-  c.rim_radius = r;
-  c.diameter = 2.0 * r;
-  c.rim_displacement = u_rim;
-  c.rim_to_floor = floor - u_rim;
-  c.rim_height = far - u_rim;
-  double inside = 0.0;
-  for (std::size_t i = 0; i < u.size(); ++i) inside += radius(i) < r ? 1.0 : 0.0;
-  c.crater_fraction = inside / double(u.size());
-  c.status = c.crater_fraction > 0.5
-                 ? "rim found; the crater covers more than half of the face, so the median is "
-                   "no far field"
-                 : "rim found";
+  if (thickness && c.depth >= *thickness) {
+    status << "; perforated: the floor moved " << c.depth << " m, the target is " << *thickness
+           << " m thick there (depth and diameter measure the plug)";
+  }
+  c.status = status.str();
   return c;
 }
 
 CraterMeasure::CraterMeasure(const Scene& scene, const CraterSpec& spec, const Particles& initial,
                              const Communicator* comm)
     : spec_(spec),
+      geometry_(scene.objects[std::size_t(spec.object)].geometry),
       dx_(scene.grid.spacing()(0)),
+      grid_upper_x_(scene.grid.upper(0)),
       axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
       comm_(comm) {
   const Vec3 h = scene.grid.spacing();
@@ -150,25 +187,30 @@ CraterMeasure::CraterMeasure(const Scene& scene, const CraterSpec& spec, const P
 Crater CraterMeasure::measure(const Particles& P) const {
   struct Point {
     std::size_t i;  // the place in the face layer (seed-index order)
-    double u, y, z;
+    FacePoint q;
   };
   std::vector<Point> mine;
   const std::vector<std::vector<ParticleSets::Member>> found = face_.find(P);
   for (const ParticleSets::Member& m : found[0]) {
     if (P.mass[m.p] == 0.0) continue;  // removed (grid.outflow = remove)
     const Vec3& x = P.x[m.p];
-    mine.push_back({m.i, x(0) - face_x0_[m.i](0), x(1), x(2)});
+    mine.push_back({m.i, {x(0) - face_x0_[m.i](0), x(1), x(2), P.volume0[m.p]}});
   }
   // In seed-index order on any number of ranks: the rings' sums add in the same order.
   if (comm_ != nullptr && comm_->size() > 1) mine = comm_->concatenate(mine);
   std::sort(mine.begin(), mine.end(), [](const Point& a, const Point& b) { return a.i < b.i; });
-  std::vector<double> u, y, z;
-  for (const Point& q : mine) {
-    u.push_back(q.u);
-    y.push_back(q.y);
-    z.push_back(q.z);
+  std::vector<FacePoint> face;
+  face.reserve(mine.size());
+  for (const Point& m : mine) face.push_back(m.q);
+  // The target's thickness along x where the deepest particle started.
+  std::optional<double> thickness;
+  if (!mine.empty()) {
+    const Point& deepest = *std::max_element(
+        mine.begin(), mine.end(), [](const Point& a, const Point& b) { return a.q.u < b.q.u; });
+    const Vec3& x0 = face_x0_[deepest.i];
+    thickness = thickness_along_x(geometry_, spec_.face, x0(1), x0(2), dx_, grid_upper_x_);
   }
-  Crater c = crater_of(u, y, z, ring_width_, spec_.axis, axisymmetric_);
+  Crater c = crater_of(face, ring_width_, spec_.axis, axisymmetric_, thickness);
   c.face_particles = face_.ids(0).size();
   return c;
 }
@@ -179,12 +221,12 @@ Json Crater::json(const std::string& object, double face) const {
           {"face [m]", face},
           {"depth [m]", depth},
           {"diameter [m]", or_null(diameter)},
-          {"rim_radius [m]", or_null(rim_radius)},
+          {"rim_diameter [m]", or_null(rim_diameter)},
           {"rim_to_floor_depth [m]", or_null(rim_to_floor)},
           {"rim_height [m]", or_null(rim_height)},
           {"floor_displacement [m]", floor_displacement},
-          {"rim_displacement [m]", or_null(rim_displacement)},
           {"far_field_displacement [m]", far_field_displacement},
+          {"thickness [m]", or_null(thickness)},
           {"axis_yz [m]", Json::array({axis_y, axis_z})},
           {"ring_width [m]", ring_width},
           {"crater_fraction [-]", crater_fraction},

@@ -1,31 +1,37 @@
 // The crater an impact along +x leaves in the face x = face of an object (output.crater;
-// docs/mpm.md#output has the definition and a sketch), measured relative to the target's own
+// docs/mpm.md#the-crater has the definition and a sketch), measured relative to the target's own
 // motion so that depth and diameter are grid observables (issue 52: measured from initial
 // positions, a plate that moved 0.8 mm added it to the depth, and once the grid's dx/2 fell below
 // the plate's dishing every face particle counted as "displaced": a 53 mm "crater" in a 32 mm
 // plate).
-//   u_i     = (x - X0)_x of the face layer's particles (abs(X0_x - face) <= dx), into the target;
-//   R_i     = a particle's current distance from the crater axis;
-//   profile = the mean of u over rings of width w about the axis (w: the cell edge across the
-//             face), at each ring's mean R: the azimuthal mean surface, smooth where the particle
-//             scatter is not;
-//   floor   = max_i u_i (the deepest particle);
-//   far     = the median of u over the face layer: the target's rigid and far-field motion
-//             (the crater covers less than half of the face; `crater_fraction` says when not);
-//   rim     = the rim crest: going out from the deepest ring, the first ring below the half-depth
-//             level (far + (floor - far)/2) whose outer neighbour lies lower, u(k+1) >= u(k);
-//             its mean radius and mean u (to within a ring width, which shrinks with h);
-//   depth   = floor - far: how deep the crater goes below the surface as the target's own motion
-//             has moved it (the apparent depth below the original surface, which moved);
-//   diameter = 2 R_rim, the rim-crest diameter of crater morphometry (Pike 1977), which moves
-//             with the surface around the crater; and the rim-to-floor depth floor - u_rim and
-//             the rim's height far - u_rim (Pike's d_r and the raised rim).
-// Without a rim (the face rises to its edge) the diameter and the rim's measures are null, with a
-// status saying so.
+//   u_i      = (x - X0)_x of the face layer's particles (abs(X0_x - face) <= dx), into the target,
+//              each weighted by its volume (an axisymmetric particle is a ring: its weight grows
+//              with its radius, so weighted statistics are the revolved face's, as in 3D);
+//   R_i      = a particle's current distance from the crater axis;
+//   profile  = the weighted mean of u over rings of width w about the axis (w: the cell edge
+//              across the face) at each ring's mean R, from (0, floor) outwards: the azimuthal
+//              mean surface, smooth where the particle scatter is not;
+//   floor    = max_i u_i (the deepest particle);
+//   far      = the weighted median of u: the target's rigid and far-field motion, the surface's
+//              level away from the crater while the crater covers less than half of the face
+//              (`crater_fraction` says when not; a plate that dishes has no such level);
+//   depth    = floor - far: how deep the crater goes below the surface as the target's own
+//              motion has moved it (the apparent depth below the original surface);
+//   diameter = 2 R_half: the bowl's width at half its depth, where the profile first falls to
+//              far + (floor - far)/2 going out from the axis (linear between the profile's
+//              points): defined for every crater, with or without a rim, and converging with the
+//              grid (a surface-level or rim-crest diameter is not, where the plate dishes or the
+//              rim is a ring wide);
+//   rim      = a raised rim crest: going out past R_half, the first ring whose outer neighbour
+//              lies lower (u(k+1) >= u(k)) and which stands above the far field (u < far):
+//              rim_diameter 2 R_rim (the rim-crest diameter of crater morphometry, Pike 1977),
+//              rim_to_floor_depth floor - u_rim, rim_height far - u_rim; none otherwise;
+//   perforated: floor - far reaches the target's thickness along x at the deepest particle: the
+//              depth and diameter then measure the plug's travel, and the status says so.
 // The axis: output.crater's axis_y/axis_z, or the axis of symmetry (axisymmetric), or the mean
 // current (y, z) of the particles below the half-depth level (the bowl's lower half).
-// On several ranks the face layer is gathered on every rank (a few layers of cells): every rank
-// computes the same crater.
+// On several ranks the face layer is gathered on every rank (a few layers of cells) in seed-index
+// order: every rank computes the one-rank crater.
 #pragma once
 
 #include <optional>
@@ -41,21 +47,27 @@
 namespace impact::mpm {
 
 struct Crater {
-  double depth = 0.0;                      ///< the floor below the far field [m]
-  std::optional<double> diameter;          ///< rim-crest diameter [m]; none without a rim
-  std::optional<double> rim_radius;        ///< [m]
-  std::optional<double> rim_to_floor;      ///< floor - u_rim [m]
-  std::optional<double> rim_height;        ///< far - u_rim: how far the rim stands out [m]
-  std::optional<double> rim_displacement;  ///< u at the rim crest [m]
-  double floor_displacement = 0.0;         ///< max u [m]
-  double far_field_displacement = 0.0;     ///< median u [m]: the target's rigid, far-field motion
-  double axis_y = 0.0, axis_z = 0.0;       ///< the axis [m] (axisymmetric: 0, the axis of symmetry)
-  double ring_width = 0.0;                 ///< [m]
-  double crater_fraction = 0.0;            ///< face particles inside the rim / all [-]
-  std::size_t face_particles = 0;          ///< the face layer: abs(X0_x - face) <= dx
-  std::string status;                      ///< "rim found", or why there is none
+  double depth = 0.0;                   ///< the floor below the far field [m]
+  std::optional<double> diameter;       ///< the bowl's width at half its depth [m]
+  std::optional<double> rim_diameter;   ///< a raised rim's crest diameter [m]
+  std::optional<double> rim_to_floor;   ///< floor - u_rim [m]
+  std::optional<double> rim_height;     ///< far - u_rim > 0: how far the rim stands out [m]
+  double floor_displacement = 0.0;      ///< max u [m]
+  double far_field_displacement = 0.0;  ///< weighted median u [m]: rigid, far-field motion
+  std::optional<double> thickness;      ///< the target along x at the floor's (y0, z0) [m]
+  double axis_y = 0.0, axis_z = 0.0;    ///< the axis [m] (axisymmetric: 0, the axis of symmetry)
+  double ring_width = 0.0;              ///< [m]
+  double crater_fraction = 0.0;         ///< of the face's weight inside the crater [-]
+  std::size_t face_particles = 0;       ///< the face layer: abs(X0_x - face) <= dx
+  std::string status;                   ///< what was found, and what the numbers mean
   /// summary.json "crater".
   Json json(const std::string& object, double face) const;
+};
+
+/// One face particle: its axial displacement into the target u, its current position across the
+/// face (y, z) and its weight (volume) [m, m, m, any].
+struct FacePoint {
+  double u, y, z, weight;
 };
 
 class CraterMeasure {
@@ -69,18 +81,20 @@ class CraterMeasure {
 
  private:
   CraterSpec spec_;
-  double dx_ = 0.0, ring_width_ = 0.0;
+  Geometry geometry_;  ///< the target's (its thickness along x)
+  double dx_ = 0.0, ring_width_ = 0.0, grid_upper_x_ = 0.0;
   bool axisymmetric_ = false;
   ParticleSets face_;          ///< set 0: the face layer
   std::vector<Vec3> face_x0_;  ///< their initial positions, in seed-index order
   const Communicator* comm_;
 };
 
-/// The crater of face particles given as (u, y, z) (current positions across the face), without
-/// the particle bookkeeping: what CraterMeasure computes once the layer is gathered.
-/// `axis`: the fixed axis if any; `axisymmetric`: y is the radius and the axis y = 0.
-Crater crater_of(const std::vector<double>& u, const std::vector<double>& y,
-                 const std::vector<double>& z, double ring_width,
-                 const std::optional<std::array<double, 2>>& axis, bool axisymmetric);
+/// The crater of face particles (current positions across the face), without the particle
+/// bookkeeping: what CraterMeasure computes once the layer is gathered. `axis`: the fixed axis if
+/// any; `axisymmetric`: y is the radius and the axis y = 0; `thickness`: the target's along x at
+/// the floor, for the perforation test (nullopt: not tested).
+Crater crater_of(const std::vector<FacePoint>& face, double ring_width,
+                 const std::optional<std::array<double, 2>>& axis, bool axisymmetric,
+                 std::optional<double> thickness = std::nullopt);
 
 }  // namespace impact::mpm

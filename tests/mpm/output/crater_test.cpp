@@ -1,14 +1,19 @@
-// The crater measure (mpm/output/crater.hpp, docs/mpm.md#output) on face layers written here,
-// whose answers follow by hand:
-// - a ring profile with a bowl, a raised rim and a flat far field: the rim is the first ring
-//   below the half-depth level whose outer neighbour lies lower; depth = floor - far field (the
-//   median), diameter = twice the rim ring's mean radius, rim-to-floor = floor - rim;
-// - the same face moved rigidly by 1 mm: the same depth and diameter (issue 52: the measure from
-//   initial positions added the plate's own motion to the depth), the far field 1 mm further;
-// - a face that rises to its edge (no rim): no diameter, the depth below the far field, and a
-//   status that says so; a rigidly translating face: no crater at all;
-// - in 3D without a given axis: the axis through the bowl's lower half, the centre of a
-//   symmetric bowl.
+// The crater measure (mpm/output/crater.hpp, docs/mpm.md#the-crater) on face layers written here,
+// whose answers follow by hand. Axisymmetric faces: two particles per ring k of width w = 1 mm, at
+// radii (k + 1/4) w and (k + 3/4) w, weighted by their radius as rings are (so the rings' mean
+// radii are (r1^2 + r2^2) / (r1 + r2)):
+// - a bowl 5 mm deep with a raised rim at ring 5 and the far field 0.3 mm into the target: depth
+//   = floor - far, diameter = twice the radius where the profile falls to half the depth
+//   (linear between ring 2 and ring 3), the raised rim's crest, rim-to-floor and height;
+// - the same face moved rigidly by 1 mm: the same depth and diameters (issue 52: the measure from
+//   initial positions added the plate's own motion to the depth);
+// - a face that falls steadily to its edge: a diameter, no raised rim; a rigidly translating
+//   face: no crater at all;
+// - a bump in the wall below half the depth but above the far field is no rim (the audit of
+//   issue 52: on the rod on the plate at 4x the "rim" was a ring inside the plug's wall);
+// - a floor deeper than the target is thick: perforated;
+// - in 3D without a given axis: the axis through the bowl's lower half, the centre of a symmetric
+//   cone, and its width at half depth exactly.
 #include "mpm/output/crater.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -22,55 +27,58 @@ namespace {
 
 constexpr double kW = 1e-3;  // ring width [m]
 
-// An axisymmetric face: two particles per ring k, at radii (k + 1/4) w and (k + 3/4) w, both with
-// u = mm[k] millimetres (+ shift metres).
-struct Face {
-  std::vector<double> u, y, z;
-};
-Face rings_of(const std::vector<double>& mm, double shift = 0.0) {
-  Face f;
+std::vector<FacePoint> rings_of(const std::vector<double>& mm, double shift = 0.0) {
+  std::vector<FacePoint> face;
   for (std::size_t k = 0; k < mm.size(); ++k) {
     for (const double at : {0.25, 0.75}) {
-      f.u.push_back(mm[k] * 1e-3 + shift);
-      f.y.push_back((double(k) + at) * kW);
-      f.z.push_back(0.0);
+      const double r = (double(k) + at) * kW;
+      face.push_back({mm[k] * 1e-3 + shift, r, 0.0, r});
     }
   }
-  return f;
+  return face;
+}
+
+// Ring k's weighted mean radius [m].
+double ring_radius(int k) {
+  const double a = (k + 0.25) * kW, b = (k + 0.75) * kW;
+  return (a * a + b * b) / (a + b);
 }
 
 // A bowl 5 mm deep, walls down to a rim 0.2 mm above the original surface at ring 5, then the far
-// field 0.3 mm into the target (the plate's motion) over 13 rings: the median is 0.3 mm.
+// field 0.3 mm into the target (the plate's motion) over 13 rings: 351 of the 400 mm of weight.
 std::vector<double> bowl() {
   std::vector<double> mm = {5.0, 4.8, 4.0, 2.0, 0.5, -0.2, 0.1};
   mm.resize(20, 0.3);
   return mm;
 }
 
-Crater axisymmetric(const Face& f) {
-  return crater_of(f.u, f.y, f.z, kW, std::nullopt, true);
+Crater axisymmetric(const std::vector<FacePoint>& f, std::optional<double> thickness = {}) {
+  return crater_of(f, kW, std::nullopt, true, thickness);
 }
 
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(mpm_crater)
 
-BOOST_AUTO_TEST_CASE(the_rim_is_the_first_low_ring_past_the_half_depth_level) {
+BOOST_AUTO_TEST_CASE(a_bowl_with_a_raised_rim) {
   const Crater c = axisymmetric(rings_of(bowl()));
   BOOST_TEST_MESSAGE(c.json("target", 0.0).dump());
-  BOOST_TEST(c.status == "rim found");
   BOOST_TEST(c.floor_displacement == 5e-3);
   BOOST_TEST(c.far_field_displacement == 0.3e-3);
-  // The rim: ring 5 (u = -0.2 mm < 2.65 mm, and ring 6 lies lower at 0.1 mm), mean radius 5.5 mm.
-  BOOST_REQUIRE(c.diameter.has_value());
-  BOOST_TEST(*c.rim_radius == 5.5e-3, tt::tolerance(1e-12));
-  BOOST_TEST(*c.diameter == 11e-3, tt::tolerance(1e-12));
-  BOOST_TEST(*c.rim_displacement == -0.2e-3, tt::tolerance(1e-12));
   BOOST_TEST(c.depth == 4.7e-3, tt::tolerance(1e-12));
+  // Half the depth, 2.65 mm, falls between ring 2 (4.0 mm) and ring 3 (2.0 mm).
+  const double r_half =
+      ring_radius(2) + (4.0 - 2.65) / (4.0 - 2.0) * (ring_radius(3) - ring_radius(2));
+  BOOST_REQUIRE(c.diameter.has_value());
+  BOOST_TEST(*c.diameter == 2.0 * r_half, tt::tolerance(1e-12));
+  // The raised rim: ring 5 (-0.2 mm: above the far field; ring 6 lies lower).
+  BOOST_REQUIRE(c.rim_diameter.has_value());
+  BOOST_TEST(*c.rim_diameter == 2.0 * ring_radius(5), tt::tolerance(1e-12));
   BOOST_TEST(*c.rim_to_floor == 5.2e-3, tt::tolerance(1e-12));
   BOOST_TEST(*c.rim_height == 0.5e-3, tt::tolerance(1e-12));
-  // Inside the rim: rings 0-4 and ring 5's inner particle, 11 of 40.
-  BOOST_TEST(c.crater_fraction == 11.0 / 40.0);
+  // Inside the rim crest: rings 0-4 (25 mm of weight) and ring 5's inner particle (5.25 mm).
+  BOOST_TEST(c.crater_fraction == 30.25 / 400.0, tt::tolerance(1e-12));
+  BOOST_TEST(c.status == "crater; a raised rim");
   BOOST_TEST(c.axis_y == 0.0);
   BOOST_TEST(c.axis_z == 0.0);
 }
@@ -80,6 +88,7 @@ BOOST_AUTO_TEST_CASE(a_rigid_motion_of_the_target_changes_neither_depth_nor_diam
   const Crater moved = axisymmetric(rings_of(bowl(), 1e-3));
   BOOST_TEST(moved.depth == at_rest.depth, tt::tolerance(1e-12));
   BOOST_TEST(*moved.diameter == *at_rest.diameter, tt::tolerance(1e-12));
+  BOOST_TEST(*moved.rim_diameter == *at_rest.rim_diameter, tt::tolerance(1e-12));
   BOOST_TEST(*moved.rim_to_floor == *at_rest.rim_to_floor, tt::tolerance(1e-12));
   BOOST_TEST(moved.far_field_displacement == at_rest.far_field_displacement + 1e-3,
              tt::tolerance(1e-12));
@@ -87,46 +96,68 @@ BOOST_AUTO_TEST_CASE(a_rigid_motion_of_the_target_changes_neither_depth_nor_diam
   BOOST_TEST(moved.floor_displacement == 6e-3, tt::tolerance(1e-12));
 }
 
-BOOST_AUTO_TEST_CASE(a_face_without_a_rim_has_no_diameter_and_a_depth_below_the_far_field) {
+BOOST_AUTO_TEST_CASE(a_face_falling_to_its_edge_has_a_diameter_and_no_raised_rim) {
   std::vector<double> mm;
-  for (int k = 0; k < 20; ++k) mm.push_back(5.0 - 0.25 * k);  // falls to the edge: no rim
+  for (int k = 0; k < 20; ++k) mm.push_back(5.0 - 0.25 * k);
   const Crater c = axisymmetric(rings_of(mm));
   BOOST_TEST_MESSAGE(c.status);
-  BOOST_TEST(!c.diameter.has_value());
-  BOOST_TEST(c.json("plate", 0.0).at("diameter [m]").is_null());
-  BOOST_TEST(c.json("plate", 0.0).at("rim_to_floor_depth [m]").is_null());
-  BOOST_TEST(c.status.find("no rim") == 0u);
-  // The median of 40 values: the mean of rings 9 and 10's, 2.75 and 2.5 mm.
-  BOOST_TEST(c.far_field_displacement == 2.625e-3, tt::tolerance(1e-12));
-  BOOST_TEST(c.depth == 5e-3 - 2.625e-3, tt::tolerance(1e-12));
+  // The weighted median: sorted by u, half of the 400 mm of weight is reached in ring 14 (1.5 mm).
+  BOOST_TEST(c.far_field_displacement == 1.5e-3, tt::tolerance(1e-12));
+  BOOST_TEST(c.depth == 3.5e-3, tt::tolerance(1e-12));
+  // Half the depth, 3.25 mm, is ring 7's u exactly.
+  BOOST_TEST(*c.diameter == 2.0 * ring_radius(7), tt::tolerance(1e-12));
+  BOOST_TEST(!c.rim_diameter.has_value());
+  BOOST_TEST(c.json("plate", 0.0).at("rim_diameter [m]").is_null());
+  BOOST_TEST(c.status == "crater; no raised rim");
 
   // A face translating rigidly (every u 0.4 mm): no crater at all.
   const Crater rigid = axisymmetric(rings_of(std::vector<double>(20, 0.4)));
   BOOST_TEST(!rigid.diameter.has_value());
   BOOST_TEST(rigid.depth == 0.0);
   BOOST_TEST(rigid.far_field_displacement == 0.4e-3, tt::tolerance(1e-12));
+  BOOST_TEST(rigid.status == "no crater: the face moved as a whole");
+}
+
+BOOST_AUTO_TEST_CASE(a_bump_in_the_wall_is_no_rim) {
+  // Ring 3 (2.1 mm) above ring 2 (2.0 mm): below half the depth, but far above the far field.
+  std::vector<double> mm = {5.0, 4.8, 2.0, 2.1, 0.8, 0.6, 0.7};
+  mm.resize(20, 0.3);
+  const Crater c = axisymmetric(rings_of(mm));
+  BOOST_TEST(!c.rim_diameter.has_value());
+  const double r_half =
+      ring_radius(1) + (4.8 - 2.65) / (4.8 - 2.0) * (ring_radius(2) - ring_radius(1));
+  BOOST_TEST(*c.diameter == 2.0 * r_half, tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(a_floor_deeper_than_the_target_is_thick_is_a_perforation) {
+  const Crater c = axisymmetric(rings_of(bowl()), 4e-3);
+  BOOST_TEST_MESSAGE(c.status);
+  BOOST_TEST(c.status.find("; perforated: the floor moved 0.0047 m, the target is 0.004 m thick") !=
+             std::string::npos);
+  BOOST_TEST(axisymmetric(rings_of(bowl()), 6e-3).status == "crater; a raised rim");
 }
 
 BOOST_AUTO_TEST_CASE(the_axis_of_a_3d_crater_runs_through_the_lower_half_of_its_bowl) {
   // A square lattice of 0.5 mm about (y, z) = (11.4, -3.8) mm with a cone-shaped bowl of radius
-  // 4 mm, 3 mm deep: the particles below the half-depth level lie symmetrically about the centre.
+  // 4 mm, 3 mm deep: the particles below the half-depth level lie symmetrically about the centre,
+  // and a ring's mean u is the cone's u at the ring's mean radius, so the half depth is crossed
+  // at r = 2 mm exactly.
   const double cy = 11.4e-3, cz = -3.8e-3;
-  std::vector<double> u, y, z;
+  std::vector<FacePoint> face;
   for (int i = -40; i <= 40; ++i) {
     for (int j = -40; j <= 40; ++j) {
       const double r = 0.5e-3 * std::hypot(i, j);
-      u.push_back(r < 4e-3 ? 3e-3 * (1.0 - r / 4e-3) : 0.0);
-      y.push_back(cy + 0.5e-3 * i);
-      z.push_back(cz + 0.5e-3 * j);
+      face.push_back(
+          {r < 4e-3 ? 3e-3 * (1.0 - r / 4e-3) : 0.0, cy + 0.5e-3 * i, cz + 0.5e-3 * j, 1.0});
     }
   }
-  const Crater c = crater_of(u, y, z, kW, std::nullopt, false);
+  const Crater c = crater_of(face, kW, std::nullopt, false);
   BOOST_TEST(c.axis_y == cy, tt::tolerance(1e-12));
   BOOST_TEST(c.axis_z == cz, tt::tolerance(1e-12));
-  BOOST_TEST(c.depth == 3e-3, tt::tolerance(1e-12));          // the far field at rest
-  BOOST_TEST(*c.rim_to_floor == 3e-3, tt::tolerance(1e-12));  // the rim on the original surface
+  BOOST_TEST(c.depth == 3e-3, tt::tolerance(1e-12));
+  BOOST_TEST(*c.diameter == 4e-3, tt::tolerance(1e-9));
   // Given, the axis is taken as it is.
-  const Crater given = crater_of(u, y, z, kW, std::array<double, 2>{0.0, 0.0}, false);
+  const Crater given = crater_of(face, kW, std::array<double, 2>{0.0, 0.0}, false);
   BOOST_TEST(given.axis_y == 0.0);
 }
 
