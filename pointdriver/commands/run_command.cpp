@@ -64,15 +64,8 @@ int command_run(const std::vector<std::string>& args) {
       o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
   std::filesystem::path stem = out;
   stem.replace_extension();
-  if (out.has_parent_path()) {  // -o DIR/OUT.csv into a new DIR, as mpm run --out makes its DIR
-    try {
-      create_output_directory(out.parent_path());
-    } catch (const OutputError& e) {
-      std::cerr << "pointdriver run: " << e.what() << '\n';
-      return cli::kExitFailed;
-    }
-  }
-  // Refused before anything is written when it cannot fit (a leg of 1e9 steps: 440 GB of CSV).
+  // Refused before anything is written when it cannot fit (a leg of 1e9 steps: 440 GB of CSV);
+  // a new -o directory is not made for a refused run.
   const RunEstimate estimate = estimate_run(path);
   if (o.verbosity.verbose) {
     std::cerr << "pointdriver run: estimated " << estimate.rows << " rows, CSV "
@@ -84,6 +77,14 @@ int command_run(const std::vector<std::string>& args) {
   if (!refusal.empty()) {
     std::cerr << "pointdriver run: " << refusal << '\n';
     return cli::kExitRefused;
+  }
+  if (out.has_parent_path()) {  // -o DIR/OUT.csv into a new DIR, as mpm run --out makes its DIR
+    try {
+      create_output_directory(out.parent_path());
+    } catch (const OutputError& e) {
+      std::cerr << "pointdriver run: " << e.what() << '\n';
+      return cli::kExitFailed;
+    }
   }
   RunResult r;
   try {

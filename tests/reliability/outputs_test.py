@@ -135,6 +135,13 @@ def run_refused_for_the_csv(bin_dir, source, work):
                preexec_fn=limited(fsize=100_000_000_000), timeout=60)
     assert "the CSV would take an estimated 4.4e+05 MB (1e+09 rows" in done.stderr, done.stderr
     same_files(out, before)
+    # Into a directory still to be made: the free space of its nearest existing ancestor, and a
+    # refused run leaves no directory behind (it made it, before).
+    new = os.path.join(work, "new", "deeper")
+    done = run([exe, "run", path_with(source, work, 1000000000), "-o", os.path.join(new, "p.csv")],
+               4, preexec_fn=limited(fsize=100_000_000_000), timeout=60)
+    assert "the CSV would take an estimated 4.4e+05 MB (1e+09 rows" in done.stderr, done.stderr
+    assert not os.path.exists(os.path.join(work, "new")), os.listdir(work)
 
 
 def run_refused_for_memory(bin_dir, source, work):
