@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Every program and command accepts the same flags (support/command_line.hpp): --version and
---help exit 0 (3 when stdout cannot be written: > /dev/full), an unknown option is a usage error (1), --out=DIR works as --out DIR, --quiet
+--help exit 0 (3 when stdout cannot be written: > /dev/full), a command's --help ends with its
+own exit codes, an unknown option is a usage error (1), --out=DIR works as --out DIR, --quiet
 leaves stdout empty, a malformed --set (also one that is no JSON object, '[1]', and a truncated
 one holding 1e999) is a usage error wherever a JSON file is read, and a --set number no double
 holds (-1e400) is an input error (2) naming the patch and the key.
@@ -87,6 +88,11 @@ def main(bin_dir, source, work):
         r = run(words, ["--help"])
         if r.returncode != 0 or "--quiet" not in r.stdout or "--version" not in r.stdout:
             failures.append(f"{name}: --help exit {r.returncode} or lacks --quiet/--version")
+        # The command's own footer: one list of exit codes, not the whole program's text (every
+        # mpm command printed what `run` writes and what `plot` and `keys` do).
+        if r.stdout.count("Exit codes:") != 1 or (name not in ("mpm_run", "run")
+                                                   and "history.csv" in r.stdout):
+            failures.append(f"{name}: --help footer is not the command's: {r.stdout[-400:]!r}")
         failures += help_to_a_full_stdout(name, words)
         r = run(words, args + ["--no-such-flag"])
         if r.returncode != 1 or "--no-such-flag" not in r.stderr:
