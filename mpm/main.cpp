@@ -8,10 +8,15 @@
 //   mpm plot RUN [--out FIG]
 //   mpm keys [--format md|json]
 // Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path; a refused restart),
-// 3 run failure (numerical fault), 4 memory estimate above the available memory, 128 + signal
-// after a checkpoint on SIGINT (130) or SIGTERM (143).
+// 3 run failure (numerical fault), 4 refused before the start (the memory estimate above the
+// available memory, or the estimated steps above time.max_estimated_steps), 128 + signal after a
+// checkpoint on SIGINT (130) or SIGTERM (143).
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -24,6 +29,7 @@
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"
 #include "mpm/run/scene_fingerprint.hpp"
+#include "mpm/run/step_estimate.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/simulation/simulation.hpp"
 #include "support/command_line.hpp"
@@ -32,25 +38,49 @@
 
 namespace {
 
+// The end of each --help: what the command writes and its exit codes (mpm --help: every command).
 const char* kFooter =
-    "run writes DIR/history.csv (energy and momentum ledger), DIR/particles/step_NNNNNN.vtu +\n"
+    "mpm COMMAND --help gives a command's options, outputs and exit codes. Scene keys:\n"
+    "docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused restart or\n"
+    "replacement), 3 run failure or an output not written, 4 refused before the start (memory\n"
+    "or step estimate), 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
+const char* kRunFooter =
+    "Writes DIR/history.csv (energy and momentum ledger), DIR/particles/step_NNNNNN.vtu +\n"
     "DIR/particles.pvd (ParaView), DIR/summary.json, DIR/scene.json (resolved), DIR/status.json\n"
     "and DIR/checkpoint.bin (every output.checkpoint_interval_steps steps, and on SIGINT or\n"
     "SIGTERM, after which the run stops with 128 + the signal number). DIR defaults to the\n"
     "scene's output.directory; a new run first removes a previous run's files there (it refuses\n"
     "to replace an unfinished run's checkpoint without --overwrite; --restart keeps them). On\n"
-    "success run prints one line: steps, wall time, energy error and DIR. run and check refuse\n"
-    "(exit 4) a scene whose memory estimate exceeds the available memory. Under mpirun -np N\n"
-    "(or srun), with a build that has MPI, the grid is split into N boxes\n"
-    "(solver.ranks_per_axis, or the split cutting the fewest node faces); check --ranks N plans\n"
-    "it. Rank 0 writes every file (docs/mpi.md).\n"
-    "plot RUN draws RUN's energy books, energy error, momentum and observables into\n"
-    "RUN/run.png (or --out FIG ending in .png, .pdf or .svg; python3 + matplotlib); a figure\n"
-    "or stdout it cannot write is exit 3, stdout closed by its reader (| head) 141.\n"
-    "keys prints every scene key the reader knows: type, range, default, meaning.\n"
-    "Scene keys: docs/scenes.md. Exit codes: 0 ok, 1 usage, 2 input error (or a refused\n"
-    "restart or replacement), 3 run failure, 4 not enough memory, 130 SIGINT, 143 SIGTERM\n"
-    "(checkpoint written).\n";
+    "success it prints one line: steps, wall time, energy error and DIR. Under mpirun -np N (or\n"
+    "srun), with a build that has MPI, the grid is split into N boxes (solver.ranks_per_axis, or\n"
+    "the split cutting the fewest node faces; check --ranks N plans it); rank 0 writes every\n"
+    "file (docs/mpi.md).\n"
+    "Exit codes: 0 completed, 1 usage, 2 input error (or a refused restart or replacement), 3\n"
+    "run failure or an output not written, 4 refused before anything is written: the memory\n"
+    "estimate exceeds the available memory, or the estimated steps time.max_estimated_steps\n"
+    "(docs/mpm.md#memory-and-step-estimates), 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
+const char* kCheckFooter =
+    "Prints one JSON document: \"resolved\" (the scene after extends and --set),\n"
+    "\"warnings\", \"refusal\" (why mpm run would refuse the scene, or \"\") and \"report\":\n"
+    "particles, mass and volume per object, the memory estimate, the estimated steps, the\n"
+    "gauges' particles, the fingerprint and with --ranks N the split over N ranks\n"
+    "(docs/mpi.md); no report when the memory estimate refuses the scene (nothing is seeded).\n"
+    "Exit codes: 0 valid, 1 usage, 2 input error, 3 stdout not written, 4 mpm run would refuse\n"
+    "the scene (the memory or step estimate; the reason on stderr).\n";
+const char* kStudyFooter =
+    "study SCENE_DIR runs every case*.json (and recommended.json) into OUT/<case>/ and writes\n"
+    "OUT/study.json, OUT/summary.csv, OUT/summary.md and the figures (docs/sphere_cylinder.md);\n"
+    "study --ladder L1,L2,... SCENE.json runs the scene at each level of its cells per axis\n"
+    "(docs/accuracy.md#grid-convergence-ladders).\n"
+    "Exit codes: 0 every case completed, 1 usage, 2 input error, 3 a case failed, 130 SIGINT.\n";
+const char* kPlotFooter =
+    "Draws RUN's energy books, energy error, momentum and observables into RUN/run.png (or\n"
+    "--out FIG ending in .png, .pdf or .svg; python3 + matplotlib).\n"
+    "Exit codes: 0 drawn, 1 usage (or no python3 or matplotlib), 2 RUN is not a run directory,\n"
+    "3 the figure or stdout could not be written, 141 stdout closed by its reader (| head).\n";
+const char* kKeysFooter =
+    "Prints every scene key the reader knows: type, range, default, meaning (docs/scenes.md).\n"
+    "Exit codes: 0 printed, 1 usage, 3 stdout not written.\n";
 
 /// Comma-separated, no empty items.
 bool parse_list(const std::string& text, std::vector<std::string>& items) {
@@ -63,6 +93,26 @@ bool parse_list(const std::string& text, std::vector<std::string>& items) {
     if (comma == std::string::npos) return true;
     start = comma + 1;
   }
+}
+
+// What is wrong with `mpm study --ladder LEVELS` (empty: nothing): checked here, so that the
+// message names --ladder; ladder.py, which names its own --levels, then refuses only two levels
+// that give the same cells (it needs the scene for that).
+std::string ladder_levels_problem(const std::string& text) {
+  std::vector<std::string> items;
+  std::vector<double> levels;
+  if (!parse_list(text, items)) return "expected comma-separated levels, e.g. --ladder 1,1.5,2.25";
+  for (const std::string& item : items) {
+    char* end = nullptr;
+    const double level = std::strtod(item.c_str(), &end);
+    if (end != item.c_str() + item.size() || !std::isfinite(level) || !(level > 0.0))
+      return "expected positive numbers (multipliers of the scene's cells per axis), got '" + item +
+             "' in '" + text + "'";
+    if (std::find(levels.begin(), levels.end(), level) != levels.end())
+      return "the level '" + item + "' is repeated in '" + text + "'";
+    levels.push_back(level);
+  }
+  return {};
 }
 
 int usage_error(const std::string& message) {
@@ -81,6 +131,36 @@ int print_scene_keys(const std::string& format) {
     std::cout << impact::keys_markdown(keys.keys(), name);
   }
   return 0;
+}
+
+// `mpm check`: one JSON document on stdout, the keys of Python's impact.check_scene: the resolved
+// scene, its warnings, why mpm run would refuse it ("" when it would not) and, unless the memory
+// estimate refuses it (then nothing is seeded), the report: particles, mass, memory, steps.
+int check_scene(const impact::mpm::Scene& scene, const std::vector<std::string>& warnings,
+                int threads, int plan_ranks) {
+  impact::Json out = {{"resolved", scene.resolved}, {"warnings", warnings}};
+  const std::string memory = impact::mpm::memory_refusal(scene);
+  const std::string refusal = memory.empty() ? impact::mpm::step_refusal(scene) : memory;
+  out["refusal"] = refusal;
+  if (memory.empty()) {
+    out["report"] = impact::mpm::check_report(scene, impact::mpm::run_threads(threads), plan_ranks);
+  }
+  std::cout << out.dump(2) << '\n';
+  if (refusal.empty()) return 0;
+  std::cerr << "mpm: check: mpm run would refuse this scene: " << refusal << '\n';
+  return impact::mpm::kExitMemory;
+}
+
+// A run writes its resolved scene to DIR/scene.json: a scene file that is that file would be
+// overwritten (the user's extends and comments lost). Why, or empty.
+std::string overwritten_scene(const impact::mpm::Scene& scene, const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  const fs::path dir = out_dir.empty() ? fs::path(scene.output.directory) : fs::path(out_dir);
+  std::error_code ec;
+  if (!fs::equivalent(dir / "scene.json", scene.file, ec)) return {};
+  return scene.file + ": is " + (dir / "scene.json").string() + ", which the run replaces with " +
+         "the resolved scene (" + (out_dir.empty() ? "/output/directory" : "--out") + " " +
+         dir.string() + "): give the scene another name or the run another directory";
 }
 
 int run_main(int argc, char** argv) {
@@ -175,7 +255,11 @@ int run_main(int argc, char** argv) {
   // mpm --help lists the commands; each command's --help its options, the common ones included.
   app.footer(kFooter);
   app.set_version_flag("--version", std::string("mpm ") + IMPACT_VERSION);
-  for (CLI::App* c : {run, check, study, plot, keys}) impact::cli::describe(*c, kFooter, verbosity);
+  impact::cli::describe(*run, kRunFooter, verbosity);
+  impact::cli::describe(*check, kCheckFooter, verbosity);
+  impact::cli::describe(*study, kStudyFooter, verbosity);
+  impact::cli::describe(*plot, kPlotFooter, verbosity);
+  impact::cli::describe(*keys, kKeysFooter, verbosity);
   if (const auto code = impact::cli::parse(app, argc, argv, verbosity)) return *code;
   if (plot->parsed()) return impact::mpm::plot_run(plot_run, plot_figure);
   if (keys->parsed()) {
@@ -212,11 +296,12 @@ int run_main(int argc, char** argv) {
     return usage_error("run: missing SCENE.json (or --restart DIR)");
   }
   std::vector<impact::Json> patches;
+  impact::mpm::ExtendsChain chain;  // the scene file's, for messages
   try {
     patches = impact::cli::patches_of(set_texts);
     if (study->parsed() && study->get_option("--ladder")->count() > 0) {
-      if (ladder_levels.empty())
-        return usage_error("study --ladder: expected levels, e.g. --ladder 1,1.5,2.25");
+      if (const std::string problem = ladder_levels_problem(ladder_levels); !problem.empty())
+        return usage_error("study --ladder: " + problem);
       if (!cases.empty()) return usage_error("study --ladder runs one scene: no --cases");
       impact::mpm::LadderOptions ladder;
       ladder.scene_file = scene_file;
@@ -240,31 +325,27 @@ int run_main(int argc, char** argv) {
     options.handle_signals = true;
     options.report = comm.root();  // one rank prints the outcome
     if (!restart_dir.empty()) return impact::mpm::restart(restart_dir, options);
-    impact::Json document = impact::mpm::load_scene_document(scene_file);
+    impact::Json document = impact::mpm::load_scene_document(scene_file, &chain);
     for (const impact::Json& patch : patches) document.merge_patch(patch);
     const impact::mpm::Scene scene = impact::mpm::read_scene(document, scene_file);
-    for (const std::string& w :
-         impact::cli::set_origins(scene_file, patches).attribute(scene.warnings))
-      std::cerr << "mpm: warning: " << w << '\n';
+    const std::vector<std::string> warnings = impact::mpm::extends_origins(chain).attribute(
+        impact::cli::set_origins(scene_file, patches).attribute(scene.warnings));
+    for (const std::string& w : warnings) std::cerr << "mpm: warning: " << w << '\n';
     if (verbosity.verbose) std::cerr << scene.resolved.dump(2) << '\n';
     if (check->parsed() && fingerprint_only) {
       std::cout << impact::mpm::scene_fingerprint(scene.resolved) << '\n';
       return 0;
     }
-    if (check->parsed()) {
-      std::cout << scene.resolved.dump(2) << '\n';
-      const int threads = impact::mpm::run_threads(options.threads);
-      // An oversized scene is reported without seeding it.
-      if (const std::string refusal = impact::mpm::memory_refusal(scene); !refusal.empty()) {
-        std::cerr << "mpm: check: mpm run would refuse this scene: " << refusal << '\n';
-        return impact::mpm::kExitMemory;
-      }
-      std::cout << impact::mpm::check_report(scene, threads, plan_ranks).dump(2) << '\n';
-      return 0;
-    }
+    if (check->parsed()) return check_scene(scene, warnings, options.threads, plan_ranks);
+    if (const std::string clash = overwritten_scene(scene, options.out_dir); !clash.empty())
+      throw impact::InputError({clash});
     return impact::mpm::run(scene, options);
   } catch (const impact::InputError& e) {
-    std::cerr << impact::cli::set_origins(scene_file, patches).attribute(e).what() << '\n';
+    // A key a --set patch set names the patch; one a base scene set, the base.
+    std::cerr << impact::mpm::extends_origins(chain)
+                     .attribute(impact::cli::set_origins(scene_file, patches).attribute(e))
+                     .what()
+              << '\n';
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "mpm: " << e.what() << '\n';

@@ -56,13 +56,14 @@ int main(int argc, char** argv) {
     print_usage(std::cerr);
     return impact::cli::kExitUsage;
   }
+  // Checked like every output: --help > /dev/full exits 3, not 0.
   if (args[0] == "--help" || args[0] == "-h") {
     print_usage(std::cout);
-    return 0;
+    return impact::cli::stdout_checked(0, "pointdriver");
   }
   if (args[0] == "--version") {
     std::cout << "pointdriver " << IMPACT_VERSION << '\n';
-    return 0;
+    return impact::cli::stdout_checked(0, "pointdriver");
   }
   for (const auto& c : commands()) {
     if (args[0] == c.name) {

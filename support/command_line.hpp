@@ -10,14 +10,18 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <optional>
 #include <streambuf>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "models/core/input.hpp"
@@ -75,17 +79,59 @@ inline void describe(CLI::App& app, const std::string& footer, Verbosity& verbos
   app.get_formatter()->column_width(34);
 }
 
-/// Accepts a JSON text, else says why (a CLI11 check: a malformed --set is a usage error). A
-/// number no double holds (1e999) is valid JSON: patches_of reports it as an input error.
-inline std::string json_text_error(const std::string& text) {
-  try {
-    const Json parsed = Json::parse(text);
-    return std::string(parsed.is_discarded() ? "invalid JSON" : "");
-  } catch (const Json::parse_error& e) {
-    return std::string("invalid JSON: ") + e.what();
-  } catch (const Json::exception&) {
-    return "";
+/// `text` with every number no double holds (1e999) replaced by 0 and spaces, the strings left
+/// alone: its syntax can then be checked apart from the range of its numbers.
+inline std::string with_huge_numbers_zeroed(const std::string& text) {
+  const std::string_view number_chars = "0123456789+-.eE";
+  std::string out;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (in_string || c == '"') {
+      out += c;
+      if (in_string && c == '\\' && i + 1 < text.size()) out += text[++i];
+      in_string = c == '"' ? !in_string : in_string;
+      ++i;
+      continue;
+    }
+    if (c != '-' && !std::isdigit(static_cast<unsigned char>(c))) {
+      out += c;
+      ++i;
+      continue;
+    }
+    std::size_t end = i + 1;
+    while (end < text.size() && number_chars.find(text[end]) != std::string_view::npos) ++end;
+    const std::string token = text.substr(i, end - i);
+    // 0 padded to the token's length: a syntax error keeps its byte position
+    out += std::isinf(std::strtod(token.c_str(), nullptr))
+               ? "0" + std::string(token.size() - 1, ' ')
+               : token;
+    i = end;
   }
+  return out;
+}
+
+/// Accepts the text of a JSON object (a merge patch), else says why: a CLI11 check, so that a
+/// malformed --set is a usage error (exit 1), a truncated one holding 1e999 too. A number no
+/// double holds in a patch that is otherwise valid is an input error of patches_of (exit 2).
+inline std::string set_patch_error(const std::string& text) {
+  Json parsed;
+  try {
+    try {
+      parsed = Json::parse(text);
+    } catch (const Json::out_of_range&) {  // 1e999: is the rest valid?
+      parsed = Json::parse(with_huge_numbers_zeroed(text));
+    }
+  } catch (const Json::exception& e) {
+    return std::string("invalid JSON: ") + e.what();
+  }
+  if (!parsed.is_object()) {
+    std::string shown = parsed.dump();
+    if (shown.size() > 40) shown = shown.substr(0, 37) + "...";
+    return std::string("expected a JSON object, a merge patch such as '{\"key\": value}', got ") +
+           parsed.type_name() + " " + shown;
+  }
+  return "";
 }
 
 /// --set PATCH (repeatable): JSON merge patches over `what`, checked as JSON when parsed.
@@ -93,7 +139,7 @@ inline CLI::Option* add_set(CLI::App& app, std::vector<std::string>& patches,
                             const std::string& what) {
   return app.add_option("--set", patches, "JSON merge patch over " + what + " (repeatable)")
       ->type_name("JSON")
-      ->check(json_text_error, "")
+      ->check(set_patch_error, "")
       ->allow_extra_args(false);  // one patch per --set: "--set P SCENE.json" keeps the scene
 }
 

@@ -5,6 +5,10 @@
 // when the last patch that touched the key set that key, one above it or one below it. A problem
 // at a material reference ("/materials/al/file: in material al.json: /density: ...") is the
 // patch's when the patch set that material's overrides at the same key (.../overrides/density).
+// An unknown key of the file in a block whose "type" a patch set is the patch's too: the new type
+// does not take it, and the patch can delete it.
+// The files of a scene's extends chain are merge patches too: a problem at a key a base scene
+// set names that base (mpm/input/scene_reader.hpp extends_origins).
 #pragma once
 
 #include <functional>
@@ -18,10 +22,12 @@ namespace impact {
 
 class PatchOrigins {
  public:
-  /// `patches` as merged over `file` (in order); `name(k)` is what messages call patch k.
+  /// `patches` as merged over `file` (in order); `name(k)` is what messages call patch k. With
+  /// `over_file` a message names "NAME (over FILE)", else NAME alone; a patch named "" leaves the
+  /// message as it is (a scene's own document, last of its extends chain).
   PatchOrigins(std::string file, const std::vector<Json>& patches,
-               const std::function<std::string(std::size_t)>& name)
-      : file_(std::move(file)) {
+               const std::function<std::string(std::size_t)>& name, bool over_file = true)
+      : file_(std::move(file)), over_file_(over_file) {
     for (std::size_t k = 0; k < patches.size(); ++k) {
       std::vector<std::string> keys;
       leaves(patches[k], "", keys);
@@ -48,9 +54,21 @@ class PatchOrigins {
         patch = &name;
       }
     }
-    if (patch == nullptr) return message;
-    return (warning ? kWarning : "") + *patch + " (over " + file_ +
-           "): " + message.substr(key_start);
+    // A key of the file left without a meaning by a patch that changed its block's type: the
+    // patch's doing, and the patch can delete it.
+    const std::size_t leaf = key.rfind('/');
+    std::string orphaned;
+    if (patch == nullptr && leaf != std::string::npos && rest.rfind("unknown key", 0) == 0) {
+      for (const auto& [set_key, name] : set_) {
+        if (set_key != key.substr(0, leaf) + "/type") continue;
+        patch = &name;
+        orphaned = "; the patch's type does not take it: delete it in the patch (\"" +
+                   key.substr(leaf + 1) + "\": null)";
+      }
+    }
+    if (patch == nullptr || patch->empty()) return message;
+    return (warning ? kWarning : "") + *patch + (over_file_ ? " (over " + file_ + ")" : "") + ": " +
+           message.substr(key_start) + orphaned;
   }
 
   InputError attribute(const InputError& error) const {
@@ -101,6 +119,7 @@ class PatchOrigins {
   }
 
   std::string file_;
+  bool over_file_ = true;
   std::vector<std::pair<std::string, std::string>> set_;  ///< (key path, patch name), in order
 };
 

@@ -70,16 +70,20 @@ inline std::optional<double> peak_resident_memory() {
 }
 
 /// How many bytes a new regular file `file` may take: the free space of its directory's file
-/// system for this user, or less under a file-size limit (ulimit -f). Nothing when `file` is an
-/// existing non-regular file (/dev/null, a FIFO) or the space cannot be read.
+/// system for this user (of its nearest existing ancestor when the directory is still to be
+/// made: nothing is created to ask), or less under a file-size limit (ulimit -f). Nothing when
+/// `file` is an existing non-regular file (/dev/null, a FIFO), the space cannot be read, or the
+/// file system has no blocks at all (/proc, /sys: its 0 B free is no size limit, and the write
+/// itself fails with the reason).
 inline std::optional<double> available_output_bytes(const std::filesystem::path& file) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(file, ec);
   if (!ec && fs::exists(status) && !fs::is_regular_file(status)) return std::nullopt;
-  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  const fs::space_info space = fs::space(dir, ec);
-  if (ec) return std::nullopt;
+  fs::path dir = file.parent_path();
+  while (!dir.empty() && !fs::exists(dir, ec)) dir = dir.parent_path();
+  const fs::space_info space = fs::space(dir.empty() ? fs::path(".") : dir, ec);
+  if (ec || space.capacity == 0) return std::nullopt;
   double available = static_cast<double>(space.available);
   if (const auto size = resource_limit(RLIMIT_FSIZE)) available = std::min(available, *size);
   return available;

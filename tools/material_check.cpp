@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
   impact::cli::describe(
       app, "Exit codes: 0 valid, 1 usage error, 2 input error, 3 the output could not be written.",
       verbosity);
-  if (const auto code = impact::cli::parse(app, argc, argv, verbosity)) return *code;
+  if (const auto code = impact::cli::parse(app, argc, argv, verbosity))
+    return impact::cli::stdout_checked(*code, "material_check");  // --help > /dev/full: exit 3
   if (keys) {
     try {
       const impact::InputKeyRecorder recorded = impact::material_keys();

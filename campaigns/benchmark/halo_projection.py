@@ -36,9 +36,9 @@ def main():
     a = ap.parse_args()
     cmd = [a.mpm, "check", a.scene, "--ranks", str(a.ranks)] + (["--set", a.set] if a.set else [])
     text = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
-    report = json.loads(text[text.rindex("\n{") + 1:])
-    plan = report["decomposition"]
-    resolved = json.loads(text[:text.index("\n}\n") + 2])
+    checked = json.loads(text)  # mpm check: {"resolved", "warnings", "refusal", "report"}
+    plan = checked["report"]["decomposition"]
+    resolved = checked["resolved"]
     cells = resolved["grid"]["cells"]
     first = [plan["boxes"][k] for k in "xyz"]
     p = [len(f) - 1 for f in first]

@@ -57,17 +57,27 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 /// SAX events of nlohmann::json that track the key path, to name where parsing stopped: the
-/// value after the last key of an object, or after the last element of an array.
+/// value after the last key of an object, or after the last element of an array. The parse
+/// stops at a number beyond the range of a double (1e999: nlohmann::json's own error) and at one
+/// below it (1e-400, which it reads as 0 without a word: `underflow`).
 class NumberLocator {
  public:
-  std::string pointer;  ///< of the value that stopped the parse ("" for the top level)
-  std::string token;    ///< its text, e.g. 1e999
+  std::string pointer;     ///< of the value that stopped the parse ("" for the top level)
+  std::string token;       ///< its text, e.g. 1e999
+  bool underflow = false;  ///< stopped at a number that is not 0 but reads as 0
 
   bool null() { return value(); }
   bool boolean(bool) { return value(); }
   bool number_integer(Json::number_integer_t) { return value(); }
   bool number_unsigned(Json::number_unsigned_t) { return value(); }
-  bool number_float(Json::number_float_t, const Json::string_t&) { return value(); }
+  bool number_float(Json::number_float_t v, const Json::string_t& text) {
+    const std::size_t exponent = text.find_first_of("eE");
+    const bool zero_written =
+        text.substr(0, exponent).find_first_of("123456789") == std::string::npos;
+    if (v != 0.0 || zero_written) return value();
+    underflow = true;
+    return stop(text);
+  }
   bool string(Json::string_t&) { return value(); }
   bool binary(Json::binary_t&) { return value(); }
   bool start_object(std::size_t) {
@@ -93,10 +103,7 @@ class NumberLocator {
     return true;
   }
   bool parse_error(std::size_t, const std::string& last_token, const Json::exception&) {
-    value();  // the value being read when the parse stopped
-    for (const Frame& f : frames_) pointer += "/" + (f.array ? std::to_string(f.index) : f.key);
-    token = last_token;
-    return false;
+    return stop(last_token);
   }
 
  private:
@@ -108,6 +115,12 @@ class NumberLocator {
   bool value() {
     if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
     return true;
+  }
+  bool stop(const std::string& at) {
+    value();  // the value being read when the parse stopped
+    for (const Frame& f : frames_) pointer += "/" + (f.array ? std::to_string(f.index) : f.key);
+    token = at;
+    return false;
   }
   std::vector<Frame> frames_;
 };
@@ -389,16 +402,23 @@ void JsonReader::reject_unknown_keys() {
   }
 }
 
+std::optional<std::string> not_a_regular_file(const std::string& file) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status) || std::filesystem::is_regular_file(status))
+    return std::nullopt;
+  if (std::filesystem::is_directory(status)) return "is a directory";
+  return "is not a regular file (a FIFO, socket or device)";
+}
+
 Json load_json_file(const std::string& file) {
   // Only a regular file (or a link to one): a FIFO or a device would block the run or stream
   // forever, a directory cannot be parsed.
   std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(file, ec);
-  if (ec || !std::filesystem::exists(status))
+  if (!std::filesystem::exists(file, ec))
     throw InputError({file + ": cannot open the file (does it exist, and is it readable?)"});
-  if (!std::filesystem::is_regular_file(status))
-    throw InputError({file + ": not a regular file (a directory, FIFO, socket or device); expected "
-                             "a JSON file"});
+  if (const auto kind = not_a_regular_file(file))
+    throw InputError({file + ": " + *kind + "; expected a JSON file"});
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError({file + ": cannot open the file (does it exist, and is it readable?)"});
   std::ostringstream text;
@@ -408,22 +428,31 @@ Json load_json_file(const std::string& file) {
 }
 
 Json parse_json_text(const std::string& text, const std::string& what) {
+  Json parsed;
+  bool beyond = false;
   try {
-    return Json::parse(text, nullptr, true, /*ignore_comments=*/false);
+    parsed = Json::parse(text, nullptr, true, /*ignore_comments=*/false);
+    // 1e-400 reads as 0 without a word: only a number with a negative exponent can.
+    if (text.find("e-") == std::string::npos && text.find("E-") == std::string::npos) return parsed;
   } catch (const Json::parse_error& e) {
     throw InputError({what + ": JSON syntax error at byte " + std::to_string(e.byte) + ": " +
                       std::string(e.what())});
   } catch (const Json::out_of_range&) {  // a number beyond the double range (1e999)
+    beyond = true;
   }
   // Parsed again, without building it, only to find where the number is.
   NumberLocator locator;
   Json::sax_parse(text, &locator);
+  if (!beyond && !locator.underflow) return parsed;
   std::string number = locator.token;
   if (number.size() > 32)
     number = number.substr(0, 16) + "... (" + std::to_string(number.size()) + " characters)";
   throw InputError({what + ": " + (locator.pointer.empty() ? "/" : locator.pointer) +
                     ": the number " + (number.empty() ? "" : number + " ") +
-                    "is beyond the range of a double (magnitude at most 1.8e308)"});
+                    (locator.underflow ? "is below the range of a double (magnitude at least "
+                                         "4.9e-324) and would read as 0; write 0 if 0 is meant"
+                                       : "is beyond the range of a double (magnitude at most "
+                                         "1.8e308)")});
 }
 
 std::optional<std::string> nearest_name(std::string_view word,

@@ -161,6 +161,10 @@ class JsonReader {
   std::set<std::string, std::less<>> used_;
 };
 
+/// What keeps `file` from being read as a file: "is a directory", "is not a regular file (a
+/// FIFO, socket or device)"; nothing when it is a regular file (or a link to one) or is missing.
+std::optional<std::string> not_a_regular_file(const std::string& file);
+
 /// Parses a JSON file; a missing file or a syntax error becomes an InputError naming the file and,
 /// for syntax errors, the byte position (a number beyond the range of a double: its key path, as
 /// parse_json_text).
@@ -169,7 +173,8 @@ Json load_json_file(const std::string& file);
 /// Parses JSON text that messages call `what` (a file name, "--set patch 2"). A syntax error is an
 /// InputError "what: JSON syntax error at byte N: ..."; a number no double can hold (1e999, a
 /// 400-digit integer) is one naming its key path: "what: /density: the number 1e999 is beyond
-/// the range of a double (magnitude at most 1.8e308)".
+/// the range of a double (magnitude at most 1.8e308)"; so is one below it that would read as 0
+/// (1e-400).
 Json parse_json_text(const std::string& text, const std::string& what);
 
 /// The candidate closest to `word` by edit distance, if it is close enough to be a likely typo.

@@ -40,6 +40,10 @@ struct QuantityUnits {
   double high;          ///< plausible |value| in SI
   double typical;       ///< chooses between alternatives that both fit (closest in log)
   std::vector<UnitAlternative> alternatives;
+  /// A negative value is no unit slip but a wrong sign (a density of -2.7 is not in g/cm^3):
+  /// density, moduli, specific heat, sound speed, length. Stress and speed have a sign, and a
+  /// negative temperature may be in degC.
+  bool positive_only = false;
 };
 
 /// The table of quantities (docs/reliability.md reproduces it).
@@ -51,7 +55,8 @@ struct UnitGuess {
   double value_in_si;  ///< the value converted from that unit to SI
 };
 
-/// nullopt when |value| is plausible, zero or not finite, or when no alternative explains it.
+/// nullopt when |value| is plausible, zero or not finite, negative for a positive-only quantity,
+/// or when no alternative explains it.
 std::optional<UnitGuess> likely_unit(Quantity q, double value);
 
 /// "26 looks like GPa (26 GPa = 2.6e+10 Pa); SI expects Pa", or nullopt (see likely_unit).

@@ -14,6 +14,9 @@ std::string_view to_string(UpdateStatus s) {
       return "ok";
     case UpdateStatus::negative_jacobian:
       return "negative Jacobian det F <= 0";
+    case UpdateStatus::non_finite_deformation_gradient:
+      return "deformation gradient F or det F not finite: it overflowed (L dt too large; take a "
+             "smaller step)";
     case UpdateStatus::return_mapping_not_converged:
       return "radial return did not converge";
     case UpdateStatus::non_finite_stress:
@@ -92,6 +95,10 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
                                   const Corotated* corotated) const {
   report = StepReport{};
   const double J1 = lane_algebra::determinant(to_lanes(F1));
+  if (!F1.allFinite() || std::isinf(J1)) {  // NaN or Inf would read as a negative Jacobian
+    report.status = UpdateStatus::non_finite_deformation_gradient;
+    return false;
+  }
   if (!(J1 > 0.0)) {
     report.status = UpdateStatus::negative_jacobian;
     return false;

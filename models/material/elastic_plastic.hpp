@@ -64,7 +64,9 @@ struct ElasticPlasticParams {
 
 enum class UpdateStatus : std::uint8_t {
   ok,
-  negative_jacobian,             ///< det F_{n+1} <= 0
+  negative_jacobian,  ///< det F_{n+1} <= 0
+  /// F_{n+1} or its determinant not finite: L dt overflowed (a huge step), not a collapse
+  non_finite_deformation_gradient,
   return_mapping_not_converged,  ///< the radial return missed its tolerance
   non_finite_stress,             ///< NaN or Inf in the updated stress
   eos_out_of_range,              ///< compression beyond the Mie-Gruneisen limit 1 - S eta > 0

@@ -41,13 +41,17 @@ std::string chain_text(const std::vector<std::string>& chain, const std::string&
 }
 
 // `chain` holds the files that extend this one (outermost first), to detect cycles.
-Json load_with_extends(const std::string& file, std::vector<std::string>& chain) {
+Json load_with_extends(const std::string& file, std::vector<std::string>& chain,
+                       ExtendsChain* layers) {
   constexpr std::size_t kMaxDepth = 16;
   Json doc = load_json_file(file);
   if (!doc.is_object()) throw InputError({file + ": expected a JSON object (a scene)"});
   const fs::path dir = fs::path(file).parent_path();
   resolve_material_paths(doc, dir);
-  if (!doc.contains("extends")) return doc;
+  if (!doc.contains("extends")) {
+    if (layers != nullptr) layers->emplace_back(file, doc);
+    return doc;
+  }
   if (!doc["extends"].is_string()) {
     throw InputError({file + ": /extends: expected a string (path of the base scene), got " +
                       doc["extends"].dump()});
@@ -56,11 +60,10 @@ Json load_with_extends(const std::string& file, std::vector<std::string>& chain)
   const fs::path base_path = fs::path(named).is_relative() ? dir / named : fs::path(named);
   const std::string base = base_path.lexically_normal().string();
   std::error_code ec;
-  if (fs::exists(base_path, ec) && !fs::is_regular_file(base_path, ec)) {
+  if (const auto kind = not_a_regular_file(base_path.string())) {
     // A FIFO or a device (/dev/zero) would block or stream forever: refused unread.
-    throw InputError({file + ": /extends: the base scene '" + named +
-                      "' is not a regular file (a directory, FIFO, socket or device); expected a "
-                      "scene file"});
+    throw InputError(
+        {file + ": /extends: the base scene '" + named + "' " + *kind + "; expected a scene file"});
   }
   if (!fs::is_regular_file(base_path, ec)) {
     throw InputError({file + ": /extends: cannot open the base scene '" + named + "' (looked for " +
@@ -77,9 +80,10 @@ Json load_with_extends(const std::string& file, std::vector<std::string>& chain)
     throw InputError({file + ": /extends: expected at most " + std::to_string(kMaxDepth) +
                       " levels of extends: " + chain_text(chain, base)});
   }
-  Json merged = load_with_extends(base, chain);
+  Json merged = load_with_extends(base, chain, layers);
   chain.pop_back();
   doc.erase("extends");
+  if (layers != nullptr) layers->emplace_back(file, doc);
   merged.merge_patch(doc);  // RFC 7396: objects merge key by key, null deletes, arrays replace
   return merged;
 }
@@ -298,6 +302,10 @@ void read_time(JsonReader& root, TimeSpec& t, std::vector<std::string>& warnings
       r.number_or("max_energy_growth", 1.0, Range::positive(),
                   "the run stops when energy_error exceeds this (+1 = +100 % of the energy that "
                   "entered) [-]");
+  t.max_estimated_steps = r.number_or(
+      "max_estimated_steps", TimeSpec{}.max_estimated_steps, Range::positive(),
+      "mpm run refuses a scene whose step count, estimated before the run (max_time over the "
+      "first stable step), exceeds this [-]");
   if (t.min_dt > t.max_dt) r.problems().add(r.key_path("min_dt"), "expected min_dt <= max_dt");
   r.reject_unknown_keys();
 }
@@ -628,14 +636,13 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
         g.reject_unknown_keys();
         if (object < 0) continue;
         spec.object = object;
-        if (check_seeds && box_ok) {
-          spec.particles =
-              count_seed_points(s, static_cast<std::size_t>(object), spec.lower, spec.upper);
-          if (spec.particles == 0) {
-            problems.add(g.key_path("region"), "no particle of object \"" + s.objects[object].name +
-                                                   "\" inside (initial positions): expected a "
-                                                   "region that contains at least one particle");
-          }
+        // The first seed point found will do: the count (mpm check, summary.json) waits until
+        // the memory and step estimates have let the scene through.
+        if (check_seeds && box_ok &&
+            !seeds_a_point(s, static_cast<std::size_t>(object), spec.lower, spec.upper)) {
+          problems.add(g.key_path("region"), "no particle of object \"" + s.objects[object].name +
+                                                 "\" inside (initial positions): expected a "
+                                                 "region that contains at least one particle");
         }
         s.output.gauges.push_back(std::move(spec));
       }
@@ -665,10 +672,9 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
       if (object >= 0 && std::isfinite(spec.face)) {
         spec.object = object;
         const double dx = s.grid.spacing()(0);
-        if (check_seeds &&
-            count_seed_points(s, static_cast<std::size_t>(object),
-                              Vec3(spec.face - dx, s.grid.lower(1), s.grid.lower(2)),
-                              Vec3(spec.face + dx, s.grid.upper(1), s.grid.upper(2))) == 0) {
+        if (check_seeds && !seeds_a_point(s, static_cast<std::size_t>(object),
+                                          Vec3(spec.face - dx, s.grid.lower(1), s.grid.lower(2)),
+                                          Vec3(spec.face + dx, s.grid.upper(1), s.grid.upper(2)))) {
           problems.add(c.key_path("face"),
                        "no particle of object \"" + s.objects[object].name +
                            "\" within one cell of the face: expected the x of a face of it [m]");
@@ -743,7 +749,7 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
     const GridCoverage c = grid_coverage(o.geometry, g);
     std::ostringstream m;
     m.precision(3);
-    if (c.inside_bound == 0.0 || (c.sampled && c.inside == 0.0 && c.inside_bound >= kMinInside)) {
+    if (c.disjoint || (c.sampled && c.inside == 0.0 && c.inside_bound >= kMinInside)) {
       m << "lies wholly outside the grid " << grid_text << " (" << box_text
         << "): no particle would be seeded; expected a body inside the grid";
       problems.add(key, m.str());
@@ -752,9 +758,22 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
     // The bound is exact; the lattice may miss a sliver inside a body much larger than the grid.
     const bool bounded = c.inside_bound < kMinInside;
     if (bounded || (c.sampled && c.inside < kMinInside)) {
-      m << (bounded ? "at most " : "only about ") << (bounded ? c.inside_bound : c.inside)
-        << " of its volume (" << volume(o.geometry) << " m^3) lies inside the grid " << grid_text
-        << " (" << box_text << "); expected at least " << kMinInside << " (lengths in m";
+      const double share = bounded ? c.inside_bound : c.inside;
+      m << (bounded ? "at most " : "only about ");
+      if (share > 0.0) {
+        m << share;
+      } else {  // below the doubles: a body of 1e300 m
+        m << "a share below 1e-300";
+      }
+      const double v = volume(o.geometry);
+      m << " of its volume (";
+      if (std::isfinite(v)) {
+        m << v;
+      } else {
+        m << "beyond 1.8e+308";
+      }
+      m << " m^3) lies inside the grid " << grid_text << " (" << box_text << "); expected at least "
+        << kMinInside << " (lengths in m";
       if (auto hint = unit_hint(Quantity::length, (hi - lo).maxCoeff()))
         m << "; its largest extent " << *hint;
       m << ')';
@@ -831,9 +850,22 @@ void check_field_count(InputProblems& problems, const Scene& s) {
 
 }  // namespace
 
-Json load_scene_document(const std::string& file) {
-  std::vector<std::string> chain;
-  return load_with_extends(file, chain);
+Json load_scene_document(const std::string& file, ExtendsChain* chain) {
+  std::vector<std::string> extending;
+  return load_with_extends(file, extending, chain);
+}
+
+PatchOrigins extends_origins(const ExtendsChain& chain) {
+  std::vector<Json> documents;
+  for (const auto& layer : chain) documents.push_back(layer.second);
+  const std::string file = chain.empty() ? std::string() : chain.back().first;
+  return PatchOrigins(
+      file, documents,
+      [&](std::size_t k) {
+        return k + 1 == chain.size() ? std::string()
+                                     : chain[k].first + " (extended by " + file + ")";
+      },
+      /*over_file=*/false);
 }
 
 Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder* keys) {

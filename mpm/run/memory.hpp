@@ -1,6 +1,6 @@
 // Memory estimate of a run (mpm check prints it; mpm run refuses to start when it exceeds the
-// available memory; docs/mpm.md#memory-estimate), from the scene alone: nothing is seeded or
-// allocated, so an absurd scene is refused in microseconds.
+// available memory; docs/mpm.md#memory-and-step-estimates), from the scene alone: nothing is
+// seeded or allocated, so an absurd scene is refused in microseconds.
 //   particles: count x (Particles::bytes_per_particle + q with artificial viscosity + fault
 //              flag with fail_particle + the cached stencil: 112 B linear, 160 B GIMP + 8 B of
 //              scatter order)

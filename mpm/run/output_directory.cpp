@@ -59,8 +59,13 @@ std::string unfinished_run(const fs::path& dir) {
           ? status["status"].get<std::string>()
           : "";
   if (state == "completed" || state == "failed") return "";  // nothing left to continue
+  // A status.json cut short by a kill reads as no JSON: say so, not "missing".
+  const std::string status_text = !state.empty()                         ? "\"" + state + "\""
+                                  : !fs::exists(dir / "status.json", ec) ? "missing"
+                                  : status.is_object()                   ? "no \"status\""
+                                                                         : "not JSON (cut short?)";
   std::string why = (dir / kCheckpointFile).string() + ": the checkpoint of a run that has not " +
-                    "finished (status.json: " + (state.empty() ? "missing" : "\"" + state + "\"");
+                    "finished (status.json: " + status_text;
   if (status.is_object() && status.contains("checkpoint") && status["checkpoint"].is_object() &&
       status["checkpoint"].contains("step"))
     why += ", checkpoint at step " + status["checkpoint"]["step"].dump();

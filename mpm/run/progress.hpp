@@ -1,4 +1,5 @@
-// What a run tells the terminal as it goes: a progress line (step, time, dt, energy error, ETA;
+// What a run tells the terminal as it goes: a progress line (step, time, dt, energy error, ETA in
+// duration_text's form;
 // on a terminal rewritten in place at most twice a second; in a log (stderr not a terminal, the
 // line asked for with --progress) one whole line after the first step and then every 10 s) and the
 // particles flagged by numerical faults (physics.on_numerical_fault = fail_particle: the first 20
@@ -6,10 +7,15 @@
 #pragma once
 
 #include <chrono>
+#include <string>
 
 #include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm {
+
+/// A duration for a person: "42 s", "12 min 5 s", "3 h 20 min", and from 100 h on two digits and
+/// an exponent, "6.2e+301 s" (an estimate, not 300 digits); "unknown" when not finite.
+std::string duration_text(double seconds);
 
 class ProgressLine {
  public:

@@ -20,6 +20,7 @@
 #include "mpm/run/run_outputs.hpp"
 #include "mpm/run/run_status.hpp"
 #include "mpm/run/scene_fingerprint.hpp"
+#include "mpm/run/step_estimate.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/threads/threads.hpp"
 #include "support/atomic_file.hpp"
@@ -92,7 +93,7 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
   const bool root = comm == nullptr || comm->root();
   const int threads = run_threads(options.threads);
   // Refuse before anything is allocated or written.
-  if (const std::string refusal = memory_refusal(scene); !refusal.empty()) {
+  if (const std::string refusal = start_refusal(scene); !refusal.empty()) {
     if (root) std::cerr << "mpm: " << refusal << '\n';
     return kExitMemory;
   }

@@ -10,6 +10,8 @@
 #include "mpm/parallel/decomposition_plan.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/scene_fingerprint.hpp"
+#include "mpm/run/step_estimate.hpp"
+#include "mpm/scene/seed_points.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
@@ -110,7 +112,11 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
   if (const auto available = available_memory()) report["available_memory [MB]"] = *available / 1e6;
   if (!scene.output.gauges.empty()) {
     Json gauges = Json::object();
-    for (const GaugeSpec& gs : scene.output.gauges) gauges[gs.name] = {{"particles", gs.particles}};
+    // Counted here, not when the scene is read: the memory estimate may refuse a huge scene.
+    for (const GaugeSpec& gs : scene.output.gauges) {
+      gauges[gs.name] = {
+          {"particles", count_seed_points(scene, std::size_t(gs.object), gs.lower, gs.upper)}};
+    }
     report["gauges"] = gauges;
   }
   return report;
@@ -121,11 +127,7 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
 Json check_report(const Scene& scene, int threads, int ranks) {
   const Particles P = seed_particles(scene);
   Json report = particle_report(scene, P, threads);
-  const double dt = std::min(
-      stable_time_step(scene.grid.min_spacing(), max_signal_speed(P), scene.time.multiplier),
-      scene.time.max_dt);
-  report["stable_dt [s]"] = dt;
-  report["estimated_steps"] = std::ceil(scene.time.max_time / dt);
+  report.update(estimate_steps(scene).json(scene));
   report["scene_fingerprint"] = scene_fingerprint(scene.resolved);
   if (ranks > 1) report["decomposition"] = plan_decomposition(scene, P, ranks);
   return report;

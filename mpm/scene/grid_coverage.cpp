@@ -1,6 +1,7 @@
 #include "mpm/scene/grid_coverage.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 
@@ -23,17 +24,24 @@ GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& spec) {
   }
   GridCoverage c;
   const auto [lo, hi] = bounds(geometry);
-  const double v = std::min(volume(geometry), (hi - lo).prod());
+  const Vec3 extent = hi - lo;
+  const double box = extent.prod();
+  const double v = std::min(volume(geometry), box);
   if (!lo.allFinite() || !hi.allFinite() || !(v > 0.0)) return c;  // nothing to measure
   if (in_grid(grid, lo) && in_grid(grid, hi)) return c;            // wholly inside
   const Vec3 overlap = hi.cwiseMin(grid.upper) - lo.cwiseMax(grid.lower);
-  const double box_inside = (overlap.array() > 0.0).all() ? overlap.prod() : 0.0;
-  c.inside_bound = std::min(1.0, box_inside / v);
-  if (box_inside == 0.0) {
+  if (!(overlap.array() > 0.0).all()) {
+    c.inside_bound = 0.0;
+    c.disjoint = true;
     c.inside = 0.0;
     c.lost = 1.0;
     return c;
   }
+  // vol(box inside) / v as the box's share per axis over the body's share of its box: a body of
+  // 1e300 m has volumes beyond a double (inf / inf), its shares do not. One whose volume
+  // overflows is taken to fill its box.
+  const double fill = std::isfinite(box) ? v / box : 1.0;
+  c.inside_bound = std::min(1.0, overlap.cwiseQuotient(extent).prod() / fill);
   // Cell centres of an n^3 lattice on the bounding box: each point of the body is inside, the
   // mirror image of a point inside (beyond symmetric faces only), or lost.
   constexpr int n = kCoverageLattice;

@@ -14,6 +14,8 @@ struct GridCoverage {
   /// vol(bounding box inside the grid) / volume(geometry), at most 1: no more of the body can lie
   /// inside the grid (exact) [-]
   double inside_bound = 1.0;
+  /// The bounding box misses the grid: nothing of the body lies inside (exact)
+  bool disjoint = false;
   /// Whether `inside` and `lost` were sampled (the bounding box crosses the grid's boundary and
   /// the lattice hit the body); otherwise they are exact (box inside: 1 and 0) or unknown.
   bool sampled = false;

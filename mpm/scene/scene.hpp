@@ -98,6 +98,9 @@ struct TimeSpec {
   /// The run stops when kinetic + strain energy (+ booked sinks) exceeds the energy that entered
   /// by this fraction of it: energy_error > max_energy_growth (docs/mpm.md#failure-handling) [-]
   double max_energy_growth = 1.0;
+  /// mpm run refuses (exit 4) a scene whose step count, estimated before seeding, exceeds this
+  /// (mpm/run/step_estimate.hpp; docs/mpm.md#memory-and-step-estimates) [-]
+  double max_estimated_steps = 1e7;
 };
 
 /// How a run on several ranks chooses its ranks per axis (solver.ranks_per_axis, docs/mpi.md).
@@ -181,7 +184,6 @@ struct GaugeSpec {
   Vec3 lower = Vec3::Zero();  ///< region of initial positions [m]
   Vec3 upper = Vec3::Zero();  ///< [m]
   int component = 0;          ///< 0, 1, 2 = x, y, z (velocity and strain)
-  std::size_t particles = 0;  ///< particles inside (counted when the scene is read)
 };
 
 /// output.crater: the crater an impact along +x leaves in the face x = `face` of an object.

@@ -45,6 +45,7 @@ const CommandSpec batch_command{
 
 struct MaterialEntry {
   std::string name;
+  std::string origin;                ///< what messages call it: "--materials FILE" or "... set<k>"
   std::optional<Material> material;  ///< a complete material file
   Json patch;                        ///< else a merge patch over the path's material
 };
@@ -60,10 +61,12 @@ MaterialEntry read_material_entry(const std::string& arg, int index) {
     e.patch = parse_json_text(arg, "--materials: inline JSON #" + std::to_string(index + 1));
     if (!e.patch.is_object()) throw InputError({"--materials: inline JSON must be an object"});
     e.name = "set" + std::to_string(index + 1);
+    e.origin = "--materials " + e.name;
     return e;
   }
   const Json doc = load_json_file(arg);
   e.name = fs::path(arg).stem().string();
+  e.origin = "--materials " + arg;
   if (doc.is_object() && doc.contains("density") && doc.contains("constitutive_model")) {
     e.material = read_material(doc, arg);
   } else if (doc.is_object()) {
@@ -75,6 +78,24 @@ MaterialEntry read_material_entry(const std::string& arg, int index) {
 }
 
 /// The path document with `patch` merged into its material's overrides.
+Json with_material_patch(Json document, const Json& patch);
+
+/// Path `file` read with the --set patches and then material patch `m`: a problem at a key the
+/// material patch set names it ("--materials p.json (over PATH): /material/overrides/..."), one
+/// at a key a --set patch set that patch.
+Path read_patched_path(const Json& document, const std::string& file, const std::vector<Json>& sets,
+                       const MaterialEntry& m) {
+  try {
+    return read_path(with_material_patch(document, m.patch), file);
+  } catch (const InputError& e) {
+    std::vector<Json> patches = sets;
+    patches.push_back(Json{{"material", {{"overrides", m.patch}}}});
+    throw PatchOrigins(file, patches, [&](std::size_t k) {
+      return k < sets.size() ? cli::set_patch_name(k) : m.origin;
+    }).attribute(e);
+  }
+}
+
 Json with_material_patch(Json document, const Json& patch) {
   Json m = document.value("material", Json());
   if (m.is_string()) m = Json{{"file", m}};
@@ -154,9 +175,8 @@ int command_batch(const std::vector<std::string>& args) {
       path_names.push_back(unique(fs::path(f).stem().string(), seen_paths));
       std::vector<std::unique_ptr<Path>> row;
       for (const auto& m : materials) {
-        row.push_back(
-            m.material ? nullptr
-                       : std::make_unique<Path>(read_path(with_material_patch(doc, m.patch), f)));
+        row.push_back(m.material ? nullptr
+                                 : std::make_unique<Path>(read_patched_path(doc, f, sets, m)));
       }
       patched.push_back(std::move(row));
     }

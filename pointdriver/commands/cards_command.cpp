@@ -75,8 +75,9 @@ int command_cards(const std::vector<std::string>& args) {
   } catch (const InputError& e) {
     std::cerr << cli::set_origins(file, patches).attribute(e).what() << '\n';
     return cli::kExitInput;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "pointdriver cards: " << e.what() << '\n';
+  } catch (const std::invalid_argument& e) {  // a value the cards cannot hold (Swift's SIGY)
+    std::cerr << "pointdriver cards: " << cli::set_origins(file, patches).attribute(e.what())
+              << '\n';
     return cli::kExitInput;
   } catch (const OutputError& e) {
     std::cerr << "pointdriver cards: " << e.what() << '\n';

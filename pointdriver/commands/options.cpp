@@ -49,7 +49,7 @@ std::optional<int> parse_command(const CommandSpec& command, Options& out,
     } else {
       CLI::Option* o = app.add_option(cli_names, words[key], s.help)->type_name(s.value_name);
       if (s.arity == 1) o->allow_extra_args(false);
-      if (key == "--set") o->check(cli::json_text_error, "");
+      if (key == "--set") o->check(cli::set_patch_error, "");
     }
   }
   if (command.max_positional > 0) {

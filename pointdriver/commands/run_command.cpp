@@ -65,6 +65,10 @@ int command_run(const std::vector<std::string>& args) {
       o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
   std::filesystem::path stem = out;
   stem.replace_extension();
+  // The first directory of -o's parent that does not exist yet: a refused run removes what it made.
+  std::filesystem::path made;
+  for (auto p = out.parent_path(); !p.empty() && !std::filesystem::exists(p); p = p.parent_path())
+    made = p;
   if (out.has_parent_path()) {  // -o DIR/OUT.csv into a new DIR, as mpm run --out makes its DIR
     try {
       create_output_directory(out.parent_path());
@@ -83,7 +87,7 @@ int command_run(const std::vector<std::string>& args) {
     return cli::kExitFailed;
   }
   // Refused before a row is written when it cannot fit (a leg of 1e9 steps: 440 GB of CSV); the
-  // opened CSV's temporary goes with `csv`, the previous CSV stays.
+  // opened CSV's temporary goes with `csv`, the previous CSV stays, a directory made for it goes.
   const RunEstimate estimate = estimate_run(path);
   if (o.verbosity.verbose) {
     std::cerr << "pointdriver run: estimated " << estimate.rows << " rows, CSV "
@@ -94,6 +98,12 @@ int command_run(const std::vector<std::string>& args) {
       run_refusal(estimate, out.string(), available_output_bytes(out), available_memory());
   if (!refusal.empty()) {
     std::cerr << "pointdriver run: " << refusal << '\n';
+    csv.reset();
+    std::error_code ignored;  // only empty directories go: remove() leaves a non-empty one
+    for (auto p = out.parent_path(); !made.empty() && !p.empty(); p = p.parent_path()) {
+      std::filesystem::remove(p, ignored);
+      if (p == made) break;
+    }
     return cli::kExitRefused;
   }
   RunResult r;

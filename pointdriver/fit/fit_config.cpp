@@ -39,6 +39,10 @@ void check_exists(InputProblems& problems, const std::string& key_path, const st
                   const std::string& name, const std::string& resolved) {
   std::error_code ec;
   if (name.empty() || fs::is_regular_file(resolved, ec)) return;
+  if (const auto kind = not_a_regular_file(resolved)) {  // there, but no file
+    problems.add(key_path, "the " + what + " '" + name + "' " + *kind + "; expected a file");
+    return;
+  }
   problems.add(key_path, "cannot find the " + what + " '" + name +
                              "' (looked in the working directory, beside the configuration file "
                              "and in its parent directories)");

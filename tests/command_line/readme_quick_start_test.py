@@ -57,8 +57,8 @@ def main(bin_dir, source, work):
     assert header[0] == "time [s]" and "stress_xx [Pa]" in header, header[:3]
     assert len(rows) == 1 + 2001 and float(rows[-1].split(",")[0]) == 2e-4, rows[-1][:40]
 
-    words, stdout = outputs["mpm check"]  # the resolved scene, then the report
-    report = json.loads(stdout[stdout.rindex("\n{"):])
+    words, stdout = outputs["mpm check"]  # one document: resolved scene, warnings, report
+    report = json.loads(stdout)["report"]
     assert report["particles"] == 672, report
 
     words, stdout = outputs["mpm run"]

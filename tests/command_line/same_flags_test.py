@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Every program and command accepts the same flags (support/command_line.hpp): --version and
---help exit 0, an unknown option is a usage error (1), --out=DIR works as --out DIR, --quiet
-leaves stdout empty, a malformed --set is a usage error wherever a JSON file is read, and a --set
-number no double holds (-1e400) is an input error (2) naming the patch and the key.
+--help exit 0 (3 when stdout cannot be written: > /dev/full), a command's --help ends with its
+own exit codes, an unknown option is a usage error (1), --out=DIR works as --out DIR, --quiet
+leaves stdout empty, a malformed --set (also one that is no JSON object, '[1]', and a truncated
+one holding 1e999) is a usage error wherever a JSON file is read, and a --set number no double
+holds (-1e400) is an input error (2) naming the patch and the key.
 
   same_flags_test.py BIN_DIR SOURCE_DIR WORK_DIR
 """
@@ -44,6 +46,28 @@ def main(bin_dir, source, work):
         return subprocess.run([exe] + words[1:] + args, capture_output=True, text=True, cwd=work,
                               timeout=120)
 
+    def malformed_set(name, words, args):
+        """A --set that is no merge patch: a usage error (1), before anything is read."""
+        found = []
+        for patch, expected in (("{bad", "--set: invalid JSON"),
+                                ('{"a": 1e999', "--set: invalid JSON"),  # exit 2 before
+                                ("[1]", "--set: expected a JSON object, a merge patch such as "
+                                        "'{\"key\": value}', got array [1]")):
+            r = run(words, args + ["--set", patch])
+            if r.returncode != 1 or expected not in r.stderr:
+                found.append(f"{name}: --set {patch} exit {r.returncode}: {r.stderr[-200:]!r}")
+        return found
+
+    def help_to_a_full_stdout(name, words):
+        """--help > /dev/full: exit 3 with the reason (exit 0 before)."""
+        with open("/dev/full", "w") as full:
+            exe = os.path.join(bin_dir, words[0])
+            r = subprocess.run([exe] + words[1:] + ["--help"], stdout=full, stderr=subprocess.PIPE,
+                               text=True, timeout=60)
+        if r.returncode != 3 or "cannot write the standard output" not in r.stderr:
+            return [f"{name}: --help > /dev/full exit {r.returncode}: {r.stderr[-200:]!r}"]
+        return []
+
     def number_beyond_double(name, words, args):
         """A --set number no double holds: exit 2 naming the patch and the key (SIGABRT before)."""
         r = run(words, args + ["--set", '{"a": 1}', "--set", '{"x": [0, -1e400]}'])
@@ -64,13 +88,17 @@ def main(bin_dir, source, work):
         r = run(words, ["--help"])
         if r.returncode != 0 or "--quiet" not in r.stdout or "--version" not in r.stdout:
             failures.append(f"{name}: --help exit {r.returncode} or lacks --quiet/--version")
+        # The command's own footer: one list of exit codes, not the whole program's text (every
+        # mpm command printed what `run` writes and what `plot` and `keys` do).
+        if r.stdout.count("Exit codes:") != 1 or (name not in ("mpm_run", "run")
+                                                   and "history.csv" in r.stdout):
+            failures.append(f"{name}: --help footer is not the command's: {r.stdout[-400:]!r}")
+        failures += help_to_a_full_stdout(name, words)
         r = run(words, args + ["--no-such-flag"])
         if r.returncode != 1 or "--no-such-flag" not in r.stderr:
             failures.append(f"{name}: unknown option exit {r.returncode}: {r.stderr[-200:]!r}")
         if takes_set:
-            r = run(words, args + ["--set", "{bad"])
-            if r.returncode != 1 or "--set: invalid JSON" not in r.stderr:
-                failures.append(f"{name}: bad --set exit {r.returncode}: {r.stderr[-200:]!r}")
+            failures += malformed_set(name, words, args)
             failures += number_beyond_double(name, words, args)
         r = run(words, args + ["--quiet"])
         if r.returncode != 0 or r.stdout != "":
@@ -87,6 +115,9 @@ def main(bin_dir, source, work):
              [os.path.join(data, "scenes", "sphere_cylinder"), "--out",
               os.path.join(work, "study")])]:
         failures += number_beyond_double(name, words, args)
+        failures += malformed_set(name, words, args)
+    for words in (["material_check"], ["pointdriver"], ["mpm"]):  # the programs' own --help
+        failures += help_to_a_full_stdout(words[0], words)
     if failures:
         sys.exit("FAIL:\n" + "\n".join(failures))
     print(f"OK: {len(commands)} commands take --version, --help, --quiet, --out=DIR, --set")

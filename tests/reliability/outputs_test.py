@@ -135,6 +135,13 @@ def run_refused_for_the_csv(bin_dir, source, work):
                preexec_fn=limited(fsize=100_000_000_000), timeout=60)
     assert "the CSV would take an estimated 4.4e+05 MB (1e+09 rows" in done.stderr, done.stderr
     same_files(out, before)
+    # Into a directory still to be made: the free space of its nearest existing ancestor, and a
+    # refused run leaves no directory behind (it made it, before).
+    new = os.path.join(work, "new", "deeper")
+    done = run([exe, "run", path_with(source, work, 1000000000), "-o", os.path.join(new, "p.csv")],
+               4, preexec_fn=limited(fsize=100_000_000_000), timeout=60)
+    assert "the CSV would take an estimated 4.4e+05 MB (1e+09 rows" in done.stderr, done.stderr
+    assert not os.path.exists(os.path.join(work, "new")), os.listdir(work)
 
 
 def run_refused_for_memory(bin_dir, source, work):
@@ -181,10 +188,37 @@ def replay_of_a_failed_run_goes_with_the_next_success(bin_dir, source, work):
     assert not os.path.exists(os.path.join(work, "p.replay.json")), os.listdir(work)
 
 
+def scene_in_the_output_directory(bin_dir, source, work):
+    """mpm run DIR/scene.json --out DIR (or with output.directory DIR): the run would replace the
+    user's scene with the resolved one (it did). Refused (exit 2), the scene byte for byte."""
+    base = os.path.join(source, "data", "scenes", "verification", "rigid_translation.json")
+    out = os.path.join(work, "run")
+    os.makedirs(out)
+    scene = os.path.join(out, "scene.json")
+    text = json.dumps({"extends": base, "time": {"max_time": 1e-6}}) + "\n"
+    with open(scene, "w") as f:
+        f.write(text)
+    mpm = os.path.join(bin_dir, "mpm")
+    done = run([mpm, "run", scene, "--out", out, "--threads", "1"], 2)
+    assert (f"{scene}: is {scene}, which the run replaces with the resolved scene (--out {out}): "
+            "give the scene another name or the run another directory") in done.stderr, done.stderr
+    text_in = {"extends": base, "time": {"max_time": 1e-6}, "output": {"directory": out}}
+    with open(scene, "w") as f:
+        f.write(json.dumps(text_in))
+    done = run([mpm, "run", scene, "--threads", "1"], 2)
+    assert f"(/output/directory {out})" in done.stderr, done.stderr
+    with open(scene) as f:
+        assert json.load(f) == text_in
+    assert sorted(os.listdir(out)) == ["scene.json"], os.listdir(out)
+    # Another directory is fine.
+    run([mpm, "run", scene, "--out", os.path.join(work, "elsewhere"), "--threads", "1"], 0)
+
+
 CASES = {f.__name__: f for f in (cards_full_disk, fit_full_disk, stdout_full,
                                  replay_of_a_failed_run_goes_with_the_next_success,
                                  file_size_limit_as_a_shell_sets_it,
-                                 run_refused_for_the_csv, run_refused_for_memory)}
+                                 run_refused_for_the_csv, run_refused_for_memory,
+                                 scene_in_the_output_directory)}
 
 if __name__ == "__main__":
     bin_dir, source, work, case = sys.argv[1:5]

@@ -4,6 +4,8 @@
 #include "support/patch_origins.hpp"
 
 #include <boost/test/unit_test.hpp>
+#include <string>
+#include <vector>
 
 using namespace impact;
 
@@ -73,6 +75,40 @@ BOOST_AUTO_TEST_CASE(a_referenced_material_value_set_through_overrides) {
   const std::string own =
       "scene.json: /materials/al/file: in material al.json: /shear_modulus: expected ...";
   BOOST_TEST(o.attribute(own) == own);
+}
+
+// A patch that changes a block's "type" leaves the file's keys of the old type without a meaning
+// (al6061_t6.json's Johnson-Cook A, B, C under a Swift "cowper_symonds" type): they were reported
+// as the file's unknown keys.
+BOOST_AUTO_TEST_CASE(keys_orphaned_by_a_patched_type_are_the_patchs) {
+  const PatchOrigins o(
+      "m.json",
+      {Json::parse(R"({"constitutive_model": {"flow_stress": {"type": "cowper_symonds"}}})")},
+      cli_name);
+  BOOST_TEST(o.attribute("m.json: /constitutive_model/flow_stress/A: unknown key (did you mean "
+                         "D?)") ==
+             "--set patch 1 (over m.json): /constitutive_model/flow_stress/A: unknown key (did you "
+             "mean D?); the patch's type does not take it: delete it in the patch (\"A\": null)");
+  // Any other problem of the block, and an unknown key elsewhere, stay the file's.
+  for (const std::string m : {"m.json: /constitutive_model/flow_stress/K: missing required number",
+                              "m.json: /constitutive_model/damage/X: unknown key"}) {
+    BOOST_TEST(o.attribute(m) == m);
+  }
+}
+
+// The files of a scene's extends chain (mpm/input/scene_reader.hpp extends_origins): the name
+// replaces the file, and a layer named "" (the scene file itself) keeps the message.
+BOOST_AUTO_TEST_CASE(a_chain_of_files_names_the_file_that_set_the_key) {
+  const std::vector<std::string> names = {"base.json (extended by s.json)", ""};
+  const PatchOrigins o(
+      "s.json",
+      {Json::parse(R"({"grid": {"cell": [1, 1, 1]}, "time": {"max_time": 1}})"),
+       Json::parse(R"({"time": {"max_time": -1}})")},
+      [&](std::size_t k) { return names[k]; }, /*over_file=*/false);
+  BOOST_TEST(o.attribute("s.json: /grid/cell: unknown key (did you mean cells?)") ==
+             "base.json (extended by s.json): /grid/cell: unknown key (did you mean cells?)");
+  BOOST_TEST(o.attribute("s.json: /time/max_time: expected a number in (0, inf), got -1") ==
+             "s.json: /time/max_time: expected a number in (0, inf), got -1");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

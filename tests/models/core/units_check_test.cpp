@@ -69,6 +69,14 @@ BOOST_AUTO_TEST_CASE(plausible_zero_and_unexplained_values_give_no_finding) {
   BOOST_TEST(unit_of(Quantity::density, std::numeric_limits<double>::infinity()).empty());
   BOOST_TEST(unit_of(Quantity::density, 30.0).empty());
   BOOST_TEST(unit_of(Quantity::stress, 1e15).empty());
+  // A negative value of a positive-only quantity is a wrong sign, not a unit: -5 kg/m^3 was
+  // given the g/cm^3 hint (-5 g/cm^3 = -5000 kg/m^3). Stress and speed keep theirs.
+  BOOST_TEST(unit_of(Quantity::density, -5.0).empty());
+  BOOST_TEST(unit_of(Quantity::elastic_modulus, -26.0).empty());
+  BOOST_TEST(unit_of(Quantity::specific_heat, -0.9).empty());
+  BOOST_TEST(unit_of(Quantity::sound_speed, -5.4).empty());
+  BOOST_TEST(unit_of(Quantity::length, -119.0).empty());
+  BOOST_TEST(unit_of(Quantity::speed, -1.47e6) == "mm/s");
 }
 
 BOOST_AUTO_TEST_CASE(the_hint_names_value_unit_si_value_and_si_unit) {

@@ -516,6 +516,26 @@ BOOST_AUTO_TEST_CASE(negative_jacobian_is_reported_not_integrated) {
   BOOST_TEST(to_string(r.status) == "negative Jacobian det F <= 0");
 }
 
+// A huge step (pointdriver with a leg of 1e300 s, Python's update with dt 1e308) overflows F: its
+// entries or its determinant are Inf or NaN, which the test J > 0 used to report as a negative
+// Jacobian, a collapse that did not happen.
+BOOST_AUTO_TEST_CASE(overflowed_deformation_gradient_is_not_a_negative_jacobian) {
+  const Material m = al6061();
+  const PointState s0 = m.model.initial_state(294.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  PointState s1;
+  for (const Mat3& F1 : {diag(inf, 1.0, 1.0), diag(1e200, 1e200, 1.0),
+                         diag(std::numeric_limits<double>::quiet_NaN(), 1.0, 1.0)}) {
+    const StepReport r = m.model.update(s0, Mat3::Zero(), F1, 1e308, s1);
+    BOOST_TEST(to_string(r.status) ==
+               "deformation gradient F or det F not finite: it overflowed (L dt too large; take a "
+               "smaller step)");
+  }
+  // A finite F whose determinant is negative is still a negative Jacobian.
+  const StepReport r = m.model.update(s0, Mat3::Zero(), diag(-1e200, 1.0, 1.0), 1e-7, s1);
+  BOOST_TEST(to_string(r.status) == "negative Jacobian det F <= 0");
+}
+
 BOOST_AUTO_TEST_CASE(resolved_parameters_read_back_to_the_same_material) {
   // to_json must name every parameter: reading its output again reproduces it exactly, including
   // values that differ from the defaults.

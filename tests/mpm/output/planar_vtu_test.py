@@ -75,7 +75,7 @@ def check(mpm, work, name, doc, axisymmetric):
     checked = subprocess.run([mpm, "check", scene], capture_output=True, text=True)
     assert checked.returncode == 0, checked.stderr
     text = checked.stdout
-    seeded = json.loads(text[text.rindex("\n{", 0, len(text) - 2):])["particles"]
+    seeded = json.loads(text)["report"]["particles"]
     assert seeded == n, (seeded, n)
     print(f"{name}: {len(snaps)} snapshots of {n} points each, all at z = 0 in the grid's "
           f"plane, as many as mpm check seeds")

@@ -27,7 +27,7 @@ def plan(mpm, scene, ranks, split=None):
     done = subprocess.run(cmd, capture_output=True, text=True)
     assert done.returncode == 0, (cmd, done.stderr)
     text = done.stdout
-    report = json.loads(text[text.rindex("\n{", 0, len(text) - 2):])
+    report = json.loads(text)["report"]
     return report["decomposition"]
 
 
@@ -44,7 +44,7 @@ def main(mpm, scene, ranks):
     known_split(mpm, scene)
     automatic = plan(mpm, scene, ranks)
     resolved = subprocess.run([mpm, "check", scene], capture_output=True, text=True).stdout
-    cells = json.loads(resolved[:resolved.index("\n}\n") + 2])["grid"]["cells"]
+    cells = json.loads(resolved)["resolved"]["grid"]["cells"]
     splits = []
     for px in range(ranks, 0, -1):
         for py in range(ranks // px, 0, -1):

@@ -85,7 +85,7 @@ def planned(mpm, path, ranks, summary):
                              text=True)
     assert checked.returncode == 0, checked.stderr
     text = checked.stdout
-    plan = json.loads(text[text.rindex("\n{", 0, len(text) - 2):])["decomposition"]
+    plan = json.loads(text)["report"]["decomposition"]
     load = summary["ranks_load"]
     assert load["rebalances"] == 0, load
     for axis in "xyz":

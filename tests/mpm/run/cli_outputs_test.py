@@ -163,7 +163,7 @@ def seed_count(scene, obj, earlier):
 def check_check(mpm, work):
     case01 = os.path.join(SCENES, "sphere_cylinder", "case01.json")
     text = run_mpm(mpm, ["check", case01])
-    report = json.loads(text[text.rindex("\n{") + 1:])
+    report = json.loads(text)["report"]
     with open(case01) as f:
         scene = json.load(f)
     objects = sorted(scene["objects"].items())  # seeded in name order (docs/scenes.md)
@@ -229,15 +229,10 @@ def check_fingerprint(mpm, work):
     assert fingerprint(short, {"output": {"interval": 1e-7}}) != base
     assert fingerprint(short, {"grid": {"cells": [24, 24, 24]}}) != base
     assert fingerprint() != base  # max_time 2e-4: another run
-    report = run_mpm(mpm, ["check", RIGID, "--set", json.dumps(short)])
-    decoder, docs, i = json.JSONDecoder(), [], 0
-    while i < len(report):  # the resolved scene, then the report
-        if report[i].isspace():
-            i += 1
-            continue
-        doc, i = decoder.raw_decode(report, i)
-        docs.append(doc)
-    assert docs[-1]["scene_fingerprint"] == base, docs[-1].get("scene_fingerprint")
+    checked = json.loads(run_mpm(mpm, ["check", RIGID, "--set", json.dumps(short)]))
+    assert sorted(checked) == ["refusal", "report", "resolved", "warnings"], sorted(checked)
+    assert checked["report"]["scene_fingerprint"] == base, checked["report"]
+    assert checked["refusal"] == "" and checked["warnings"] == [], checked
     out = os.path.join(work, "fingerprint")
     shutil.rmtree(out, ignore_errors=True)
     run_mpm(mpm, ["run", RIGID, "--out", out, "--threads", "1", "--set", json.dumps(short)])
@@ -338,6 +333,18 @@ def check_unfinished(mpm, work):
             f"or start a new run over it with --overwrite") in stderr, stderr
     with open(checkpoint, "rb") as f:
         assert f.read() == saved
+    # A status.json cut short (a kill while it was written) is named so: "missing" before.
+    status_file = os.path.join(out, "status.json")
+    with open(status_file) as f:
+        status_text = f.read()
+    with open(status_file, "w") as f:
+        f.write(status_text[:len(status_text) // 2])
+    code, _, stderr = run_mpm_code(mpm, ["run", RIGID, "--out", out, "--threads", "1"] + snapshots)
+    assert code == 2, (code, stderr)
+    assert (f"{checkpoint}: the checkpoint of a run that has not finished (status.json: not JSON "
+            f"(cut short?)): continue it") in stderr, stderr
+    with open(status_file, "w") as f:
+        f.write(status_text)
     planted = os.path.join(out, "particles", "step_999999.vtu")
     shutil.copy(os.path.join(out, "particles", "step_000000.vtu"), planted)
     kept, _ = snapshot_files(out)

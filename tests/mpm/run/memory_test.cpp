@@ -1,4 +1,4 @@
-// Memory estimate (docs/mpm.md#memory-estimate):
+// Memory estimate (docs/mpm.md#memory-and-step-estimates):
 // - the grid term equals what Grid allocates (Grid::bytes() after a few steps, when the MUSL
 //   re-map buffers exist) for one field (two_spheres.json) and for two fields with friction
 //   contact (nodal stress and heat; tests/data/mpm_runs/contact_friction_av.json), 1 and 2

@@ -25,7 +25,7 @@ def policy(mpm, value, name=None):
                           text=True, env=env)
     assert done.returncode == 0, (value, done.returncode, done.stderr)
     text = done.stdout
-    return json.loads(text[text.rindex("\n{") + 1:] if "\n{" in text else text)["omp_wait_policy"]
+    return json.loads(text)["report"]["omp_wait_policy"]
 
 
 def main():

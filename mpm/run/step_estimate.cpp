@@ -1,0 +1,131 @@
+#include "mpm/run/step_estimate.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "mpm/run/memory.hpp"
+#include "mpm/step/step.hpp"
+
+namespace impact::mpm {
+
+namespace {
+
+// Usual values of the factors of the count (a shipped scene: about 1e4 steps), against which the
+// key that drives an absurd count is found.
+constexpr double kUsualMaxTime = 1e-3;    // [s]
+constexpr double kUsualMultiplier = 0.5;  // [-]
+constexpr double kUsualCell = 1e-3;       // [m]
+constexpr double kUsualSignal = 6000.0;   // [m/s]
+constexpr double kUsualMaxDt = 1e-7;      // [s]
+
+// A count for a message: "1.2e+37", or beyond the doubles.
+std::string count_text(double n) {
+  std::ostringstream o;
+  o.precision(2);
+  if (std::isinf(n)) {
+    o << "more than 1.8e+308";
+  } else {
+    o << n;
+  }
+  return o.str();
+}
+
+std::string driver_of(const Scene& scene, const StepEstimate& e) {
+  struct Factor {
+    double times_usual;
+    std::string key;
+  };
+  const TimeSpec& t = scene.time;
+  std::ostringstream text;
+  text.precision(3);
+  std::vector<Factor> factors;
+  const auto add = [&](double times_usual, const auto&... parts) {
+    text.str("");
+    (text << ... << parts);
+    factors.push_back({times_usual, text.str()});
+  };
+  add(t.max_time / kUsualMaxTime, "time.max_time (", t.max_time, " s)");
+  if (e.capped) {
+    add(kUsualMaxDt / t.max_dt, "time.max_dt (", t.max_dt, " s)");
+  } else {
+    add(kUsualMultiplier / t.multiplier, "time.multiplier (", t.multiplier, ")");
+    add(kUsualCell / scene.grid.min_spacing(), "grid.cells (the smallest cell ",
+        scene.grid.min_spacing(), " m)");
+    const SceneObject& o = scene.objects[e.fastest];
+    const double speed = o.velocity.norm();
+    if (e.wave_speed >= speed) {
+      add(e.signal_speed / kUsualSignal, "/materials/", scene.materials[o.material].name,
+          " (its density and moduli give a wave speed of ", e.wave_speed, " m/s)");
+    } else {
+      add(e.signal_speed / kUsualSignal, "/objects/", o.name, "/velocity (", speed, " m/s)");
+    }
+  }
+  const Factor* largest = &factors.front();
+  for (const Factor& f : factors)
+    if (f.times_usual > largest->times_usual) largest = &f;
+  return largest->key;
+}
+
+}  // namespace
+
+StepEstimate estimate_steps(const Scene& scene) {
+  StepEstimate e;
+  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+    const SceneObject& o = scene.objects[oi];
+    const ElasticPlastic& model = scene.materials[o.material].material.model;
+    const double c = model.wave_speed(model.initial_state(o.temperature));
+    const double signal = c + o.velocity.norm();
+    if (signal > e.signal_speed) {  // NaN (no wave speed) is skipped
+      e.signal_speed = signal;
+      e.fastest = oi;
+      e.wave_speed = c;
+    }
+  }
+  const double stable =
+      stable_time_step(scene.grid.min_spacing(), e.signal_speed, scene.time.multiplier);
+  e.capped = scene.time.max_dt < stable;
+  e.dt = e.capped ? scene.time.max_dt : stable;
+  e.steps = std::isinf(e.dt) ? 0.0 : std::ceil(scene.time.max_time / e.dt);
+  if (!scene.objects.empty()) e.driver = driver_of(scene, e);
+  return e;
+}
+
+Json StepEstimate::json(const Scene& scene) const {
+  Json j = {{"estimated_steps", steps},
+            {"stable_dt [s]", dt},
+            {"fastest_signal [m/s]", signal_speed},
+            {"max_estimated_steps", scene.time.max_estimated_steps}};
+  if (!scene.objects.empty()) j["fastest_object"] = scene.objects[fastest].name;
+  return j;
+}
+
+std::string step_refusal(const Scene& scene) {
+  const StepEstimate e = estimate_steps(scene);
+  const TimeSpec& t = scene.time;
+  if (!(e.steps > t.max_estimated_steps)) return {};
+  std::ostringstream m;
+  m.precision(3);
+  m << "refusing to start: an estimated " << count_text(e.steps) << " steps (time.max_time "
+    << t.max_time << " s over a first step of " << e.dt << " s: ";
+  if (e.capped) {
+    m << "time.max_dt, below the stable step";
+  } else {
+    const SceneObject& o = scene.objects[e.fastest];
+    m << "time.multiplier " << t.multiplier << " x the smallest cell " << scene.grid.min_spacing()
+      << " m / the fastest signal " << e.signal_speed << " m/s, the wave speed " << e.wave_speed
+      << " m/s of material " << scene.materials[o.material].name << " plus the speed "
+      << o.velocity.norm() << " m/s of object " << o.name;
+  }
+  m << ") exceed time.max_estimated_steps = " << t.max_estimated_steps
+    << "; the key that drives the count: " << e.driver
+    << "; correct it, or raise time.max_estimated_steps to run the scene anyway";
+  return m.str();
+}
+
+std::string start_refusal(const Scene& scene) {
+  std::string refusal = memory_refusal(scene);
+  return refusal.empty() ? step_refusal(scene) : refusal;
+}
+
+}  // namespace impact::mpm

@@ -1,0 +1,115 @@
+// Step estimate (mpm/run/step_estimate.hpp; docs/mpm.md#memory-and-step-estimates):
+// - the first stable step from the scene alone is multiplier x the smallest cell / (c_L + |v0|),
+//   c_L = sqrt((K + 4 mu/3)/rho) worked from the material's parameters, and the count is the
+//   step count of the run itself where the signal speed stays constant (a stress-free
+//   translation: 493 steps);
+// - the inputs of issue 52 that loaded and never finished (max_time 1e30 s, multiplier 1e-300, a
+//   density of 1e-30 kg/m^3), a tiny max_dt and an absurd velocity are refused by step_refusal
+//   and by run() (exit 4, nothing written), each naming the key that drives the count;
+//   time.max_estimated_steps raises the bound.
+#include <unistd.h>
+
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "../verification_helpers.hpp"
+#include "mpm/run/step_estimate.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+std::string three_digits(double v) {
+  std::ostringstream o;
+  o.precision(3);
+  o << v;
+  return o.str();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mpm_step_estimate)
+
+BOOST_AUTO_TEST_CASE(the_estimate_is_the_first_stable_step_and_the_runs_count) {
+  const Scene scene = test::verification_scene("rigid_translation.json");
+  const double c = test::longitudinal_wave_speed(scene);
+  const double speed = std::sqrt(30.0 * 30.0 + 20.0 * 20.0 + 10.0 * 10.0);
+  const double dt = 0.5 * (0.06 / 12) / (c + speed);  // multiplier 0.5, 12 cells over 0.06 m
+  const StepEstimate e = estimate_steps(scene);
+  BOOST_TEST(e.dt == dt, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(e.wave_speed == c, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(e.steps == std::ceil(2e-4 / dt));
+  // The block's stress stays zero, so every step is the first one's: the run takes the count.
+  Simulation sim(scene);
+  while (!sim.finished()) sim.step();
+  BOOST_TEST(sim.steps() == 493);
+  BOOST_TEST(e.steps == 493.0);
+  BOOST_TEST(step_refusal(scene).empty());
+  // time.max_dt below the stable step takes its place.
+  const StepEstimate capped = estimate_steps(
+      test::verification_scene("rigid_translation.json", {{"time", {{"max_dt", 1e-8}}}}));
+  BOOST_TEST(capped.capped);
+  BOOST_TEST(capped.steps == std::ceil(2e-4 / 1e-8));
+}
+
+BOOST_AUTO_TEST_CASE(an_absurd_count_is_refused_naming_the_key_that_drives_it) {
+  const auto refusal = [](const Json& patch) {
+    return step_refusal(test::verification_scene("rigid_translation.json", patch));
+  };
+  const std::string max_time = refusal({{"time", {{"max_time", 1e30}}}});
+  BOOST_TEST(contains(max_time,
+                      "refusing to start: an estimated 2.5e+36 steps (time.max_time "
+                      "1e+30 s over a first step of 4.06e-07 s: time.multiplier 0.5 x "
+                      "the smallest cell 0.005 m / the fastest signal"),
+             max_time);
+  BOOST_TEST(contains(max_time,
+                      "exceed time.max_estimated_steps = 1e+07; the key that drives the "
+                      "count: time.max_time (1e+30 s); correct it, or raise "
+                      "time.max_estimated_steps to run the scene anyway"),
+             max_time);
+  BOOST_TEST(contains(refusal({{"time", {{"multiplier", 1e-300}}}}),
+                      "the key that drives the count: time.multiplier (1e-300)"));
+  BOOST_TEST(contains(refusal({{"time", {{"max_dt", 1e-20}}}}),
+                      "first step of 1e-20 s: time.max_dt, below the stable step) exceed"));
+  BOOST_TEST(contains(refusal({{"time", {{"max_dt", 1e-20}}}}),
+                      "the key that drives the count: time.max_dt (1e-20 s)"));
+  BOOST_TEST(contains(refusal({{"objects", {{"block", {{"velocity", {1e12, 0.0, 0.0}}}}}}}),
+                      "the key that drives the count: /objects/block/velocity (1e+12 m/s)"));
+  // A density of 1e-30 kg/m^3 (admissible: above 0) makes the wave speed 1e15 times faster.
+  const Json light = {{"materials", {{"elastic_al", {{"overrides", {{"density", 1e-30}}}}}}}};
+  const Scene scene = test::verification_scene("rigid_translation.json", light);
+  const auto& p = scene.materials.front().material.model.params();
+  const double c = std::sqrt((p.bulk_modulus + 4.0 * p.shear_modulus / 3.0) / 1e-30);
+  BOOST_TEST(contains(step_refusal(scene),
+                      "the key that drives the count: /materials/elastic_al (its density and "
+                      "moduli give a wave speed of " +
+                          three_digits(c) + " m/s)"),
+             step_refusal(scene));
+  // The bound is a key: raised, the same scene starts.
+  BOOST_TEST(refusal({{"time", {{"max_time", 1e30}, {"max_estimated_steps", 1e37}}}}).empty());
+  BOOST_TEST(!refusal({{"time", {{"max_time", 10.0}}}}).empty());  // 2.5e7 steps
+  BOOST_TEST(refusal({{"time", {{"max_time", 10.0}, {"max_estimated_steps", 1e8}}}}).empty());
+}
+
+BOOST_AUTO_TEST_CASE(run_refuses_before_it_writes_anything) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("step_estimate_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  RunOptions options;
+  options.out_dir = dir.string();
+  const Scene scene =
+      test::verification_scene("rigid_translation.json", {{"time", {{"max_time", 1e30}}}});
+  BOOST_TEST(run(scene, options) == kExitMemory);
+  BOOST_TEST(!fs::exists(dir));
+  BOOST_TEST(start_refusal(scene) == step_refusal(scene));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
