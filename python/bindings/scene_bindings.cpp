@@ -14,6 +14,7 @@
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/run.hpp"
+#include "mpm/run/step_estimate.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/scene/scene.hpp"
 #include "python/bindings/bindings.hpp"
@@ -101,35 +102,37 @@ void bind_scene(py::module_& m) {
          const std::vector<std::string>& patches, int threads) {
         const mpm::Scene scene = scene_of(file, text, label, patches);
         Json out = {{"resolved", scene.resolved}, {"warnings", scene.warnings}};
-        out["refusal"] = mpm::memory_refusal(scene);
+        out["refusal"] = mpm::start_refusal(scene);
         if (out["refusal"].get<std::string>().empty())
           out["report"] = mpm::check_report(scene, mpm::run_threads(threads));
         return out.dump();
       },
       py::arg("file"), py::arg("text"), py::arg("label"), py::arg("patches"), py::arg("threads"));
   // (exit code, directory, warnings, message, exception): `warn` gets the scene's warnings
-  // before the run starts; a scene the memory estimate refuses is not started (exit 4, the
+  // before the run starts; a scene the memory or step estimate refuses is not started (exit 4, the
   // refusal as message).
   m.def(
       "run_scene",
       [](const std::string& file, const std::string& text, const std::string& label,
          const std::vector<std::string>& patches, const std::string& out_dir, int threads,
-         bool progress, const std::function<void(const std::vector<std::string>&)>& warn) {
+         bool progress, bool overwrite,
+         const std::function<void(const std::vector<std::string>&)>& warn) {
         const mpm::Scene scene = scene_of(file, text, label, patches);
         warn(scene.warnings);
         const std::string dir = out_dir.empty() ? scene.output.directory : out_dir;
-        if (const std::string refusal = mpm::memory_refusal(scene); !refusal.empty())
+        if (const std::string refusal = mpm::start_refusal(scene); !refusal.empty())
           return py::make_tuple(mpm::kExitMemory, dir, scene.warnings, refusal, py::none());
         mpm::RunOptions options;
         options.out_dir = out_dir;
         options.threads = threads;
         options.progress = progress;
+        options.overwrite = overwrite;
         const py::tuple r =
             run_polled([&scene](const mpm::RunOptions& o) { return mpm::run(scene, o); }, options);
         return py::make_tuple(r[0], dir, scene.warnings, r[1], r[2]);
       },
       py::arg("file"), py::arg("text"), py::arg("label"), py::arg("patches"), py::arg("out_dir"),
-      py::arg("threads"), py::arg("progress"), py::arg("warn"));
+      py::arg("threads"), py::arg("progress"), py::arg("overwrite"), py::arg("warn"));
   // (exit code, message, exception) of `mpm run --restart DIR`.
   m.def(
       "resume_scene",

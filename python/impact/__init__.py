@@ -13,6 +13,7 @@ the stub ``__init__.pyi`` beside this file.
 import json
 import math
 import os
+import re
 
 # OpenMP threads sleep at barriers unless the caller chose otherwise: libgomp reads the policy when
 # it is loaded, so before _impact (and NumPy) are. A busy core otherwise stalls every run on all
@@ -299,7 +300,8 @@ def check_scene(scene, patches=None, threads=0, base_dir=None):
     return checked
 
 
-def run_scene(scene, out, patches=None, threads=0, progress=False, base_dir=None):
+def run_scene(scene, out, patches=None, threads=0, progress=False, base_dir=None,
+              overwrite=False):
     """``mpm run``: runs a scene (file or dict) to its end time, writing into ``out`` what the
     program writes (``read_run(out)`` reads it back). Returns a dict: ``exit_code`` (0),
     ``directory``, ``warnings`` (also issued as InputWarning before the run starts), ``status``
@@ -309,17 +311,30 @@ def run_scene(scene, out, patches=None, threads=0, progress=False, base_dir=None
     OSError naming the file and the system's reason) when an output cannot be written during the
     run (a full disk, a file-size limit; exit code 3 of ``mpm run``); RunError when the run fails
     (a numerical fault, energy growth: exit code 3, the partial outputs in ``out``) or is refused
-    (the memory estimate above the available memory: exit code 4, nothing written, no
-    directory made);
+    (the memory or step estimate: exit code 4, nothing written, no directory made); an ``out``
+    holding the checkpoint of a run that has not finished raises InputError naming
+    ``resume_scene(out)`` to continue it and ``overwrite=True`` (``mpm run --overwrite``) to start
+    a new run over it;
     Ctrl-C (SIGINT, a notebook's interrupt) stops the run after the step under way, writes a
     checkpoint and raises KeyboardInterrupt, whose message says how to continue
     (``resume_scene(out)``)."""
     file, text, label = _scene_source(scene, base_dir)
     out = writable_directory(out, "out")
-    code, directory, warnings, message, interrupt = _impact.run_scene(
-        file, text, label, _patches(patches), out, int(threads), bool(progress),
-        lambda w: warn_input(w, stacklevel=3))
+    try:
+        code, directory, warnings, message, interrupt = _impact.run_scene(
+            file, text, label, _patches(patches), out, int(threads), bool(progress),
+            bool(overwrite), lambda w: warn_input(w, stacklevel=3))
+    except InputError as e:
+        raise InputError(_in_python_words(str(e))) from None
     return _finish(code, directory, list(warnings), message, interrupt)
+
+
+def _in_python_words(message):
+    """mpm run's remedies for an unfinished run in `out`, as a Python user gives them."""
+    message = re.sub(r"'mpm run --restart ([^']*)'", lambda m: f"impact.resume_scene({m.group(1)!r})",
+                     message)
+    return message.replace("start a new run over it with --overwrite",
+                           "start a new run over it with run_scene(..., overwrite=True)")
 
 
 def resume_scene(directory, threads=0, progress=False):

@@ -16,6 +16,8 @@ FIELD_UNITS = {"velocity": "m/s", "stress": "Pa", "plastic_strain": "-", "temper
                "damage": "-", "mass": "kg", "volume": "m^3", "pressure": "Pa",
                "von_mises": "Pa", "material": "-", "object": "-", "field": "-", "id": "-",
                "failure_cause": "-", "failed_in_tension": "-", "instability": "-", "failed": "-"}
+#: In plane strain the extensive fields are per metre of thickness along z (docs/mpm.md#output).
+PLANE_STRAIN_UNITS = {"mass": "kg/m", "volume": "m^3/m"}
 _INDICES = ("material", "object", "field", "id", "failure_cause", "instability")
 _FLAGS = ("failed", "failed_in_tension")
 
@@ -25,11 +27,13 @@ class Snapshot:
     [m] and ``fields`` (a Table: ``velocity`` (N, 3) [m/s], ``stress`` (N, 3, 3) [Pa], the scalar
     fields (N,), ``id`` the particle's seed index, ...) are read from the file on first use. On
     several ranks the pieces are joined in rank order (``pieces`` of them): sort by ``id`` to
-    compare with a one-rank run."""
+    compare with a one-rank run. In plane strain ``mass`` and ``volume`` are per metre of
+    thickness (``fields.units``: kg/m, m^3/m)."""
 
-    def __init__(self, time, file):
+    def __init__(self, time, file, plane_strain=False):
         self.time = time
         self.file = file
+        self._units = {**FIELD_UNITS, **(PLANE_STRAIN_UNITS if plane_strain else {})}
         match = re.search(r"step_(\d+)", os.path.basename(file))
         self.step = int(match.group(1)) if match else -1
         self._data = None
@@ -49,7 +53,7 @@ class Snapshot:
                 elif name in _FLAGS:
                     values = values != 0.0
                 columns[name] = values
-            units = {name: FIELD_UNITS.get(name, "") for name in columns}
+            units = {name: self._units.get(name, "") for name in columns}
             self._data = positions, Table(columns, units), pieces
         return self._data
 
@@ -118,8 +122,12 @@ def read_run(directory):
     if not os.path.isfile(os.path.join(directory, "history.csv")):
         raise InputError(f"{directory}: expected a run directory (history.csv, as mpm run "
                          "writes it), found none")
+    scene = _json(os.path.join(directory, "scene.json"))
+    plane_strain = (isinstance(scene, dict) and isinstance(scene.get("grid"), dict)
+                    and scene["grid"].get("geometry") == "plane_strain")
     pvd = os.path.join(directory, "particles.pvd")
-    snapshots = [Snapshot(t, f) for t, f in read_collection(pvd)] if os.path.exists(pvd) else []
+    snapshots = ([Snapshot(t, f, plane_strain) for t, f in read_collection(pvd)]
+                 if os.path.exists(pvd) else [])
     paths = {}
     paths_dir = os.path.join(directory, "paths")
     if os.path.isdir(paths_dir):
@@ -128,4 +136,4 @@ def read_run(directory):
                 paths[name[:-4]] = _read_csv_table(os.path.join(paths_dir, name))
     return Run(directory, read_history(directory), _json(os.path.join(directory, "summary.json")),
                _json(os.path.join(directory, "status.json")),
-               _json(os.path.join(directory, "scene.json")), snapshots, paths)
+               scene, snapshots, paths)

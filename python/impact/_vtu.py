@@ -19,6 +19,7 @@ _MARKER = b'<AppendedData encoding="raw">'
 
 def read_vtu(path):
     """(positions (N, 3) [m], {field: array (N,) or (N, components)}) of one .vtu."""
+    _require_file(path)
     with open(path, "rb") as f:
         blob = f.read()
     marker = blob.find(_MARKER)
@@ -55,12 +56,22 @@ def read_vtu(path):
     return positions, fields
 
 
+def _require_file(path):
+    """A snapshot the .pvd (or .pvtu) lists but that is gone, or not a file, is an InputError
+    naming it (it was a bare FileNotFoundError)."""
+    if not os.path.isfile(path):
+        what = "is not a regular file" if os.path.exists(path) else "is missing"
+        raise InputError(f"{path}: {what}, though the run's particles.pvd lists it (deleted, or "
+                         "the run directory copied without it?)")
+
+
 def read_snapshot(path):
     """(positions, fields, pieces) of a .vtu, or of the pieces a .pvtu names (several ranks),
     concatenated in rank order."""
     if not path.endswith(".pvtu"):
         positions, fields = read_vtu(path)
         return positions, fields, 1
+    _require_file(path)
     with open(path) as f:
         sources = re.findall(r'<Piece Source="([^"]+)"/>', f.read())
     if not sources:

@@ -3,10 +3,12 @@ raises KeyboardInterrupt; resume_scene continues it to the end. In a child proce
 itself SIGINT as a terminal or a notebook's interrupt button would (pytest must not get it)."""
 import json
 import os
+import shutil
 import subprocess
 import sys
 
 import numpy as np
+import pytest
 
 import impact
 
@@ -55,6 +57,17 @@ def test_ctrl_c_checkpoints_raises_and_resumes(data, workdir):
     assert status["status"] == "interrupted" and 1 <= status["step"] < 2000
     assert status["checkpoint"]["step"] == status["step"]
     assert os.path.exists(os.path.join("run", "checkpoint.bin"))
+    # A new run into the unfinished one's directory is refused with the remedies in Python's
+    # words (it suggested mpm's --overwrite); overwrite=True starts one over a copy of it.
+    shutil.copytree("run", "copy")
+    with pytest.raises(impact.InputError) as refused:
+        impact.run_scene(scene, out="run", threads=1)
+    text = str(refused.value)
+    assert "impact.resume_scene('run')" in text and "run_scene(..., overwrite=True)" in text, text
+    assert "--overwrite" not in text and "mpm run --restart" not in text, text
+    short = dict(scene, time={"max_time": 1e-5})
+    over = impact.run_scene(short, out="copy", threads=1, overwrite=True)
+    assert over["status"]["status"] == "completed" and over["history"]["time"][-1] == 1e-5
     # Continued to the end: a history row every 1e-5 s and at the end, no row twice, the kinetic
     # energy of the rigid translation kept (KE = M |V|^2 / 2).
     done = impact.resume_scene("run", threads=1)

@@ -105,6 +105,47 @@ def test_history_units_are_the_headers_per_metre_in_plane_strain(workdir):
     assert list(h["kinetic_energy"]) == [12.5, 12.25] and h["outflow_mass"][1] == 0.001
 
 
+def test_snapshot_mass_and_volume_are_per_metre_in_plane_strain(data, workdir):
+    """Two 6 x 8 mm blocks on a plane-strain grid: each particle is its area times 1 m of
+    thickness, so the snapshot's volumes sum to 2 x 48e-6 m^2 x 1 m and its masses to the
+    summary's mass per metre; read_run labels them m^3/m and kg/m (it said m^3 and kg)."""
+    scene = {"extends": data("scenes", "verification", "contact_blocks.json"),
+             "grid": {"geometry": "plane_strain", "lower": [0.0, 0.0], "upper": [0.02, 0.012],
+                      "cells": [20, 12], "boundary": {"z-": None, "z+": None}},
+             "objects": {"left": {"geometry": {"lower": [0.004, 0.002, -0.002],
+                                               "upper": [0.010, 0.010, 0.002]},
+                                  "particles_per_cell": [2, 2]},
+                         "right": {"geometry": {"lower": [0.010, 0.002, -0.002],
+                                                "upper": [0.016, 0.010, 0.002]},
+                                   "particles_per_cell": [2, 2]}},
+             "time": {"max_time": 1.0e-6},
+             "output": {"snapshots": True, "interval": 1.0e-6, "fields": ["mass", "volume"]}}
+    run = impact.read_run(impact.run_scene(scene, out="plane", threads=1)["directory"])
+    f = run.snapshots[0].fields
+    assert f.units["mass"] == "kg/m" and f.units["volume"] == "m^3/m", f.units
+    np.testing.assert_allclose(f["volume"].sum(), 2 * 0.006 * 0.008, rtol=1e-12)
+    np.testing.assert_allclose(f["mass"].sum(), run.summary["mass [kg/m]"], rtol=1e-12)
+    three_d = impact.read_run(impact.run_scene(translation(data, 1e-5), out="3d",
+                                               threads=1)["directory"])
+    assert three_d.snapshots[0].fields.units["stress"] == "Pa"
+
+
+def test_a_snapshot_the_collection_lists_but_is_gone_names_it(data, workdir):
+    """A .vtu deleted after the run (or a run directory copied without it): read_run still reads
+    the run; the snapshot's data raises InputError naming the file (a bare FileNotFoundError
+    from open, before)."""
+    impact.run_scene(translation(data), out="run", threads=1)
+    run = impact.read_run("run")
+    gone = run.snapshots[1].file
+    os.remove(gone)
+    run = impact.read_run("run")
+    assert run.snapshots[0].positions.shape[1] == 3
+    with pytest.raises(impact.InputError,
+                       match=r"is missing, though the run's particles.pvd lists it"):
+        run.snapshots[1].positions
+    assert gone in str(pytest.raises(impact.InputError, lambda: run.snapshots[1].fields).value)
+
+
 def test_read_run_of_a_directory_that_is_not_one(workdir):
     os.makedirs("empty")
     with pytest.raises(impact.InputError, match=r"^empty: expected a run directory"):
