@@ -1,8 +1,10 @@
 #include "mpm/run/discretization_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 namespace impact::mpm {
@@ -54,6 +56,39 @@ void set_error(Json& out, double value) {
   const double x = extrapolated.is_number() ? extrapolated.get<double>() : 0.0;
   const bool quotable = out["quotable"].get<bool>();
   out["error [-]"] = quotable && x != 0.0 ? Json((value - x) / std::abs(x)) : Json(nullptr);
+}
+
+// A table made by another code or other material data: the run repeats the level's scene (same
+// fingerprint) but not its value, so the ladder's numbers no longer describe this run (issue 52:
+// a stale table applied silently). Round-off between thread counts moves an observable by far
+// less than kStaleTolerance; a change of the physics, by more. The entry then says so, is not
+// quotable and carries neither range nor verdict. Tables without "values" are not checked.
+constexpr double kStaleTolerance = 1e-3;  // relative to the ladder's value [-]
+
+void mark_if_stale(Json& out, const Json& o, const std::string& path, std::size_t level_index,
+                   std::size_t level_count) {
+  const auto values = o.find("values");
+  if (values == o.end()) return;
+  if (!values->is_array() || values->size() != level_count) {
+    throw Unreadable(path + "/values: expected one entry per level (" +
+                     std::to_string(level_count) + ")");
+  }
+  const Json& table_value = (*values)[level_index];
+  if (!table_value.is_number()) return;  // that level's run gave no value: nothing to compare
+  const double ladder = table_value.get<double>();
+  const double value = out["value"].get<double>();
+  const double scale = std::max(std::abs(ladder), std::abs(value));
+  if (!(std::abs(value - ladder) > kStaleTolerance * scale)) return;
+  std::ostringstream why;
+  why.precision(6);
+  why << "stale: this run gives " << value << ", the ladder's run of this level gave " << ladder
+      << " (the code or the material data changed since the ladder was run): re-run the ladder";
+  out["status"] = why.str();
+  out["verdict"] = "stale table: re-run the ladder";
+  out["quotable"] = false;
+  out["error [-]"] = nullptr;
+  out["ladder_value"] = ladder;
+  out.erase("range");
 }
 
 // The range the levels and the plausible orders bound (ladder.py: {"low", "high", "unit",
@@ -125,6 +160,7 @@ std::optional<Json> observable(const Json& o, const std::string& path, const Jso
   }
   if (found == nullptr || !found->is_number()) return std::nullopt;
   set_error(out, found->get<double>());
+  mark_if_stale(out, o, path, level_index, level_count);
   return out;
 }
 

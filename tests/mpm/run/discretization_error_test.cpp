@@ -6,6 +6,8 @@
 //   the extrapolated value is null or 0 (then the table's range is carried); an observable whose
 //   pointer names no number here is left out; a string that is no JSON pointer gives that
 //   observable the status "path not found in this run's summary";
+// - a value that differs from the ladder's own run of the level by more than 1e-3 (relative):
+//   the table is stale (another code or material data), not quotable, no range;
 // - no matching level: the status sentence with the fingerprint;
 // - malformed tables (not JSON, wrong types, missing keys): "unreadable: <reason>" naming the
 //   key path, never an exception (a directory where the table would be: not a regular file);
@@ -31,11 +33,13 @@ Json summary() {
           {"final", {{"energy_error", -1e-3}}}};
 }
 
-Json observable(const std::string& name, const std::string& path, const Json& extrapolated) {
+// `level_value`: the ladder's own run of the matching level (values[1]), what this run repeats.
+Json observable(const std::string& name, const std::string& path, const Json& extrapolated,
+                double level_value = 0.009) {
   return {{"name", name},
           {"path", path},
           {"unit", "m"},
-          {"values", {0.0095, 0.0091}},
+          {"values", {0.0095, level_value}},
           {"extrapolated", extrapolated},
           {"order", 1.06},
           {"gci_fine [-]", 0.05},
@@ -61,7 +65,7 @@ Json table(const std::string& fingerprint) {
           {"observables",
            {with_conservative(observable("crater depth", "/observables/crater/depth [m]", 0.0084)),
             observable("no extrapolation", "/observables/crater/depth [m]", nullptr),
-            observable("zero", "/final/energy_error", 0.0),
+            observable("zero", "/final/energy_error", 0.0, -1e-3),
             observable("missing", "/observables/crater/volume [m^3]", 1.0),
             observable("not a number", "/observables/crater/object", 1.0),
             observable("into a string", "/observables/crater/object/x", 1.0),
@@ -156,11 +160,44 @@ BOOST_AUTO_TEST_CASE(an_extrapolation_that_may_not_be_quoted_gives_its_range_not
   starts(status_of(t.dump()), "/observables/0/range/high: expected a number");
 }
 
+// Issue 52: a table made by another code (or material data) was applied silently: the run
+// repeats the level's scene, same fingerprint, but its value is not the ladder's. Beyond 1e-3
+// relative the entry says stale, gives no error, range or quotable extrapolation; within it (the
+// round-off between thread counts) the entry is the table's.
+BOOST_AUTO_TEST_CASE(a_run_that_does_not_repeat_its_levels_value_marks_the_table_stale) {
+  Json t = table();
+  Json& depth = t["observables"][0];
+  depth["range"] = {{"low", 0.0075}, {"high", 0.0081}, {"unit", "m"}, {"basis", "p in [1, 2]"}};
+  depth["values"] = {0.0095, 0.009 * (1.0 + 0.9e-3)};
+  const Json same = of(t).at("observables").at("crater depth");
+  BOOST_TEST(same.at("quotable") == true);
+  BOOST_TEST(same.at("status") == "extrapolated");
+  BOOST_TEST(same.contains("range"));
+  BOOST_TEST(!same.contains("ladder_value"));
+  depth["values"] = {0.0095, 0.0091};  // 1.1 % off the run's 0.009
+  const Json stale = of(t).at("observables").at("crater depth");
+  BOOST_TEST_MESSAGE(stale.dump());
+  BOOST_TEST(stale.at("quotable") == false);
+  BOOST_TEST(stale.at("error [-]").is_null());
+  BOOST_TEST(!stale.contains("range"));
+  BOOST_TEST(stale.at("value").get<double>() == 0.009);
+  BOOST_TEST(stale.at("ladder_value").get<double>() == 0.0091);
+  BOOST_TEST(stale.at("verdict") == "stale table: re-run the ladder");
+  BOOST_TEST(stale.at("status").get<std::string>().rfind(
+                 "stale: this run gives 0.009, the ladder's run of this level gave 0.0091", 0) ==
+             0u);
+  // Other observables of the same table are judged on their own values.
+  BOOST_TEST(of(t).at("observables").at("zero").at("status") == "extrapolated");
+  depth["values"] = {0.0095};
+  starts(status_of(t.dump()), "/observables/0/values: expected one entry per level (2)");
+}
+
 // A null path (Lf, Dm: measured by the ladder from snapshots, not in summary.json): the value is
 // the ladder's own at the matching level (the second: values[1]), marked as such.
 BOOST_AUTO_TEST_CASE(an_observable_without_a_path_takes_the_ladders_value_of_the_level) {
   Json t = table();
   t["observables"][0]["path"] = nullptr;
+  t["observables"][0]["values"] = {0.0095, 0.0091};
   const Json e = of(t);
   const Json& depth = e.at("observables").at("crater depth");
   BOOST_TEST(depth.at("path").is_null());
