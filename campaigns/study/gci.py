@@ -235,23 +235,29 @@ def plausible_orders(observed, formal=FORMAL_ORDER, band=PLAUSIBLE_ORDER):
 def converged_range(phi, h, formal=FORMAL_ORDER, band=PLAUSIBLE_ORDER):
     """The range of converged values that the finest triple phi = (phi1, phi2, phi3) on
     h = (h1, h2, h3) (grid 1 the finest) and the plausible orders bound:
-    - monotonic convergence with observed order p: Richardson's extrapolation (richardson) for
-      every order between the formal order and p, each end limited to the plausible band
-      (plausible_orders): low and high are its values at the two ends of that interval (it is
-      monotonic in the order);
+    - monotonic convergence with observed order p: from the finest value phi1 (where the
+      converged value lies if the convergence stalls beyond the finest level) to Richardson's
+      extrapolation (richardson) for every order between the formal order and p, each end
+      limited to the plausible band (plausible_orders): low and high span phi1 and its values at
+      the two ends of that interval (it is monotonic in the order). Without phi1 the range could
+      lie wholly beyond every level (issue 52: a residual velocity of +3 to +14 m/s while every
+      level was negative);
     - anything else (oscillatory, divergent, no difference): no power law bounds the converged
       value; the band of the three values.
     Returns {"low", "high", "order_low", "order_high" (None unless monotonic), "observed_order",
-    "clamped", "condition"}."""
+    "clamped", "condition", "sign_determined" (False when the range spans 0 though the three
+    values share a sign: the converged value's sign is then not known)}."""
     t = gci_triple(phi, h)
     out = {"condition": t["condition"], "observed_order": t["order"], "order_low": None,
            "order_high": None, "clamped": False}
     if t["condition"] == "monotonic" and t["order"]:
         lo, hi, clamped = plausible_orders(t["order"], formal, band)
-        ends = [richardson(phi[0], phi[1], t["r21"], q) for q in (lo, hi)]
+        ends = [richardson(phi[0], phi[1], t["r21"], q) for q in (lo, hi)] + [phi[0]]
         out.update(low=min(ends), high=max(ends), order_low=lo, order_high=hi, clamped=clamped)
     else:
         out.update(low=min(phi), high=max(phi))
+    same_sign = all(v > 0 for v in phi) or all(v < 0 for v in phi)
+    out["sign_determined"] = not (same_sign and out["low"] < 0.0 < out["high"])
     return out
 
 

@@ -447,16 +447,18 @@ def range_of(values, hs, unit):
     phi, h = [v for v, _ in pairs[:3]], [x for _, x in pairs[:3]]
     r = gci.converged_range(phi, h)
     out = {"low": r["low"], "high": r["high"], "unit": unit, "order_low": r["order_low"],
-           "order_high": r["order_high"], "levels": 3}
+           "order_high": r["order_high"], "levels": 3, "sign_determined": r["sign_determined"]}
     if r["order_low"] is not None:
-        out["basis"] = (f"Richardson's extrapolation of the finest triple for every order from "
-                        f"the formal {gci.FORMAL_ORDER:g} to the observed "
-                        f"{r['observed_order']:.3g}"
+        out["basis"] = (f"from the finest level's value to Richardson's extrapolation of the "
+                        f"finest triple for every order from the formal {gci.FORMAL_ORDER:g} to "
+                        f"the observed {r['observed_order']:.3g}"
                         + (f", limited to the plausible [{gci.PLAUSIBLE_ORDER[0]:g}, "
                            f"{gci.PLAUSIBLE_ORDER[1]:g}]" if r["clamped"] else ""))
     else:
         out["basis"] = (f"{r['condition']}: no power law bounds the converged value; the band "
                         "of the finest three levels' values")
+    if not r["sign_determined"]:
+        out["basis"] += "; the converged value's sign is not determined"
     return out
 
 
@@ -509,6 +511,9 @@ def analyse(runs, observables):
         why_not = verdict(finest, asym, count)
         if finest is None and any("not measured" in n for n in notes):
             why_not = "; ".join(notes)
+        bounds = range_of(vals, hs, unit)
+        if bounds and bounds.get("sign_determined") is False:
+            why_not += "; the converged value's sign is not determined"
         result[name] = {"name": name, "path": pointer, "unit": unit,
                         "levels": [r["level"] for r in ladder_runs], "h [m]": hs, "values": vals,
                         "triples": triples, "status": status,
@@ -519,7 +524,7 @@ def analyse(runs, observables):
                         "asymptotic": asym, "asymptotic_reason": why,
                         "quotable": gci.quotable(finest, asym),
                         "verdict": why_not, "notes": notes,
-                        "range": range_of(vals, hs, unit)}
+                        "range": bounds}
     return result
 
 

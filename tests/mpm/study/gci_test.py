@@ -110,8 +110,9 @@ if gci.asymptotic_check(tris[0], tris[1])[0] is not False:
 
 # The range of converged values (gci.converged_range): on phi = 2 - 0.3 h^p at h = 1/3, 1/2.25,
 # 1/1.5 (r21 = 4/3), Richardson's extrapolation of the two finest values with order q is, in
-# closed form, phi1 + (phi1 - phi2) / (r21^q - 1); the range spans q from the formal order 1 to
-# the observed p, each end limited to [0.5, 2]; at q = p it is the power law's limit 2 exactly.
+# closed form, phi1 + (phi1 - phi2) / (r21^q - 1); the range spans phi1 and these for q from the
+# formal order 1 to the observed p, each end limited to [0.5, 2]; at q = p it is the power law's
+# limit 2 exactly.
 hs = (1 / 3, 1 / 2.25, 1 / 1.5)
 for p, q_lo, q_hi, clamped in ((1.5, 1.0, 1.5, False), (3.0, 1.0, 2.0, True),
                                (0.3, 0.5, 1.0, True), (0.7, 0.7, 1.0, False)):
@@ -119,12 +120,22 @@ for p, q_lo, q_hi, clamped in ((1.5, 1.0, 1.5, False), (3.0, 1.0, 2.0, True),
     rich = [phi[0] + (phi[0] - phi[1]) / ((4.0 / 3.0) ** q - 1.0) for q in (q_lo, q_hi)]
     got = gci.converged_range(phi, hs)
     if (abs(got["order_low"] - q_lo) > 1e-9 or abs(got["order_high"] - q_hi) > 1e-9
-            or got["clamped"] != clamped or abs(got["low"] - min(rich)) > 1e-12
-            or abs(got["high"] - max(rich)) > 1e-12):
+            or got["clamped"] != clamped or abs(got["low"] - phi[0]) > 1e-12
+            or abs(got["high"] - max(rich)) > 1e-12 or not got["sign_determined"]):
         failures.append(f"range of the power law p = {p}: {got}, want orders [{q_lo}, {q_hi}], "
                         f"values {sorted(rich)}")
     if p in (q_lo, q_hi) and min(abs(r - 2.0) for r in rich) > 1e-12:
         failures.append(f"range of p = {p}: the end at the observed order is not the limit 2")
+# Issue 52: levels that all stay negative but approach 0 fast enough that the extrapolation
+# crosses it (-2, -6, -14 at r = 1.5: p = 1.71, Richardson +2 at q = p and +6 at q = 1)
+# bound a range that holds the finest value and says the sign is not determined; it lay
+# wholly above 0, beyond every level, before.
+phi = (-2.0, -6.0, -14.0)
+got = gci.converged_range(phi, (1.0, 1.5, 2.25))
+if not (got["low"] == -2.0 and abs(got["high"] - 6.0) < 1e-12 and got["sign_determined"] is False):
+    failures.append(f"range of levels all below 0 crossing it: {got}")
+if gci.converged_range((10.0, 11.0, 12.5), (1.0, 1.5, 2.25))["sign_determined"] is not True:
+    failures.append("a positive range of positive levels: sign not determined")
 # Oscillatory and divergent triples: no power law; the band of the three values, no orders.
 for phi, condition in (((1.0, 1.2, 0.9), "oscillatory"),
                        ((1.0, 1.2, 1.3), "monotonic divergence"), ((1.0, 1.0, 1.3), "no difference")):
