@@ -1,5 +1,6 @@
 #include "mpm/output/face_reach.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -10,6 +11,7 @@ namespace impact::mpm {
 namespace {
 
 constexpr double kNotReached = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNearFraction = 0.05;  ///< of the grid's extent: "near a face at the start"
 
 const char* condition_name(FaceCondition c) {
   switch (c) {
@@ -37,23 +39,33 @@ FaceReach::FaceReach(const Scene& scene, const Particles& initial, const Communi
     condition_[f] = g.faces[f];
     plane_[f] = f % 2 == 0 ? g.lower(axis) : g.upper(axis);
     layer_[f] = h(axis);
+    // "Near at the start": within one cell, or 5 % of the grid's extent along the axis when that
+    // is more, so that whether a face is watched does not change with the grid (a body 3 mm from
+    // a face of a 60 mm grid was near at 12 cells and far at 120; issue 52): with 20 cells or
+    // more along the axis the extent decides.
+    near_[f] = std::max(h(axis), kNearFraction * (g.upper(axis) - g.lower(axis)));
     // A 2D grid has no z faces; the y- face of an axisymmetric grid is its axis.
     const bool face =
         !(g.planar() && axis == 2) && !(g.geometry == GridGeometry::axisymmetric && f == 2);
     watched_[f] = face && g.faces[f] != FaceCondition::wall;
   }
-  const std::array<double, 6> start = count(initial);
+  const std::array<double, 6> start = count(initial, near_);
   for (int f = 0; f < 6; ++f) watched_[f] = watched_[f] && start[f] == 0.0;
 }
 
 std::array<double, 6> FaceReach::count(const Particles& P) const {
+  return count(P, layer_);
+}
+
+std::array<double, 6> FaceReach::count(const Particles& P,
+                                       const std::array<double, 6>& within) const {
   std::vector<double> n(6, 0.0);
   for (std::size_t p = 0; p < P.size(); ++p) {
     if (P.mass[p] == 0.0) continue;  // removed (grid.outflow = remove)
     for (int f = 0; f < 6; ++f) {
       if (!watched_[f]) continue;
       const double d = std::abs(P.x[p](f / 2) - plane_[f]);
-      if (d <= layer_[f]) n[f] += 1.0;
+      if (d <= within[f]) n[f] += 1.0;
     }
   }
   if (comm_ != nullptr && comm_->size() > 1) n = comm_->sum(n);
@@ -96,7 +108,7 @@ std::string FaceReach::warning(int f) const {
   const char* key = f % 2 == 0 ? "grid.lower" : "grid.upper";
   m << "material reached the " << kFaceNames[f] << " face (" << condition_name(condition_[f])
     << ", " << key << "[" << axis << "] = " << plane_[f] << " m) at t = " << first_time_[f]
-    << " s, which no body was near at the start: "
+    << " s, which no body was near at the start (within one cell or 5 % of the grid's extent): "
     << (condition_[f] == FaceCondition::free
             ? "it is about to leave the grid"
             : "the face confines it (reflects or holds it) as no far field would")

@@ -5,8 +5,10 @@
 // then on are no longer those of the scene the user meant (a Taylor rod's mushroom splashing into
 // a mirror face 2.2 R0 from its axis ends 18.6 % too long; issue 52). Walls are contact by design
 // and the axis of an axisymmetric grid is no face: neither is watched. A face is watched only
-// when no particle lies in its layer (within one cell along its axis) at the start: a symmetry
-// plane through a body, or a body placed against a face, is meant.
+// when no particle lies near it at the start (within one cell along its axis, or 5 % of the
+// grid's extent along it when that is more, so that the choice does not change with the grid): a
+// symmetry plane through a body, or a body placed against a face, is meant. Reached means a
+// particle in its one-cell layer.
 // Sampled at the history rows only (one pass over the particles per row); on several ranks the
 // counts are summed, so every rank agrees.
 #pragma once
@@ -46,9 +48,12 @@ class FaceReach {
   std::array<double, 6> most_{};
   std::array<FaceCondition, 6> condition_{};
   std::array<double, 6> plane_{}, layer_{};  ///< the face's coordinate, one cell [m]
+  std::array<double, 6> near_{};             ///< "near at the start": max(cell, 5 % extent) [m]
   const Communicator* comm_;
   /// Particles in each face's layer.
   std::array<double, 6> count(const Particles& P) const;
+  /// Particles within `within` [m] of each watched face.
+  std::array<double, 6> count(const Particles& P, const std::array<double, 6>& within) const;
 };
 
 }  // namespace impact::mpm

@@ -91,6 +91,29 @@ BOOST_AUTO_TEST_CASE(faces_a_body_lay_against_walls_and_the_axis_are_not_watched
   BOOST_TEST(reach.summary().empty());
 }
 
+// Issue 52: "near at the start" was one cell, so a body 2.5 mm from x- of the 60 mm grid was near
+// at 12 cells (5 mm) and far at 120 (0.5 mm): the warning came and went with the resolution.
+// Near is now within max(one cell, 5 % of the extent = 3 mm): not watched at either. A body
+// 10 mm away (four 2.5 mm cells at 24 cells, 20 at 120) is watched at both.
+BOOST_AUTO_TEST_CASE(whether_a_face_is_watched_does_not_change_with_the_grid) {
+  for (const int cells : {12, 120}) {
+    for (const double gap : {0.0025, 0.010}) {
+      const Json patch = {
+          {"grid", {{"cells", {cells, 12, 12}}, {"boundary", {{"x-", "symmetric"}}}}},
+          {"objects",
+           {{"block",
+             {{"geometry",
+               {{"lower", {gap, 0.02, 0.02}}, {"upper", {gap + 0.02, 0.04, 0.04}}}}}}}}};
+      const Scene s = scene_of(patch);
+      const Particles P0 = seed_particles(s);
+      FaceReach reach(s, P0);
+      // Moved onto the face: reached only where the face was watched.
+      const std::vector<int> now = reach.sample(shifted(P0, Vec3(-gap, 0, 0)), 1e-6);
+      BOOST_TEST(now.size() == (gap > 0.003 ? 1u : 0u), "cells " << cells << ", gap " << gap);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_run_into_a_far_mirror_face_says_so) {
   const fs::path dir = fs::temp_directory_path() / ("mpm_face_reach_" + std::to_string(::getpid()));
   fs::remove_all(dir);
