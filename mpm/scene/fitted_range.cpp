@@ -19,12 +19,16 @@ double nominal_strain_rate(const Scene& scene, std::size_t o) {
   const SceneObject& object = scene.objects[o];
   const auto box = bounds(object.geometry);
   double rate = 0.0;
-  // Every other object: the relative velocity over the extent along it.
+  // Every other object it approaches (the relative velocity points from its centre toward the
+  // other's; two bodies flying apart load neither): the relative speed over its extent along it.
+  const Vec3 centre = 0.5 * (box.first + box.second);
   for (std::size_t q = 0; q < scene.objects.size(); ++q) {
     if (q == o) continue;
     const Vec3 v = object.velocity - scene.objects[q].velocity;
     const double speed = v.norm();
-    if (speed == 0.0) continue;
+    const auto other = bounds(scene.objects[q].geometry);
+    const Vec3 toward = 0.5 * (other.first + other.second) - centre;
+    if (speed == 0.0 || v.dot(toward) <= 0.0) continue;
     const double length = extent_along(box, v / speed);
     if (length > 0.0) rate = std::max(rate, speed / length);
   }
