@@ -42,7 +42,7 @@ BASE_CELLS = (50, 20, 20)
 METHODS = [("gimp", "musl"), ("gimp", "usl"), ("linear", "musl"), ("linear", "usl")]
 # The observables compared (summary.json "observables" flattened, plus the gauges' last history
 # row); bookkeeping numbers (masses, particle counts, times of the peaks) are not accuracy.
-OBSERVABLES = ["abs_energy_error", "crater.depth [m]", "crater.diameter [m]",
+OBSERVABLES = ["abs_energy_error", "crater.depth [m]", "crater.half_depth_diameter [m]",
                "objects.sphere.mean_velocity [m/s][0]", "objects.sphere.kinetic_energy [J]",
                "objects.target.kinetic_energy [J]", "objects.sphere.max_pressure [Pa]",
                "objects.target.max_pressure [Pa]"]

@@ -19,9 +19,10 @@
    --restart`): a ladder can be stopped (Ctrl-C writes a checkpoint) and resumed, and extended one
    level at a time into the same OUT.
 3. Reads the observables the scene names (definitions in docs/accuracy.md#grid-convergence-ladders):
-   the crater's depth and diameter (output.crater), each gauge's peak over the history rows
-   (output.gauges; the signed reading of largest magnitude), each object's largest pressure and the
-   fastest object's (the projectile's) final mean velocity along its impact direction, and for a
+   the crater's depth, half-depth and surface diameters (output.crater), each gauge's peak over
+   the history rows (output.gauges; the signed reading of largest magnitude), each object's
+   largest pressure and the fastest object's (the projectile's) final mean velocity along its
+   impact direction, and for a
    Taylor rod (one cylinder along x moving along -x) its final length Lf and mushroom diameter Dm.
 4. For every observable: the values per level, then per consecutive triple of levels the
    convergence condition, observed order, Richardson extrapolation and fine-grid GCI of Celik et
@@ -344,7 +345,8 @@ def observables_of(scene, rod):
     crater = scene.get("output", {}).get("crater")
     if crater:
         out += [("crater depth", "/observables/crater/depth [m]", "m"),
-                ("crater diameter", "/observables/crater/diameter [m]", "m")]
+                ("crater half-depth diameter", "/observables/crater/half_depth_diameter [m]", "m"),
+                ("crater surface diameter", "/observables/crater/surface_diameter [m]", "m")]
     objects = scene.get("objects", {})
     speeds = {n: max((abs(c) for c in o.get("velocity", [0.0])), default=0.0)
               for n, o in objects.items()}
@@ -443,6 +445,7 @@ def range_of(values, hs, unit):
         vals = [v for v, _ in pairs]
         return {"low": min(vals), "high": max(vals), "unit": unit, "order_low": None,
                 "order_high": None, "levels": len(vals),
+                "sign_determined": not min(vals) < 0.0 < max(vals),
                 "basis": "fewer than three levels: the band of the levels' values"}
     phi, h = [v for v, _ in pairs[:3]], [x for _, x in pairs[:3]]
     r = gci.converged_range(phi, h)

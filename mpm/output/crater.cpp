@@ -32,24 +32,40 @@ struct Ring {
   double w = 0.0, r = 0.0, u = 0.0;  // weight, then the weighted mean radius and u
 };
 
-// The target's extent along +x from the face at (y, z), in steps of a hundredth of a cell.
-double thickness_along_x(const Geometry& g, double face, double y, double z, double dx,
+// A raised rim is looked for out to kRimReach half-depth radii, and must stand above the far
+// field by more than kRimFloor of the depth: lower, a crest is the particle scatter's (a flat
+// far field has ring means on both sides of its median), not a rim. Simple craters' rims stand
+// about a fifth of their depth high (Pike 1977: h_r / d = 0.036 D / 0.196 D).
+constexpr double kRimReach = 3.0;
+constexpr double kRimFloor = 0.05;
+
+// The target's extent along +x from x0 (a particle's initial position, inside the body) at
+// (y, z), in steps of a hundredth of a cell: how far that particle may move before it passes the
+// back face.
+double thickness_along_x(const Geometry& g, double x0, double y, double z, double dx,
                          double upper) {
   const double step = 0.01 * dx;
-  double x = face + 0.5 * step;
+  double x = x0 + 0.5 * step;
   while (x < upper && inside(g, Vec3(x, y, z))) x += step;
-  return x - 0.5 * step - face;
+  return x - 0.5 * step - x0;
 }
 
 }  // namespace
 
-Crater crater_of(const std::vector<FacePoint>& face, double ring_width,
+Crater crater_of(const std::vector<FacePoint>& all, double ring_width,
                  const std::optional<std::array<double, 2>>& axis, bool axisymmetric,
                  std::optional<double> thickness) {
   Crater c;
   c.ring_width = ring_width;
-  c.face_particles = face.size();
+  c.face_particles = all.size();
   c.thickness = thickness;
+  // A particle whose position is not finite (a run that is failing) has no place in the profile.
+  std::vector<FacePoint> face;
+  for (const FacePoint& q : all) {
+    if (std::isfinite(q.u) && std::isfinite(q.y) && std::isfinite(q.z) && q.weight > 0.0 &&
+        std::isfinite(q.weight))
+      face.push_back(q);
+  }
   if (face.empty()) {
     c.status = "no face particle";
     return c;
@@ -62,20 +78,20 @@ Crater crater_of(const std::vector<FacePoint>& face, double ring_width,
   const double far = c.far_field_displacement, floor = c.floor_displacement;
   const double half = far + 0.5 * (floor - far);
   c.depth = floor - far;
-  // The axis: given, the axis of symmetry, or the bowl's lower half's mean position.
+  // The axis: given, the axis of symmetry, or the weighted mean position of the bowl's lower half.
   if (axis) {
     c.axis_y = (*axis)[0];
     c.axis_z = (*axis)[1];
   } else if (!axisymmetric) {
-    double n = 0.0, sy = 0.0, sz = 0.0;
+    double w = 0.0, sy = 0.0, sz = 0.0;
     for (const FacePoint& q : face) {
       if (q.u < half) continue;
-      n += 1.0;
-      sy += q.y;
-      sz += q.z;
+      w += q.weight;
+      sy += q.weight * q.y;
+      sz += q.weight * q.z;
     }
-    c.axis_y = sy / n;  // n >= 1: the deepest particle is at or below half
-    c.axis_z = sz / n;
+    c.axis_y = sy / w;  // w > 0: the deepest particle is at or below half
+    c.axis_z = sz / w;
   }
   // An axisymmetric particle is a ring: its y is its radius (the axis is y = 0 there).
   const auto radius = [&](const FacePoint& q) {
@@ -103,49 +119,61 @@ Crater crater_of(const std::vector<FacePoint>& face, double ring_width,
     k.u /= k.w;
     profile.push_back(k);
   }
-  // The half-depth radius: the first fall to the half-depth level, linear between the points.
-  std::optional<std::size_t> past;
-  for (std::size_t k = 1; k < profile.size(); ++k) {
-    if (profile[k].u <= half) {
-      past = k;
-      break;
+  // Where the profile first rises to `level` going out from the axis (linear between its
+  // points), and the index of the first point at or above it; none if it never does.
+  const auto rise_to = [&](double level) -> std::optional<std::pair<double, std::size_t>> {
+    for (std::size_t k = 1; k < profile.size(); ++k) {
+      if (profile[k].u > level) continue;
+      const Ring& a = profile[k - 1];
+      const Ring& b = profile[k];
+      return std::pair{a.r + (a.u - level) / (a.u - b.u) * (b.r - a.r), k};
     }
-  }
+    return std::nullopt;
+  };
   std::ostringstream status;
-  if (!past) {
+  const auto at_half = rise_to(half);
+  double crater_radius = 0.0;  // the crater's extent on the face, for crater_fraction
+  if (!at_half) {
     status << "no wall: the surface stays below half the depth out to the face's edge (no "
               "diameter)";
+    crater_radius = largest;
   } else {
-    const Ring& a = profile[*past - 1];
-    const Ring& b = profile[*past];
-    const double r_half = a.r + (a.u - half) / (a.u - b.u) * (b.r - a.r);
-    c.diameter = 2.0 * r_half;
-    // A raised rim: the first ring past the half-depth radius whose outer neighbour lies lower and
-    // which stands above the far field.
-    double rim_radius = r_half;
-    for (std::size_t k = *past; k + 1 < profile.size(); ++k) {
-      if (profile[k + 1].u < profile[k].u) continue;
-      if (profile[k].u < far) {
-        rim_radius = profile[k].r;
-        c.rim_diameter = 2.0 * rim_radius;
-        c.rim_to_floor = floor - profile[k].u;
-        c.rim_height = far - profile[k].u;
-      }
-      break;
+    const double r_half = at_half->first;
+    c.half_depth_diameter = 2.0 * r_half;
+    const auto at_surface = rise_to(far);
+    if (at_surface) c.surface_diameter = 2.0 * at_surface->first;
+    crater_radius = at_surface ? at_surface->first : r_half;
+    // A raised rim: the highest ring (least u) from R_half out to kRimReach R_half, if it is a
+    // crest (a ring further out lies lower) and stands above the far field by more than the
+    // particle scatter: kRimFloor of the depth. The first crest is not enough: a shoulder in the
+    // wall would hide the rim beyond it, and noise makes a crest at the wall's foot.
+    std::optional<std::size_t> crest;
+    for (std::size_t k = at_half->second; k < profile.size(); ++k) {
+      if (profile[k].r > kRimReach * r_half) break;
+      if (!crest || profile[k].u < profile[*crest].u) crest = k;
     }
-    double inside = 0.0, total = 0.0;
-    for (const FacePoint& q : face) {
-      total += q.weight;
-      inside += radius(q) < rim_radius ? q.weight : 0.0;
+    if (crest && *crest + 1 < profile.size() && profile[*crest + 1].u > profile[*crest].u &&
+        far - profile[*crest].u > kRimFloor * c.depth) {
+      const Ring& rim = profile[*crest];
+      c.rim_diameter = 2.0 * rim.r;
+      c.rim_to_floor = floor - rim.u;
+      c.rim_height = far - rim.u;
+      crater_radius = rim.r;
     }
-    c.crater_fraction = inside / total;
     status << "crater; " << (c.rim_diameter ? "a raised rim" : "no raised rim");
-    if (c.crater_fraction > 0.5)
-      status << "; it covers more than half of the face: the median is no far field";
   }
+  double inside = 0.0, total = 0.0;
+  for (const FacePoint& q : face) {
+    total += q.weight;
+    inside += radius(q) <= crater_radius ? q.weight : 0.0;
+  }
+  c.crater_fraction = inside / total;
+  if (c.crater_fraction > 0.5)
+    status << "; it covers more than half of the face: the median is no far field";
   if (thickness && c.depth >= *thickness) {
-    status << "; perforated: the floor moved " << c.depth << " m, the target is " << *thickness
-           << " m thick there (depth and diameter measure the plug)";
+    status << "; the floor sank " << c.depth << " m below the far field, as far as the target is "
+           << "thick there (" << *thickness << " m): perforated or a plug pushed through (the "
+           << "numbers then measure the plug)";
   }
   c.status = status.str();
   return c;
@@ -208,7 +236,7 @@ Crater CraterMeasure::measure(const Particles& P) const {
     const Point& deepest = *std::max_element(
         mine.begin(), mine.end(), [](const Point& a, const Point& b) { return a.q.u < b.q.u; });
     const Vec3& x0 = face_x0_[deepest.i];
-    thickness = thickness_along_x(geometry_, spec_.face, x0(1), x0(2), dx_, grid_upper_x_);
+    thickness = thickness_along_x(geometry_, x0(0), x0(1), x0(2), dx_, grid_upper_x_);
   }
   Crater c = crater_of(face, ring_width_, spec_.axis, axisymmetric_, thickness);
   c.face_particles = face_.ids(0).size();
@@ -220,7 +248,8 @@ Json Crater::json(const std::string& object, double face) const {
   return {{"object", object},
           {"face [m]", face},
           {"depth [m]", depth},
-          {"diameter [m]", or_null(diameter)},
+          {"half_depth_diameter [m]", or_null(half_depth_diameter)},
+          {"surface_diameter [m]", or_null(surface_diameter)},
           {"rim_diameter [m]", or_null(rim_diameter)},
           {"rim_to_floor_depth [m]", or_null(rim_to_floor)},
           {"rim_height [m]", or_null(rim_height)},

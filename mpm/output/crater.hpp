@@ -17,19 +17,27 @@
 //              (`crater_fraction` says when not; a plate that dishes has no such level);
 //   depth    = floor - far: how deep the crater goes below the surface as the target's own
 //              motion has moved it (the apparent depth below the original surface);
-//   diameter = 2 R_half: the bowl's width at half its depth, where the profile first falls to
-//              far + (floor - far)/2 going out from the axis (linear between the profile's
-//              points): defined for every crater, with or without a rim, and converging with the
-//              grid (a surface-level or rim-crest diameter is not, where the plate dishes or the
-//              rim is a ring wide);
-//   rim      = a raised rim crest: going out past R_half, the first ring whose outer neighbour
-//              lies lower (u(k+1) >= u(k)) and which stands above the far field (u < far):
-//              rim_diameter 2 R_rim (the rim-crest diameter of crater morphometry, Pike 1977),
-//              rim_to_floor_depth floor - u_rim, rim_height far - u_rim; none otherwise;
-//   perforated: floor - far reaches the target's thickness along x at the deepest particle: the
-//              depth and diameter then measure the plug's travel, and the status says so.
-// The axis: output.crater's axis_y/axis_z, or the axis of symmetry (axisymmetric), or the mean
-// current (y, z) of the particles below the half-depth level (the bowl's lower half).
+//   half_depth_diameter = 2 R_half: the bowl's width at half its depth, where the profile first
+//              rises to far + (floor - far)/2 going out from the axis (linear between the
+//              profile's points): defined for every crater, with or without a rim, and the one
+//              that converges with the grid; a hemispherical bowl's is 0.87, a cone's 0.5 of the
+//              surface diameter;
+//   surface_diameter = 2 R_surface: where the profile first rises back to the far field (the
+//              apparent diameter at the original surface, as impact correlations give it); less
+//              grid-stable (the profile meets the far field at a shallow angle);
+//   rim      = a raised rim crest: the highest ring from R_half out to 3 R_half, if a ring
+//              further out lies lower and it stands above the far field by more than 5 % of the
+//              depth (lower: the particle scatter's): rim_diameter 2 R_rim (the rim-crest
+//              diameter D_r of crater morphometry, Pike 1977), rim_to_floor_depth floor - u_rim,
+//              rim_height far - u_rim; none otherwise;
+//   crater_fraction = the face's weight within the crater (R_rim, else R_surface, else R_half);
+//   perforated: floor - far reaches the target's thickness along x from the deepest particle's
+//              initial position: the numbers then measure a plug, and the status says so.
+// Particles with a non-finite position are left out. The face layer is Lagrangian: with
+// erosion or jetting the original face no longer lines the crater, the floor is one particle's
+// displacement, and ejecta of the face layer pull the ring means outwards.
+// The axis: output.crater's axis_y/axis_z, or the axis of symmetry (axisymmetric), or the
+// weighted mean current (y, z) of the particles below the half-depth level (the bowl's lower half).
 // On several ranks the face layer is gathered on every rank (a few layers of cells) in seed-index
 // order: every rank computes the one-rank crater.
 #pragma once
@@ -47,19 +55,20 @@
 namespace impact::mpm {
 
 struct Crater {
-  double depth = 0.0;                   ///< the floor below the far field [m]
-  std::optional<double> diameter;       ///< the bowl's width at half its depth [m]
-  std::optional<double> rim_diameter;   ///< a raised rim's crest diameter [m]
-  std::optional<double> rim_to_floor;   ///< floor - u_rim [m]
-  std::optional<double> rim_height;     ///< far - u_rim > 0: how far the rim stands out [m]
-  double floor_displacement = 0.0;      ///< max u [m]
-  double far_field_displacement = 0.0;  ///< weighted median u [m]: rigid, far-field motion
-  std::optional<double> thickness;      ///< the target along x at the floor's (y0, z0) [m]
-  double axis_y = 0.0, axis_z = 0.0;    ///< the axis [m] (axisymmetric: 0, the axis of symmetry)
-  double ring_width = 0.0;              ///< [m]
-  double crater_fraction = 0.0;         ///< of the face's weight inside the crater [-]
-  std::size_t face_particles = 0;       ///< the face layer: abs(X0_x - face) <= dx
-  std::string status;                   ///< what was found, and what the numbers mean
+  double depth = 0.0;                         ///< the floor below the far field [m]
+  std::optional<double> half_depth_diameter;  ///< the bowl's width at half its depth [m]
+  std::optional<double> surface_diameter;     ///< its width at the far field's level [m]
+  std::optional<double> rim_diameter;         ///< a raised rim's crest diameter [m]
+  std::optional<double> rim_to_floor;         ///< floor - u_rim [m]
+  std::optional<double> rim_height;           ///< far - u_rim > 0: how far the rim stands out [m]
+  double floor_displacement = 0.0;            ///< max u [m]
+  double far_field_displacement = 0.0;        ///< weighted median u [m]: rigid, far-field motion
+  std::optional<double> thickness;            ///< along x from the deepest particle's X0 [m]
+  double axis_y = 0.0, axis_z = 0.0;  ///< the axis [m] (axisymmetric: 0, the axis of symmetry)
+  double ring_width = 0.0;            ///< [m]
+  double crater_fraction = 0.0;       ///< of the face's weight inside the crater [-]
+  std::size_t face_particles = 0;     ///< the face layer: abs(X0_x - face) <= dx
+  std::string status;                 ///< what was found, and what the numbers mean
   /// summary.json "crater".
   Json json(const std::string& object, double face) const;
 };

@@ -53,13 +53,13 @@ def main():
                "status": "completed", "steps": 284, "failed_particles": 270,
                "final": {"energy_error [-]": 1e-3, "kinetic_energy [J]": 10.0},
                "observables": {"objects": {"sphere": {"mean_velocity [m/s]": [1.0, 2.0, 0.0]}},
-                               "crater": {"depth [m]": 0.004, "diameter [m]": 0.01}}}
+                               "crater": {"depth [m]": 0.004, "half_depth_diameter [m]": 0.01}}}
     flat = rb.flatten(summary)
     check(set(flat) == {"status", "steps", "failed_particles", "final/kinetic_energy [J]",
                         "observables/objects/sphere/mean_velocity [m/s]/0",
                         "observables/objects/sphere/mean_velocity [m/s]/1",
                         "observables/objects/sphere/mean_velocity [m/s]/2",
-                        "observables/crater/depth [m]", "observables/crater/diameter [m]"},
+                        "observables/crater/depth [m]", "observables/crater/half_depth_diameter [m]"},
           f"flatten keeps the results only: {sorted(flat)}")
     check(flat["status"] == "completed" and flat["observables/crater/depth [m]"] == 0.004,
           f"flatten values: {flat}")

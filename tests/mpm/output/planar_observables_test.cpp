@@ -56,7 +56,7 @@ BOOST_AUTO_TEST_CASE(axisymmetric_mean_velocity_is_axial_and_the_crater_axis_is_
   const double ring = crater["ring_width [m]"].get<double>();
   BOOST_TEST(ring == scene.grid.spacing()(1));
   // The width at half depth of a 6 mm step, seen through rings of width w: within w of it.
-  const double diameter = crater["diameter [m]"].get<double>();
+  const double diameter = crater["half_depth_diameter [m]"].get<double>();
   BOOST_TEST(std::abs(diameter - 12e-3) <= 2.0 * ring, diameter);
   BOOST_TEST(widest < 6e-3);
 }

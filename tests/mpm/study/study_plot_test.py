@@ -45,7 +45,7 @@ ENTRIES = {
         "verdict": "order 0.353 outside the plausible [0.5, 2]; not in the asymptotic range",
         "range": {"low": 3.0899, "high": 13.856, "unit": "m/s", "order_low": 0.5,
                   "order_high": 1.0, "levels": 3, "basis": "Richardson"}},
-    "crater diameter": {"path": "/observables/crater/diameter [m]", "value": 0.016,
+    "crater diameter": {"path": "/observables/crater/half_depth_diameter [m]", "value": 0.016,
                         "extrapolated": None, "error [-]": None, "gci_fine [-]": None,
                         "order": None, "status": "monotonic divergence; not in the asymptotic "
                         "range"},
