@@ -245,8 +245,8 @@ def converged_range(phi, h, formal=FORMAL_ORDER, band=PLAUSIBLE_ORDER):
     - anything else (oscillatory, divergent, no difference): no power law bounds the converged
       value; the band of the three values.
     Returns {"low", "high", "order_low", "order_high" (None unless monotonic), "observed_order",
-    "clamped", "condition", "sign_determined" (False when the range spans 0 though the three
-    values share a sign: the converged value's sign is then not known)}."""
+    "clamped", "condition", "sign_determined" (False when the range spans 0: the converged
+    value's sign is then not known)}."""
     t = gci_triple(phi, h)
     out = {"condition": t["condition"], "observed_order": t["order"], "order_low": None,
            "order_high": None, "clamped": False}
@@ -256,8 +256,7 @@ def converged_range(phi, h, formal=FORMAL_ORDER, band=PLAUSIBLE_ORDER):
         out.update(low=min(ends), high=max(ends), order_low=lo, order_high=hi, clamped=clamped)
     else:
         out.update(low=min(phi), high=max(phi))
-    same_sign = all(v > 0 for v in phi) or all(v < 0 for v in phi)
-    out["sign_determined"] = not (same_sign and out["low"] < 0.0 < out["high"])
+    out["sign_determined"] = not out["low"] < 0.0 < out["high"]
     return out
 
 

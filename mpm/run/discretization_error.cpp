@@ -60,10 +60,15 @@ void set_error(Json& out, double value) {
 
 // A table made by another code or other material data: the run repeats the level's scene (same
 // fingerprint) but not its value, so the ladder's numbers no longer describe this run (issue 52:
-// a stale table applied silently). Round-off between thread counts moves an observable by far
-// less than kStaleTolerance; a change of the physics, by more. The entry then says so, is not
-// quotable and carries neither range nor verdict. Tables without "values" are not checked.
-constexpr double kStaleTolerance = 1e-3;  // relative to the ladder's value [-]
+// a stale table applied silently). A run is bit for bit the same on any thread count
+// (docs/mpm.md); other ranks, compilers or machines move an observable by round-off, which an
+// impact may amplify, so the tolerance is the larger of 1e-3 relative and 1 % of the smallest
+// change the ladder saw between this level and a neighbour (a value near 0 is not stale for
+// round-off). A stale entry says so, is not quotable, keeps the table's range under the stale
+// verdict and gives the ladder's value beside this run's. Tables without "values" are not
+// checked.
+constexpr double kStaleRelative = 1e-3;     // of the value [-]
+constexpr double kStaleOfLevelStep = 1e-2;  // of the change to a neighbouring level [-]
 
 void mark_if_stale(Json& out, const Json& o, const std::string& path, std::size_t level_index,
                    std::size_t level_count) {
@@ -77,8 +82,15 @@ void mark_if_stale(Json& out, const Json& o, const std::string& path, std::size_
   if (!table_value.is_number()) return;  // that level's run gave no value: nothing to compare
   const double ladder = table_value.get<double>();
   const double value = out["value"].get<double>();
-  const double scale = std::max(std::abs(ladder), std::abs(value));
-  if (!(std::abs(value - ladder) > kStaleTolerance * scale)) return;
+  double tolerance = kStaleRelative * std::max(std::abs(ladder), std::abs(value));
+  std::optional<double> step;
+  for (const std::size_t j : {level_index - 1, level_index + 1}) {
+    if (j >= level_count || !(*values)[j].is_number()) continue;  // (level_index - 1 wraps)
+    const double d = std::abs((*values)[j].get<double>() - ladder);
+    if (d > 0.0 && (!step || d < *step)) step = d;
+  }
+  if (step) tolerance = std::max(tolerance, kStaleOfLevelStep * *step);
+  if (!(std::abs(value - ladder) > tolerance)) return;
   std::ostringstream why;
   why.precision(6);
   why << "stale: this run gives " << value << ", the ladder's run of this level gave " << ladder
@@ -88,7 +100,6 @@ void mark_if_stale(Json& out, const Json& o, const std::string& path, std::size_
   out["quotable"] = false;
   out["error [-]"] = nullptr;
   out["ladder_value"] = ladder;
-  out.erase("range");
 }
 
 // The range the levels and the plausible orders bound (ladder.py: {"low", "high", "unit",

@@ -7,7 +7,7 @@
 // order) and the range the levels and the plausible orders bound. A run whose fingerprint is one
 // of the levels' reads its own value at each pointer and reports its relative error against the
 // extrapolated value where it is quotable, the range where it is not; a value that differs from
-// the ladder's own run of that level by more than 1e-3 marks the table stale. The table is
+// the ladder's own run of that level by more than round-off marks the table stale. The table is
 // untrusted input: whatever it holds, the run neither stops nor fails; a malformed table gives a
 // status naming the key path.
 #pragma once

@@ -19,16 +19,27 @@ double nominal_strain_rate(const Scene& scene, std::size_t o) {
   const SceneObject& object = scene.objects[o];
   const auto box = bounds(object.geometry);
   double rate = 0.0;
-  // Every other object it approaches (the relative velocity points from its centre toward the
-  // other's; two bodies flying apart load neither): the relative speed over its extent along it.
-  const Vec3 centre = 0.5 * (box.first + box.second);
+  // Every other object it approaches (two bodies flying apart load neither): the relative speed
+  // over its extent along it. Approaching: the bounding boxes overlap on every axis (nested
+  // bodies, a rod in a sleeve), or on an axis along which they are apart (or touch) the relative
+  // velocity closes the gap.
   for (std::size_t q = 0; q < scene.objects.size(); ++q) {
     if (q == o) continue;
     const Vec3 v = object.velocity - scene.objects[q].velocity;
     const double speed = v.norm();
+    if (speed == 0.0) continue;
     const auto other = bounds(scene.objects[q].geometry);
-    const Vec3 toward = 0.5 * (other.first + other.second) - centre;
-    if (speed == 0.0 || v.dot(toward) <= 0.0) continue;
+    bool apart = false, closing = false;
+    for (int a = 0; a < 3; ++a) {
+      if (other.first(a) >= box.second(a)) {  // the other lies beyond along +a
+        apart = true;
+        closing = closing || v(a) > 0.0;
+      } else if (other.second(a) <= box.first(a)) {  // beyond along -a
+        apart = true;
+        closing = closing || v(a) < 0.0;
+      }
+    }
+    if (apart && !closing) continue;
     const double length = extent_along(box, v / speed);
     if (length > 0.0) rate = std::max(rate, speed / length);
   }

@@ -82,6 +82,12 @@ BOOST_AUTO_TEST_CASE(the_nominal_rate_is_the_speed_toward_what_holds_or_hits_ove
   const Scene apart = read_scene(two, "two.json");
   BOOST_TEST(nominal_strain_rate(apart, rod) == 0.0);
   BOOST_TEST(nominal_strain_rate(apart, 1 - rod) == 0.0);
+  // Bounding boxes that overlap on every axis (as a sleeve's about a rod): in contact, counted
+  // whatever the direction of the relative velocity.
+  two["objects"]["plate"]["geometry"] = {
+      {"type", "box"}, {"lower", {0.010, 0.0, 0.0}}, {"upper", {0.015, 0.012, 0.012}}};
+  const Scene nested = read_scene(two, "two.json");
+  BOOST_TEST(nominal_strain_rate(nested, rod) == 1100.0 / 0.025, tt::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_CASE(a_material_outside_its_fitted_range_warns_once) {

@@ -136,6 +136,9 @@ if not (got["low"] == -2.0 and abs(got["high"] - 6.0) < 1e-12 and got["sign_dete
     failures.append(f"range of levels all below 0 crossing it: {got}")
 if gci.converged_range((10.0, 11.0, 12.5), (1.0, 1.5, 2.25))["sign_determined"] is not True:
     failures.append("a positive range of positive levels: sign not determined")
+# Levels of both signs (oscillatory: the band of the three) do not determine it either.
+if gci.converged_range((0.5, -0.3, 0.8), (1.0, 1.5, 2.25))["sign_determined"] is not False:
+    failures.append("levels of both signs: sign determined")
 # Oscillatory and divergent triples: no power law; the band of the three values, no orders.
 for phi, condition in (((1.0, 1.2, 0.9), "oscillatory"),
                        ((1.0, 1.2, 1.3), "monotonic divergence"), ((1.0, 1.0, 1.3), "no difference")):
