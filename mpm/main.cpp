@@ -32,6 +32,7 @@
 #include "mpm/run/step_estimate.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/simulation/simulation.hpp"
+#include "mpm/threads/threads.hpp"
 #include "support/command_line.hpp"
 #include "support/omp_wait_policy.hpp"
 #include "support/shipped_file.hpp"
@@ -202,7 +203,7 @@ int run_main(int argc, char** argv) {
   for (CLI::App* c : {run, check, study}) {
     c->add_option("--threads", options.threads, "OpenMP threads (default: all; study: 2)")
         ->type_name("N")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(1, impact::mpm::kMaxThreads));
   }
   run->add_option("SCENE.json", scene_file, "scene file (docs/scenes.md)");
   check->add_option("SCENE.json", scene_file, "scene file")->required();

@@ -60,13 +60,13 @@ void set_error(Json& out, double value) {
 
 // A table made by another code or other material data: the run repeats the level's scene (same
 // fingerprint) but not its value, so the ladder's numbers no longer describe this run (issue 52:
-// a stale table applied silently). A run is bit for bit the same on any thread count
-// (docs/mpm.md); other ranks, compilers or machines move an observable by round-off, which an
-// impact may amplify, so the tolerance is the larger of 1e-3 relative and 1 % of the smallest
-// change the ladder saw between this level and a neighbour (a value near 0 is not stale for
-// round-off). A stale entry says so, is not quotable, keeps the table's range under the stale
-// verdict and gives the ladder's value beside this run's. Tables without "values" are not
-// checked.
+// a stale table applied silently). Particle state is bit for bit the same on any thread count,
+// particle sums differ by round-off (docs/mpm.md); other ranks, compilers or machines move an
+// observable by round-off, which an impact may amplify, so the tolerance is the larger of 1e-3
+// relative and 1 % of the smallest change the ladder saw between this level and a neighbour (a
+// value near 0 is not stale for round-off). A stale entry says so, is not quotable, keeps the
+// table's range under the stale verdict and gives the ladder's value beside this run's. Tables
+// without "values" are not checked.
 constexpr double kStaleRelative = 1e-3;     // of the value [-]
 constexpr double kStaleOfLevelStep = 1e-2;  // of the change to a neighbouring level [-]
 

@@ -35,7 +35,7 @@ struct RunOptions {
 /// Exit codes of `mpm run` (docs/mpm.md#exit-codes); 1 is a usage error, 2 bad input (also a
 /// restart that is refused), 128 + N a stop by signal N (SIGINT 130, SIGTERM 143).
 inline constexpr int kExitRunFailed = 3;  ///< a numerical fault or another failure
-inline constexpr int kExitMemory = 4;     ///< the memory estimate exceeds what is available
+inline constexpr int kExitMemory = 4;     ///< refused to start: the memory or step estimate
 inline constexpr int kExitSignalBase = 128;
 
 /// Runs a scene to its end time writing history.csv, snapshots, summary.json, the resolved scene
@@ -43,9 +43,9 @@ inline constexpr int kExitSignalBase = 128;
 /// The files of a previous run in the directory are removed first (output_directory.hpp); one
 /// that can still be continued is refused (InputError) unless options.overwrite. Returns 0;
 /// kExitRunFailed after a SolverFailure (reported on stderr, final snapshot written, status.json
-/// "failed"); kExitMemory when the memory estimate exceeds the available memory (nothing is
-/// allocated or written); 128 + signal after a checkpoint on SIGINT/SIGTERM (status.json
-/// "interrupted").
+/// "failed"); kExitMemory when the memory estimate exceeds the available memory or the step
+/// estimate time.max_estimated_steps (start_refusal; nothing is allocated or written); 128 + signal
+/// after a checkpoint on SIGINT/SIGTERM (status.json "interrupted").
 int run(const Scene& scene, const RunOptions& options);
 
 /// Continues the run in `dir` from dir/checkpoint.bin with dir/scene.json (mpm run --restart

@@ -61,8 +61,12 @@ int command_plot(const std::vector<std::string>& args) {
     return 1;
   }
   for (const auto& f : o.positional) {
-    if (!std::filesystem::is_regular_file(f)) {
-      std::cerr << "pointdriver plot: " << f << ": no such file\n";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(f, ec)) {
+      const char* why = std::filesystem::is_directory(f, ec) ? "is a directory. expected a CSV file"
+                        : std::filesystem::exists(f, ec)     ? "is not a regular file"
+                                                             : "no such file";
+      std::cerr << "pointdriver plot: " << f << ": " << why << '\n';
       return 2;
     }
   }

@@ -12,6 +12,7 @@ the stub ``__init__.pyi`` beside this file.
 """
 import json
 import math
+import operator
 import os
 import re
 
@@ -295,7 +296,8 @@ def check_scene(scene, patches=None, threads=0, base_dir=None):
     estimate refuses it (``refusal``) the ``report`` (particles, nodes, time step, memory). The
     warnings are also issued as InputWarning."""
     file, text, label = _scene_source(scene, base_dir)
-    checked = json.loads(_impact.check_scene(file, text, label, _patches(patches), int(threads)))
+    checked = json.loads(_impact.check_scene(file, text, label, _patches(patches),
+                                             _threads(threads)))
     warn_input(checked["warnings"], stacklevel=2)
     return checked
 
@@ -322,7 +324,7 @@ def run_scene(scene, out, patches=None, threads=0, progress=False, base_dir=None
     out = writable_directory(out, "out")
     try:
         code, directory, warnings, message, interrupt = _impact.run_scene(
-            file, text, label, _patches(patches), out, int(threads), bool(progress),
+            file, text, label, _patches(patches), out, _threads(threads), bool(progress),
             bool(overwrite), lambda w: warn_input(w, stacklevel=3))
     except InputError as e:
         raise InputError(_in_python_words(str(e))) from None
@@ -343,8 +345,20 @@ def resume_scene(directory, threads=0, progress=False):
     stopped, writing into the same directory. Returns and raises as run_scene; a checkpoint that
     is missing or does not belong to the directory's scene.json raises InputError."""
     directory = os.fspath(directory)
-    code, message, interrupt = _impact.resume_scene(directory, int(threads), bool(progress))
+    code, message, interrupt = _impact.resume_scene(directory, _threads(threads), bool(progress))
     return _finish(code, directory, [], message, interrupt)
+
+
+def _threads(threads):
+    """threads as the programs take it: 0 (all the cores) or 1 to 256 (mpm's --threads)."""
+    try:
+        n = None if isinstance(threads, bool) else operator.index(threads)
+    except TypeError:
+        n = None
+    if n is None or not 0 <= n <= 256:
+        raise InputError(f"threads: expected 0 (all the cores) or a whole number from 1 to 256, "
+                         f"got {threads!r}")
+    return n
 
 
 def _finish(code, directory, warnings, message, interrupt):

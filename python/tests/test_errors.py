@@ -72,6 +72,18 @@ def test_unwritable_out_raises_input_error_naming_it(data, workdir):
         impact.run_scene(data("scenes", "verification", "rigid_translation.json"), out="a_file")
 
 
+def test_a_thread_count_out_of_range_is_refused(data, workdir):
+    """threads=-3 ran silently on all the cores; 0 (all) and 1 to 256 are mpm's --threads."""
+    scene = data("scenes", "verification", "rigid_translation.json")
+    for bad in (-3, 257, 1.5, True, "2"):
+        with pytest.raises(impact.InputError, match=r"^threads: expected 0 \(all the cores\) or a "
+                                                    r"whole number from 1 to 256, got "):
+            impact.run_scene(scene, out="run", threads=bad)
+        with pytest.raises(impact.InputError, match=r"^threads: "):
+            impact.check_scene(scene, threads=bad)
+    assert not os.path.exists("run")
+
+
 def test_unit_slips_are_warnings_at_the_callers_line(test_data, workdir):
     with pytest.warns(impact.InputWarning, match=r"/density: 2.7 looks like g/cm\^3") as record:
         m = impact.Material(test_data("unit_warnings", "materials", "density_in_g_per_cc.json"))
