@@ -355,6 +355,7 @@ Path read_path(const Json& document, const std::string& file) {
                                      // the k-th leg a named leg expanded into
   if (!document.contains("legs") || !document["legs"].is_array() || document["legs"].empty()) {
     problems.add("/legs", "required: a non-empty array of legs");
+    root.ignore("legs");  // reported above: not also an "unknown key"
   } else {
     root.ignore("legs");
     const Json& legs = document["legs"];
