@@ -4,7 +4,7 @@
   ladder.py SCENE.json --out OUT [--levels 1,1.5,2.25] [--ratio 1.5 --count 3]
             [--particles-per-cell N,... --ppc-levels L,...] [--threads 2] [--ranks 1]
             [--set JSON ...] [--mpm build/bin/mpm] [--mpirun mpirun] [--checkpoint-steps 200]
-            [--runs DIR] [--table PATH] [--analyse-only] [--no-plot]
+            [--runs DIR] [--table PATH] [--analyse-only [--refingerprint]] [--no-plot]
   (also `mpm study --ladder LEVELS SCENE.json --out OUT [...]`, which runs this script)
 
 1. Writes OUT/scenes/<run>.json for every level: a scene that `extends` SCENE with the grid's cells
@@ -35,6 +35,10 @@
 A Taylor rod whose shape cannot be measured (its anvil layer all failed: the shipped failure stack)
 has no Lf and Dm; the table's verdict and a warning on stderr say why and how to measure them
 (failure off: --set '{"physics": {"erosion": "none"}}').
+--analyse-only --refingerprint labels each level with the fingerprint the scene has today (`mpm
+check --fingerprint`) rather than the one its run recorded, naming every level whose fingerprint
+changed: for a scene edited in keys that change no number (a key removed because the model never
+read it). `mpm run` still marks such a table stale if its value differs from the run's.
 Exit codes: 0 done, 1 usage error, 2 input error (the scene), 3 a run failed (analysed without it)
 or an output could not be written (one line naming the path and the reason), 130 Ctrl-C (a level
 being run writes its checkpoint; the same command resumes).
@@ -879,6 +883,8 @@ def ladder_main(argv):
     ap.add_argument("--runs", default=None, help="where the runs go (default OUT/runs)")
     ap.add_argument("--table", default=None)
     ap.add_argument("--analyse-only", action="store_true")
+    ap.add_argument("--refingerprint", action="store_true",
+                    help="with --analyse-only: today's scene fingerprints, not the runs' own")
     ap.add_argument("--no-plot", action="store_true")
     args = ap.parse_args(argv)
     args.command_line = shlex.join(["campaigns/study/ladder.py"] + argv)
@@ -931,6 +937,8 @@ def ladder_main(argv):
     if args.table and (os.path.isdir(args.table) or not os.path.isdir(
             os.path.dirname(os.path.abspath(args.table)))):
         ap.error(f"--table {args.table}: expected a file path in an existing directory")
+    if args.refingerprint and not args.analyse_only:
+        ap.error("--refingerprint goes with --analyse-only (a run records its own fingerprint)")
     if not args.analyse_only and not os.access(args.mpm, os.X_OK):
         print(f"ladder: --mpm {args.mpm}: not an executable (build it: cmake --build build)",
               file=sys.stderr)
@@ -995,8 +1003,17 @@ def ladder_main(argv):
                      "h": representative_h(scene, cells),
                      "data": read_run(run_dir, text, scene, rod, observables)})
     for r in runs:  # runs made before summary.json carried the fingerprint: ask mpm check
-        if r["data"] and not r["data"]["fingerprint"]:
+        if not r["data"]:
+            continue
+        if not r["data"]["fingerprint"]:
             r["data"]["fingerprint"] = fingerprint_of(args, r["scene_path"])
+        elif args.refingerprint:
+            today = fingerprint_of(args, r["scene_path"])
+            if today and today != r["data"]["fingerprint"]:
+                print(f"ladder: {r['name']}: fingerprint {r['data']['fingerprint']} of the run, "
+                      f"{today} of the scene today (--refingerprint): the table takes today's",
+                      file=sys.stderr)
+                r["data"]["fingerprint"] = today
     result = analyse(runs, observables)
     said = {}
     for res in result.values():  # Lf and Dm share their reason: one line for both

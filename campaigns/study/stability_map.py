@@ -133,7 +133,9 @@ class Variant:
             "time": {"multiplier": self.multiplier, "max_time": max_time},
             "solver": {"interpolation": self.interpolation, "scheme": self.scheme},
             "physics": {
-                "contact": {"type": self.contact},
+                # single_velocity reads no mu: the base's (case01's) is removed (null).
+                "contact": {"type": self.contact,
+                            **({"mu": None} if self.contact == "single_velocity" else {})},
                 "artificial_viscosity": {"enabled": self.av == "on"},
             },
             "objects": {"sphere": {"velocity": [self.velocity, 0.0, 0.0]}},

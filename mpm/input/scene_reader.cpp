@@ -369,6 +369,17 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
                                   "contact normal at a node", "mass_gradients") == "larger_volume"
                             ? ContactNormal::larger_volume
                             : ContactNormal::mass_gradients;
+    // One shared velocity field has no contact surface: a friction coefficient or a normal rule
+    // there would be read and ignored, so it is refused (issue 53). A scene that extends one with
+    // friction removes the inherited keys with null (RFC 7396).
+    if (ph.contact.type == ContactType::single_velocity)
+      for (const char* key : {"mu", "normal"})
+        if (c->has(key))
+          c->problems().add(c->key_path(key),
+                            "read only by the \"friction\" contact (also called \"approach\"); "
+                            "\"single_velocity\" is one velocity field with no contact surface: "
+                            "remove the key (null removes one inherited through \"extends\") or "
+                            "set type to \"friction\"");
     c->reject_unknown_keys();
   }
   if (auto a = r.optional_child("artificial_viscosity", "bulk viscosity, report eq. 12")) {

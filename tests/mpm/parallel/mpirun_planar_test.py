@@ -137,7 +137,7 @@ def main(mpm, mpiexec, ranks, work):
     launch = [mpiexec, "-np", str(ranks), "--oversubscribe", mpm, "run", "--threads", "1"]
     variants = [
         ("friction", {}, 4, False),
-        ("wall", {"physics": {"contact": {"type": "single_velocity"}},
+        ("wall", {"physics": {"contact": {"type": "single_velocity", "mu": None}},
                   "grid": {"boundary": {"x+": "wall", "z-": None, "z+": None},
                            "wall_friction": {"x+": 0.2}}}, 1, True),
     ]

@@ -208,6 +208,7 @@ BOOST_AUTO_TEST_CASE(more_than_64_contact_fields_are_refused) {
   // One shared field whatever the materials: single_velocity contact has no limit.
   Json single = with_materials(65, true);
   single["physics"]["contact"]["type"] = "single_velocity";
+  single["physics"]["contact"].erase("mu");  // read by friction only (refused with one field)
   BOOST_TEST(read_scene(single, "test.json").field_count() == 1);
 }
 
