@@ -1002,7 +1002,9 @@ def ladder_main(argv):
                      "scene_path": scene_path,
                      "h": representative_h(scene, cells),
                      "data": read_run(run_dir, text, scene, rod, observables)})
-    for r in runs:  # runs made before summary.json carried the fingerprint: ask mpm check
+    # Runs made before summary.json carried the fingerprint, and with --refingerprint every run:
+    # the fingerprint `mpm check` gives the level's scene today.
+    for r in runs:
         if not r["data"]:
             continue
         if not r["data"]["fingerprint"]:
