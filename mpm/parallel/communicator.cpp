@@ -74,7 +74,8 @@ Communicator::Communicator([[maybe_unused]] const MpiSession* session) {
 #endif
 }
 
-std::vector<double> Communicator::every_ranks(const std::vector<double>& values) const {
+std::vector<double> Communicator::every_ranks(
+    [[maybe_unused]] const std::vector<double>& values) const {
   std::vector<double> all;
 #ifdef IMPACT_MPI
   const MpiTimer timer(seconds_);
@@ -176,9 +177,10 @@ std::string Communicator::broadcast(const std::string& text, [[maybe_unused]] in
   return out;
 }
 
-std::vector<std::vector<char>> Communicator::exchange(const std::vector<int>& neighbours,
-                                                      const std::vector<std::vector<char>>& to_send,
-                                                      [[maybe_unused]] int tag) const {
+std::vector<std::vector<char>> Communicator::exchange(
+    const std::vector<int>& neighbours,
+    [[maybe_unused]] const std::vector<std::vector<char>>& to_send,
+    [[maybe_unused]] int tag) const {
   std::vector<std::vector<char>> received(neighbours.size());
 #ifdef IMPACT_MPI
   if (!mpi_) return received;
