@@ -548,6 +548,8 @@ def git_commit():
 
 def write_outputs(args, scene_file, runs, observables, result, plot, scene_objects=None):
     out = args.out
+    # Before anything is written: the outputs are tracked files, and writing them dirties the tree.
+    commit = git_commit()
     with open(os.path.join(out, "ladder.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["run", "level [-]", "particles_per_cell [-]", "h [m]", "observable", "unit",
@@ -567,7 +569,7 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
         "scene": (os.path.relpath(os.path.abspath(scene_file), ROOT)
                   if os.path.abspath(scene_file).startswith(ROOT + os.sep)
                   else os.path.abspath(scene_file)),
-        "command": args.command_line, "commit": git_commit(),
+        "command": args.command_line, "commit": commit,
         "date": datetime.date.today().isoformat(),
         "definitions": "docs/accuracy.md#grid-convergence-ladders",
         "safety_factor": gci.SAFETY_FACTOR,
