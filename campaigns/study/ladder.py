@@ -162,7 +162,10 @@ def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod
               "directory": None}
     if rod is not None:  # Lf and Dm come from the first and last snapshots (at the scene's
         output["snapshots"] = True  # output.interval, which also sets the history rows)
-    patch = {"extends": os.path.abspath(scene_file),
+    # Relative to the level scene's own folder (mpm resolves `extends` from there): the level's
+    # text, the marker its run is matched by, is then the same in every clone of the repository.
+    patch = {"extends": os.path.relpath(os.path.abspath(scene_file),
+                                        os.path.dirname(os.path.abspath(path))),
              "description": f"{os.path.basename(scene_file)} at {level:g} x the cells per axis "
              f"({' x '.join(map(str, cells))})" + (f", {ppc} particles per cell per axis"
                                                    if ppc is not None else "")
