@@ -86,13 +86,14 @@ case "${1:-}" in
     install_missing_packages "${FUZZ_PACKAGES[@]}" "${TEST_TOOL_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
     # The test job treats every compiler warning as an error (-Wall -Wextra -Wpedantic are on).
     build release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
-    # JUnit XML of each run for CI servers, in its build directory (build/junit.xml, ...).
-    ctest --preset release --output-junit junit.xml
+    # JUnit XML of each run for CI servers, in its build directory (build/junit.xml, ...). Tests run
+    # side by side on every core; each one that runs 2 threads claims 2 (PROCESSORS).
+    ctest --preset release --output-junit junit.xml -j "$(nproc)"
     build asan -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
-    ctest --preset asan --output-junit junit.xml
+    ctest --preset asan --output-junit junit.xml -j "$(nproc)"
     # Each loader's fuzz target for a few seconds (about a minute in all); fails on any finding.
     build fuzz -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
-    ctest --preset fuzz --output-junit junit.xml
+    ctest --preset fuzz --output-junit junit.xml -j "$(nproc)"
     ;;
   mpi)
     install_missing_packages "${MPI_PACKAGES[@]}"

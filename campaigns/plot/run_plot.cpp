@@ -12,7 +12,7 @@ namespace impact::mpm {
 
 namespace {
 
-std::string plot_script_path() {
+std::string run_plot_script_path() {
   if (const char* env = std::getenv("MPM_PLOT_SCRIPT"); env && *env) return env;
   return shipped_file("campaigns/plot/run_plot.py").string();
 }
@@ -31,7 +31,7 @@ int plot_run(const std::string& run, const std::string& figure) {
                  "DIR)\n";
     return 2;
   }
-  const std::string script = plot_script_path();
+  const std::string script = run_plot_script_path();
   if (!fs::is_regular_file(script, ec)) {
     std::cerr << "mpm plot: plotting script not found: " << script
               << " (set MPM_PLOT_SCRIPT to campaigns/plot/run_plot.py)\n";

@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 /// study_plot.py: $MPM_STUDY_PLOT_SCRIPT when set, else the shipped copy
 /// (support/shipped_file.hpp).
-std::string plot_script_path() {
+std::string study_plot_script_path() {
   if (const char* env = std::getenv("MPM_STUDY_PLOT_SCRIPT"); env && *env) return env;
   return shipped_file("campaigns/study/study_plot.py").string();
 }
@@ -38,7 +38,7 @@ std::string plot_script_path() {
 /// Runs study_plot.py on OUT. Never changes the study's result: a missing interpreter or a failing
 /// script is a warning with the command to run by hand.
 void run_plot(const fs::path& out, bool figures) {
-  const std::string script = plot_script_path();
+  const std::string script = study_plot_script_path();
   const std::string by_hand =
       "python3 " + script + " " + out.string() + (figures ? "" : " --no-figures");
   if (!fs::is_regular_file(script)) {

@@ -1,0 +1,1 @@
+// The host of the tests' precompiled header (tests/main/precompiled.hpp): nothing of its own.
