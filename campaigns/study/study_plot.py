@@ -60,6 +60,8 @@ class History:
             raise InputError(f"{path}: empty file")
         self.header = [h.strip() for h in rows[0]]
         self.names = [strip_unit(h) for h in self.header]
+        # A plane-strain run's extensive columns are per metre of thickness (J/m, ...).
+        self.units = {strip_unit(h): unit_of(h) for h in self.header}
         data = []
         for row in rows[1:]:
             # A run killed mid-write leaves a short or broken last line: skip it.
@@ -90,7 +92,8 @@ class History:
             return []
         lo = self.names.index("boundary_impulse_z")
         hi = self.names.index("energy_error")
-        return [self.names[i] for i in range(lo + 1, hi) if unit_of(self.header[i]) == "J"]
+        energy = self.units.get("total_energy", "J")
+        return [self.names[i] for i in range(lo + 1, hi) if unit_of(self.header[i]) == energy]
 
 
 def read_json(path):
@@ -99,6 +102,15 @@ def read_json(path):
             return json.load(f)
     except (OSError, ValueError):
         return None
+
+
+def summary_entry(summary, name):
+    """(value, unit) of summary.json's `name [unit]` entry, whatever its unit: a plane-strain
+    run's extensive entries are per metre of thickness ("initial_energy [J/m]")."""
+    for key, value in summary.items():
+        if strip_unit(key) == name:
+            return value, unit_of(key)
+    return None, ""
 
 
 def case_order(name):
@@ -142,13 +154,14 @@ def find_cases(out):
 
 # ---- table -------------------------------------------------------------------------------------
 
+# {E}: the energy unit of the study's runs (J, or J/m in plane strain).
 COLUMNS = [
     ("case", "case"),
     ("status", "status"),
     ("particles", "particles [-]"),
-    ("e0", "initial_kinetic_energy [J]"),
-    ("final_total", "final_total_energy [J]"),
-    ("max_total", "max_total_energy [J]"),
+    ("e0", "initial_kinetic_energy [{E}]"),
+    ("final_total", "final_total_energy [{E}]"),
+    ("max_total", "max_total_energy [{E}]"),
     ("drift", "relative_drift [-]"),
     ("ledger_end", "ledger_error_end [-]"),
     ("ledger_max", "max_abs_ledger_error [-]"),
@@ -169,7 +182,7 @@ def table_row(case, terms):
         "case": case.name,
         "status": case.status,
         "particles": number(s.get("particles")),
-        "e0": number(s.get("initial_energy [J]")),
+        "e0": number(summary_entry(s, "initial_energy")[0]),
         "steps": number(s.get("steps")),
         "wall": number(s.get("wall_time [s]")),
         "rate": number(s.get("particle_steps_per_second")),
@@ -186,7 +199,7 @@ def table_row(case, terms):
     r["ledger_end"] = err[-1]
     r["ledger_max"] = max(abs(e) for e in err)
     # p_end - p0 - boundary impulse (- body-force impulse): zero to round-off for the solver.
-    p0 = s.get("initial_momentum [kg m/s]")
+    p0 = summary_entry(s, "initial_momentum")[0]
     if not (isinstance(p0, list) and len(p0) == 3):
         p0 = [h.col(f"momentum_{a}")[0] for a in "xyz"]
     residual = [
@@ -199,7 +212,7 @@ def table_row(case, terms):
     scale = math.sqrt(sum(p * p for p in p0))
     # Bodies whose momenta cancel (head-on) leave round-off in p0: then relative to
     # sqrt(2 M E0), the largest |p| the kinetic energy allows; absolute (kg m/s) if that is 0 too.
-    mass, e0 = number(s.get("mass [kg]")), r["e0"]
+    mass, e0 = number(summary_entry(s, "mass")[0]), r["e0"]
     reference = math.sqrt(2.0 * mass * e0) if mass and e0 and e0 > 0 else 0.0
     if scale <= 1e-9 * reference:
         scale = reference
@@ -217,8 +230,10 @@ def write_tables(out, cases):
             if t not in terms:
                 terms.append(t)
     rows = [table_row(c, terms) for c in cases]
+    energy, momentum = study_units(cases)
     keys = [k for k, _ in COLUMNS] + ["term:" + t for t in terms] + ["message"]
-    heads = [h for _, h in COLUMNS] + [f"{t}_end [J]" for t in terms] + ["message"]
+    heads = ([h.replace("{E}", energy) for _, h in COLUMNS] + [f"{t}_end [{energy}]" for t in terms]
+             + ["message"])
 
     with open(os.path.join(out, "summary.csv"), "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
@@ -246,14 +261,26 @@ def write_tables(out, cases):
         "initial_energy); relative_drift = (final total - initial) / initial; ledger_error: the "
         "ledger's energy_error (docs/mpm.md#ledger); momentum_balance_error = "
         "abs(p_end - p0 - boundary_impulse - external_impulse) / abs(p0) (/ sqrt(2 M E0) when "
-        "the bodies' momenta cancel, abs(p0) < 1e-9 sqrt(2 M E0); absolute in kg m/s if both "
-        "are 0). Columns `*_end [J]`: further ledger energy terms at the end time (docs/mpm.md).",
+        "the bodies' momenta cancel, abs(p0) < 1e-9 sqrt(2 M E0); "
+        f"absolute in {momentum} if both are 0). Columns `*_end [{energy}]`: further ledger "
+        "energy terms at the end time (docs/mpm.md)."
+        + (" Energies and momenta are per metre of thickness (plane strain)." if "/m" in energy
+           else ""),
         "",
     ]
     for c in cases:
         lines += discretization_error_lines(c)
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("\n".join(lines))
+
+
+def study_units(cases):
+    """The energy and momentum units of the cases' histories: J and kg m/s, or per metre of
+    thickness (J/m, (kg m/s)/m) when the runs are plane strain."""
+    for c in cases:
+        if c.history is not None and "total_energy" in c.history.units:
+            return c.history.units["total_energy"], c.history.units.get("momentum_x", "kg m/s")
+    return "J", "kg m/s"
 
 
 def entry_unit(entry):
@@ -392,10 +419,11 @@ def draw_case(plt, case, reference):
             ax_p.plot(t, balance, line, color=color, lw=width,
                       label=f"momentum_{axis} - impulses_{axis} ({c.name}, conserved)")
     ax_e.set_xlabel("time [µs]")
-    ax_e.set_ylabel("energy [J]")
+    energy_unit, momentum_unit = study_units([case])
+    ax_e.set_ylabel(f"energy [{energy_unit}]")
     ax_e.set_title("energy (this case solid" + (f", {REFERENCE} dashed)" if len(runs) > 1 else ")"))
     ax_p.set_xlabel("time [µs]")
-    ax_p.set_ylabel("momentum [kg m/s]")
+    ax_p.set_ylabel(f"momentum [{momentum_unit}]")
     ax_p.set_title("momentum (dotted, dash-dotted: minus the faces' and body forces' impulses: "
                    "conserved)", fontsize=9)
     for ax in (ax_e, ax_p):

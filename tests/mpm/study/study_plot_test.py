@@ -67,6 +67,54 @@ HISTORY = ("time [s],kinetic_energy [J],strain_energy [J],total_energy [J],momen
            "1e-6,6,4,10,1.5,-0.3,0.1,-0.5,-0.3,0.1,0\n")
 
 
+PLANE_STRAIN_HISTORY = (
+    "time [s],kinetic_energy [J/m],strain_energy [J/m],total_energy [J/m],"
+    "momentum_x [(kg m/s)/m],momentum_y [(kg m/s)/m],momentum_z [(kg m/s)/m],"
+    "boundary_impulse_x [(N s)/m],boundary_impulse_y [(N s)/m],boundary_impulse_z [(N s)/m],"
+    "friction_heat [J/m],energy_error [-]\n"
+    "0,8,0,8,1e-17,0,0,0,0,0,0,0\n"
+    "1e-6,5,2.5,7.5,3e-17,0,0,0,0,0,0.5,0\n")
+
+
+def plane_strain_study():
+    """A plane-strain run books per metre of thickness: the table's heads say J/m, the initial
+    energy and the drift are read from "initial_energy [J/m]", the sink column is tabulated, and
+    two head-on bodies whose momenta cancel are judged against sqrt(2 M E0) with M read from
+    "mass [kg/m]" (before: heads in J, the drift blank, the friction heat left out and the
+    momentum error 0.86, round-off over round-off)."""
+    failures = []
+    with tempfile.TemporaryDirectory() as out:
+        case = os.path.join(out, "case01")
+        os.makedirs(case)
+        with open(os.path.join(case, "summary.json"), "w") as f:
+            json.dump({"status": "completed", "particles": 4, "initial_energy [J/m]": 8.0,
+                       "initial_momentum [(kg m/s)/m]": [1e-17, 0.0, 0.0], "mass [kg/m]": 1.0,
+                       "steps": 2, "wall_time [s]": 0.1}, f)
+        with open(os.path.join(case, "history.csv"), "w") as f:
+            f.write(PLANE_STRAIN_HISTORY)
+        done = subprocess.run([sys.executable, SCRIPT, out, "--no-figures"], capture_output=True,
+                              text=True)
+        if done.returncode != 0:
+            return [f"plane strain: study_plot.py exit {done.returncode}: {done.stderr}"]
+        with open(os.path.join(out, "summary.csv")) as f:
+            head, row = [line.rstrip("\n").split(",") for line in f.readlines()[:2]]
+        cells = dict(zip(head, row))
+        for name in ("initial_kinetic_energy [J/m]", "final_total_energy [J/m]",
+                     "friction_heat_end [J/m]"):
+            if name not in cells:
+                failures.append(f"plane strain: no column {name!r} in {head}")
+        if any(h.endswith("[J]") for h in head):
+            failures.append(f"plane strain: a column in J: {head}")
+        # drift (7.5 - 8) / 8; momentum residual 2e-17 against sqrt(2 * 1 * 8) = 4.
+        checks = {"relative_drift [-]": -0.0625, "momentum_balance_error [-]": 2e-17 / 4.0,
+                  "friction_heat_end [J/m]": 0.5}
+        for name, want in checks.items():
+            got = cells.get(name, "")
+            if not got or abs(float(got) - want) > 1e-9 * max(abs(want), 1e-12):
+                failures.append(f"plane strain: {name} {got!r}, want {want}")
+    return failures
+
+
 def main():
     failures = []
     with tempfile.TemporaryDirectory() as out:
@@ -126,6 +174,7 @@ def main():
                 failures.append(f"energy.png: exit {done.returncode}: {done.stderr}")
         except ImportError:
             print("study_plot_test: matplotlib missing: energy.png not drawn")
+    failures += plane_strain_study()
     for f in failures:
         print("FAIL", f)
     print(f"study_plot_test: {len(failures)} failures")
