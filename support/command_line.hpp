@@ -8,6 +8,8 @@
 // error (2) naming "--set patch N" and the key; problems at keys a patch set name the patch.
 #pragma once
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <cctype>
@@ -47,14 +49,27 @@ class Verbosity {
   Verbosity& operator=(const Verbosity&) = delete;
   ~Verbosity() {
     if (saved_ != nullptr) std::cout.rdbuf(saved_);
+    if (saved_fd_ >= 0) {
+      std::fflush(stdout);
+      ::dup2(saved_fd_, STDOUT_FILENO);
+      ::close(saved_fd_);
+    }
   }
 
   bool quiet = false;
   bool verbose = false;
 
-  /// Called by parse(): silences std::cout when quiet.
+  /// Called by parse(): silences std::cout when quiet, and the file descriptor 1 too, so that
+  /// a child process (the Python that draws the figures) inherits the silence.
   void apply() {
-    if (quiet && saved_ == nullptr) saved_ = std::cout.rdbuf(&null_);
+    if (!quiet || saved_ != nullptr) return;
+    saved_ = std::cout.rdbuf(&null_);
+    std::fflush(stdout);
+    const int null_fd = ::open("/dev/null", O_WRONLY);
+    if (null_fd < 0) return;  // no /dev/null: the child keeps stdout, std::cout stays silent
+    saved_fd_ = ::dup(STDOUT_FILENO);
+    if (saved_fd_ >= 0) ::dup2(null_fd, STDOUT_FILENO);
+    ::close(null_fd);
   }
 
  private:
@@ -63,6 +78,7 @@ class Verbosity {
   };
   NullBuffer null_;
   std::streambuf* saved_ = nullptr;
+  int saved_fd_ = -1;  ///< the original descriptor 1 while quiet
 };
 
 /// A program or command: its description, the exit codes in the help's footer, and the flags

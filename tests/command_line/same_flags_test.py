@@ -2,7 +2,7 @@
 """Every program and command accepts the same flags (support/command_line.hpp): --version and
 --help exit 0 (3 when stdout cannot be written: > /dev/full), a command's --help ends with its
 own exit codes, an unknown option is a usage error (1), --out=DIR works as --out DIR, --quiet
-leaves stdout empty, a malformed --set (also one that is no JSON object, '[1]', and a truncated
+leaves stdout empty (also that of a Python child drawing figures), a malformed --set (also one that is no JSON object, '[1]', and a truncated
 one holding 1e999) is a usage error wherever a JSON file is read, and a --set number no double
 holds (-1e400) is an input error (2) naming the patch and the key.
 
@@ -38,6 +38,14 @@ def main(bin_dir, source, work):
         ("mpm_run", ["mpm", "run"], [scene, "--out={out}", "--threads", "1", "--set", short],
          True, True),
         ("mpm_keys", ["mpm", "keys"], ["--format", "json"], False, False),
+        # Commands that draw through a Python child: its stdout is silenced too (it printed
+        # "wrote ..." under --quiet before).
+        ("mpm_plot", ["mpm", "plot"], [os.path.join(work, "mpm_run"), "--out={out}.png"], False,
+         False),
+        ("plot", ["pointdriver", "plot"],
+         [os.path.join(work, "run.csv"), "--x", "time", "--y", "stress_xx", "--out={out}.png"],
+         False, False),
+        ("check_figures", ["pointdriver", "check"], [check, "--out={out}"], True, True),
     ]
     failures = []
 
