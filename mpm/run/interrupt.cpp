@@ -1,48 +1,24 @@
-// SIGINT / SIGTERM: record the signal, nothing else (async-signal-safe).
+// SIGINT / SIGTERM: the programs' one handler (support/interrupt_signals.hpp) behind the solver's
+// signal-free header.
 #include "mpm/run/interrupt.hpp"
 
-#include <signal.h>
+#include <memory>
+
+#include "support/interrupt_signals.hpp"
 
 namespace impact::mpm {
 
-namespace {
+InterruptHandlers::InterruptHandlers(bool install)
+    : signals_(install ? std::make_shared<InterruptSignals>() : nullptr) {}
 
-volatile sig_atomic_t g_signal = 0;
-struct sigaction g_previous_int, g_previous_term;
-
-extern "C" void record_signal(int signal) {
-  g_signal = signal;
-}
-
-}  // namespace
-
-InterruptHandlers::InterruptHandlers(bool install) {
-  if (!install) return;
-  g_signal = 0;
-  struct sigaction action = {};
-  action.sa_handler = record_signal;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND;  // a second signal: the default action
-  sigaction(SIGINT, &action, &g_previous_int);
-  sigaction(SIGTERM, &action, &g_previous_term);
-  installed_ = true;
-}
-
-InterruptHandlers::~InterruptHandlers() {
-  if (!installed_) return;
-  sigaction(SIGINT, &g_previous_int, nullptr);
-  sigaction(SIGTERM, &g_previous_term, nullptr);
-  g_signal = 0;
-}
+InterruptHandlers::~InterruptHandlers() = default;
 
 int pending_interrupt() {
-  return g_signal;
+  return InterruptSignals::pending();
 }
 
 const char* signal_name(int signal) {
-  if (signal == SIGINT) return "SIGINT";
-  if (signal == SIGTERM) return "SIGTERM";
-  return "a signal";
+  return InterruptSignals::name(signal);
 }
 
 int sigint_number() {

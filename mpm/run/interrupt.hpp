@@ -6,6 +6,12 @@
 // meet the project's headers.
 #pragma once
 
+#include <memory>
+
+namespace impact {
+class InterruptSignals;  // support/interrupt_signals.hpp
+}
+
 namespace impact::mpm {
 
 /// Installs the handlers for its lifetime (restoring the previous ones after) when `install`.
@@ -17,7 +23,7 @@ class InterruptHandlers {
   InterruptHandlers& operator=(const InterruptHandlers&) = delete;
 
  private:
-  bool installed_ = false;
+  std::shared_ptr<InterruptSignals> signals_;  // shared_ptr: deletes a type incomplete here
 };
 
 /// The signal received since the handlers were installed (SIGINT or SIGTERM), or 0.

@@ -10,6 +10,7 @@
 #include "pointdriver/output/junit.hpp"
 #include "pointdriver/output/run_estimate.hpp"
 #include "support/atomic_file.hpp"
+#include "support/interrupt_signals.hpp"
 #include "support/system_resources.hpp"
 
 namespace impact::pointdriver {
@@ -27,7 +28,8 @@ const CommandSpec run_command{
     "Exit codes: 0 done (including a failure stopped by the failure policy), 1 usage, 2 input\n"
     "error, 3 a step could not be solved, a check failed or an output could not be written, 4\n"
     "refused before the run: the estimated CSV exceeds the free space (or ulimit -f), or the\n"
-    "estimated memory the available memory.\n"};
+    "estimated memory the available memory, 130 interrupted (Ctrl-C), 143 terminated (SIGTERM):\n"
+    "the CSV is not written.\n"};
 
 const char* cause_name(FailureCause c) {
   return to_string(c).data();
@@ -107,9 +109,25 @@ int command_run(const std::vector<std::string>& args) {
     return cli::kExitRefused;
   }
   RunResult r;
+  // Ctrl-C or SIGTERM: stop after the step, remove the CSV's temporary (a 5e7-step run had left
+  // 210 MB of OUT.csv.tmp in 2 s) and exit 128 + the signal, the previous CSV, if any, kept.
+  struct Interrupted {
+    int signal;
+  };
+  std::size_t rows = 0;
   try {
-    r = run_path(path, [&](const Row& row) { csv->write(row); });
+    const InterruptSignals signals;
+    r = run_path(path, [&](const Row& row) {
+      if (const int signal = InterruptSignals::pending()) throw Interrupted{signal};
+      csv->write(row);
+      ++rows;
+    });
     csv->close();
+  } catch (const Interrupted& i) {
+    csv.reset();
+    std::cerr << "pointdriver run: interrupted by " << InterruptSignals::name(i.signal) << " after "
+              << rows << " rows; " << out.string() << " not written\n";
+    return 128 + i.signal;
   } catch (const std::runtime_error& e) {  // the CSV cannot be written: no partial file is left
     std::cerr << "pointdriver run: " << e.what() << '\n';
     return cli::kExitFailed;
