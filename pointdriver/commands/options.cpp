@@ -48,7 +48,11 @@ std::optional<int> parse_command(const CommandSpec& command, Options& out,
       app.add_flag(cli_names, flags[key], s.help);
     } else {
       CLI::Option* o = app.add_option(cli_names, words[key], s.help)->type_name(s.value_name);
-      if (s.arity == 1) o->allow_extra_args(false);
+      // One value per occurrence, repeatable (--y a --y b): the help then reads `--y COL`, not
+      // `COL ...`, which promised `--y a b` (taken as --y a and a file b).
+      if (s.arity == 1)
+        o->allow_extra_args(false)->expected(1)->multi_option_policy(
+            CLI::MultiOptionPolicy::TakeAll);
       if (key == "--set") o->check(cli::set_patch_error, "");
     }
   }

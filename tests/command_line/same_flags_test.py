@@ -124,6 +124,12 @@ def main(bin_dir, source, work):
               os.path.join(work, "study")])]:
         failures += number_beyond_double(name, words, args)
         failures += malformed_set(name, words, args)
+    # A repeatable option takes one value per occurrence (--y a --y b): its help says `--y COL`;
+    # `COL ...` promised `--y a b`, which read b as a file (issue 52's trial).
+    r = run(["pointdriver", "plot"], ["--help"])
+    if "--y COL ..." in r.stdout or "--set JSON ..." in r.stdout or "--y COL " not in r.stdout:
+        failures.append(f"pointdriver plot --help: repeatable options shown as lists: "
+                        f"{[line for line in r.stdout.splitlines() if '--y' in line]}")
     for words in (["material_check"], ["pointdriver"], ["mpm"]):  # the programs' own --help
         failures += help_to_a_full_stdout(words[0], words)
     if failures:
