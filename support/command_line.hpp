@@ -184,6 +184,7 @@ inline PatchOrigins set_origins(const std::string& file, const std::vector<Json>
 /// "<program>: <what>" with a pointer to --help.
 inline std::optional<int> parse(CLI::App& app, std::vector<std::string> args,
                                 Verbosity& verbosity) {
+  const std::string first = args.empty() ? std::string() : args.front();
   std::reverse(args.begin(), args.end());  // CLI11 takes a vector last argument first
   try {
     app.parse(args);
@@ -197,8 +198,15 @@ inline std::optional<int> parse(CLI::App& app, std::vector<std::string> args,
     std::cout << e.what() << '\n';
     return 0;
   } catch (const CLI::ParseError& e) {
-    std::cerr << app.get_name() << ": " << e.what() << "\nRun '" << app.get_name()
-              << " --help' for the options.\n";
+    // A command's own error points to the command's help ("mpm run --help"); a first word that
+    // names no command says so (CLI11 reports "A subcommand is required").
+    std::string where = app.get_name();
+    const std::vector<CLI::App*> reached = app.get_subcommands();
+    if (!reached.empty()) where += " " + reached.back()->get_name();
+    std::string what = e.what();
+    if (reached.empty() && !app.get_subcommands({}).empty() && !first.empty() && first[0] != '-')
+      what = "unknown command '" + first + "'";
+    std::cerr << where << ": " << what << "\nRun '" << where << " --help' for the options.\n";
     return kExitUsage;
   }
   verbosity.apply();
