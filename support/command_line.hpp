@@ -204,8 +204,14 @@ inline std::optional<int> parse(CLI::App& app, std::vector<std::string> args,
     const std::vector<CLI::App*> reached = app.get_subcommands();
     if (!reached.empty()) where += " " + reached.back()->get_name();
     std::string what = e.what();
-    if (reached.empty() && !app.get_subcommands({}).empty() && !first.empty() && first[0] != '-')
-      what = "unknown command '" + first + "'";
+    if (reached.empty() && !app.get_subcommands({}).empty() && !first.empty()) {
+      if (first[0] != '-') {
+        what = "unknown command '" + first + "'";
+      } else if (app.get_option_no_throw(first.substr(0, first.find('='))) == nullptr) {
+        what = "unknown option '" + first + "'; a command comes first (" + app.get_name() +
+               " COMMAND --help)";
+      }
+    }
     std::cerr << where << ": " << what << "\nRun '" << where << " --help' for the options.\n";
     return kExitUsage;
   }
