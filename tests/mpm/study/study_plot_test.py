@@ -76,6 +76,17 @@ PLANE_STRAIN_HISTORY = (
     "1e-6,5,2.5,7.5,3e-17,0,0,0,0,0,0.5,0\n")
 
 
+def write_case(out, name, summary, history):
+    """A case directory as `mpm run` leaves it: summary.json and history.csv."""
+    case = os.path.join(out, name)
+    os.makedirs(case)
+    with open(os.path.join(case, "summary.json"), "w") as f:
+        json.dump(summary, f)
+    with open(os.path.join(case, "history.csv"), "w") as f:
+        f.write(history)
+    return case
+
+
 def plane_strain_study():
     """A plane-strain run books per metre of thickness: the table's heads say J/m, the initial
     energy and the drift are read from "initial_energy [J/m]", the sink column is tabulated, and
@@ -84,14 +95,10 @@ def plane_strain_study():
     momentum error 0.86, round-off over round-off)."""
     failures = []
     with tempfile.TemporaryDirectory() as out:
-        case = os.path.join(out, "case01")
-        os.makedirs(case)
-        with open(os.path.join(case, "summary.json"), "w") as f:
-            json.dump({"status": "completed", "particles": 4, "initial_energy [J/m]": 8.0,
-                       "initial_momentum [(kg m/s)/m]": [1e-17, 0.0, 0.0], "mass [kg/m]": 1.0,
-                       "steps": 2, "wall_time [s]": 0.1}, f)
-        with open(os.path.join(case, "history.csv"), "w") as f:
-            f.write(PLANE_STRAIN_HISTORY)
+        write_case(out, "case01",
+                   {"status": "completed", "particles": 4, "initial_energy [J/m]": 8.0,
+                    "initial_momentum [(kg m/s)/m]": [1e-17, 0.0, 0.0], "mass [kg/m]": 1.0,
+                    "steps": 2, "wall_time [s]": 0.1}, PLANE_STRAIN_HISTORY)
         done = subprocess.run([sys.executable, SCRIPT, out, "--no-figures"], capture_output=True,
                               text=True)
         if done.returncode != 0:
@@ -118,17 +125,14 @@ def plane_strain_study():
 def main():
     failures = []
     with tempfile.TemporaryDirectory() as out:
-        case = os.path.join(out, "recommended")
-        os.makedirs(case)
-        with open(os.path.join(case, "summary.json"), "w") as f:
-            json.dump({"status": "completed", "particles": 10, "initial_energy [J]": 10.0,
-                       "initial_momentum [kg m/s]": [2.0, 0.0, 0.0], "mass [kg]": 1.0,
-                       "steps": 2, "wall_time [s]": 0.1, "particle_steps_per_second": 200.0,
-                       "discretization_error": {"table": "x.ladder.json", "level": 1.0,
-                                                "ladder_commit": "abc", "observables": ENTRIES}},
-                      f)
-        with open(os.path.join(case, "history.csv"), "w") as f:
-            f.write(HISTORY)
+        case = write_case(
+            out, "recommended",
+            {"status": "completed", "particles": 10, "initial_energy [J]": 10.0,
+             "initial_momentum [kg m/s]": [2.0, 0.0, 0.0], "mass [kg]": 1.0, "steps": 2,
+             "wall_time [s]": 0.1, "particle_steps_per_second": 200.0,
+             "discretization_error": {"table": "x.ladder.json", "level": 1.0,
+                                      "ladder_commit": "abc", "observables": ENTRIES}},
+            HISTORY)
         done = subprocess.run([sys.executable, SCRIPT, out, "--no-figures"], capture_output=True,
                               text=True)
         if done.returncode != 0:
