@@ -306,6 +306,10 @@ void read_time(JsonReader& root, TimeSpec& t, std::vector<std::string>& warnings
       "max_estimated_steps", TimeSpec{}.max_estimated_steps, Range::positive(),
       "mpm run refuses a scene whose step count, estimated before the run (max_time over the "
       "first stable step), exceeds this [-]");
+  t.max_estimated_particle_steps = r.number_or(
+      "max_estimated_particle_steps", TimeSpec{}.max_estimated_particle_steps, Range::positive(),
+      "mpm run refuses a scene whose particle-steps, estimated before the run (the particles "
+      "the geometry seeds times the estimated steps), exceed this [-]");
   if (t.min_dt > t.max_dt) r.problems().add(r.key_path("min_dt"), "expected min_dt <= max_dt");
   r.reject_unknown_keys();
 }

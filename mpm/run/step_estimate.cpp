@@ -18,6 +18,9 @@ constexpr double kUsualMultiplier = 0.5;  // [-]
 constexpr double kUsualCell = 1e-3;       // [m]
 constexpr double kUsualSignal = 6000.0;   // [m/s]
 constexpr double kUsualMaxDt = 1e-7;      // [s]
+// One core's speed on the recommended deck (docs/performance.md: 1.9-2.4e6), for the time a
+// refused particle-step count would take.
+constexpr double kOneCoreParticleStepsPerSecond = 2e6;  // [1/s]
 
 // A count for a message: "1.2e+37", or beyond the doubles.
 std::string count_text(double n) {
@@ -25,6 +28,8 @@ std::string count_text(double n) {
   o.precision(2);
   if (std::isinf(n)) {
     o << "more than 1.8e+308";
+  } else if (n < 1e6) {  // a count a person reads whole: 512, not 5.1e+02
+    o << std::llround(n);
   } else {
     o << n;
   }
@@ -88,6 +93,8 @@ StepEstimate estimate_steps(const Scene& scene) {
   e.dt = e.capped ? scene.time.max_dt : stable;
   e.steps = std::isinf(e.dt) ? 0.0 : std::ceil(scene.time.max_time / e.dt);
   if (!scene.objects.empty()) e.driver = driver_of(scene, e);
+  e.particles = estimated_particle_count(scene);
+  e.particle_steps = e.particles * e.steps;
   return e;
 }
 
@@ -95,15 +102,40 @@ Json StepEstimate::json(const Scene& scene) const {
   Json j = {{"estimated_steps", steps},
             {"stable_dt [s]", dt},
             {"fastest_signal [m/s]", signal_speed},
-            {"max_estimated_steps", scene.time.max_estimated_steps}};
+            {"max_estimated_steps", scene.time.max_estimated_steps},
+            {"estimated_particle_steps", particle_steps},
+            {"max_estimated_particle_steps", scene.time.max_estimated_particle_steps}};
   if (!scene.objects.empty()) j["fastest_object"] = scene.objects[fastest].name;
   return j;
 }
 
+namespace {
+
+// The particle-steps bound: the particles the geometry seeds times the steps.
+std::string particle_step_refusal(const Scene& scene, const StepEstimate& e) {
+  const TimeSpec& t = scene.time;
+  if (!(e.particle_steps > t.max_estimated_particle_steps)) return {};
+  const GridSpec& g = scene.grid;
+  std::ostringstream m;
+  m.precision(3);
+  m << "refusing to start: an estimated " << count_text(e.particle_steps) << " particle-steps ("
+    << count_text(e.particles) << " particles estimated from the geometry on " << g.cells[0]
+    << " x " << g.cells[1] << " x " << g.cells[2] << " cells (grid.cells, the objects' "
+    << "particles_per_cell) x " << count_text(e.steps) << " steps; at "
+    << kOneCoreParticleStepsPerSecond << " particle-steps/s, one core's speed "
+    << "(docs/performance.md), about " << e.particle_steps / kOneCoreParticleStepsPerSecond
+    << " s) exceed time.max_estimated_particle_steps = " << t.max_estimated_particle_steps
+    << "; coarsen grid.cells or lower particles_per_cell, or raise "
+       "time.max_estimated_particle_steps to run the scene anyway";
+  return m.str();
+}
+
+}  // namespace
+
 std::string step_refusal(const Scene& scene) {
   const StepEstimate e = estimate_steps(scene);
   const TimeSpec& t = scene.time;
-  if (!(e.steps > t.max_estimated_steps)) return {};
+  if (!(e.steps > t.max_estimated_steps)) return particle_step_refusal(scene, e);
   std::ostringstream m;
   m.precision(3);
   m << "refusing to start: an estimated " << count_text(e.steps) << " steps (time.max_time "

@@ -101,6 +101,9 @@ struct TimeSpec {
   /// mpm run refuses (exit 4) a scene whose step count, estimated before seeding, exceeds this
   /// (mpm/run/step_estimate.hpp; docs/mpm.md#memory-and-step-estimates) [-]
   double max_estimated_steps = 1e7;
+  /// ... and whose particle-steps (the particles estimated from the geometry times the steps)
+  /// exceed this: about 42 h on one core at 2e6 particle-steps/s (docs/performance.md) [-]
+  double max_estimated_particle_steps = 3e11;
 };
 
 /// How a run on several ranks chooses its ranks per axis (solver.ranks_per_axis, docs/mpi.md).

@@ -6,7 +6,10 @@
 // - the inputs of issue 52 that loaded and never finished (max_time 1e30 s, multiplier 1e-300, a
 //   density of 1e-30 kg/m^3), a tiny max_dt and an absurd velocity are refused by step_refusal
 //   and by run() (exit 4, nothing written), each naming the key that drives the count;
-//   time.max_estimated_steps raises the bound.
+//   time.max_estimated_steps raises the bound;
+// - a scene within the step bound whose particle-steps (the particles the geometry seeds times
+//   the steps) exceed time.max_estimated_particle_steps is refused too: 100000 x 3 x 3 cells of
+//   the same block, 4.1e6 steps of 2.7e5 particles (an ETA of 8 days in the second trial).
 #include <unistd.h>
 
 #include <boost/test/unit_test.hpp>
@@ -94,7 +97,11 @@ BOOST_AUTO_TEST_CASE(an_absurd_count_is_refused_naming_the_key_that_drives_it) {
                           three_digits(c) + " m/s)"),
              step_refusal(scene));
   // The bound is a key: raised, the same scene starts.
-  BOOST_TEST(refusal({{"time", {{"max_time", 1e30}, {"max_estimated_steps", 1e37}}}}).empty());
+  BOOST_TEST(refusal({{"time",
+                       {{"max_time", 1e30},
+                        {"max_estimated_steps", 1e37},
+                        {"max_estimated_particle_steps", 1e40}}}})
+                 .empty());
   BOOST_TEST(!refusal({{"time", {{"max_time", 10.0}}}}).empty());  // 2.5e7 steps
   BOOST_TEST(refusal({{"time", {{"max_time", 10.0}, {"max_estimated_steps", 1e8}}}}).empty());
 }
@@ -110,6 +117,31 @@ BOOST_AUTO_TEST_CASE(run_refuses_before_it_writes_anything) {
   BOOST_TEST(run(scene, options) == kExitMemory);
   BOOST_TEST(!fs::exists(dir));
   BOOST_TEST(start_refusal(scene) == step_refusal(scene));
+}
+
+BOOST_AUTO_TEST_CASE(very_many_particle_steps_are_refused_naming_the_cells) {
+  const Json fine = {{"grid", {{"cells", {100000, 3, 3}}}}};
+  const Scene scene = test::verification_scene("rigid_translation.json", fine);
+  const StepEstimate e = estimate_steps(scene);
+  BOOST_TEST(e.steps < scene.time.max_estimated_steps);  // the step bound alone lets it pass
+  // The block's 0.02 m cube (rigid_translation.json) at 2 particles per cell per axis: its
+  // volume over the cell's, times 8.
+  const Vec3 h = scene.grid.spacing();
+  BOOST_TEST(e.particles == std::ceil(std::pow(0.02, 3) / h.prod() * 8.0),
+             boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(e.particle_steps == e.particles * e.steps);
+  const std::string refusal = step_refusal(scene);
+  BOOST_TEST(contains(refusal,
+                      "refusing to start: an estimated 1.1e+12 particle-steps (266667 "
+                      "particles estimated from the geometry on 100000 x 3 x 3 cells"),
+             refusal);
+  BOOST_TEST(contains(refusal, "exceed time.max_estimated_particle_steps = 3e+11"), refusal);
+  // Raised, the same scene starts; the shipped scenes are far below (5.96e7 the largest).
+  BOOST_TEST(
+      step_refusal(test::verification_scene("rigid_translation.json",
+                                            {{"grid", {{"cells", {100000, 3, 3}}}},
+                                             {"time", {{"max_estimated_particle_steps", 2e12}}}}))
+          .empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()
