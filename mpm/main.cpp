@@ -9,7 +9,8 @@
 //   mpm keys [--format md|json]
 // Exit codes: 0 success, 1 usage error, 2 input error (file + JSON key path; a refused restart),
 // 3 run failure (numerical fault), 4 refused before the start (the memory estimate above the
-// available memory, or the estimated steps above time.max_estimated_steps), 128 + signal after a
+// available memory, the estimated steps above time.max_estimated_steps or the particle-steps above
+// time.max_estimated_particle_steps), 128 + signal after a
 // checkpoint on SIGINT (130) or SIGTERM (143).
 #include <unistd.h>
 
@@ -58,7 +59,8 @@ const char* kRunFooter =
     "file (docs/mpi.md).\n"
     "Exit codes: 0 completed, 1 usage, 2 input error (or a refused restart or replacement), 3\n"
     "run failure or an output not written, 4 refused before anything is written: the memory\n"
-    "estimate exceeds the available memory, or the estimated steps time.max_estimated_steps\n"
+    "estimate exceeds the available memory, the estimated steps time.max_estimated_steps, or\n"
+    "the particle-steps time.max_estimated_particle_steps\n"
     "(docs/mpm.md#memory-and-step-estimates), 130 SIGINT, 143 SIGTERM (checkpoint written).\n";
 const char* kCheckFooter =
     "Prints one JSON document: \"resolved\" (the scene after extends and --set),\n"
@@ -116,8 +118,11 @@ std::string ladder_levels_problem(const std::string& text) {
   return {};
 }
 
-int usage_error(const std::string& message) {
-  std::cerr << "mpm: " << message << "\nRun 'mpm --help' for the options.\n";
+// A usage error of one command: named, with that command's help to read (not mpm --help's list
+// of commands).
+int usage_error(const std::string& command, const std::string& message) {
+  std::cerr << "mpm " << command << ": " << message << "\nRun 'mpm " << command
+            << " --help' for the options.\n";
   return impact::cli::kExitUsage;
 }
 
@@ -201,7 +206,10 @@ int run_main(int argc, char** argv) {
   plot->add_option("-o,--out", plot_figure, "figure file (.png, .pdf, .svg; default RUN/run.png)")
       ->type_name("FIG");
   for (CLI::App* c : {run, check, study}) {
-    c->add_option("--threads", options.threads, "OpenMP threads (default: all; study: 2)")
+    // Each command's help states its own default (study runs two cases at a time).
+    c->add_option(
+         "--threads", options.threads,
+         c == study ? "OpenMP threads per case (default: 2)" : "OpenMP threads (default: all)")
         ->type_name("N")
         ->check(CLI::Range(1, impact::mpm::kMaxThreads));
   }
@@ -276,25 +284,27 @@ int run_main(int argc, char** argv) {
     const auto fault = impact::mpm::parse_fault_injection(text);
     if (!fault) {
       return usage_error(
+          "run",
           "--inject-fault: expected nan|nan_velocity|outside|jacobian:STEP:PARTICLE or "
           "sigterm|sigint:STEP (STEP >= 1), got '" +
-          text + "'");
+              text + "'");
     }
     options.faults.push_back(*fault);
   }
   if (!cases.empty() && !parse_list(cases, study_options.cases))
-    return usage_error("--cases needs a comma-separated list of case names, e.g. case01,case04");
+    return usage_error("study",
+                       "--cases needs a comma-separated list of case names, e.g. case01,case04");
   if (options.threads > 0) study_options.threads = options.threads;
   study_options.plot = !no_plot;
   if (!restart_dir.empty()) {
     if (!scene_file.empty())
-      return usage_error("--restart takes the scene from DIR/scene.json: no SCENE.json");
-    if (!options.out_dir.empty()) return usage_error("--restart writes into DIR: no --out");
+      return usage_error("run", "--restart takes the scene from DIR/scene.json: no SCENE.json");
+    if (!options.out_dir.empty()) return usage_error("run", "--restart writes into DIR: no --out");
     if (!set_texts.empty())
-      return usage_error("--restart continues DIR/scene.json as it is: no --set");
-    if (options.overwrite) return usage_error("--restart continues DIR: no --overwrite");
+      return usage_error("run", "--restart continues DIR/scene.json as it is: no --set");
+    if (options.overwrite) return usage_error("run", "--restart continues DIR: no --overwrite");
   } else if (scene_file.empty()) {
-    return usage_error("run: missing SCENE.json (or --restart DIR)");
+    return usage_error("run", "missing SCENE.json (or --restart DIR)");
   }
   std::vector<impact::Json> patches;
   impact::mpm::ExtendsChain chain;  // the scene file's, for messages
@@ -302,8 +312,8 @@ int run_main(int argc, char** argv) {
     patches = impact::cli::patches_of(set_texts);
     if (study->parsed() && study->get_option("--ladder")->count() > 0) {
       if (const std::string problem = ladder_levels_problem(ladder_levels); !problem.empty())
-        return usage_error("study --ladder: " + problem);
-      if (!cases.empty()) return usage_error("study --ladder runs one scene: no --cases");
+        return usage_error("study", "--ladder: " + problem);
+      if (!cases.empty()) return usage_error("study", "--ladder runs one scene: no --cases");
       impact::mpm::LadderOptions ladder;
       ladder.scene_file = scene_file;
       ladder.out_dir = options.out_dir;
@@ -315,7 +325,7 @@ int run_main(int argc, char** argv) {
       return impact::mpm::run_ladder(ladder);
     }
     if (study->parsed()) {
-      if (ladder_ranks != 1) return usage_error("study: --ranks goes with --ladder");
+      if (ladder_ranks != 1) return usage_error("study", "--ranks goes with --ladder");
       study_options.patches = patches;
       study_options.scene_dir = scene_file;
       study_options.out_dir = options.out_dir;

@@ -31,7 +31,7 @@ const std::vector<Command>& commands() {
       {"plot", "quick figure of CSV columns (python3-matplotlib)", command_plot},
       {"fit", "fit a flow-stress law to measured curves", command_fit},
       {"check", "check a parameter set against measured curves", command_check},
-      {"cards", "LS-DYNA and Abaqus Johnson-Cook cards", command_cards}};
+      {"cards", "LS-DYNA and Abaqus cards (Johnson-Cook, Swift x Cowper-Symonds)", command_cards}};
   return list;
 }
 

@@ -25,6 +25,18 @@ constexpr int kScriptMissingMatplotlib = 4;  // run_plot.py's code
 int plot_run(const std::string& run, const std::string& figure) {
   namespace fs = std::filesystem;
   std::error_code ec;
+  // The reason a user can act on: no such directory, a file given for the directory, or a
+  // directory without a run's history.
+  if (!fs::exists(run, ec)) {
+    std::cerr << "mpm plot: " << run << ": no such directory (expected a directory `mpm run` "
+              << "wrote: mpm run SCENE --out DIR)\n";
+    return 2;
+  }
+  if (!fs::is_directory(run, ec)) {
+    std::cerr << "mpm plot: " << run << ": not a directory (expected the directory `mpm run` "
+              << "wrote, which holds history.csv)\n";
+    return 2;
+  }
   if (!fs::is_regular_file(fs::path(run) / "history.csv", ec)) {
     std::cerr << "mpm plot: " << run
               << ": no history.csv (expected a directory `mpm run` wrote: mpm run SCENE --out "

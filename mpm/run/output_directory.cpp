@@ -73,6 +73,14 @@ std::string unfinished_run(const fs::path& dir) {
          "', or start a new run over it with --overwrite";
 }
 
+std::string completed_run(const fs::path& dir) {
+  const Json status = read_json_or_null(dir / "status.json");
+  if (!status.is_object() || status.value("status", Json()) != "completed") return "";
+  return dir.string() + ": the run completed (status.json: \"completed\"); --restart continues " +
+         "a run that stopped before its end. Run the scene again with 'mpm run " +
+         (dir / "scene.json").string() + " --out NEW_DIR'";
+}
+
 std::size_t clear_previous_run(const fs::path& dir) {
   // Only where a run was: status.json as mpm writes it (a directory of the user's own files, one
   // named summary.json among them, is left alone).

@@ -18,6 +18,12 @@ namespace impact::mpm {
 /// Empty when nothing is in the way.
 std::string unfinished_run(const std::filesystem::path& dir);
 
+/// Why `mpm run --restart DIR` has nothing to continue: DIR's run completed (status.json
+/// "completed"), and a restart would rerun the steps after its last checkpoint to the same end
+/// without a word. Empty otherwise (a failed run may be continued: an output error, say, after
+/// freeing the disk).
+std::string completed_run(const std::filesystem::path& dir);
+
 /// Removes the files of a previous run from `dir`: history.csv, summary.json, status.json,
 /// scene.json, particles.pvd, checkpoint.bin and checkpoint.rankN.bin, particles/step_*.vtu and
 /// .pvtu, the particle paths its scene.json names in paths/, and any of them with .tmp left by a

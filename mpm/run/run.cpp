@@ -346,6 +346,16 @@ int run(const Scene& scene, const RunOptions& options) {
 int restart(const std::string& directory, const RunOptions& options) {
   const fs::path dir(directory);
   const fs::path file = dir / kCheckpointFile;
+  std::error_code ec;
+  if (!fs::exists(dir, ec))
+    throw InputError(
+        {directory + ": no such directory (--restart takes the directory a run wrote)"});
+  if (!fs::is_directory(dir, ec)) {
+    throw InputError({directory +
+                      ": not a directory (--restart takes the directory a run wrote, which holds "
+                      "checkpoint.bin and scene.json)"});
+  }
+  if (const std::string done = completed_run(dir); !done.empty()) throw InputError({done});
   if (!fs::exists(file)) {
     throw InputError({file.string() +
                       ": no checkpoint (mpm run writes one every "

@@ -66,8 +66,13 @@ def writable_directory(path, argument):
         with tempfile.TemporaryFile(dir=directory):
             pass
     except OSError as e:
+        # makedirs over a file says "File exists": the reason a user can act on is that the
+        # path is a file, not a directory.
+        reason = (f"a file ({os.path.realpath(directory)}), not a directory"
+                  if isinstance(e, FileExistsError) and not os.path.isdir(directory)
+                  else e.strerror or e)
         raise InputError(f"{argument}: {directory}: expected a directory the run can write "
-                         f"into, got {e.strerror or e}") from None
+                         f"into, got {reason}") from None
     finally:
         for d in made:
             try:

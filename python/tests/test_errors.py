@@ -68,8 +68,15 @@ def test_unwritable_out_raises_input_error_naming_it(data, workdir):
     with pytest.raises(impact.InputError, match=r"^out: a_file/run: expected a directory the "
                                                 r"run can write into, got "):
         impact.run_scene(data("scenes", "verification", "rigid_translation.json"), out=out)
-    with pytest.raises(impact.InputError, match=r"^out: a_file: expected a directory"):
+    with pytest.raises(impact.InputError, match=r"^out: a_file: expected a directory the run can "
+                                                r"write into, got a file \(.*a_file\), not a "
+                                                r"directory$"):
         impact.run_scene(data("scenes", "verification", "rigid_translation.json"), out="a_file")
+    # /dev/full, a device, said "got File exists".
+    with pytest.raises(impact.InputError, match=r"^out: /dev/full: expected a directory the run "
+                                                r"can write into, got a file \(/dev/full\), not "
+                                                r"a directory$"):
+        impact.run_scene(data("scenes", "verification", "rigid_translation.json"), out="/dev/full")
 
 
 def test_a_thread_count_out_of_range_is_refused(data, workdir):

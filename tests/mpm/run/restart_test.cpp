@@ -432,6 +432,12 @@ BOOST_AUTO_TEST_CASE(a_restart_drops_history_rows_written_after_the_checkpoint) 
                                               << read_json(c / "summary.json").at("steps")
                                               << " steps in all");
   BOOST_TEST(h.step % 7 == 0);
+  // A completed run is not restarted (nothing to continue): the directory is made as a SIGKILL
+  // after the last history row leaves it, status.json still "running".
+  BOOST_CHECK_THROW(restart(c.string(), RunOptions{}), InputError);
+  Json status = read_json(c / "status.json");
+  status["status"] = "running";
+  std::ofstream(c / "status.json") << status.dump(2) << '\n';
   BOOST_REQUIRE(restart(c.string(), RunOptions{}) == 0);
   BOOST_TEST(read_bytes(c / "history.csv") == full);  // no duplicated or lost rows
   // The scene differs only in the checkpoint interval: the particle outputs must match a.
