@@ -556,8 +556,8 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
     with open(os.path.join(out, "ladder.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["run", "level [-]", "particles_per_cell [-]", "h [m]", "observable", "unit",
-                    "value", "particles", "steps", "particle_steps", "wall_time [s]", "threads",
-                    "ranks"])
+                    "value", "particles [-]", "steps [-]", "particle_steps [-]", "wall_time [s]",
+                    "threads [-]", "ranks [-]"])
         for r in runs:
             if not r["data"]:
                 continue

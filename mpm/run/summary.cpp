@@ -129,6 +129,15 @@ Json check_report(const Scene& scene, int threads, int ranks) {
   Json report = particle_report(scene, P, threads);
   report.update(estimate_steps(scene).json(scene));
   report["scene_fingerprint"] = scene_fingerprint(scene.resolved);
+  // The keys without a unit in their name: counts and ratios.
+  report["units"] = {{"particles", "-"},
+                     {"volume_ratio", "-"},
+                     {"estimated_steps", "-"},
+                     {"max_estimated_steps", "-"},
+                     {"estimated_particle_steps", "-"},
+                     {"max_estimated_particle_steps", "-"},
+                     {"velocity_fields", "-"},
+                     {"threads", "-"}};
   if (ranks > 1) report["decomposition"] = plan_decomposition(scene, P, ranks);
   return report;
 }
@@ -169,7 +178,18 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
                       {"boundary_impulse", u.impulse},
                       {"mass", u.mass},
                       {"volume", u.volume},
-                      {"energy_error", "-"}};
+                      {"energy_error", "-"},
+                      // counts and ratios, and the one rate without a unit in its name
+                      {"particles", "-"},
+                      {"steps", "-"},
+                      {"volume_ratio", "-"},
+                      {"failed_particles", "-"},
+                      {"converted_particles", "-"},
+                      {"faulted_particles", "-"},
+                      {"velocity_fields", "-"},
+                      {"threads", "-"},
+                      {"ranks", "-"},
+                      {"particle_steps_per_second", "1/s"}};
   return summary;
 }
 

@@ -232,8 +232,9 @@ int command_batch(const std::vector<std::string>& args) {
 
   const fs::path summary = summary_file->path();
   std::ostream& s = summary_file->stream();
-  s << "path,material,steps,completed,failure cause,failure time [s],final stress_xx [Pa],"
-       "final plastic strain [-],final temperature [K],wall time [s],error\n";
+  // A run that did not fail has no failure time: the cell is empty, not a -1 sentinel.
+  s << "path,material,steps [-],completed [1 = yes],failure cause,failure time [s],"
+       "final stress_xx [Pa],final plastic strain [-],final temperature [K],wall time [s],error\n";
   bool all_completed = true;
   long steps = 0;
   for (std::size_t i = 0; i < results.size(); ++i) {
@@ -243,9 +244,10 @@ int command_batch(const std::vector<std::string>& args) {
     steps += r.result.steps;
     s << csv_cell(path_names[p]) << ',' << csv_cell(material_names[m]) << ',' << r.result.steps
       << ',' << (r.result.completed ? 1 : 0) << ',' << to_string(r.result.failure) << ','
-      << csv_number(r.result.failure_time) << ',' << csv_number(r.last.stress_path(0, 0)) << ','
-      << csv_number(r.last.state.plastic_strain) << ',' << csv_number(r.last.state.temperature)
-      << ',' << csv_number(r.wall_time) << ',' << csv_cell(r.result.error) << '\n';
+      << (r.result.failure_time >= 0.0 ? csv_number(r.result.failure_time) : "") << ','
+      << csv_number(r.last.stress_path(0, 0)) << ',' << csv_number(r.last.state.plastic_strain)
+      << ',' << csv_number(r.last.state.temperature) << ',' << csv_number(r.wall_time) << ','
+      << csv_cell(r.result.error) << '\n';
     std::cout << std::left << std::setw(28) << path_names[p] << ' ' << std::setw(20)
               << material_names[m] << ' ' << std::right << std::setw(7) << r.result.steps
               << " steps  stress_xx " << std::setw(12) << std::setprecision(5)

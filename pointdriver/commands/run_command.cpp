@@ -65,6 +65,13 @@ int command_run(const std::vector<std::string>& args) {
   if (o.verbosity.verbose) std::cerr << path.resolved.dump(2) << '\n';
   const std::filesystem::path out =
       o.get("--output", std::filesystem::path(file).stem().string() + ".csv");
+  // -o names the CSV file: a directory there is a usage error, not a file that cannot be written.
+  if (std::error_code ec; std::filesystem::is_directory(out, ec)) {
+    std::cerr << "pointdriver run: -o " << out.string()
+              << " is a directory; -o names the CSV file to write (e.g. -o "
+              << (out / (std::filesystem::path(file).stem().string() + ".csv")).string() << ")\n";
+    return cli::kExitUsage;
+  }
   std::filesystem::path stem = out;
   stem.replace_extension();
   // The first directory of -o's parent that does not exist yet: a refused run removes what it made.
@@ -139,7 +146,8 @@ int command_run(const std::vector<std::string>& args) {
                   {"steps", r.steps},
                   {"end_time [s]", r.end_time},
                   {"failure_cause", cause_name(r.failure)},
-                  {"failure_time [s]", r.failure_time},
+                  // null when the run did not fail (no -1 sentinel)
+                  {"failure_time [s]", r.failure_time >= 0.0 ? Json(r.failure_time) : Json()},
                   {"error", r.error},
                   {"columns", csv_columns()},
                   {"resolved_path", path.resolved}};

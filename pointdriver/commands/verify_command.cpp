@@ -27,7 +27,10 @@ const CommandSpec verify_command{
     "built in code and compares with references derived independently (closed forms, integrals\n"
     "of the driver's own rows), with a stated tolerance. Prints the table (case, quantity,\n"
     "expected, got, error, tolerance, pass), writes it to DIR/verification.csv with the figure\n"
-    "data (CSV) of the cases and, when python3 and matplotlib are installed, the figures (PNG).",
+    "data (CSV) of the cases and, when python3 and matplotlib are installed, the figures (PNG).\n"
+    "expected and got are in the SI unit of the quantity named (Pa, K, J/kg, m/s; strains and\n"
+    "ratios [-]); error and tolerance are dimensionless (relative, or in the unit the quantity\n"
+    "names, e.g. \"error / max |sigma|\").",
     "", 0,
     "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed (a figure data file that\n"
     "cannot be written fails its case) or an output (a figure too) could not be written.\n"};
@@ -221,7 +224,7 @@ int command_verify(const std::vector<std::string>& args) {
   const fs::path table = out / "verification.csv";
   try {
     write_file_atomically(table, [&](std::ostream& csv) {
-      csv << "case,quantity,expected,got,error,tolerance,pass\n";
+      csv << "case,quantity,expected [SI],got [SI],error [-],tolerance [-],pass\n";
       for (const Check& k : all) {
         csv << csv_cell(k.case_name) << ',' << csv_cell(k.quantity) << ','
             << fmt(k.expected, "%.15g") << ',' << fmt(k.got, "%.15g") << ',' << fmt(k.error, "%.6g")

@@ -74,6 +74,11 @@ def main():
             table = json.load(f)
         with open(os.path.join(out, "ladder.csv"), newline="") as f:
             rows = list(csv.DictReader(f))
+        # Every numeric column names its unit ("value" takes the row's "unit" column).
+        unitless = [c for c in rows[0] if "[" not in c and c not in ("run", "observable", "unit",
+                                                                      "value")]
+        if unitless:
+            failures.append(f"ladder.csv columns without a unit: {unitless}")
         cells = {lv["level"]: lv["cells"] for lv in table["levels"]}
         if cells != {1.0: [13, 7, 7], 2.0: [26, 14, 14], 3.0: [39, 21, 21]}:
             failures.append(f"cells per level {cells}")
@@ -145,7 +150,7 @@ def main():
         # from its checkpoint, to the same answer bit for bit.
         x2 = os.path.join(out, "runs", "x2")
         before = {r["observable"]: r["value"] for r in rows if r["run"] == "x2"}
-        half = int(next(r["steps"] for r in rows if r["run"] == "x2")) // 2
+        half = int(next(r["steps [-]"] for r in rows if r["run"] == "x2")) // 2
         stopped = subprocess.run([mpm, "run", os.path.join(out, "scenes", "x2.json"), "--out", x2,
                                   "--overwrite", "--threads", "2", "-q", "--inject-fault",
                                   f"sigterm:{half}"])
