@@ -73,6 +73,11 @@ def main(bin_dir, source, work):
     failed = summary["failed_particles"]
     named = f", {failed} of {summary['particles']} particles failed (summary.json failed_by_cause)"
     assert (named in stdout) == (failed > 0), (failed, stdout)
+    # The history a user opens first has the run's course, not its two ends: 40 rows at
+    # output.interval = max_time / 40 (as campaigns/taylor/taylor.py writes it), plus the initial state (before: interval = max_time, 2 rows).
+    with open(os.path.join(work, out, "history.csv")) as f:
+        history = [r for r in f.read().splitlines()[1:] if r]
+    assert len(history) >= 20, f"history.csv has {len(history)} rows"
     print(f"OK: the README's quick start ({len(lines) - 1} commands) runs as printed")
 
 
