@@ -15,10 +15,43 @@ namespace {
 
 constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
 
+// Axisymmetric: the gradient of the mass per unit radius m_I / r_I. A ring's mass grows with its
+// radius, so the mass gradient of a uniform body points outward by m / r: one and two cells from
+// the axis it tilted a flat interface's normal by 14-24 degrees, 52 on it (issue 53). Dividing by
+// the radius weighs the nodes as a density does, Uintah's choice (n ~ sum_p rho_p grad S_ip;
+// Nairn's volume gradient does the same). On the axis the radial component is zero by symmetry;
+// the node next to it differences outward (r = 0 has no m / r); every component carries the
+// same 1 / r, so the normal's direction is that of grad (m / r).
+Vec3 axisymmetric_mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk) {
+  const NodeBox stored = G.stored();
+  const double h = G.spacing()(1);
+  const auto radius = [&](int j) { return G.lower()(1) + j * h; };
+  const auto per_radius = [&](int i, int j) { return m[G.index(i, j, ijk[2])] / radius(j); };
+  const double r = radius(ijk[1]);
+  Vec3 g = Vec3::Zero();
+  const int i_lo = std::max(ijk[0] - 1, stored.first[0]);
+  const int i_hi = std::min(ijk[0] + 1, stored.last[0]);
+  if (r <= 1e-9 * h) {  // on the axis: the axial difference of the mass, no radial component
+    if (i_hi > i_lo)
+      g(0) = (m[G.index(i_hi, ijk[1], ijk[2])] - m[G.index(i_lo, ijk[1], ijk[2])]) /
+             ((i_hi - i_lo) * G.spacing()(0));
+    return g;
+  }
+  if (i_hi > i_lo)
+    g(0) = (per_radius(i_hi, ijk[1]) - per_radius(i_lo, ijk[1])) / ((i_hi - i_lo) * G.spacing()(0));
+  int j_lo = std::max(ijk[1] - 1, stored.first[1]);
+  const int j_hi = std::min(ijk[1] + 1, stored.last[1]);
+  if (radius(j_lo) <= 1e-9 * h) j_lo = ijk[1];  // the axis or the ghost beyond it
+  if (j_hi > j_lo)
+    g(1) = (per_radius(ijk[0], j_hi) - per_radius(ijk[0], j_lo)) / ((j_hi - j_lo) * h);
+  return g;
+}
+
 // Gradient of one field's nodal mass at node (i, j, k) by central differences (one-sided at the
 // outermost stored layers). The report's normals came from the same differences (sec. 14). A 2D
 // grid stores one node plane along z: no difference, no gradient along z.
 Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk) {
+  if (G.spec().geometry == GridGeometry::axisymmetric) return axisymmetric_mass_gradient(G, m, ijk);
   Vec3 g;
   const NodeBox stored = G.stored();
   for (int d = 0; d < 3; ++d) {
