@@ -16,8 +16,10 @@
 #include "pointdriver/commands/options.hpp"
 #include "pointdriver/format/text_format.hpp"
 #include "pointdriver/output/csv_writer.hpp"
+#include "pointdriver/output/run_estimate.hpp"
 #include "pointdriver/study/batch.hpp"
 #include "support/atomic_file.hpp"
+#include "support/system_resources.hpp"
 
 namespace impact::pointdriver {
 
@@ -41,7 +43,9 @@ const CommandSpec batch_command{
     "", 0,
     "Exit codes: 0 every run completed, 1 usage, 2 input error, 3 a step could not be solved in\n"
     "some run or its CSV could not be written (the error is in the summary), or the summary\n"
-    "could not be written.\n"};
+    "could not be written, 4 refused before the runs: the CSVs' estimated size exceeds the free\n"
+    "space of DIR's file system (or ulimit -f), as pointdriver run refuses one, 130/143 stopped\n"
+    "by SIGINT/SIGTERM (a CSV being written is left as its .tmp).\n"};
 
 struct MaterialEntry {
   std::string name;
@@ -202,6 +206,27 @@ int command_batch(const std::vector<std::string>& args) {
     }
   }
 
+  // Refused before a row is written when the CSVs cannot fit (as pointdriver run refuses one: a
+  // leg of 1e9 steps wrote 2.3 GB in 20 s before): their estimates summed.
+  if (write_csv) {
+    RunEstimate all;
+    for (const BatchJob& job : jobs) {
+      const RunEstimate e = estimate_run(*job.path);
+      all.rows += e.rows;
+      all.csv_bytes += e.csv_bytes;
+      all.memory_bytes = std::max(all.memory_bytes, e.memory_bytes);
+      all.checked_columns = std::max(all.checked_columns, e.checked_columns);
+    }
+    const std::string refusal =
+        run_refusal(all,
+                    (out_dir / "*.csv").string() + " (" + std::to_string(jobs.size()) +
+                        (jobs.size() == 1 ? " run)" : " runs)"),
+                    available_output_bytes(out_dir / "batch_summary.csv"), available_memory());
+    if (!refusal.empty()) {
+      std::cerr << "pointdriver batch: " << refusal << '\n';
+      return cli::kExitRefused;
+    }
+  }
   BatchOptions options;
   options.threads = threads;
   std::vector<std::unique_ptr<CsvWriter>> csvs(jobs.size());  // slot i: job i's worker only
