@@ -416,12 +416,13 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
     ph.adiabatic_heating =
         r.boolean_or("turn_on_adiabatic_heating", true, "heat particles by plastic work");
   }
-  // Absent, each of these three leaves the material file's own choice.
-  // Absent, each material keeps its own file's choice: no one default value.
+  // Absent, each material keeps its own file's choice: no one default value. The catalogue of
+  // keys is shared by every read (mpm keys read the sample scene five times): added once.
   for (const char* key : {"erosion", "do_melting", "turn_on_adiabatic_heating"}) {
     r.amend_description(key, [](KeyDescription& d) {
+      constexpr std::string_view kNote = " (absent: each material file's own choice)";
       d.default_value = std::string(kComputedDefault);
-      d.meaning += " (absent: each material file's own choice)";
+      if (d.meaning.find(kNote) == std::string::npos) d.meaning += kNote;
     });
   }
   r.reject_unknown_keys();
