@@ -15,6 +15,18 @@ namespace {
 
 constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
 
+// The node whose mass stands for node n along axis d: at a `symmetric` face the body continues
+// as its mirror image, so the ghost node beyond it (-1, or cells + 1) has the mass of the first
+// interior node (1, or cells - 1). The ghost's own mass is only the tails of the particles that
+// reach past the face: differenced as it is, it tilted the normals of a face node towards the
+// symmetry plane (issue 53).
+int mass_node(const Grid& G, int n, int d) {
+  const GridSpec& s = G.spec();
+  if (n < 0 && s.faces[2 * d] == FaceCondition::symmetric) return -n;
+  if (n > s.cells[d] && s.faces[2 * d + 1] == FaceCondition::symmetric) return 2 * s.cells[d] - n;
+  return n;
+}
+
 // Axisymmetric: the gradient of the mass per unit radius m_I / r_I. A ring's mass grows with its
 // radius, so the mass gradient of a uniform body points outward by m / r: one and two cells from
 // the axis it tilted a flat interface's normal by 14-24 degrees, 52 on it (issue 53). Dividing by
@@ -26,14 +38,17 @@ Vec3 axisymmetric_mass_gradient(const Grid& G, const double* m, const std::array
   const NodeBox stored = G.stored();
   const double h = G.spacing()(1);
   const auto radius = [&](int j) { return G.lower()(1) + j * h; };
-  const auto per_radius = [&](int i, int j) { return m[G.index(i, j, ijk[2])] / radius(j); };
+  const auto per_radius = [&](int i, int j) {
+    return m[G.index(mass_node(G, i, 0), j, ijk[2])] / radius(j);
+  };
   const double r = radius(ijk[1]);
   Vec3 g = Vec3::Zero();
   const int i_lo = std::max(ijk[0] - 1, stored.first[0]);
   const int i_hi = std::min(ijk[0] + 1, stored.last[0]);
   if (r <= 1e-9 * h) {  // on the axis: the axial difference of the mass, no radial component
     if (i_hi > i_lo)
-      g(0) = (m[G.index(i_hi, ijk[1], ijk[2])] - m[G.index(i_lo, ijk[1], ijk[2])]) /
+      g(0) = (m[G.index(mass_node(G, i_hi, 0), ijk[1], ijk[2])] -
+              m[G.index(mass_node(G, i_lo, 0), ijk[1], ijk[2])]) /
              ((i_hi - i_lo) * G.spacing()(0));
     return g;
   }
@@ -63,6 +78,8 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
       continue;
     }
     const double span = (hi[d] - lo[d]) * G.spacing()(d);
+    lo[d] = mass_node(G, lo[d], d);
+    hi[d] = mass_node(G, hi[d], d);
     g(d) = (m[G.index(hi[0], hi[1], hi[2])] - m[G.index(lo[0], lo[1], lo[2])]) / span;
   }
   return g;
