@@ -19,8 +19,10 @@ extern char** environ;
 namespace impact {
 
 /// Runs `argv` (argv[0] looked up on PATH); returns its exit status, 127 when it cannot start.
-/// `quiet` sends its output to /dev/null (interpreter probes).
-inline int spawn_process(const std::vector<std::string>& argv, bool quiet) {
+/// `quiet` sends its output to /dev/null (interpreter probes); `stdout_file` (when not empty)
+/// takes the child's stdout instead (a caller that passes it on under its own name).
+inline int spawn_process(const std::vector<std::string>& argv, bool quiet,
+                         const std::string& stdout_file = {}) {
   std::cout.flush();
   std::cerr.flush();
   std::vector<char*> cargs;
@@ -31,6 +33,9 @@ inline int spawn_process(const std::vector<std::string>& argv, bool quiet) {
   if (quiet) {
     posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  } else if (!stdout_file.empty()) {
+    posix_spawn_file_actions_addopen(&actions, 1, stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0600);
   }
   pid_t pid = 0;
   const int err = posix_spawnp(&pid, cargs[0], &actions, nullptr, cargs.data(), environ);

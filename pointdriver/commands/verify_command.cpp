@@ -33,7 +33,8 @@ const CommandSpec verify_command{
     "names, e.g. \"error / max |sigma|\").",
     "", 0,
     "Exit codes: 0 all checks pass, 1 usage error, 3 a check failed (a figure data file that\n"
-    "cannot be written fails its case) or an output (a figure too) could not be written.\n"};
+    "cannot be written fails its case) or an output (a figure too, or a full stdout) could not\n"
+    "be written, 141 stdout closed by its reader (| head).\n"};
 
 std::string fmt(double v, const char* f = "%.6g") {
   char buf[40];
@@ -145,7 +146,7 @@ bool draw_figures(const fs::path& out) {
       if (fs::exists(out / csv)) args.insert(args.end(), {"--points", (out / csv).string()});
     }
     args.insert(args.end(), {"-o", (out / f.png).string()});
-    const PlotRun r = run_plot_script(args);
+    const PlotRun r = run_plot_script(args, false);
     if (r.status == PlotRun::Status::no_python || r.status == PlotRun::Status::no_matplotlib ||
         r.status == PlotRun::Status::no_script) {
       std::cout << "figures skipped (" << r.message << "); the figure data are in " << out.string()

@@ -1,8 +1,12 @@
 // Running pointdriver/plot/plot.py: where the script is, which interpreter, what went wrong.
 #include "pointdriver/plot/plot_script.hpp"
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <string>
 
 #include "support/python_launcher.hpp"
@@ -15,7 +19,7 @@ std::string plot_script_path() {
   return shipped_file("pointdriver/plot/plot.py").string();
 }
 
-PlotRun run_plot_script(const std::vector<std::string>& args) {
+PlotRun run_plot_script(const std::vector<std::string>& args, bool script_stdout) {
   PlotRun r;
   const std::string script = plot_script_path();
   if (!std::filesystem::is_regular_file(script)) {
@@ -42,7 +46,23 @@ PlotRun run_plot_script(const std::vector<std::string>& args) {
   const std::string& python = found.command;
   std::vector<std::string> argv{python, script};
   argv.insert(argv.end(), args.begin(), args.end());
-  r.exit_code = spawn_process(argv, false);
+  if (script_stdout) {
+    r.exit_code = spawn_process(argv, false);
+  } else {
+    // The script's lines through a private file into std::cout (the caller's stream).
+    std::error_code ec;
+    std::string pattern =
+        (std::filesystem::temp_directory_path(ec) / "impact_plot_stdout_XXXXXX").string();
+    char* name = pattern.data();
+    const int fd = mkstemp(name);
+    if (fd >= 0) close(fd);
+    r.exit_code = fd >= 0 ? spawn_process(argv, false, name) : spawn_process(argv, false);
+    if (fd >= 0) {
+      std::ifstream lines(name);
+      std::cout << lines.rdbuf();
+      std::filesystem::remove(name);
+    }
+  }
   if (r.exit_code == 0) return r;
   switch (r.exit_code) {  // the script's documented codes
     case 1:

@@ -38,8 +38,10 @@ bool said_why(const PlotRun& run);
 
 /// Runs `python3 plot.py args...` (no shell: arguments are passed as they are; the interpreter
 /// by support/python_launcher.hpp's rule), with plot.py's output going to this process's
-/// stdout/stderr.
-PlotRun run_plot_script(const std::vector<std::string>& args);
+/// stdout/stderr; with `script_stdout` false its stdout is passed on through std::cout, so that a
+/// stdout that cannot take it fails once, under the caller's name (pointdriver verify: the
+/// script's lines on a full stdout failed as "pointdriver plot" before verify's own).
+PlotRun run_plot_script(const std::vector<std::string>& args, bool script_stdout = true);
 
 /// The exit code of a command whose result is the figure: 0 drawn, 1 python3, matplotlib or
 /// plot.py missing or a usage error, 2 input error, 3 a figure or stdout not written (or plot.py

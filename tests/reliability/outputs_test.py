@@ -97,6 +97,14 @@ def stdout_full(bin_dir, source, work):
                     [os.path.join(bin_dir, "mpm"), "check", scene, "--threads", "1"]):
             done = run(cmd, 3, stdout=full)
             assert "cannot write the standard output (No space left on device)" in done.stderr
+        # One line under verify's own name: the figure script's "wrote" lines failed first, as
+        # "pointdriver plot: cannot write the standard output" (the second trial of issue 52).
+        done = run([os.path.join(bin_dir, "pointdriver"), "verify", "--out",
+                    os.path.join(work, "verify_full")], 3, stdout=full)
+        lines = done.stderr.strip().splitlines()
+        assert lines == ["pointdriver verify: cannot write the standard output"] or (
+            len(lines) == 1 and lines[0].startswith("pointdriver verify: cannot write the "
+                                                    "standard output")), lines
 
 
 def path_with(source, work, steps, checks=False):
