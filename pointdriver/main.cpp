@@ -44,7 +44,8 @@ void print_usage(std::ostream& out) {
   out << "\nEvery command takes --help, --version, -q/--quiet and -v/--verbose.\n"
          "Exit codes: 0 success, 1 usage, 2 input error, 3 unsolved step, failed check or\n"
          "verification, fit not converged, an output not written; 4 run refused (the estimated\n"
-         "CSV or memory does not fit).\n";
+         "CSV or memory does not fit); 130/143 stopped by SIGINT/SIGTERM; 141 stdout closed by\n"
+         "its reader (| head).\n";
 }
 
 }  // namespace

@@ -576,6 +576,9 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
         "date": datetime.date.today().isoformat(),
         "definitions": "docs/accuracy.md#grid-convergence-ladders",
         "safety_factor": gci.SAFETY_FACTOR,
+        # The keys without a unit in their name: counts and ratios.
+        "units": {k: "-" for k in ("safety_factor", "level", "cells", "particles", "steps",
+                                   "particle_steps", "threads", "ranks")},
         "levels": [{"level": r["level"], "cells": r["cells"], "h [m]": r["h"],
                     "fingerprint": r["data"]["fingerprint"], "particles": r["data"]["particles"],
                     "steps": r["data"]["steps"],

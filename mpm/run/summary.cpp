@@ -184,6 +184,7 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
                       {"steps", "-"},
                       {"volume_ratio", "-"},
                       {"failed_particles", "-"},
+                      {"failed_by_cause", "-"},
                       {"converted_particles", "-"},
                       {"faulted_particles", "-"},
                       {"velocity_fields", "-"},

@@ -150,6 +150,8 @@ int command_run(const std::vector<std::string>& args) {
                   {"failure_time [s]", r.failure_time >= 0.0 ? Json(r.failure_time) : Json()},
                   {"error", r.error},
                   {"columns", csv_columns()},
+                  // the numbers without a unit in their name (the CSV's columns carry theirs)
+                  {"units", {{"steps", "-"}}},
                   {"resolved_path", path.resolved}};
   const std::string summary_file = stem.string() + ".summary.json";
   try {

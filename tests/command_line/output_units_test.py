@@ -58,6 +58,9 @@ def main(bin_dir, source, work):
     run([pointdriver, "run", path, "-o", "run/uniaxial.csv"], work)
     with open(os.path.join(work, "run", "uniaxial.summary.json")) as f:
         summary = json.load(f)
+    missing = unitless_numbers(summary, summary.get("units", {}))
+    if missing:
+        failures.append(f"pointdriver run summary.json: numbers without a unit {missing}")
     if summary["failure_time [s]"] is not None:
         failures.append(f"pointdriver run summary.json: failure_time [s] = "
                         f"{summary['failure_time [s]']} for a run that did not fail (want null)")

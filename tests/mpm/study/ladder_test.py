@@ -79,6 +79,10 @@ def main():
                                                                       "value")]
         if unitless:
             failures.append(f"ladder.csv columns without a unit: {unitless}")
+        level_keys = [k for k in table["levels"][0] if "[" not in k and k != "fingerprint"
+                      and k not in table.get("units", {})]
+        if level_keys:
+            failures.append(f"ladder.json levels: keys without a unit {level_keys}")
         cells = {lv["level"]: lv["cells"] for lv in table["levels"]}
         if cells != {1.0: [13, 7, 7], 2.0: [26, 14, 14], 3.0: [39, 21, 21]}:
             failures.append(f"cells per level {cells}")
