@@ -60,8 +60,12 @@ std::string driver_of(const Scene& scene, const StepEstimate& e) {
     const SceneObject& o = scene.objects[e.fastest];
     const double speed = o.velocity.norm();
     if (e.wave_speed >= speed) {
-      add(e.signal_speed / kUsualSignal, "/materials/", scene.materials[o.material].name,
-          " (its density and moduli give a wave speed of ", e.wave_speed, " m/s)");
+      // The density is named with its value: a density of 1e-30 is the usual cause, set in the
+      // material file or in the scene's overrides of it.
+      const SceneMaterial& m = scene.materials[o.material];
+      add(e.signal_speed / kUsualSignal, "/materials/", m.name, " (its density ",
+          m.material.model.params().density, " kg/m^3, from its file or overrides/density, and ",
+          "moduli give a wave speed of ", e.wave_speed, " m/s)");
     } else {
       add(e.signal_speed / kUsualSignal, "/objects/", o.name, "/velocity (", speed, " m/s)");
     }

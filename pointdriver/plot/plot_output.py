@@ -39,6 +39,10 @@ class FigureError(Exception):
 def figure_format(path):
     """The matplotlib format of `path`'s suffix; FigureError (usage) for any other name."""
     fmt = FORMATS.get(os.path.splitext(path)[1].lower())
+    if path and os.path.isdir(path):  # the reason to act on: a directory, not a file name
+        raise FigureError(f"{path}: a directory; expected a figure file name ending in "
+                          f"{', '.join(FORMATS)} (e.g. {os.path.join(path, 'run.png')})",
+                          EXIT_USAGE)
     if not path or fmt is None:
         raise FigureError(f"{path or '(empty)'}: expected a figure name ending in "
                           f"{', '.join(FORMATS)}", EXIT_USAGE)

@@ -68,6 +68,11 @@ def main(mpm, source, work, case):
         assert one_line(done.stderr).endswith(
             f"mpm plot: {figure}: expected a figure name ending in .png, .pdf, .svg"), done.stderr
         assert sorted(os.listdir(work)) == ["run"], os.listdir(work)
+        # A directory is named as one (the second trial of issue 52: "expected a figure name").
+        done = plot(mpm, [run, "--out", work], 1, stdout=out)
+        assert one_line(done.stderr).endswith(
+            f"mpm plot: {work}: a directory; expected a figure file name ending in .png, .pdf, "
+            f".svg (e.g. {os.path.join(work, 'run.png')})"), done.stderr
     elif case == "full_device":
         figure = os.path.join(work, "full.png")
         os.symlink("/dev/full", figure)

@@ -92,8 +92,9 @@ BOOST_AUTO_TEST_CASE(an_absurd_count_is_refused_naming_the_key_that_drives_it) {
   const auto& p = scene.materials.front().material.model.params();
   const double c = std::sqrt((p.bulk_modulus + 4.0 * p.shear_modulus / 3.0) / 1e-30);
   BOOST_TEST(contains(step_refusal(scene),
-                      "the key that drives the count: /materials/elastic_al (its density and "
-                      "moduli give a wave speed of " +
+                      "the key that drives the count: /materials/elastic_al (its density "
+                      "1e-30 kg/m^3, from its file or overrides/density, and moduli give a "
+                      "wave speed of " +
                           three_digits(c) + " m/s)"),
              step_refusal(scene));
   // The bound is a key: raised, the same scene starts.
