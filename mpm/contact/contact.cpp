@@ -15,16 +15,35 @@ namespace {
 
 constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
 
-// The node whose mass stands for node n along axis d: at a `symmetric` face the body continues
-// as its mirror image, so the ghost node beyond it (-1, or cells + 1) has the mass of the first
-// interior node (1, or cells - 1). The ghost's own mass is only the tails of the particles that
-// reach past the face: differenced as it is, it tilted the normals of a face node towards the
-// symmetry plane (issue 53).
-int mass_node(const Grid& G, int n, int d) {
+// The mass at node n with the body's mirror images: at a `symmetric` face the body continues as
+// its image, which gives the nodes within one of the face (-1, 0, 1, or cells - 1 .. cells + 1)
+// what the body gives their mirror nodes: m(n) + m(mirror n) along each axis in `axes` (bit d),
+// the face node counted twice. Particles reach only their own side, so the face layer held half a
+// body's mass and the ghost only tails: differenced as they were, the normals of the face layer
+// and of the next one in tilted towards the symmetry plane by up to 27 degrees (issue 53; the
+// first fix, the ghost read as its mirror node, left the next layer at 7 degrees).
+double mass_with_images(const Grid& G, const double* m, const std::array<int, 3>& n, int axes) {
   const GridSpec& s = G.spec();
-  if (n < 0 && s.faces[2 * d] == FaceCondition::symmetric) return -n;
-  if (n > s.cells[d] && s.faces[2 * d + 1] == FaceCondition::symmetric) return 2 * s.cells[d] - n;
-  return n;
+  std::array<int, 2> along[3];  // per axis: the node and, near a symmetric face, its mirror
+  int count[3];
+  for (int d = 0; d < 3; ++d) {
+    along[d] = {n[d], n[d]};
+    count[d] = 1;
+    if (!(axes & (1 << d))) continue;
+    if (s.faces[2 * d] == FaceCondition::symmetric && n[d] >= -1 && n[d] <= 1) {
+      along[d][1] = -n[d];
+      count[d] = 2;
+    } else if (s.faces[2 * d + 1] == FaceCondition::symmetric && n[d] >= s.cells[d] - 1 &&
+               n[d] <= s.cells[d] + 1) {
+      along[d][1] = 2 * s.cells[d] - n[d];
+      count[d] = 2;
+    }
+  }
+  double total = 0.0;
+  for (int a = 0; a < count[0]; ++a)
+    for (int b = 0; b < count[1]; ++b)
+      for (int c = 0; c < count[2]; ++c) total += m[G.index(along[0][a], along[1][b], along[2][c])];
+  return total;
 }
 
 // Axisymmetric: the gradient of the mass per unit radius m_I / r_I. A ring's mass grows with its
@@ -38,18 +57,16 @@ Vec3 axisymmetric_mass_gradient(const Grid& G, const double* m, const std::array
   const NodeBox stored = G.stored();
   const double h = G.spacing()(1);
   const auto radius = [&](int j) { return G.lower()(1) + j * h; };
-  const auto per_radius = [&](int i, int j) {
-    return m[G.index(mass_node(G, i, 0), j, ijk[2])] / radius(j);
-  };
+  // Images along the axis only: the radial faces are the axis itself and the outer radius.
+  const auto mass = [&](int i, int j) { return mass_with_images(G, m, {i, j, ijk[2]}, 1); };
+  const auto per_radius = [&](int i, int j) { return mass(i, j) / radius(j); };
   const double r = radius(ijk[1]);
   Vec3 g = Vec3::Zero();
   const int i_lo = std::max(ijk[0] - 1, stored.first[0]);
   const int i_hi = std::min(ijk[0] + 1, stored.last[0]);
   if (r <= 1e-9 * h) {  // on the axis: the axial difference of the mass, no radial component
     if (i_hi > i_lo)
-      g(0) = (m[G.index(mass_node(G, i_hi, 0), ijk[1], ijk[2])] -
-              m[G.index(mass_node(G, i_lo, 0), ijk[1], ijk[2])]) /
-             ((i_hi - i_lo) * G.spacing()(0));
+      g(0) = (mass(i_hi, ijk[1]) - mass(i_lo, ijk[1])) / ((i_hi - i_lo) * G.spacing()(0));
     return g;
   }
   if (i_hi > i_lo)
@@ -69,6 +86,7 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
   if (G.spec().geometry == GridGeometry::axisymmetric) return axisymmetric_mass_gradient(G, m, ijk);
   Vec3 g;
   const NodeBox stored = G.stored();
+  const int axes = G.spec().planar() ? 0b011 : 0b111;  // a 2D grid has no images along z
   for (int d = 0; d < 3; ++d) {
     std::array<int, 3> lo = ijk, hi = ijk;
     lo[d] = std::max(ijk[d] - 1, stored.first[d]);
@@ -78,9 +96,7 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
       continue;
     }
     const double span = (hi[d] - lo[d]) * G.spacing()(d);
-    lo[d] = mass_node(G, lo[d], d);
-    hi[d] = mass_node(G, hi[d], d);
-    g(d) = (m[G.index(hi[0], hi[1], hi[2])] - m[G.index(lo[0], lo[1], lo[2])]) / span;
+    g(d) = (mass_with_images(G, m, hi, axes) - mass_with_images(G, m, lo, axes)) / span;
   }
   return g;
 }
