@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "models/material/material.hpp"
@@ -19,6 +20,7 @@
 #include "pointdriver/output/run_estimate.hpp"
 #include "pointdriver/study/batch.hpp"
 #include "support/atomic_file.hpp"
+#include "support/interrupt_signals.hpp"
 #include "support/system_resources.hpp"
 
 namespace impact::pointdriver {
@@ -45,7 +47,8 @@ const CommandSpec batch_command{
     "some run or its CSV could not be written (the error is in the summary), or the summary\n"
     "could not be written, 4 refused before the runs: the CSVs' estimated size exceeds the free\n"
     "space of DIR's file system (or ulimit -f), as pointdriver run refuses one, 130/143 stopped\n"
-    "by SIGINT/SIGTERM (a CSV being written is left as its .tmp).\n"};
+    "by SIGINT/SIGTERM (one line; the CSVs being written and the summary are discarded, the\n"
+    "CSVs of finished runs kept).\n"};
 
 struct MaterialEntry {
   std::string name;
@@ -231,21 +234,33 @@ int command_batch(const std::vector<std::string>& args) {
   options.threads = threads;
   std::vector<std::unique_ptr<CsvWriter>> csvs(jobs.size());  // slot i: job i's worker only
   std::unique_ptr<AtomicFile> summary_file;
+  // Ctrl-C or SIGTERM: every run stops at its next row (the sink throws, which ends that run),
+  // the CSVs being written and the summary are discarded (no .tmp left), the CSVs of runs that
+  // completed stay, and the batch exits 128 + the signal with one line (as pointdriver run).
+  const InterruptSignals signals;
+  struct Interrupted : std::runtime_error {  // the batch runner ends a run on std::exception
+    Interrupted() : std::runtime_error("interrupted") {}
+  };
   try {
     create_output_directory(out_dir);
-    if (write_csv) {
-      options.make_sink = [&](std::size_t i, const BatchJob& job) -> RowSink {
+    options.make_sink = [&](std::size_t i, const BatchJob& job) -> RowSink {
+      CsvWriter* csv = nullptr;
+      if (write_csv) {
         const auto [p, m] = job_index[i];
         const fs::path file = out_dir / (path_names[p] + "__" + material_names[m] + ".csv");
         csvs[i] = std::make_unique<CsvWriter>(file.string(), job.model->params());
-        CsvWriter* csv = csvs[i].get();
-        return [csv](const Row& row) { csv->write(row); };
+        csv = csvs[i].get();
+      }
+      return [csv](const Row& row) {
+        if (InterruptSignals::pending()) throw Interrupted{};
+        if (csv) csv->write(row);
       };
-      options.close_sink = [&](std::size_t i) {
-        csvs[i]->close();
-        csvs[i].reset();
-      };
-    }
+    };
+    options.close_sink = [&](std::size_t i) {
+      if (!csvs[i]) return;
+      if (!InterruptSignals::pending()) csvs[i]->close();  // else dropped: its .tmp removed
+      csvs[i].reset();
+    };
     summary_file = std::make_unique<AtomicFile>(out_dir / "batch_summary.csv");
   } catch (const OutputError& e) {
     std::cerr << "pointdriver batch: " << e.what() << '\n';
@@ -253,6 +268,15 @@ int command_batch(const std::vector<std::string>& args) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<BatchResult> results = run_batch_jobs(jobs, options);
+  if (const int signal = InterruptSignals::pending()) {
+    summary_file.reset();  // not committed: its temporary goes
+    std::size_t done = 0;
+    for (const BatchResult& r : results) done += r.result.completed ? 1 : 0;
+    std::cerr << "pointdriver batch: interrupted by " << InterruptSignals::name(signal)
+              << "; no summary written, the CSVs of the runs that had finished kept (about " << done
+              << " of " << results.size() << ")\n";
+    return 128 + signal;
+  }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const fs::path summary = summary_file->path();

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`pointdriver run` interrupted by Ctrl-C (SIGINT) or SIGTERM mid-run: one line naming the
+"""`pointdriver run` (and `batch`, SIGINT) interrupted by Ctrl-C (SIGINT) or SIGTERM mid-run: one line naming the
 signal, exit 128 + the signal (130, 143), no OUT.csv.tmp left behind and the previous OUT.csv
 untouched (issue 52's trial: a 5e7-step run left 210 MB of OUT.csv.tmp in 2 s, without a word).
 
@@ -49,9 +49,37 @@ def main(pointdriver, source, work):
         with open(out) as f:
             if f.read() != "previous\n":
                 failures.append(f"{name}: the previous {out} was replaced")
+    # pointdriver batch the same (the second trial: exit 130 without a word, the run's CSV and
+    # batch_summary.csv left as .tmp). 5e6 steps: 2.2 GB estimated, within the free space.
+    batch = os.path.join(work, "batch")
+    p = subprocess.Popen([pointdriver, "batch", "--paths", path, "--out", batch, "--set",
+                          LONG.replace("50000000", "5000000")],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 60
+    while time.time() < deadline and p.poll() is None:
+        tmps = [f for f in os.listdir(batch)] if os.path.isdir(batch) else []
+        if any(f.endswith(".csv.tmp") and os.path.getsize(os.path.join(batch, f)) > 100000
+               for f in tmps):
+            break
+        time.sleep(0.05)
+    p.send_signal(signal.SIGINT)
+    try:
+        _, err = p.communicate(timeout=60)
+        want = "pointdriver batch: interrupted by SIGINT; no summary written"
+        if p.returncode != 130 or not err.startswith(want) or err.count("\n") != 1:
+            failures.append(f"batch: exit {p.returncode}, stderr {err!r}; want 130 and one line "
+                            f"starting {want!r}")
+        left = sorted(os.listdir(batch))
+        if left:
+            failures.append(f"batch: files left in {batch}: {left} (want none: the interrupted "
+                            "run's CSV and the summary discarded)")
+    except subprocess.TimeoutExpired:
+        p.kill()
+        failures.append("batch: still running 60 s after SIGINT")
     if failures:
         sys.exit("FAIL:\n" + "\n".join(failures))
-    print("OK: SIGINT and SIGTERM stop pointdriver run with 130 and 143, no temporary left")
+    print("OK: SIGINT and SIGTERM stop pointdriver run with 130 and 143, batch with 130, no "
+          "temporary left")
 
 
 if __name__ == "__main__":
