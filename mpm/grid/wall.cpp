@@ -20,16 +20,6 @@
 //              free (a separating surface is not held). On an edge or corner node every held face
 //              is projected first, so that no face's friction acts on another face's normal
 //              velocity (which that face holds at zero).
-//   re-map     MUSL projects the moved particles' momentum back to the grid for the strain rate
-//              (grid_to_particles.cpp); the wall holds there exactly the faces the step held
-//              (wall_held), zeroing their normal component whatever its sign, and leaves every
-//              other node free (Bardenhagen et al. 2001: the same contact decision in both
-//              passes). Decided afresh on the sign of the re-mapped velocity, a face node the step
-//              had held (the particles did not move into the wall) was released when its ringing
-//              re-map pointed outward, and the strain rate stretched a face that had not moved: a
-//              block at rest on the wall under gravity gained energy until the energy check
-//              stopped it at 204 us; a block spanning two walls at 8 us
-//              (tests/mpm/verification/resting_contact_test.cpp).
 //   friction   one Coulomb correction of what remains tangential to the held faces, u_t: the slip
 //              removed is s = min(sum_f mu_f j_f, |u_t|): stick (u_t = 0) when |u_t| <= sum mu_f
 //              j_f, slip otherwise.
@@ -85,21 +75,15 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
       const std::uint8_t touch = wall_touch[e];
       if (touch == 0) continue;
       Vec3& v = end[e];
-      if (!step) {  // the re-map: the step's decision, whatever the re-mapped velocity's sign
-        for (int i = 0; i < w.count; ++i)
-          if (wall_held[e] & w.face[i].bit) v(w.face[i].axis) = 0.0;
-        continue;
-      }
       double capacity = 0.0;  // sum over held faces of mu_f j_f
       for (int i = 0; i < w.count; ++i) {
         const WallFace& face = w.face[i];
         const double vn = face.inward * v(face.axis);
         if (!(touch & face.bit) || !(vn < 0.0)) continue;  // not touching, at rest or leaving
         v(face.axis) = 0.0;
-        wall_held[e] |= face.bit;
         capacity += face.mu * -vn;  // -vn: the normal impulse per unit mass
       }
-      if (capacity == 0.0) continue;
+      if (!step || capacity == 0.0) continue;
       // What remains is tangential to every held face; a component another wall's ghost image
       // sets afterwards (a node beyond that wall) takes no friction: it would book heat on a
       // velocity the particles never see.
