@@ -22,15 +22,23 @@ using namespace impact::mpm;
 
 namespace {
 
-// A dense 4 x 4 x 4 grid of unit cells, two velocity fields, free faces.
-Grid two_field_grid() {
+// A dense grid of unit cells with free faces: 4 x 4 x 4, or on a 2D grid 4 x 4 and one cell of 1 m
+// along z centred on z = 0.
+GridSpec unit_cells(GridGeometry geometry = GridGeometry::three_d) {
   GridSpec spec;
-  spec.lower = Vec3::Zero();
-  spec.upper = Vec3::Constant(4.0);
-  spec.cells = {4, 4, 4};
+  spec.geometry = geometry;
+  const bool planar = geometry != GridGeometry::three_d;
+  spec.lower = planar ? Vec3(0.0, 0.0, -0.5) : Vec3::Zero();
+  spec.upper = planar ? Vec3(4.0, 4.0, 0.5) : Vec3::Constant(4.0);
+  spec.cells = {4, 4, planar ? 1 : 4};
   spec.faces.fill(FaceCondition::free);
   spec.active_blocks = false;
-  Grid G(spec, 1, 2);
+  return spec;
+}
+
+// The 4 x 4 x 4 grid with two velocity fields and a heat array.
+Grid two_field_grid() {
+  Grid G(unit_cells(), 1, 2);
   G.heat.assign(G.entry_count(), 0.0);
   return G;
 }
@@ -125,14 +133,7 @@ BOOST_AUTO_TEST_CASE(the_larger_body_gives_the_normal_at_the_corner_of_the_small
 // the bodies out of the plane (v_z +1/3 and -1/3 here, the cells being as wide as the 1 m along
 // z; on a rod-on-plate scene the particles drifted off z = 0 at up to 0.17 m/s).
 BOOST_AUTO_TEST_CASE(a_2d_grid_has_no_mass_gradient_along_z) {
-  GridSpec spec;
-  spec.geometry = GridGeometry::plane_strain;
-  spec.lower = Vec3(0.0, 0.0, -0.5);
-  spec.upper = Vec3(4.0, 4.0, 0.5);
-  spec.cells = {4, 4, 1};
-  spec.faces.fill(FaceCondition::free);
-  spec.active_blocks = false;
-  Grid G(spec, 1, 2);
+  Grid G(unit_cells(GridGeometry::plane_strain), 1, 2);
   G.mass[entry(G, 0, 1, 2, 0)] = 1.0;
   G.mass[entry(G, 0, 2, 2, 0)] = 0.5;
   G.mass[entry(G, 0, 2, 3, 0)] = 1.0;
@@ -157,14 +158,7 @@ BOOST_AUTO_TEST_CASE(a_2d_grid_has_no_mass_gradient_along_z) {
 // and both bodies were stopped radially; with the mass per unit radius the radial differences of
 // a uniform body are zero, on the axis by symmetry and next to it one-sided.
 BOOST_AUTO_TEST_CASE(an_axisymmetric_flat_interface_has_an_axial_normal) {
-  GridSpec spec;
-  spec.geometry = GridGeometry::axisymmetric;
-  spec.lower = Vec3(0.0, 0.0, -0.5);
-  spec.upper = Vec3(4.0, 4.0, 0.5);
-  spec.cells = {4, 4, 1};
-  spec.faces.fill(FaceCondition::free);
-  spec.active_blocks = false;
-  Grid G(spec, 1, 2);
+  Grid G(unit_cells(GridGeometry::axisymmetric), 1, 2);
   const double alpha = 0.75;
   for (int j = 0; j <= 4; ++j) {
     const double w = j == 0 ? 1.0 / 6.0 : double(j);
@@ -197,13 +191,8 @@ BOOST_AUTO_TEST_CASE(an_axisymmetric_flat_interface_has_an_axial_normal) {
 // 7 degrees at j = 1 (the ghost read as its mirror node fixed j = 0 only); the correction along
 // it left the x velocities apart and put v_y on the nodes.
 BOOST_AUTO_TEST_CASE(a_symmetric_face_adds_the_mirror_images_mass_to_its_normals) {
-  GridSpec spec;
-  spec.lower = Vec3::Zero();
-  spec.upper = Vec3::Constant(4.0);
-  spec.cells = {4, 4, 4};
-  spec.faces.fill(FaceCondition::free);
+  GridSpec spec = unit_cells();
   spec.faces[2] = FaceCondition::symmetric;
-  spec.active_blocks = false;
   const double alpha = 0.75;
   for (const int node : {0, 1}) {
     Grid G(spec, 1, 2);
