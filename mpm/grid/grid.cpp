@@ -141,6 +141,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   }
   if (has_wall) {
     wall_touch.assign(e, 0);
+    wall_held.assign(e, 0);
   }
   bx_ = (nx_ + kBlock - 1) / kBlock;
   by_ = (ny_ + kBlock - 1) / kBlock;
@@ -208,7 +209,10 @@ void Grid::clear() {
   const bool touch = !wall_touch.empty();
   for_active_entries([&](int i) {
     nodes_[i] = NodeData{};
-    if (touch) wall_touch[i] = 0;
+    if (touch) {
+      wall_touch[i] = 0;
+      wall_held[i] = 0;
+    }
     mass[i] = 0.0;
   });
 }
@@ -236,7 +240,8 @@ std::size_t Grid::bytes() const {
        (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite) +
        (mirror_after_walls_all_.capacity() + mirror_after_walls_active_.capacity()) *
            sizeof(MirrorWrite) +
-       (wall_all_.capacity() + wall_active_.capacity()) * sizeof(WallNode) + wall_touch.size();
+       (wall_all_.capacity() + wall_active_.capacity()) * sizeof(WallNode) + wall_touch.size() +
+       wall_held.size();
   return b;
 }
 

@@ -260,10 +260,11 @@ class Grid {
   /// wall this step (wall_touch) and moves into it, the normal component is zeroed; the held
   /// faces of an edge or corner node are projected together, then one Coulomb correction (step
   /// pass) takes up to sum mu_f j_f off what remains tangential. A node that does not touch, or
-  /// moves away, is left free (the wall never pulls). The ghost node outside a touched face moves
-  /// inward at the first interior node's normal speed |n . v|, in `start` (the step's v_I, step
-  /// pass) and `end`; elsewhere it keeps its own velocity. Step pass: adds the Coulomb heat
-  /// to `heat` (if allocated) and returns its sum [J].
+  /// moves away, is left free (the wall never pulls). The projection pass holds exactly the
+  /// faces the step pass held (wall_held), whatever the sign of the re-mapped velocity. The ghost
+  /// node outside a touched face moves inward at the first interior node's normal speed |n . v|, in
+  /// `start` (the step's v_I, step pass) and `end`; elsewhere it keeps its own velocity. Step pass:
+  /// adds the Coulomb heat to `heat` (if allocated) and returns its sum [J].
   double apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallPass pass);
   bool has_walls() const {
     return !wall_all_.empty();
@@ -285,6 +286,9 @@ class Grid {
   /// this node in its stencil reaches within the step (particles-to-grid; summed over the ranks as
   /// a bitwise or); allocated only with wall faces. A wall holds only where its body touches it.
   std::vector<std::uint8_t> wall_touch;
+  /// Per entry: the bits of the wall faces the step pass held (its v*_n zeroed), which MUSL's
+  /// re-map holds too, and only those (Grid::apply_walls); cleared with the grid each step.
+  std::vector<std::uint8_t> wall_held;
   /// Per scene object: the particles' half-widths [m] (uGIMP's l times the spacing), the extent
   /// of a particle's domain for the touch test; set by the solver with wall faces.
   std::vector<Vec3> particle_half_width;

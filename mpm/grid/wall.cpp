@@ -20,14 +20,38 @@
 //              free (a separating surface is not held). On an edge or corner node every held face
 //              is projected first, so that no face's friction acts on another face's normal
 //              velocity (which that face holds at zero).
+//   re-map     MUSL projects the moved particles' momentum back to the grid for the strain rate
+//              (grid_to_particles.cpp); the wall holds there exactly the faces the step held
+//              (wall_held), zeroing their normal component whatever its sign, and leaves every
+//              other node free (Bardenhagen et al. 2001: the same contact decision in both
+//              passes). Decided afresh on the sign of the re-mapped velocity, a face node the step
+//              had held (the particles did not move into the wall) was released when its ringing
+//              re-map pointed outward, and the strain rate stretched a face that had not moved: a
+//              block at rest on the wall under gravity gained energy until the energy check
+//              stopped it at 204 us; a block spanning two walls at 8 us
+//              (tests/mpm/verification/resting_contact_test.cpp).
 //   friction   one Coulomb correction of what remains tangential to the held faces, u_t: the slip
 //              removed is s = min(sum_f mu_f j_f, |u_t|): stick (u_t = 0) when |u_t| <= sum mu_f
 //              j_f, slip otherwise.
-//   heat       only in slip (s < |u_t|): m s (v0 . t) >= 0 per node, the friction impulse m s
-//              times the slip at the start of the step along the slip direction t (the wall is
-//              at rest), the convention of contact/contact.hpp; zero in stick. Delivered to the
-//              particles through Grid::heat. A component that another wall's ghost image sets
-//              (a node beyond that wall) takes no friction: booked there, the heat of a bisector
+//   heat       only where the material slides: in slip (s < |u_t|) and with the start
+//              velocity (the particles' own, projected) sliding along t faster than one step's
+//              friction can stop, v0 . t > s; then m s (v0 . t) per node, the friction impulse
+//              m s times the slip at the start of the step along the slip direction t (the wall
+//              is at rest), the convention of contact/contact.hpp; zero in stick. Without the
+//              test v0 . t > s, a block at rest in an x-/z- corner (gravity 1e5 m/s^2 along the
+//              bisector, mu 0.25) booked 1.1e-8 J of heat in 250 us that the mechanical energy
+//              never lost (the books without any heat stay at -2e-9 J): its light face nodes
+//              take a tangential force above mu times their normal one every step, slip by
+//              |u_t| - s ~ 2e-3 m/s and are pulled back the next, while the particles barely move
+//              (|v0| ~ 1e-3 m/s). Now that corner books 1.1e-9 J while the sudden load first
+//              settles and nothing after; a steady slide has v0 . t ~ |u_t| >> s = mu g_n dt, and
+//              the sliding block's books are unchanged (tests/mpm/verification/
+//              resting_contact_test.cpp, wall_friction_test.cpp). Booked with the slip averaged
+//              over the step, m s (v0 . t + |u_t| - s) / 2, as Nairn, Bardenhagen & Smith (2018,
+//              Comput. Part. Mech. 5:285) do, the same corner made 1.0e-8 J in 100 us (without
+//              their part for a slip that turns within the step, which only adds). Delivered to the
+//              particles through Grid::heat. A component that another wall's ghost image sets (a
+//              node beyond that wall) takes no friction: booked there, the heat of a bisector
 //              impact into a corner at mu 2 was 97 % such velocities that no particle sees.
 //   ghost      while its body touches a face (the face node's touch bit), the ghost node outside
 //              it moves inward at the first interior node's normal speed, |n . v|, start and
@@ -75,15 +99,21 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
       const std::uint8_t touch = wall_touch[e];
       if (touch == 0) continue;
       Vec3& v = end[e];
+      if (!step) {  // the re-map: the step's decision, whatever the re-mapped velocity's sign
+        for (int i = 0; i < w.count; ++i)
+          if (wall_held[e] & w.face[i].bit) v(w.face[i].axis) = 0.0;
+        continue;
+      }
       double capacity = 0.0;  // sum over held faces of mu_f j_f
       for (int i = 0; i < w.count; ++i) {
         const WallFace& face = w.face[i];
         const double vn = face.inward * v(face.axis);
         if (!(touch & face.bit) || !(vn < 0.0)) continue;  // not touching, at rest or leaving
         v(face.axis) = 0.0;
+        wall_held[e] |= face.bit;
         capacity += face.mu * -vn;  // -vn: the normal impulse per unit mass
       }
-      if (!step || capacity == 0.0) continue;
+      if (capacity == 0.0) continue;
       // What remains is tangential to every held face; a component another wall's ghost image
       // sets afterwards (a node beyond that wall) takes no friction: it would book heat on a
       // velocity the particles never see.
@@ -95,10 +125,12 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
       const double s = std::min(capacity, slip);
       const Vec3 t = ut / slip;
       v -= s * t;
-      // Heat only in slip: the friction impulse m s times the slip at the start of the step
-      // along t (static friction does no work).
+      // Heat only where the material slides (header comment): its start slip along t exceeds
+      // what friction takes off in one step (static friction does no work).
       if (!(s < slip) || !start) continue;
-      const double h = mass[e] * s * std::max(0.0, (*start)[e].dot(t));
+      const double slip_start = (*start)[e].dot(t);
+      if (!(slip_start > s)) continue;
+      const double h = mass[e] * s * slip_start;
       if (owns(w.node)) total_heat += h;  // booked once in a domain decomposition
       if (write_heat) heat[e] += h;
     }

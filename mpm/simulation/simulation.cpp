@@ -77,7 +77,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   // So is the Coulomb work of a wall face (grid/wall.cpp): one column for both.
   if ((grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0) ||
       scene_.grid.has_wall_friction())
-    sinks_.friction = ledger_.add_sink_column("friction_heat");
+    sinks_.friction = ledger_.add_sink_column("friction_heat", /*in_balance=*/true,
+                                              /*estimated=*/true);
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
   // Plastic work is part of the strain energy already booked: a column, not a term of the balance.
   st.plastic_work = scene_.output.plastic_work;

@@ -46,19 +46,6 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
       G.velocity_new[i].setZero();
     }
   });
-  if (!gravity.isZero(0.0)) {
-    // Impulse dt m_I g and its work at the mid-step nodal velocity (serial, ascending entries:
-    // deterministic, and the same order on the dense grid).
-    const std::vector<int>& active = G.active_nodes();
-    for (int f = 0; f < G.fields(); ++f)
-      for (const int I : active) {
-        const int i = f * G.node_count() + I;
-        if (nodes[i].mass <= 0.0 || !G.owns(I)) continue;
-        const Vec3 J = dt * nodes[i].mass * gravity;
-        out.external_impulse += J;
-        out.external_work += 0.5 * (G.velocity[i] + G.velocity_new[i]).dot(J);
-      }
-  }
   // The step's contact impulse on v*: the particles see it, the ledger books its friction work.
   if (contact_on) out.contact = apply_contact(G, *contact, G.velocity_new, ContactPass::step);
 
@@ -79,6 +66,22 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
   G.apply_mirror(G.velocity_new);
   if (G.has_walls())
     out.wall_friction_heat = G.apply_walls(&G.velocity, G.velocity_new, WallPass::step);
+  if (!gravity.isZero(0.0)) {
+    // Impulse dt m_I g and its work at the mid-step velocity the node keeps, after contact, the
+    // mirror and the walls (serial, ascending entries: deterministic, and the same order on the
+    // dense grid). Booked before the faces held their nodes, a body resting on a face was
+    // credited about M_face g^2 dt^2 / 2 a step that no motion made (2.1e-6 J in 240 us against
+    // 9.2e-9 J of potential energy released; issue 53).
+    const std::vector<int>& active = G.active_nodes();
+    for (int f = 0; f < G.fields(); ++f)
+      for (const int I : active) {
+        const int i = f * G.node_count() + I;
+        if (nodes[i].mass <= 0.0 || !G.owns(I)) continue;
+        const Vec3 J = dt * nodes[i].mass * gravity;
+        out.external_impulse += J;
+        out.external_work += 0.5 * (G.velocity[i] + G.velocity_new[i]).dot(J);
+      }
+  }
   G.for_active_entries([&](int i) { G.increment[i] = G.velocity_new[i] - G.velocity[i]; });
   // The faces' impulse: what they changed in the increments that move the particles (serial, in
   // node order: deterministic). A stationary wall does no work (docs/mpm.md#ledger).

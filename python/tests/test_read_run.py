@@ -82,7 +82,9 @@ def test_snapshot_stress_is_the_particle_paths_stress(data, workdir):
     for (i, j), name in zip(((0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2)),
                             ("xx", "yy", "zz", "xy", "yz", "zx")):
         expected = path["stress_" + name][-1]
-        assert abs(expected) > 1e4, name  # [Pa]: every component is there to be told apart
+        # [Pa]: every component is there to be told apart (zx is the smallest, 477 Pa since the
+        # wall's re-map holds what its step held; compared to 1e-12 relative below)
+        assert abs(expected) > 1e2, name
         assert abs(stress[i, j] - expected) <= 1e-12 * abs(expected), (name, stress, expected)
     assert len({round(abs(path["stress_" + n][-1])) for n in ("xy", "yz", "zx")}) == 3
 

@@ -2,6 +2,7 @@
 // patch on top (how a test varies interpolation or scheme), and small measurements.
 #pragma once
 
+#include <algorithm>
 #include <string>
 
 #include "mpm/input/scene_reader.hpp"
@@ -46,6 +47,14 @@ inline Json axisymmetric_case01_patch() {
            {{"sphere",
              {{"geometry", {{"center", {9.75e-3, 0.0, 0.0}}}}, {"particles_per_cell", {2, 2}}}},
             {"target", {{"particles_per_cell", {2, 2}}}}}}};
+}
+
+/// The ledger's sink column `name` [J] (e.g. "friction_heat"); 0 when the scene has no such
+/// column (nothing of that kind can be booked in it).
+inline double ledger_sink(const Ledger& ledger, const std::string& name) {
+  const auto& names = ledger.sink_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? 0.0 : ledger.row().sinks[std::size_t(it - names.begin())];
 }
 
 }  // namespace impact::mpm::test

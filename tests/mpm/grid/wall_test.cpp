@@ -82,6 +82,29 @@ BOOST_AUTO_TEST_CASE(an_edge_node_sticks_or_slips_on_the_sum_of_both_faces_frict
   BOOST_TEST(slip.heat == 2.0 * 1.0 * 3.0);  // m s (v0 . t)
 }
 
+BOOST_AUTO_TEST_CASE(a_slip_the_step_turned_back_makes_no_heat) {
+  // A face node ringing at the grid scale under a resting body: the particles' start velocity is
+  // small or opposite to the end's slip direction, and friction takes off less than the slip.
+  // Nothing slides along t for the step, so no heat; the velocity is corrected all the same.
+  Grid G = wall_grid({kXm}, 0.5);
+  const int e = G.index(0, 2, 2);
+  const auto ring = [&](const Vec3& start, const Vec3& end) {
+    G.mass[e] = 2.0;
+    G.wall_touch[e] = bit(kXm);
+    G.velocity[e] = start;
+    G.velocity_new[e] = end;
+    G.heat[e] = 0.0;
+    return G.apply_walls(&G.velocity, G.velocity_new, WallPass::step);
+  };
+  // Turned back: start -1 along y, end +3 (capacity 0.5 * 1): slips to 2.5, no heat.
+  BOOST_TEST(ring(Vec3(0.0, -1.0, 0.0), Vec3(-1.0, 3.0, 0.0)) == 0.0);
+  BOOST_TEST(G.velocity_new[e] == Vec3(0.0, 2.5, 0.0));
+  // Along t but slower than one step's friction (0.4 < s = 0.5): no heat.
+  BOOST_TEST(ring(Vec3(0.0, 0.4, 0.0), Vec3(-1.0, 3.0, 0.0)) == 0.0);
+  // Sliding at 2 along t: m s (v0 . t).
+  BOOST_TEST(ring(Vec3(0.0, 2.0, 0.0), Vec3(-1.0, 3.0, 0.0)) == 2.0 * 0.5 * 2.0);
+}
+
 BOOST_AUTO_TEST_CASE(the_result_does_not_depend_on_which_faces_meet) {
   // The same edge contact on the x-/z- edge and, with the axes permuted, on the y-/z- and x-/y-
   // edges: the outcomes are the same permutation of each other.

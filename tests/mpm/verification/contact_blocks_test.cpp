@@ -66,14 +66,6 @@ BlockTotals block_totals(const Particles& P) {
   return b;
 }
 
-double sink(const Ledger& ledger, const std::string& name) {
-  const auto& names = ledger.sink_names();
-  const LedgerRow row = ledger.row();
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return row.sinks[i];
-  return 0.0;
-}
-
 struct Measured {
   double worst_momentum = 0.0;     ///< max_steps |p - p0 - J_b| / p_block
   double worst_coulomb = 0.0;      ///< max_steps (|Dp_y| - mu |Dp_x|) / p_block
@@ -116,7 +108,7 @@ Measured collide(const char* type, double mu, double max_time, double multiplier
   while (!sim.finished()) {
     sim.step();
     const LedgerRow row = sim.ledger().row();
-    const double heat_now = sink(sim.ledger(), "friction_heat");
+    const double heat_now = test::ledger_sink(sim.ledger(), "friction_heat");
     m.heat_decrease = std::max(m.heat_decrease, heat - heat_now);
     heat = heat_now;
     m.worst_momentum =
@@ -160,8 +152,8 @@ Measured collide(const char* type, double mu, double max_time, double multiplier
            << max_dpy / p_block << " p_block, max |Dp_y|/|Dp_x| " << max_ratio
            << ", max (|Dp_y| - mu |Dp_x|)/p_block " << m.worst_coulomb << ", max |Dp_y|/p_y0 "
            << m.worst_tangential << "; energy_error " << row.energy_error << ", friction_heat "
-           << sink(sim.ledger(), "friction_heat") << " J of E0 " << sim.ledger().initial_energy()
-           << " J");
+           << test::ledger_sink(sim.ledger(), "friction_heat") << " J of E0 "
+           << sim.ledger().initial_energy() << " J");
   return m;
 }
 

@@ -30,13 +30,6 @@ using namespace impact::mpm;
 
 namespace {
 
-double sink(const Ledger& ledger, const std::string& name) {
-  const auto& names = ledger.sink_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  BOOST_REQUIRE(it != names.end());
-  return ledger.row().sinks[std::size_t(it - names.begin())];
-}
-
 struct Bodies {
   double mass[2] = {0.0, 0.0};
   Vec3 velocity[2] = {Vec3::Zero(), Vec3::Zero()};  ///< mass-weighted mean [m/s]
@@ -72,7 +65,7 @@ BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_block_follows_coulombs_law_and_its_los
   const Bodies b = bodies(sim.particles());
   const double vy = b.velocity[1](1);
   const double lost = 0.5 * b.mass[1] * (v0 * v0 - vy * vy);
-  const double heat = sink(sim.ledger(), "friction_heat");
+  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
   BOOST_TEST_MESSAGE(sim.steps() << " steps: v_y against v0 - mu g t worst " << worst
                                  << " v0; lower block v_y " << b.velocity[0](1) << " m/s; heat "
                                  << heat << " J against " << lost << " J lost ("

@@ -8,28 +8,31 @@
 //    puts the start on multiples of half a cell). Closed form: an elastic rod leaves a rigid wall
 //    with its incoming momentum reversed (restitution 1) after 2 L / c_L. Discretely the wall's
 //    catch of the face nodes is inelastic, so: restitution in (0.75, 1]; the worst |energy_error|
-//    over the run and the starts below 0.3 at h = 0.5 mm and falling by at least 1.6 when h
-//    halves (measured: restitution 0.80-0.85 and 0.89-0.92, worst |energy_error| 0.25 and 0.12,
-//    at the end within 0.15 and 0.057); once the rod moves away with every particle beyond the
-//    face layer's reach ((1 + l) h), the boundary impulse and the momentum change by round-off
-//    only (< 1e-12 |p0|). Before the touch test the face node was held whenever the rod's
-//    particles within 1.5 cells approached it, and its ghost stayed a mirror: every start ended
-//    in the energy-growth stop (kinetic + strain doubled).
+//    over the run and the starts below 0.35 at h = 0.5 mm and falling by at least 1.6 when h
+//    halves (measured: restitution 0.751-0.780 and 0.864-0.876, worst |energy_error| 0.326 and
+//    0.168, first order; before issue 53's re-map rule 0.80-0.85 and 0.89-0.92, 0.25 and 0.12:
+//    the re-map released face nodes the step had held, and the strain rate stretched faces that
+//    had not moved, which made energy and offset part of the catch's loss); once the rod moves away
+//    with every particle beyond the face layer's reach ((1 + l) h), the boundary impulse and the
+//    momentum change by round-off only (< 1e-12 |p0|). Before the touch test the face node was held
+//    whenever the rod's particles within 1.5 cells approached it, and its ghost stayed a mirror:
+//    every start ended in the energy-growth stop (kinetic + strain doubled).
 // 2. The issue's block (2 x 4 x 2 mm, h = 0.5 mm) started half a cell from the wall, at 50 m/s:
-//    restitution below 1, worst |energy_error| below 0.15, impulse constant once it has left
-//    (measured 0.69 and 0.13).
+//    restitution below 1, worst |energy_error| below 0.3, impulse constant once it has left
+//    (measured 0.61 and 0.25; 0.69 and 0.13 before issue 53's re-map rule, as in 1.).
 // 3. A plane-strain block (2 x 2 mm, one cell thick in y) driven along the bisector into the
 //    corner of the x- and z- walls at 10 m/s, mu = 2 on both. Both faces see a 45 degree
 //    approach; the continuum sticks at first contact wherever mu >= (c_s / c_L)(v_t / v_n) = 0.51
 //    (the shear wave that stops the slip needs a traction rho c_s v_t, the normal wave gives
-//    rho c_L v_n), so the Coulomb heat is what the discrete catch lets slip and falls with h.
-//    Asserted: friction heat below 0.5 % of E0 at h = 0.5 mm and falling at least 2-fold when h
-//    halves (measured 0.057 %, 0.0070 %); worst |energy_error| below 0.35 and falling 1.5-fold
-//    (0.28, 0.15); the motion symmetric about the bisector (p_x = p_z to 1e-12 of |p0|). Face by
-//    face, the edge nodes' friction acted on the other face's normal velocity, and without the
-//    touch test the faces held early: 55-57 % of E0 booked as heat at every h, energy_error
-//    +0.21, +0.30, +0.88 at h, h/2, h/4. Friction on the components beyond the other wall, which
-//    its ghost image then overwrote, booked 3.6 % and 1.1 %.
+//    rho c_L v_n), so the Coulomb heat is what the discrete catch lets slip. Asserted: friction
+//    heat below 0.1 % of E0 at h = 0.5 mm and 0.01 % at h/2 (measured 0 and 3.7e-4 %; 0.057 %
+//    and 0.0070 % before issue 53's re-map rule, which released held face nodes); worst
+//    |energy_error| below 0.45 and falling 1.5-fold (0.41, 0.20; before 0.28, 0.15); the motion
+//    symmetric about the bisector (p_x = p_z to 1e-12 of |p0|). Face by face, the edge nodes'
+//    friction acted on the other face's normal velocity, and without the touch test the faces held
+//    early: 55-57 % of E0 booked as heat at every h, energy_error +0.21, +0.30, +0.88 at h, h/2,
+//    h/4. Friction on the components beyond the other wall, which its ghost image then overwrote,
+//    booked 3.6 % and 1.1 %.
 // 4. A block resting in that corner, gravity g = 1e5 m/s^2 along the bisector, sliding along the
 //    edge at v0 = 5 m/s, mu = 0.25 on both faces: each face carries M g / sqrt 2, so Coulomb's law
 //    gives v_y = v0 - mu sqrt(2) g t, and the heat equals the kinetic energy lost. Asserted: v_y
@@ -37,14 +40,15 @@
 // 5. The Taylor rod of taylor_rod.json (shot H8, L0/D0 = 2 at 328 m/s, 6061-T6, failure off) at
 //    6 cells per radius on an x- wall, through its rebound (80 us): no particle crosses the
 //    wall's plane, the rod leaves with a little momentum (a plastic impact) that the wall takes
-//    little of back (final p_x at least 0.6 of its largest), |energy_error| below 4 % (measured
-//    3.0 %; p_x 5.0 % of p0 at most, 3.6 % at the end: some pull remains while the interior node
-//    is slower than the particles crossing the plane). With the ghost released whenever its face
-//    node was (v*_n >= 0) rather than while the body touches, the light ghost under the face's
-//    GPa compression kicked a face particle through the wall at step 554 (at 656 m/s; the
-//    campaign's fit_all set at 6 cells per radius stopped 15 of 23 shots the same way). With the
-//    ghost the mirror image of the leaving body, the particles still crossing the plane were
-//    pulled back: the rod's rebound momentum peaked at 5 % of p0 and fell to 0.3 %.
+//    little of back (final p_x at least 0.6 of its largest), |energy_error| below 4.5 % (measured
+//    4.1 %, 3.0 % before issue 53's re-map rule; p_x 5.0 % of p0 at most, 3.9 % at the end: some
+//    pull remains while the interior node is slower than the particles crossing the plane). With
+//    the ghost released whenever its face node was (v*_n >= 0) rather than while the body touches,
+//    the light ghost under the face's GPa compression kicked a face particle through the wall at
+//    step 554 (at 656 m/s; the campaign's fit_all set at 6 cells per radius stopped 15 of 23 shots
+//    the same way). With the ghost the mirror image of the leaving body, the particles still
+//    crossing the plane were pulled back: the rod's rebound momentum peaked at 5 % of p0 and fell
+//    to 0.3 %.
 #include <boost/test/unit_test.hpp>
 
 #include "../verification_helpers.hpp"
@@ -53,13 +57,6 @@ using namespace impact;
 using namespace impact::mpm;
 
 namespace {
-
-double sink(const Ledger& ledger, const std::string& name) {
-  const auto& names = ledger.sink_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  BOOST_REQUIRE(it != names.end());
-  return ledger.row().sinks[std::size_t(it - names.begin())];
-}
 
 struct Rebound {
   double restitution;             ///< -p_x(end) / p_x(0)
@@ -163,7 +160,7 @@ BOOST_AUTO_TEST_CASE(a_rod_rebounds_from_every_start_distance_without_gaining_en
     }
   }
   BOOST_TEST_MESSAGE("worst |energy_error|: " << worst[0] << " at h, " << worst[1] << " at h/2");
-  BOOST_TEST(worst[0] < 0.3);
+  BOOST_TEST(worst[0] < 0.35);
   BOOST_TEST(worst[1] < worst[0] / 1.6);
 }
 
@@ -183,7 +180,7 @@ BOOST_AUTO_TEST_CASE(a_block_started_half_a_cell_away_rebounds_without_gaining_e
                                                             << r.worst_energy_error << ")");
   BOOST_TEST(r.left);
   BOOST_TEST(r.restitution < 1.0);
-  BOOST_TEST(r.worst_energy_error < 0.15);
+  BOOST_TEST(r.worst_energy_error < 0.3);
   BOOST_TEST(r.impulse_after_leaving < 1e-12 * r.p0);
 }
 
@@ -199,7 +196,7 @@ BOOST_AUTO_TEST_CASE(a_bisector_impact_into_a_corner_books_only_the_slip_it_make
       worst = std::max(worst, std::abs(sim.ledger().row().energy_error));
     }
     const Vec3 p = sim.ledger().row().momentum;
-    heat[k] = sink(sim.ledger(), "friction_heat") / e0;
+    heat[k] = test::ledger_sink(sim.ledger(), "friction_heat") / e0;
     error[k] = worst;
     BOOST_TEST_MESSAGE("corner, h = " << (k == 0 ? 0.5 : 0.25) << " mm: heat " << heat[k]
                                       << " E0, worst |energy_error| " << worst << ", p = (" << p(0)
@@ -207,9 +204,11 @@ BOOST_AUTO_TEST_CASE(a_bisector_impact_into_a_corner_books_only_the_slip_it_make
     BOOST_TEST(std::abs(p(0) - p(2)) < 1e-12 * p0.norm());  // symmetric about the bisector
     BOOST_TEST(p.norm() < p0.norm());                       // restitution below 1
   }
-  BOOST_TEST(heat[0] < 0.005);
-  BOOST_TEST(heat[1] < heat[0] / 2.0);
-  BOOST_TEST(error[0] < 0.35);
+  // The continuum sticks (mu 2 >= 0.51): the heat is what the discrete catch lets slip, none
+  // at h since the re-map holds what the step held.
+  BOOST_TEST(heat[0] < 1e-3);
+  BOOST_TEST(heat[1] < 1e-4);
+  BOOST_TEST(error[0] < 0.45);
   BOOST_TEST(error[1] < error[0] / 1.5);
 }
 
@@ -238,7 +237,7 @@ BOOST_AUTO_TEST_CASE(a_block_sliding_along_a_corner_follows_coulombs_law_on_both
   }
   const double vy = sim.ledger().row().momentum(1) / mass;
   const double lost = 0.5 * mass * (v0 * v0 - vy * vy);
-  const double heat = sink(sim.ledger(), "friction_heat");
+  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
   BOOST_TEST_MESSAGE("corner slide: v_y against v0 - mu sqrt(2) g t worst "
                      << worst << " v0; heat " << heat << " J against " << lost << " J lost");
   BOOST_TEST(worst < 0.02);
@@ -272,7 +271,7 @@ BOOST_AUTO_TEST_CASE(a_taylor_rod_rebounds_from_a_wall_anvil_whole) {
   BOOST_TEST(px > 0.0);            // it rebounds
   BOOST_TEST(px < 0.1 * p0);       // a plastic impact returns little
   BOOST_TEST(px > 0.6 * rebound);  // the wall takes little of the rebound back
-  BOOST_TEST(worst < 0.04);
+  BOOST_TEST(worst < 0.045);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

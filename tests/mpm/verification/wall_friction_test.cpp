@@ -39,13 +39,6 @@ Motion motion(const Particles& P) {
   return {p / m, lower};
 }
 
-double sink(const Ledger& ledger, const std::string& name) {
-  const auto& names = ledger.sink_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  BOOST_REQUIRE(it != names.end());
-  return ledger.row().sinks[std::size_t(it - names.begin())];
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(wall_friction)
@@ -69,7 +62,7 @@ BOOST_AUTO_TEST_CASE(a_sliding_block_follows_coulombs_law_and_then_sticks) {
   }
   const double vy = motion(sim.particles()).velocity(1);
   const double lost = 0.5 * mass * (v0 * v0 - vy * vy);
-  const double heat = sink(sim.ledger(), "friction_heat");
+  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
   BOOST_TEST_MESSAGE(sim.steps() << " steps: v_y against v0 - mu g t worst " << worst_sliding
                                  << " v0 while sliding, " << worst_stopped
                                  << " v0 after the stop; friction heat " << heat << " J against "
@@ -110,10 +103,13 @@ BOOST_AUTO_TEST_CASE(an_upper_face_wall_follows_the_same_law) {
 }
 
 BOOST_AUTO_TEST_CASE(the_books_close_at_either_time_step) {
-  // energy_error is the numerical residual of the friction step. Measured over the first 120 us:
-  // +0.13 % of E0 at multiplier 0.5, -0.01 % at 0.25 (+0.51 % at 240 us). Before the touch test
-  // (grid/wall.cpp) it was +0.88 % and +0.25 % (+2.9 % at 240 us). Asserted: below 0.2 % at
-  // both.
+  // energy_error is the numerical residual of the friction step and the wall's inelastic catch:
+  // it may not be positive (no energy made). Measured over the first 120 us: -0.26 % of E0 at
+  // multiplier 0.5, -0.35 % at 0.25, and -0.24 % at h/2 (cells 16 x 40 x 24, multiplier 0.5).
+  // Before issue 53 (the re-map decided afresh, gravity's work booked before the wall held) it
+  // was +0.13 % and -0.01 %, and +0.37 % at h/2: growing, the phantom gravity work hiding the
+  // catch. Before the touch test (grid/wall.cpp) +0.88 % and +0.25 %. Asserted: within
+  // [-0.5 %, +0.05 %] at both.
   double error[2];
   for (const int k : {0, 1}) {
     const Scene scene = test::verification_scene(
@@ -124,8 +120,10 @@ BOOST_AUTO_TEST_CASE(the_books_close_at_either_time_step) {
     error[k] = sim.ledger().row().energy_error;
   }
   BOOST_TEST_MESSAGE("energy_error at multiplier 0.5: " << error[0] << ", at 0.25: " << error[1]);
-  BOOST_TEST(std::abs(error[0]) < 0.002);
-  BOOST_TEST(std::abs(error[1]) < 0.002);
+  for (const double e : error) {
+    BOOST_TEST(e > -0.005);
+    BOOST_TEST(e < 0.0005);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_frictionless_wall_lets_the_block_slide_on) {

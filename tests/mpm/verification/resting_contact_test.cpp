@@ -1,0 +1,179 @@
+// A body at rest on a rigid `wall` stays at rest and its books stay closed (issue 53): the elastic
+// block of data/scenes/verification/sliding_block.json (2 x 4 x 2 mm, 6061-T6 made elastic,
+// h = 0.5 mm, uGIMP + MUSL) released at rest, stress-free, on the frictionless x- wall under
+// g = 1e5 m/s^2, for 1e4 steps (0.41 ms, about 260 periods 4 L / c_0 of its first mode along x,
+// c_0 = sqrt(E / rho) the bar speed).
+//
+// Closed form: released stress-free, the block settles under its own weight and rings about the
+// settled state. A linear body released from rest under a constant load reaches its largest
+// kinetic energy at the settled state, where it equals the strain energy stored there: for a bar
+// of length L, section A, Young's modulus E under its own weight M g (uniaxial stress, the sides
+// free), U_s = (M g)^2 L / (6 E A) = 1.13e-8 J, and gravity has then done 2 U_s of work. The
+// wall's catch of the face nodes is inelastic (grid/wall.cpp), so the ringing decays and at most
+// its energy U_s leaves the books as the wall's residual; none may be created. Asserted: the run
+// is not stopped; the kinetic energy stays below 1.5 U_s at every step and ends below 0.5 U_s;
+// the books' residual energy_error [J] (E0 = 0: the ledger's absolute error) stays within
+// [-1.2 U_s, +0.25 U_s] (it rings: +0.16 U_s at most); the block's centre of mass sinks by less
+// than 3 times the settled compression M g L / (2 E A) = 7.8e-9 m and never lifts off; no particle
+// crosses the wall's plane. Measured: kinetic energy at most 1.04e-8 J (0.92 U_s), residual
+// -1.05e-8 J at most
+// (-0.93 U_s: the ringing dissipated; -1.10e-8 J at 1.6 ms, unchanged from 1 ms), centre sank
+// 9.6e-9 m at most. On main before issue 53 the same block started to rock and the energy check
+// stopped it at 204 us (particle speed 0.26 m/s): the wall's hold, decided each step by the sign
+// of the ringing face layer's velocity, was decided again on the MUSL re-map, and gravity's work
+// was booked before the wall held its nodes.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "../verification_helpers.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+struct State {
+  double kinetic = 0.0;
+  double centre_x = 0.0;
+  double lowest = 1e30;
+};
+
+State state(const Particles& P) {
+  State s;
+  double m = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    s.kinetic += 0.5 * P.mass[i] * P.v[i].squaredNorm();
+    s.centre_x += P.mass[i] * P.x[i](0);
+    m += P.mass[i];
+    s.lowest = std::min(s.lowest, P.x[i](0));
+  }
+  s.centre_x /= m;
+  return s;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(resting_contact)
+
+BOOST_AUTO_TEST_CASE(a_block_at_rest_on_a_wall_stays_at_rest_with_closed_books) {
+  const Json at_rest = {{"objects", {{"block", {{"velocity", {0.0, 0.0, 0.0}}}}}},
+                        {"grid", {{"wall_friction", {{"x-", 0.0}}}}},
+                        {"time", {{"max_time", 1.0}}}};
+  const Scene scene = test::verification_scene("sliding_block.json", at_rest);
+  Simulation sim(scene);
+  const auto& p = scene.materials.front().material.model.params();
+  const double K = p.bulk_modulus, G = p.shear_modulus;
+  const double E = 9.0 * K * G / (3.0 * K + G);
+  const double L = 0.002, A = 0.004 * 0.002, g = 1.0e5;
+  double M = 0.0;
+  for (const double m : sim.particles().mass) M += m;
+  const double U_s = (M * g) * (M * g) * L / (6.0 * E * A);
+  const double settle = M * g * L / (2.0 * E * A);
+  const State first = state(sim.particles());
+  double worst_kinetic = 0.0, lowest_error = 0.0, highest_error = 0.0, lowest = first.lowest;
+  double sink = 0.0;
+  for (int n = 0; n < 10000 && !sim.finished(); ++n) {
+    try {
+      sim.step();
+    } catch (const std::exception& e) {
+      BOOST_FAIL("stopped at step " << sim.steps() << ", " << sim.time() << " s: " << e.what());
+    }
+    const State s = state(sim.particles());
+    worst_kinetic = std::max(worst_kinetic, s.kinetic);
+    lowest_error = std::min(lowest_error, sim.ledger().row().energy_error);
+    highest_error = std::max(highest_error, sim.ledger().row().energy_error);
+    lowest = std::min(lowest, s.lowest);
+    sink = std::max(sink, first.centre_x - s.centre_x);
+  }
+  const State last = state(sim.particles());
+  BOOST_TEST_MESSAGE(sim.steps() << " steps to " << sim.time() << " s: kinetic energy at most "
+                                 << worst_kinetic << " J (U_s = " << U_s << " J), at the end "
+                                 << last.kinetic << " J; energy_error in [" << lowest_error << ", "
+                                 << highest_error << "] J; centre sank at most " << sink
+                                 << " m (settled: " << settle << " m), at the end "
+                                 << first.centre_x - last.centre_x << " m");
+  BOOST_TEST(sim.steps() == 10000);
+  BOOST_TEST(worst_kinetic < 1.5 * U_s);
+  BOOST_TEST(last.kinetic < 0.5 * U_s);
+  BOOST_TEST(lowest_error > -1.2 * U_s);
+  BOOST_TEST(highest_error < 0.25 * U_s);
+  BOOST_TEST(sink < 3.0 * settle);
+  BOOST_TEST(first.centre_x - last.centre_x > -settle);  // it never lifts off
+  BOOST_TEST(lowest >= -1e-9);                           // no particle crosses the wall's plane
+}
+
+BOOST_AUTO_TEST_CASE(a_block_at_rest_in_a_corner_stays_at_rest) {
+  // The same block in the corner of two (x-, z-) and of three (x-, y-, z-) walls with friction
+  // mu = 0.25 on each, gravity 1e5 m/s^2 along the bisector (trisector), released at rest: the
+  // walls' normal forces alone hold it, so friction has nothing to do once the sudden load has
+  // settled. Scale: the strain energy U_c = sum_i (M g_i)^2 L_i / (6 E A_i) of the settled block
+  // loaded along each axis as the bar above. Asserted: the run is not stopped in 1e4 steps (3e4,
+  // 1.23 ms, in the three-wall corner);
+  // kinetic energy below 1.5 U_c; the mechanical residual kinetic + strain - gravity's work
+  // (energy_error without the friction heat) within [-1.2 U_c, +0.25 U_c]; in the two-wall
+  // corner, the friction heat booked after the first 100 us grows by less than 0.02 U_c. With
+  // the heat booked as m s max(0, v0 . t) on every slipping node the two-wall corner booked
+  // 1.1e-8 J by 250 us, the mechanical energy losing none of it, and the energy check stopped
+  // the run (grid/wall.cpp). The three-wall corner still books heat at its free top edges, where
+  // the face layer slips along the walls at about 3 mm/s while the block rings: 5.8e-9 J by
+  // 100 us, 1.2e-8 J by 0.6 ms, 2.2e-8 J by 1.4 ms, against a mechanical residual within
+  // [-1e-8, 0] J. It is reported, not asserted: an open residual (docs/verification.md), and no
+  // longer a stop, since the energy-growth check leaves the friction heat out
+  // (simulation/diagnosis.cpp); with it, the check stopped this corner at 1.01 ms.
+  for (const bool three : {false, true}) {
+    const double g = 1.0e5, c = g / std::sqrt(three ? 3.0 : 2.0);
+    const Json corner = {
+        {"objects",
+         {{"block",
+           {{"velocity", {0.0, 0.0, 0.0}},
+            {"geometry",
+             {{"lower", {0.0, three ? 0.0 : 0.002, 0.0}},
+              {"upper", {0.002, three ? 0.004 : 0.006, 0.002}}}}}}}},
+        {"grid",
+         {{"boundary", {{"y-", three ? "wall" : "free"}, {"z-", "wall"}}},
+          {"wall_friction",
+           {{"x-", 0.25}, {"y-", three ? Json(0.25) : Json(nullptr)}, {"z-", 0.25}}}}},
+        {"solver", {{"gravity", {-c, three ? -c : 0.0, -c}}}},
+        {"time", {{"max_time", 1.0}}}};
+    const Scene scene = test::verification_scene("sliding_block.json", corner);
+    Simulation sim(scene);
+    const auto& p = scene.materials.front().material.model.params();
+    const double K = p.bulk_modulus, G = p.shear_modulus;
+    const double E = 9.0 * K * G / (3.0 * K + G);
+    const double Lx = 0.002, Ly = 0.004, Lz = 0.002;
+    double M = 0.0;
+    for (const double m : sim.particles().mass) M += m;
+    const double U_c = (M * c) * (M * c) / (6.0 * E) *
+                       (Lx / (Ly * Lz) + Lz / (Lx * Ly) + (three ? Ly / (Lx * Lz) : 0.0));
+    double worst_kinetic = 0.0, lowest_error = 0.0, highest_error = 0.0, heat_settled = -1.0;
+    const auto heat_now = [&] { return test::ledger_sink(sim.ledger(), "friction_heat"); };
+    const int steps = three ? 30000 : 10000;
+    for (int n = 0; n < steps && !sim.finished(); ++n) {
+      try {
+        sim.step();
+      } catch (const std::exception& e) {
+        BOOST_FAIL((three ? "three" : "two") << "-wall corner stopped at step " << sim.steps()
+                                             << ", " << sim.time() << " s: " << e.what());
+      }
+      worst_kinetic = std::max(worst_kinetic, state(sim.particles()).kinetic);
+      const double mechanical = sim.ledger().row().energy_error - heat_now();  // E0 = 0: in J
+      lowest_error = std::min(lowest_error, mechanical);
+      highest_error = std::max(highest_error, mechanical);
+      if (heat_settled < 0.0 && sim.time() > 1.0e-4) heat_settled = heat_now();
+    }
+    const double heat = heat_now();
+    BOOST_TEST_MESSAGE((three ? "three" : "two")
+                       << "-wall corner, " << sim.steps() << " steps to " << sim.time()
+                       << " s: kinetic energy at most " << worst_kinetic << " J (U_c = " << U_c
+                       << " J); friction heat " << heat_settled << " J at 100 us, " << heat
+                       << " J at the end; mechanical residual in [" << lowest_error << ", "
+                       << highest_error << "] J");
+    BOOST_TEST(sim.steps() == steps);
+    BOOST_TEST(worst_kinetic < 1.5 * U_c);
+    if (!three) BOOST_TEST(heat - heat_settled < 0.02 * U_c);
+    BOOST_TEST(lowest_error > -1.2 * U_c);
+    BOOST_TEST(highest_error < 0.25 * U_c);
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
