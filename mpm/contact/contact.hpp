@@ -26,8 +26,9 @@
 //               Coulomb slip, or stick when s = |u_t|.
 //   heat        only in slip (s < |u_t|; static friction does no work): m_f s (u0_f . t) >= 0
 //               per field, the friction impulse times the relative slip at the start of the step
-//               (u0 = v0_f - v0_cm of the corrected start field) along the slip direction t; the
-//               wall books the same (grid/wall.cpp; docs/mpm.md#ledger).
+//               (u0 = v0_f - v0_cm of the corrected start field) along the slip direction t; a
+//               wall books the same where the material slides, u0 . t > s (grid/wall.cpp, why
+//               not here: docs/mpm.md#ledger).
 // `friction` and `approach` are this one model (the report's Table 2 names both: its approach
 // contact was its friction without the compression rule).
 // Bodies: a material's parent field and the companion field of its converted particles are one

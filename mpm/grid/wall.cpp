@@ -1,8 +1,9 @@
 // A rigid stationary wall with Coulomb friction on a grid face (grid.boundary.<face> = "wall";
 // docs/scenes.md#grid). The wall is one-sided: it pushes and never pulls, the condition a Taylor
 // anvil or a target support needs. It acts only where its body touches it. Per step, field and
-// face-layer node (Bardenhagen et al. 2000, CMES 1:509, sec. 3, with the wall as a second body of
-// infinite mass at rest):
+// face-layer node (the multi-velocity contact of Bardenhagen, Brackbill & Sulsky 2000, CMAME
+// 187:529, and Bardenhagen et al. 2001, CMES 2:509, with the wall as a second body of infinite
+// mass at rest):
 //   touch      a particle of the field with the node in its stencil reaches the wall's plane
 //              within the step: its domain (half-width l, uGIMP's) at its start velocity,
 //              n . (x_p - x_wall) - l + dt min(0, n . v_p) <= 0, n the inward normal; l is fixed
@@ -23,13 +24,16 @@
 //   re-map     MUSL projects the moved particles' momentum back to the grid for the strain rate
 //              (grid_to_particles.cpp); the wall holds there exactly the faces the step held
 //              (wall_held), zeroing their normal component whatever its sign, and leaves every
-//              other node free (Bardenhagen et al. 2001: the same contact decision in both
-//              passes). Decided afresh on the sign of the re-mapped velocity, a face node the step
-//              had held (the particles did not move into the wall) was released when its ringing
-//              re-map pointed outward, and the strain rate stretched a face that had not moved: a
-//              block at rest on the wall under gravity gained energy until the energy check
-//              stopped it at 204 us; a block spanning two walls at 8 us
-//              (tests/mpm/verification/resting_contact_test.cpp).
+//              other node free: the particles moved with v*, whose v*_n the step held at zero,
+//              so the strain rate sees the same constraint (Bardenhagen et al. 2001 and Nairn
+//              test contact again in each pass; decided on the re-mapped data, the hold was
+//              lost). The cost: a body that leaves is released one re-map late (the bouncing
+//              rod's residual -0.25 -> -0.33, wall_contact_test). Decided afresh on the sign of the
+//              re-mapped velocity, a face node the step had held (the particles did not move into
+//              the wall) was released when its ringing re-map pointed outward, and the strain rate
+//              stretched a face that had not moved: a block at rest on the wall under gravity
+//              gained energy until the energy check stopped it at 204 us; a block spanning two
+//              walls at 8 us (tests/mpm/verification/resting_contact_test.cpp).
 //   friction   one Coulomb correction of what remains tangential to the held faces, u_t: the slip
 //              removed is s = min(sum_f mu_f j_f, |u_t|): stick (u_t = 0) when |u_t| <= sum mu_f
 //              j_f, slip otherwise.

@@ -4,11 +4,11 @@
 
 namespace impact::mpm {
 
-int Ledger::add_sink_column(std::string name, bool in_balance, bool estimated) {
+int Ledger::add_sink_column(std::string name, bool in_balance, bool unchecked) {
   sink_names_.push_back(std::move(name));
   s_.sinks.push_back(0.0);
   in_balance_.push_back(in_balance);
-  estimated_.push_back(estimated);
+  unchecked_.push_back(unchecked);
   return static_cast<int>(s_.sinks.size()) - 1;
 }
 
@@ -51,12 +51,19 @@ LedgerRow Ledger::row() const {
   return r;
 }
 
-double Ledger::energy_excess(bool with_estimated) const {
+double Ledger::energy_excess() const {
   double sunk = 0.0;
   for (std::size_t i = 0; i < s_.sinks.size(); ++i)
-    if (in_balance_[i] && (with_estimated || !estimated_[i])) sunk += s_.sinks[i];
+    if (in_balance_[i]) sunk += s_.sinks[i];
   return (s_.kinetic + s_.strain) + sunk + s_.outflow_kinetic - s_.initial_energy -
          s_.external_work;
+}
+
+double Ledger::growth_excess() const {
+  double excess = energy_excess();
+  for (std::size_t i = 0; i < s_.sinks.size(); ++i)
+    if (unchecked_[i]) excess -= s_.sinks[i];
+  return excess;
 }
 
 std::vector<std::string> Ledger::columns() const {

@@ -64,11 +64,11 @@ class Ledger {
   /// Registers an energy sink column (J, accumulated; `name` without unit: the header gets
   /// "name [J]"); returns its index for add_sink(). `in_balance`: a term of energy_error (false
   /// for a column that itemises part of another term, e.g. friction heat within contact
-  /// dissipation). `estimated`: booked from the grid's velocities rather than from the
-  /// particles' own motion or stress (the friction heat: grid/wall.cpp, contact/contact.hpp), so
-  /// it can exceed what the motion lost; a term of energy_error, but not of the energy-growth
-  /// check's excess (energy_excess(false)).
-  int add_sink_column(std::string name, bool in_balance = true, bool estimated = false);
+  /// dissipation). `unchecked`: energy the energy-growth check takes out of its excess
+  /// (growth_excess()), whatever `in_balance` says: a wall's friction heat (wall_friction_heat,
+  /// itemised within friction_heat), booked from the grid's velocities, which at a contact that
+  /// does not slide can exceed what the motion lost (grid/wall.cpp).
+  int add_sink_column(std::string name, bool in_balance = true, bool unchecked = false);
   const std::vector<std::string>& sink_names() const { return sink_names_; }
 
   /// The state at t = 0 (E0 and p0).
@@ -89,9 +89,10 @@ class Ledger {
   /// The energy that entered so far: E0 + external_work [J].
   double energy_input() const { return s_.initial_energy + s_.external_work; }
   /// kinetic + strain + balance sinks + outflow - energy_input() [J]: the numerator
-  /// of energy_error (no allocation: the solver's energy-growth check calls it every step);
-  /// without the estimated sinks when `with_estimated` is false (the check's excess).
-  double energy_excess(bool with_estimated = true) const;
+  /// of energy_error (no allocation: the solver's energy-growth check calls it every step).
+  double energy_excess() const;
+  /// energy_excess() without the unchecked sinks: the energy-growth check's excess [J].
+  double growth_excess() const;
   double initial_energy() const { return s_.initial_energy; }
   const Vec3& initial_momentum() const { return s_.p0; }
 
@@ -141,7 +142,7 @@ class Ledger {
   State s_;
   std::vector<std::string> sink_names_;
   std::vector<bool> in_balance_;
-  std::vector<bool> estimated_;
+  std::vector<bool> unchecked_;
 };
 
 }  // namespace impact::mpm

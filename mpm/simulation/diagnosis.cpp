@@ -11,18 +11,18 @@ namespace impact::mpm {
 // first as kinetic + strain energy growing far beyond what entered, many steps before a NaN or a
 // particle leaving the grid. Reference: the energy that entered, E_in = E0 + external_work (at
 // least E0); growth = (kinetic + strain + booked sinks + outflow - E_in) / E_ref, equal to
-// energy_error whenever no work enters through gravity and no friction heat is booked. The
-// friction heat is left out (Ledger::add_sink_column's `estimated`): it is booked from the
-// grid's velocities, and at a contact that does not slide the face layer's grid-scale slip
-// books heat that the motion never lost (a block at rest in a three-wall corner with mu 0.25:
-// 1.7e-8 J by 1.02 ms while kinetic + strain - gravity's work stayed within [-1e-8, 0] J; it was
-// stopped there as "unstable"; tests/mpm/verification/resting_contact_test.cpp). An unstable
-// step makes motion, which the check still sees. Nothing is checked
-// while no energy has entered (E_ref = 0: a body at rest). Names the fastest particle: where the
-// instability runs away.
+// energy_error whenever no work enters through gravity and no wall friction heat is booked. The
+// walls' friction heat (wall_friction_heat) is left out (Ledger::add_sink_column's `unchecked`):
+// it is booked from the grid's velocities, and at a wall contact that does not slide the face
+// layer's grid-scale slip books heat that the motion never lost (a block at rest in a three-wall
+// corner with mu 0.25: 1.7e-8 J by 1.02 ms while kinetic + strain - gravity's work stayed within
+// [-1e-8, 0] J; it was stopped there as "unstable";
+// tests/mpm/verification/resting_contact_test.cpp). An unstable step makes motion, which the check
+// still sees. Nothing is checked while no energy has entered (E_ref = 0: a body at rest). Names the
+// fastest particle: where the instability runs away.
 std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t) {
   const double reference = std::max(ledger.initial_energy(), ledger.energy_input());
-  const double excess = ledger.energy_excess(/*with_estimated=*/false);
+  const double excess = ledger.growth_excess();
   if (!(reference > 0.0) || !(excess > t.max_energy_growth * reference)) return std::nullopt;
   std::size_t fastest = 0;
   double speed2 = -1.0;

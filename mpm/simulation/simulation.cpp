@@ -74,11 +74,14 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   // The ledger's columns follow the physics the scene switched on.
   if (st.viscosity) sinks_.viscous = ledger_.add_sink_column("viscous_work");
   // Contact's normal reaction does no work; friction's Coulomb work is heat (contact.hpp).
-  // So is the Coulomb work of a wall face (grid/wall.cpp): one column for both.
+  // So is the Coulomb work of a wall face (grid/wall.cpp): one column for both, and the walls'
+  // part itemised, which the energy-growth check leaves out (simulation/diagnosis.cpp).
   if ((grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0) ||
       scene_.grid.has_wall_friction())
-    sinks_.friction = ledger_.add_sink_column("friction_heat", /*in_balance=*/true,
-                                              /*estimated=*/true);
+    sinks_.friction = ledger_.add_sink_column("friction_heat");
+  if (scene_.grid.has_wall_friction())
+    sinks_.wall_friction = ledger_.add_sink_column("wall_friction_heat", /*in_balance=*/false,
+                                                   /*unchecked=*/true);
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
   // Plastic work is part of the strain energy already booked: a column, not a term of the balance.
   st.plastic_work = scene_.output.plastic_work;
@@ -210,6 +213,8 @@ void Simulation::book(double dt) {
     ledger_.add_sink(sinks_.friction,
                      last_.grid.contact.friction_heat + last_.grid.wall_friction_heat);
   }
+  if (sinks_.wall_friction >= 0)
+    ledger_.add_sink(sinks_.wall_friction, last_.grid.wall_friction_heat);
   if (sinks_.eroded >= 0) ledger_.add_sink(sinks_.eroded, last_.stress.eroded_energy);
   if (sinks_.plastic >= 0) ledger_.add_sink(sinks_.plastic, last_.stress.plastic_work);
   if (last_.particles.removed > 0) {

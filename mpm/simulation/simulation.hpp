@@ -118,7 +118,7 @@ class Simulation {
   Ledger ledger_;
   /// Ledger sink columns registered for this scene's physics (-1: not registered).
   struct SinkColumns {
-    int viscous = -1, friction = -1, eroded = -1, plastic = -1;
+    int viscous = -1, friction = -1, wall_friction = -1, eroded = -1, plastic = -1;
   } sinks_;
   long failed_ = 0, converted_ = 0, faulted_ = 0, removed_ = 0;
   std::vector<FaultInjection> injections_;
