@@ -1,5 +1,6 @@
 #include "mpm/ledger/ledger.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace impact::mpm {
@@ -16,6 +17,7 @@ void Ledger::start(double time, double kinetic_energy, const Vec3& momentum) {
   s_.time = time;
   s_.kinetic = kinetic_energy;
   s_.initial_energy = kinetic_energy;  // the initial strain energy is zero: stress-free start
+  s_.peak_input = kinetic_energy;
   s_.momentum = booked(momentum);
   s_.p0 = s_.momentum;
 }
@@ -30,6 +32,7 @@ void Ledger::record_step(double time, double kinetic_energy, const Vec3& momentu
   s_.boundary_impulse += booked(boundary_impulse);
   s_.external_impulse += booked(external_impulse);
   s_.external_work += external_work;
+  s_.peak_input = std::max(s_.peak_input, s_.initial_energy + s_.external_work);
 }
 
 LedgerRow Ledger::row() const {

@@ -88,6 +88,8 @@ class Ledger {
   LedgerRow row() const;
   /// The energy that entered so far: E0 + external_work [J].
   double energy_input() const { return s_.initial_energy + s_.external_work; }
+  /// The largest energy_input() so far [J]: gravity's work falls back when a body rises again.
+  double peak_energy_input() const { return s_.peak_input; }
   /// kinetic + strain + balance sinks + outflow - energy_input() [J]: the numerator
   /// of energy_error (no allocation: the solver's energy-growth check calls it every step).
   double energy_excess() const;
@@ -108,6 +110,7 @@ class Ledger {
   struct State {
     double time = 0.0, kinetic = 0.0, strain = 0.0, external_work = 0.0, initial_energy = 0.0;
     double outflow_mass = 0.0, outflow_kinetic = 0.0;
+    double peak_input = 0.0;  ///< the largest E0 + external_work so far [J]
     Vec3 momentum = Vec3::Zero(), p0 = Vec3::Zero(), boundary_impulse = Vec3::Zero();
     Vec3 external_impulse = Vec3::Zero(), outflow_momentum = Vec3::Zero();
     std::vector<double> sinks;  ///< one per sink column, sized by add_sink_column()
@@ -119,6 +122,7 @@ class Ledger {
                                                saved(&State::initial_energy),
                                                saved(&State::outflow_mass),
                                                saved(&State::outflow_kinetic),
+                                               saved(&State::peak_input),
                                                saved(&State::momentum),
                                                saved(&State::p0),
                                                saved(&State::boundary_impulse),

@@ -119,13 +119,13 @@ BOOST_AUTO_TEST_CASE(the_step_totals_tables_name_every_member) {
                                                   doubles_in(g) + doubles_in(h));
   }
   {
-    const auto& [a, b, c, d, e, f, g, h, i, j, k, l, m] = Ledger::State{};
+    const auto& [a, b, c, d, e, f, g, h, i, j, k, l, m, n] = Ledger::State{};
     BOOST_TEST(field_count<Ledger::State>() ==
                doubles_in(a) + doubles_in(b) + doubles_in(c) + doubles_in(d) + doubles_in(e) +
                    doubles_in(f) + doubles_in(g) + doubles_in(h) + doubles_in(i) + doubles_in(j) +
-                   doubles_in(k) + doubles_in(l) + doubles_in(m));
-    // The checkpoint record: 7 doubles and 5 Vec3, the ledger section of format version 5.
-    BOOST_TEST(field_count<Ledger::State>() == 7u + 5u * 3u);
+                   doubles_in(k) + doubles_in(l) + doubles_in(m) + doubles_in(n));
+    // The checkpoint record: 8 doubles and 5 Vec3, the ledger section of format version 9.
+    BOOST_TEST(field_count<Ledger::State>() == 8u + 5u * 3u);
   }
 }
 

@@ -102,6 +102,41 @@ BOOST_AUTO_TEST_CASE(a_block_at_rest_on_a_wall_stays_at_rest_with_closed_books) 
   BOOST_TEST(lowest >= -1e-9);                           // no particle crosses the wall's plane
 }
 
+BOOST_AUTO_TEST_CASE(a_block_at_rest_on_a_rough_wall_is_not_stopped_when_it_rings_back_up) {
+  // The block above on the x- wall with friction 0.5 and 10. Released stress-free, it rings:
+  // gravity's work rises to about 3.7e-8 J and falls back to 0 each time the block returns to its
+  // start height. Measured against the energy that had entered at that instant (6e-12 J), the
+  // ringing's 1e-8 J of motion read as growth +1700 and the energy-growth check stopped the run
+  // at 8 us as "unstable"; the check's reference is now the largest energy that has entered
+  // (simulation/diagnosis.cpp). Asserted: 1e4 steps run. Reported, not asserted: the mechanical
+  // residual kinetic + strain - gravity's work, which friction drives positive at the grid scale
+  // (measured at most +1.1 U_s at mu 0.5 and +3.2 U_s at mu 10, ending at +0.3 and -0.4 U_s;
+  // at mu 1 it reaches +4.5 U_s and the check stops the run at 105 us: issue 53, open).
+  for (const double mu : {0.5, 10.0}) {
+    const Json rough = {{"objects", {{"block", {{"velocity", {0.0, 0.0, 0.0}}}}}},
+                        {"grid", {{"wall_friction", {{"x-", mu}}}}},
+                        {"time", {{"max_time", 1.0}}}};
+    Simulation sim(test::verification_scene("sliding_block.json", rough));
+    double highest = -1e30;
+    for (int n = 0; n < 10000 && !sim.finished(); ++n) {
+      try {
+        sim.step();
+      } catch (const std::exception& e) {
+        BOOST_FAIL("mu " << mu << ": stopped at step " << sim.steps() << ", " << sim.time()
+                         << " s: " << e.what());
+      }
+      highest = std::max(highest, sim.ledger().row().energy_error -
+                                      test::ledger_sink(sim.ledger(), "friction_heat"));
+    }
+    BOOST_TEST_MESSAGE(
+        "mu " << mu << ": " << sim.steps() << " steps; mechanical residual at most " << highest
+              << " J, at the end "
+              << sim.ledger().row().energy_error - test::ledger_sink(sim.ledger(), "friction_heat")
+              << " J; friction heat " << test::ledger_sink(sim.ledger(), "friction_heat") << " J");
+    BOOST_TEST(sim.steps() == 10000);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_block_at_rest_in_a_corner_stays_at_rest) {
   // The same block in the corner of two (x-, z-) and of three (x-, y-, z-) walls with friction
   // mu = 0.25 on each, gravity 1e5 m/s^2 along the bisector (trisector), released at rest: the
