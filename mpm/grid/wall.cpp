@@ -28,7 +28,16 @@
 //              so the strain rate sees the same constraint (Bardenhagen et al. 2001 and Nairn
 //              test contact again in each pass; decided on the re-mapped data, the hold was
 //              lost). The cost: a body that leaves is released one re-map late (the bouncing
-//              rod's residual -0.25 -> -0.33, wall_contact_test). Decided afresh on the sign of the
+//              rod's residual -0.25 -> -0.33, wall_contact_test). Where the step's friction
+//              acted (stick or slip), the re-map takes the step's v* for the tangential
+//              components as well, for the same reason: re-mapped from the particles, a stuck
+//              face node read their FLIP velocities, the strain rate sheared a face that had not
+//              moved, and friction pumped a resting block (mu 1: kinetic + strain - gravity's
+//              work reached +4.5 U_s, the block lifted off and the energy check stopped it at
+//              105 us; USL, without a re-map, never did); a block on a 30 degree ramp at mu 0.8
+//              crept 26 um in 400 us and faster at h/2 (now 1000 times less), and a block at
+//              rest in a three-wall corner booked friction heat without end (now flat after
+//              the load settles). Decided afresh on the sign of the
 //              re-mapped velocity, a face node the step had held (the particles did not move into
 //              the wall) was released when its ringing re-map pointed outward, and the strain rate
 //              stretched a face that had not moved: a block at rest on the wall under gravity
@@ -89,6 +98,12 @@
 
 namespace impact::mpm {
 
+namespace {
+// Grid::wall_held's bit for "the step's friction corrected this node" (the face bits are 1 << face,
+// faces 0-5).
+constexpr std::uint8_t kFrictionActed = 0x40;
+}  // namespace
+
 double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallPass pass) {
   const bool step = pass == WallPass::step;
   const bool write_heat = step && !heat.empty();
@@ -106,6 +121,18 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
       if (!step) {  // the re-map: the step's decision, whatever the re-mapped velocity's sign
         for (int i = 0; i < w.count; ++i)
           if (wall_held[e] & w.face[i].bit) v(w.face[i].axis) = 0.0;
+        // Where the step's friction acted, the tangential components it decided too: the
+        // particles moved with that v*.
+        if (wall_held[e] & kFrictionActed) {
+          bool decided[3] = {false, false, false};
+          for (int i = 0; i < w.images; ++i)
+            if (wall_touch[offset + w.image[i].face_node] & w.image[i].bit)
+              decided[w.image[i].axis] = true;  // set by the other wall's ghost image below
+          for (int i = 0; i < w.count; ++i)
+            if (wall_held[e] & w.face[i].bit) decided[w.face[i].axis] = true;  // zeroed above
+          for (int d = 0; d < 3; ++d)
+            if (!decided[d]) v(d) = velocity_new[e](d);
+        }
         continue;
       }
       double capacity = 0.0;  // sum over held faces of mu_f j_f
@@ -129,6 +156,7 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
       const double s = std::min(capacity, slip);
       const Vec3 t = ut / slip;
       v -= s * t;
+      wall_held[e] |= kFrictionActed;
       // Heat only where the material slides (header comment): its start slip along t exceeds
       // what friction takes off in one step (static friction does no work).
       if (!(s < slip) || !start) continue;
