@@ -8,30 +8,34 @@
 // delta_max / v (the force is elastic, so the sphere leaves at v). Here delta_max = 0.113 mm,
 // F_max = 12.45 kN, t_c = 33.4 us: quasi-static (t_c is ten times 2 R / c_L).
 //
+// The force is measured over windows of 0.25 us and the contact lasts while it exceeds 1 % of
+// its peak; Hertz's own force does so for 0.968 t_c (32.4 us), the reference of the contact-time
+// errors below. The pulse's shape, impulse / (F_max t_c), is 0.544 for Hertz and 2 / pi = 0.637
+// for a linear spring's half sine.
 // 1. The sphere on the wall. The force is the rate of the wall's impulse, the ledger's
-//    boundary_impulse_x. Measured at h = 0.25 / 0.125 mm (40 / 80 cells per radius): t_c -30 /
-//    -16 %, F_max +23 / +0.9 %; restitution 0.994 / 0.998; |energy_error| at most 0.13 / 0.06 %
-//    (h = 0.5 mm, by per-step differences of history.csv's impulse: t_c -40 %, F_max +38 %;
-//    -32 / -19 % and +23 / +1 % at h = 0.25 / 0.125 mm by that measure). It converges,
-//    slowly: the discrete sphere's tip is a staircase of particle domains whose bottom step,
-//    about sqrt(R h) wide (1.1 mm at h = 0.125 mm), is as wide as the Hertz contact itself
-//    (a = sqrt(R delta_max) = 1.06 mm), so the contact starts as a flat punch's (the force rises
-//    faster than t^(3/2)) until the approach is several cells. Asserted at h = 0.25 and 0.125
-//    mm: the errors within the bounds below and falling with h; the sphere leaves elastically.
+//    boundary_impulse_x. Measured at h = 0.25 / 0.125 mm (40 / 80 cells per radius): t_c -28 /
+//    -13.5 %, F_max +23 / +0.9 %, shape 0.634 / 0.642; restitution 0.994 / 0.998;
+//    |energy_error| at most 0.13 / 0.06 %. The contact time converges; the pulse does not have
+//    Hertz's shape yet (it is a spring's: the discrete sphere's tip is a staircase of particle
+//    domains whose bottom step, about sqrt(R h) wide, 1.1 mm at h = 0.125 mm, is as wide as the
+//    Hertz contact itself, a = sqrt(R delta_max) = 1.06 mm, so the sphere meets the wall as a
+//    flat punch until the approach is several cells), so the peak force near Hertz's at h / 2 is
+//    a crossing, not convergence: it is only bounded. Asserted: t_c within the bounds below and
+//    falling with h, F_max within 30 %, the sphere leaves elastically.
 // 2. Two spheres in frictionless multi-field contact (hertz_spheres.json, the same numbers: two
 //    equal spheres at +-10 m/s are one sphere on a rigid flat at 10 m/s). The force is the
-//    momentum the left sphere loses. Measured at h = 0.25 mm: t_c -44 %, F_max +54 %;
-//    restitution 0.995; |energy_error| <= 1.8 %; total momentum 1e-14 of p0. (By per-step
-//    differences of a velocity gauge over the left sphere, at h = 0.5 / 0.25 / 0.125 mm: t_c -55 /
-//    -45 / -37 %, F_max +83 / +53 / +34 %.) The contact is
-//    too stiff because it starts too early: the approach test (contact/contact.hpp) takes two
-//    bodies as touching wherever their stencils share a node and they approach, up to two cells
-//    before their surfaces meet, so the discrete spheres meet as blunted bodies about a cell wide.
-//    Nairn's position check (the bodies' nodal centres of mass closer than about 0.8 cells
-//    along the normal) brought the same runs to t_c -26 / -22 / -11 %, F_max +4 / +3 / -2 %,
-//    but with uGIMP + MUSL it left a layer of tip particles rattling with locked GPa stresses
-//    (energy_error +2.6 / +7.8 / +3.0 %); it has not been landed (docs/mpm.md). Asserted: the
-//    bounds that this documents, momentum exchanged exactly, the spheres leave elastically.
+//    momentum the left sphere loses. Measured at h = 0.25 mm: t_c -42 %, F_max +54 %;
+//    restitution 0.995; |energy_error| <= 1.8 %; total momentum 1e-14 of p0. (Against t_c, by
+//    per-step differences of a velocity gauge over the left sphere, at h = 0.5 / 0.25 / 0.125
+//    mm: -55 / -45 / -37 %, F_max +83 / +53 / +34 %.) The contact is too stiff because it starts
+//    too early: the approach test (contact/contact.hpp) takes two bodies as touching wherever
+//    their stencils share a node and they approach, up to two cells before their surfaces meet,
+//    so the discrete spheres meet as blunted bodies about a cell wide. Nairn's position check
+//    (the bodies' nodal centres of mass closer than about 0.8 cells along the normal) brought
+//    the same gauge figures to -26 / -22 / -11 % and F_max +4 / +3 / -2 %, but with uGIMP + MUSL
+//    it left a layer of tip particles rattling with locked GPa stresses (energy_error +2.6 /
+//    +7.8 / +3.0 %); it has not been landed (docs/mpm.md). Asserted: bounds that only catch a
+//    regression of this documented defect, momentum exchanged exactly, an elastic rebound.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <vector>
@@ -49,6 +53,7 @@ struct Impact {
   double restitution = 0.0;   // -p_x(end) / p_x(0)
   double worst_energy_error = 0.0;
   double worst_momentum = 0.0;  // the pair's total axial momentum over the left sphere's initial
+  double impulse = 0.0;         // the force's whole impulse [N s]
 };
 
 // Peak force and contact time from an impulse history J(t) [N s] (the wall's impulse, or the
@@ -71,6 +76,7 @@ void measure_force(const std::vector<double>& t, const std::vector<double>& J, I
       last = force_time[i];
     }
   r.contact_time = last - first + window;  // the windows' centres lie half a window inside
+  r.impulse = J.back();
 }
 
 // The sphere of hertz_wall.json on the wall, at cells_x x cells_y cells.
@@ -126,6 +132,13 @@ Impact sphere_pair_impact() {
 // Johnson's closed form for the sphere on a rigid flat at 10 m/s (the pair's is the same).
 struct Hertz {
   double force = 0.0, time = 0.0;
+  /// The time Hertz's own force exceeds 1 % of its peak (the measure's threshold): near the
+  /// touch delta = v t and F / F_max = (v t / delta_max)^(3/2), below 1 % for 0.01^(2/3)
+  /// delta_max / v at each end, 3.2 % of t_c in all.
+  double time_above_1_percent = 0.0;
+  /// The pulse's shape, impulse / (F_max t_c): 0.544 for Hertz (J = 2 m v), 2 / pi = 0.637 for a
+  /// linear spring's half sine.
+  double shape = 0.0;
 };
 Hertz hertz(const Scene& scene) {
   const auto& p = scene.materials.front().material.model.params();
@@ -137,7 +150,12 @@ Hertz hertz(const Scene& scene) {
   const double m = p.density * 4.0 / 3.0 * pi * R * R * R;
   const double E_star = E / (1.0 - nu * nu);
   const double delta = std::pow(15.0 * m * v * v / (16.0 * E_star * std::sqrt(R)), 0.4);
-  return {4.0 / 3.0 * E_star * std::sqrt(R) * std::pow(delta, 1.5), 2.9432 * delta / v};
+  Hertz h;
+  h.force = 4.0 / 3.0 * E_star * std::sqrt(R) * std::pow(delta, 1.5);
+  h.time = 2.9432 * delta / v;
+  h.time_above_1_percent = h.time - 2.0 * std::pow(0.01, 2.0 / 3.0) * delta / v;
+  h.shape = 2.0 * m * v / (h.force * h.time);
+  return h;
 }
 
 }  // namespace
@@ -151,22 +169,26 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_a_wall_meets_hertz_and_converges_with_the_cell_
   BOOST_TEST(F_hertz == 1.245e4, boost::test_tools::tolerance(0.002));
 
   const Impact coarse = wall_impact(96, 48), fine = wall_impact(192, 96);
-  const double t_err_coarse = coarse.contact_time / t_hertz - 1.0;
-  const double t_err_fine = fine.contact_time / t_hertz - 1.0;
+  const double t_err_coarse = coarse.contact_time / closed.time_above_1_percent - 1.0;
+  const double t_err_fine = fine.contact_time / closed.time_above_1_percent - 1.0;
   const double f_err_coarse = coarse.peak_force / F_hertz - 1.0;
   const double f_err_fine = fine.peak_force / F_hertz - 1.0;
-  BOOST_TEST_MESSAGE("Hertz: t_c "
-                     << t_hertz << " s, F_max " << F_hertz << " N; h = 0.25 mm: t_c "
-                     << t_err_coarse << ", F_max " << f_err_coarse << ", e " << coarse.restitution
-                     << ", |energy_error| <= " << coarse.worst_energy_error
-                     << "; h = 0.125 mm: t_c " << t_err_fine << ", F_max " << f_err_fine << ", e "
-                     << fine.restitution << ", |energy_error| <= " << fine.worst_energy_error);
-  BOOST_TEST(std::abs(t_err_coarse) < 0.38);
-  BOOST_TEST(std::abs(f_err_coarse) < 0.30);
-  BOOST_TEST(std::abs(t_err_fine) < 0.24);
-  BOOST_TEST(std::abs(f_err_fine) < 0.06);
-  BOOST_TEST(std::abs(t_err_fine) < 0.75 * std::abs(t_err_coarse));  // falling with h
-  BOOST_TEST(std::abs(f_err_fine) < 0.5 * std::abs(f_err_coarse));
+  const auto shape = [](const Impact& r) { return r.impulse / (r.peak_force * r.contact_time); };
+  BOOST_TEST_MESSAGE(
+      "Hertz: t_c " << t_hertz << " s (" << closed.time_above_1_percent
+                    << " s above 1 % of the peak), F_max " << F_hertz << " N, shape "
+                    << closed.shape << "; h = 0.25 mm: t_c " << t_err_coarse << ", F_max "
+                    << f_err_coarse << ", shape " << shape(coarse) << ", e " << coarse.restitution
+                    << ", |energy_error| <= " << coarse.worst_energy_error << "; h = 0.125 mm: t_c "
+                    << t_err_fine << ", F_max " << f_err_fine << ", shape " << shape(fine) << ", e "
+                    << fine.restitution << ", |energy_error| <= " << fine.worst_energy_error);
+  BOOST_TEST(std::abs(t_err_coarse) < 0.35);
+  BOOST_TEST(std::abs(t_err_fine) < 0.2);
+  BOOST_TEST(std::abs(t_err_fine) < 0.7 * std::abs(t_err_coarse));  // falling with h
+  // The peak force is not converging yet (+23 % then +0.9 %: the pulse keeps a flat punch's
+  // shape, 0.64 against Hertz's 0.544, while its duration grows), so only bounded.
+  BOOST_TEST(std::abs(f_err_coarse) < 0.3);
+  BOOST_TEST(std::abs(f_err_fine) < 0.3);
   for (const Impact& r : {coarse, fine}) {
     BOOST_TEST(r.restitution > 0.99);  // elastic: the sphere leaves at the speed it came
     BOOST_TEST(r.restitution < 1.0 + 1e-3);
@@ -177,7 +199,7 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_a_wall_meets_hertz_and_converges_with_the_cell_
 BOOST_AUTO_TEST_CASE(two_spheres_in_contact_meet_within_the_documented_distance_of_hertz) {
   const Hertz closed = hertz(test::verification_scene("hertz_spheres.json"));
   const Impact pair = sphere_pair_impact();
-  const double t_err = pair.contact_time / closed.time - 1.0;
+  const double t_err = pair.contact_time / closed.time_above_1_percent - 1.0;
   const double f_err = pair.peak_force / closed.force - 1.0;
   BOOST_TEST_MESSAGE("two spheres, h = 0.25 mm: t_c "
                      << t_err << ", F_max " << f_err << ", e " << pair.restitution

@@ -1,22 +1,27 @@
 // A cylinder on an incline (issue 53): data/scenes/verification/rolling_cylinder.json, an elastic
 // disk (R = 2 mm, plane strain) released at rest on the x- `wall`, gravity g = 1e5 m/s^2 at
 // theta = 30 degrees from the wall's normal (g_n = g cos(theta) into the wall, g_t = g sin(theta)
-// along it, +y), uGIMP + MUSL, for 200 us.
+// along it, +y), uGIMP + MUSL, for T = 200 us.
 //
 // Closed forms (rigid-body dynamics of a solid cylinder, I = M R^2 / 2):
-// - mu >= tan(theta) / 3: it rolls without slip, a = 2/3 g sin(theta) = g / 3;
+// - mu >= tan(theta) / 3: it rolls without slip, a = 2/3 g sin(theta) = g / 3, omega R = v;
 // - below that it slides and spins: a = g (sin(theta) - mu cos(theta)); mu = 0.1: 0.4134 g;
 // - frictionless: a = g sin(theta) = g / 2.
-// The acceleration is the centre of mass's mean one, v_y(T) / T with v_y = sum m v_y / M.
-// Measured (v_y(T) / T / g): slip 0.4134 and frictionless 0.5000 at h = 0.25 mm (the Coulomb
-// correction's capacity is the normal impulse, so the slide is exact); rolling (mu 0.5) 0.205 /
-// 0.262 / 0.294 at h = 0.25 / 0.125 / 0.0625 mm, -38 / -21 / -12 %: first order. The rolling
-// disk rings on its line contact after the sudden load (its centre's normal velocity reaches
-// 0.4 m/s away from the wall at h = 0.25 mm) and the wall's catch of the nodes that arrive under
-// it is inelastic (grid/wall.cpp): the energy_error reaches -5.8 / -3.0 / -2.2 % of gravity's
-// work, and the torque the intermittent contact transmits is short. Asserted: the slide and the
-// free slide within 0.5 %, the roll within 45 % at h and 25 % at h / 2 and falling with h (the
-// h / 4 figure is a documented command, docs/verification.md).
+// Measures: the centre of mass's acceleration over the second half, (v_y(T) - v_y(T/2)) / (T/2),
+// v_y = sum m v_y / M (the sudden load's start-up is over by then); the rolling ratio omega R / v_y
+// at T, omega = (angular momentum about the centre of mass) / (sum m r^2); the share of steps in
+// which the wall's impulse grows (the disk touches the wall).
+// Measured at h = 0.25 / 0.125 mm (8 / 16 cells per radius):
+// - slide 0.4134 g and frictionless 0.5000 g: the Coulomb correction's capacity is mu times the
+//   normal impulse whatever the contact's quality, so this checks the books of the slide, exact;
+// - roll (mu 0.5): acceleration -30 / -11 % over the second half (-38 / -21 % over the whole run:
+//   the start-up transient), omega R / v 0.79 / 0.88, the wall's impulse growing in 31 / 34 % of
+//   the steps. The disk does not roll cleanly: released stress-free under a sudden load, it rings
+//   on its line contact, hops (off the wall for spells up to 16 us) and slips forward between the
+//   touches; the wall's catch of the nodes that arrive under it is inelastic (grid/wall.cpp):
+//   energy_error -12 / -4.2 % of gravity's work. Each of these falls with h.
+// Asserted: the slides within 0.5 %; the roll's acceleration within 40 % at h and 20 % at h/2,
+// omega R / v above 0.7 and 0.8, and both errors falling with h.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -27,21 +32,70 @@ using namespace impact::mpm;
 
 namespace {
 
-// The mean acceleration along the incline, v_y(T) / T, in units of g.
-double mean_acceleration(double mu, int cells_x, int cells_y) {
-  const Scene scene = test::verification_scene(
-      "rolling_cylinder.json",
-      {{"grid", {{"cells", {cells_x, cells_y}}, {"wall_friction", {{"x-", mu}}}}}});
-  BOOST_REQUIRE(scene.grid.geometry == GridGeometry::plane_strain);
-  Simulation sim(scene);
-  while (!sim.finished()) sim.step();
-  const Particles& P = sim.particles();
+struct Descent {
+  double acceleration = 0.0;  ///< over the second half, in units of g
+  double rolling = 0.0;       ///< omega R / v_y at the end
+  double touching = 0.0;      ///< share of the steps in which the wall's impulse grew
+  double energy_error = 0.0;  ///< energy_error [J/m] over gravity's work at the end
+};
+
+double mean_velocity_y(const Particles& P) {
   double M = 0.0, p = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i) {
     M += P.mass[i];
     p += P.mass[i] * P.v[i](1);
   }
-  return p / M / sim.time() / 1.0e5;
+  return p / M;
+}
+
+// omega R / v_y: the spin about the centre of mass (the x-y plane) against the centre's speed.
+double rolling_ratio(const Particles& P, double R) {
+  double M = 0.0;
+  Vec3 c = Vec3::Zero(), v = Vec3::Zero();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    M += P.mass[i];
+    c += P.mass[i] * P.x[i];
+    v += P.mass[i] * P.v[i];
+  }
+  c /= M;
+  v /= M;
+  double L = 0.0, I = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const Vec3 r = P.x[i] - c, u = P.v[i] - v;
+    L += P.mass[i] * (r(0) * u(1) - r(1) * u(0));
+    I += P.mass[i] * (r(0) * r(0) + r(1) * r(1));
+  }
+  // Rolling along +y on the x- wall (contact point at r = (-R, 0)): v + omega x r = 0 there, so
+  // omega_z = v_y / R.
+  return (L / I) * R / v(1);
+}
+
+Descent descend(double mu, int cells_x, int cells_y) {
+  const Scene scene = test::verification_scene(
+      "rolling_cylinder.json",
+      {{"grid", {{"cells", {cells_x, cells_y}}, {"wall_friction", {{"x-", mu}}}}}});
+  BOOST_REQUIRE(scene.grid.geometry == GridGeometry::plane_strain);
+  Simulation sim(scene);
+  const double T = scene.time.max_time, g = 1.0e5;
+  double v_half = 0.0, t_half = -1.0, impulse = 0.0;
+  long steps = 0, touching = 0;
+  while (!sim.finished()) {
+    sim.step();
+    ++steps;
+    const double J = sim.ledger().row().boundary_impulse(0);
+    if (J > impulse + 1e-12 * std::abs(J)) ++touching;
+    impulse = J;
+    if (t_half < 0.0 && sim.time() >= 0.5 * T) {
+      t_half = sim.time();
+      v_half = mean_velocity_y(sim.particles());
+    }
+  }
+  Descent d;
+  d.acceleration = (mean_velocity_y(sim.particles()) - v_half) / (sim.time() - t_half) / g;
+  d.rolling = rolling_ratio(sim.particles(), 0.002);
+  d.touching = double(touching) / double(steps);
+  d.energy_error = sim.ledger().row().energy_error / sim.ledger().row().external_work;
+  return d;
 }
 
 }  // namespace
@@ -50,8 +104,8 @@ BOOST_AUTO_TEST_SUITE(rolling_cylinder)
 
 BOOST_AUTO_TEST_CASE(a_cylinder_slides_down_an_incline_at_coulombs_rate) {
   const double theta = std::acos(-1.0) / 6.0, mu = 0.1;
-  const double slide = mean_acceleration(mu, 18, 64);
-  const double free_slide = mean_acceleration(0.0, 18, 64);
+  const double slide = descend(mu, 18, 64).acceleration;
+  const double free_slide = descend(0.0, 18, 64).acceleration;
   BOOST_TEST_MESSAGE("a / g: slide " << slide << " (closed form "
                                      << std::sin(theta) - mu * std::cos(theta) << "), frictionless "
                                      << free_slide << " (0.5)");
@@ -59,15 +113,23 @@ BOOST_AUTO_TEST_CASE(a_cylinder_slides_down_an_incline_at_coulombs_rate) {
   BOOST_TEST(free_slide == std::sin(theta), boost::test_tools::tolerance(0.005));
 }
 
-BOOST_AUTO_TEST_CASE(a_cylinder_rolls_down_an_incline_converging_to_two_thirds_g_sin_theta) {
+BOOST_AUTO_TEST_CASE(a_cylinder_on_an_incline_converges_to_rolling_without_slip) {
   const double roll = 2.0 / 3.0 * 0.5;
-  const double coarse = mean_acceleration(0.5, 18, 64) / roll - 1.0;
-  const double fine = mean_acceleration(0.5, 36, 128) / roll - 1.0;
-  BOOST_TEST_MESSAGE("rolling: a / (2/3 g sin theta) - 1 = " << coarse << " at h = 0.25 mm, "
-                                                             << fine << " at h = 0.125 mm");
-  BOOST_TEST(std::abs(coarse) < 0.45);
-  BOOST_TEST(std::abs(fine) < 0.25);
-  BOOST_TEST(std::abs(fine) < 0.7 * std::abs(coarse));  // first order: measured 0.55
+  const Descent coarse = descend(0.5, 18, 64), fine = descend(0.5, 36, 128);
+  const double a_coarse = coarse.acceleration / roll - 1.0;
+  const double a_fine = fine.acceleration / roll - 1.0;
+  BOOST_TEST_MESSAGE("rolling, h = 0.25 / 0.125 mm: a / (2/3 g sin theta) - 1 = "
+                     << a_coarse << " / " << a_fine << "; omega R / v " << coarse.rolling << " / "
+                     << fine.rolling << "; touching " << coarse.touching << " / " << fine.touching
+                     << " of the steps; energy_error / gravity's work " << coarse.energy_error
+                     << " / " << fine.energy_error);
+  BOOST_TEST(std::abs(a_coarse) < 0.40);
+  BOOST_TEST(std::abs(a_fine) < 0.20);
+  BOOST_TEST(std::abs(a_fine) < 0.7 * std::abs(a_coarse));
+  BOOST_TEST(coarse.rolling > 0.7);
+  BOOST_TEST(fine.rolling > 0.8);
+  BOOST_TEST(fine.rolling < 1.05);
+  BOOST_TEST(std::abs(1.0 - fine.rolling) < std::abs(1.0 - coarse.rolling));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
