@@ -49,7 +49,7 @@ LedgerRow Ledger::row() const {
   r.outflow_kinetic_energy = s_.outflow_kinetic;
   r.external_impulse = s_.external_impulse;
   r.external_work = s_.external_work;
-  const double scale = s_.initial_energy > 0.0 ? s_.initial_energy : 1.0;
+  const double scale = s_.peak_input > 0.0 ? s_.peak_input : 1.0;  // E_in (ledger.hpp)
   r.energy_error = energy_excess() / scale;
   return r;
 }

@@ -11,9 +11,12 @@
 //   outflow_*       = (grid.outflow = remove) mass, momentum and kinetic energy of the particles
 //                     that left the grid (the stress work done on them stays in strain_energy)
 //   energy_error    = (kinetic + strain + sum of balance sinks + outflow_kinetic_energy - E0
-//                      - external_work) / E0: the numerical residual (time integration and
+//                      - external_work) / E_in: the numerical residual (time integration and
 //                      transfers), the one term that is not physics
-// with E0 the initial kinetic energy (1 J if E0 = 0, i.e. then an absolute error in J).
+// with E0 the initial kinetic energy and E_in the largest energy that has entered so far,
+// max over the run of E0 + external_work (the energy-growth check's reference): E0 when no body
+// force works. Divided by E0 alone, a body released at rest under gravity read in J and one
+// released at 0.01 m/s read -7.4e4 (issue 53). 1 J if nothing has entered (an absolute error).
 // Column names carry their unit, `name [unit]` (the point driver's convention); a plane-strain
 // run's are per metre of thickness (extensive_units.hpp).
 #pragma once

@@ -12,7 +12,8 @@
 // wall's catch of the face nodes is inelastic (grid/wall.cpp), so the ringing decays and at most
 // its energy U_s leaves the books as the wall's residual; none may be created. Asserted: the run
 // is not stopped; the kinetic energy stays below 1.5 U_s at every step and ends below 0.5 U_s;
-// the books' residual energy_error [J] (E0 = 0: the ledger's absolute error) stays within
+// the books' residual in joules (Ledger::energy_excess, energy_error times the energy that has
+// entered) stays within
 // [-1.2 U_s, +0.25 U_s] (it rings: +0.16 U_s at most); the block's centre of mass sinks by less
 // than 3 times the settled compression M g L / (2 E A) = 7.8e-9 m and never lifts off; no particle
 // crosses the wall's plane. Measured: kinetic energy at most 1.04e-8 J (0.92 U_s), residual
@@ -96,15 +97,15 @@ BOOST_AUTO_TEST_CASE(a_block_at_rest_on_a_wall_stays_at_rest_with_closed_books) 
     }
     const State s = state(sim.particles());
     worst_kinetic = std::max(worst_kinetic, s.kinetic);
-    lowest_error = std::min(lowest_error, sim.ledger().row().energy_error);
-    highest_error = std::max(highest_error, sim.ledger().row().energy_error);
+    lowest_error = std::min(lowest_error, sim.ledger().energy_excess());
+    highest_error = std::max(highest_error, sim.ledger().energy_excess());
     lowest = std::min(lowest, s.lowest);
     sink = std::max(sink, first.centre_x - s.centre_x);
   }
   const State last = state(sim.particles());
   BOOST_TEST_MESSAGE(sim.steps() << " steps to " << sim.time() << " s: kinetic energy at most "
                                  << worst_kinetic << " J (U_s = " << U_s << " J), at the end "
-                                 << last.kinetic << " J; energy_error in [" << lowest_error << ", "
+                                 << last.kinetic << " J; residual in [" << lowest_error << ", "
                                  << highest_error << "] J; centre sank at most " << sink
                                  << " m (settled: " << settle << " m), at the end "
                                  << first.centre_x - last.centre_x << " m");
@@ -144,13 +145,13 @@ BOOST_AUTO_TEST_CASE(a_block_at_rest_on_a_rough_wall_is_not_stopped_when_it_ring
         BOOST_FAIL("mu " << mu << ": stopped at step " << sim.steps() << ", " << sim.time()
                          << " s: " << e.what());
       }
-      highest = std::max(highest, sim.ledger().row().energy_error -
-                                      test::ledger_sink(sim.ledger(), "friction_heat"));
+      highest = std::max(
+          highest, sim.ledger().energy_excess() - test::ledger_sink(sim.ledger(), "friction_heat"));
     }
     BOOST_TEST_MESSAGE(
         "mu " << mu << ": " << sim.steps() << " steps; mechanical residual at most " << highest
               << " J, at the end "
-              << sim.ledger().row().energy_error - test::ledger_sink(sim.ledger(), "friction_heat")
+              << sim.ledger().energy_excess() - test::ledger_sink(sim.ledger(), "friction_heat")
               << " J; friction heat " << test::ledger_sink(sim.ledger(), "friction_heat") << " J");
     BOOST_TEST(sim.steps() == 10000);
     BOOST_TEST(highest < 0.25 * U_s);
@@ -206,7 +207,7 @@ BOOST_AUTO_TEST_CASE(a_block_at_rest_in_a_corner_stays_at_rest) {
                                              << ", " << sim.time() << " s: " << e.what());
       }
       worst_kinetic = std::max(worst_kinetic, state(sim.particles()).kinetic);
-      const double mechanical = sim.ledger().row().energy_error - heat_now();  // E0 = 0: in J
+      const double mechanical = sim.ledger().energy_excess() - heat_now();  // [J]
       lowest_error = std::min(lowest_error, mechanical);
       highest_error = std::max(highest_error, mechanical);
       if (heat_settled < 0.0 && sim.time() > 1.0e-4) heat_settled = heat_now();

@@ -36,7 +36,7 @@ struct Descent {
   double acceleration = 0.0;  ///< over the second half, in units of g
   double rolling = 0.0;       ///< omega R / v_y at the end
   double touching = 0.0;      ///< share of the steps in which the wall's impulse grew
-  double energy_error = 0.0;  ///< energy_error [J/m] over gravity's work at the end
+  double energy_error = 0.0;  ///< energy_error at the end (over gravity's work, all that entered)
 };
 
 double mean_velocity_y(const Particles& P) {
@@ -94,7 +94,7 @@ Descent descend(double mu, int cells_x, int cells_y) {
   d.acceleration = (mean_velocity_y(sim.particles()) - v_half) / (sim.time() - t_half) / g;
   d.rolling = rolling_ratio(sim.particles(), 0.002);
   d.touching = double(touching) / double(steps);
-  d.energy_error = sim.ledger().row().energy_error / sim.ledger().row().external_work;
+  d.energy_error = sim.ledger().row().energy_error;  // over the energy that entered: gravity's work
   return d;
 }
 
