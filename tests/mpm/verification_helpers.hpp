@@ -33,6 +33,18 @@ inline double longitudinal_wave_speed(const Scene& s) {
   return std::sqrt((p.bulk_modulus + 4.0 * p.shear_modulus / 3.0) / p.density);
 }
 
+/// Young's modulus E = 9 K G / (3 K + G) [Pa] and Poisson's ratio nu = (3 K - 2 G) / (2 (3 K + G))
+/// of the first material, from its bulk and shear moduli.
+inline double youngs_modulus(const Scene& s) {
+  const auto& p = s.materials.front().material.model.params();
+  return 9.0 * p.bulk_modulus * p.shear_modulus / (3.0 * p.bulk_modulus + p.shear_modulus);
+}
+inline double poissons_ratio(const Scene& s) {
+  const auto& p = s.materials.front().material.model.params();
+  return (3.0 * p.bulk_modulus - 2.0 * p.shear_modulus) /
+         (2.0 * (3.0 * p.bulk_modulus + p.shear_modulus));
+}
+
 /// The patch that puts the report's case01 (data/scenes/sphere_cylinder/case01.json) on an
 /// axisymmetric grid: the 3D twin's spacing (2.38 x 3.3 mm) over the half-section y >= 0, the
 /// sphere moved onto the axis (docs/scenes.md#2d-grids). Tests add their own time and output.

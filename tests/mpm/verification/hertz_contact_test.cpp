@@ -58,7 +58,7 @@ struct Impact {
 
 // Peak force and contact time from an impulse history J(t) [N s] (the wall's impulse, or the
 // momentum one sphere has lost): the force dJ/dt over windows of 0.25 us, in contact while it
-// exceeds 1 % of its peak (Hertz's own force is below that for the first and last 1.5 % of t_c).
+// exceeds 1 % of its peak (Hertz's own force is below that for the first and last 1.6 % of t_c).
 void measure_force(const std::vector<double>& t, const std::vector<double>& J, Impact& r) {
   const double window = 0.25e-6;
   std::vector<double> force_time, force;
@@ -142,10 +142,7 @@ struct Hertz {
 };
 Hertz hertz(const Scene& scene) {
   const auto& p = scene.materials.front().material.model.params();
-  const double E =
-      9.0 * p.bulk_modulus * p.shear_modulus / (3.0 * p.bulk_modulus + p.shear_modulus);
-  const double nu = (3.0 * p.bulk_modulus - 2.0 * p.shear_modulus) /
-                    (2.0 * (3.0 * p.bulk_modulus + p.shear_modulus));
+  const double E = test::youngs_modulus(scene), nu = test::poissons_ratio(scene);
   const double R = 0.01, v = 10.0, pi = std::acos(-1.0);
   const double m = p.density * 4.0 / 3.0 * pi * R * R * R;
   const double E_star = E / (1.0 - nu * nu);

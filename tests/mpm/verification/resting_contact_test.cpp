@@ -52,12 +52,6 @@ State state(const Particles& P) {
   return s;
 }
 
-// Young's modulus of the block's material [Pa], from its bulk and shear moduli.
-double youngs_modulus(const Scene& scene) {
-  const auto& p = scene.materials.front().material.model.params();
-  return 9.0 * p.bulk_modulus * p.shear_modulus / (3.0 * p.bulk_modulus + p.shear_modulus);
-}
-
 double total_mass(const Particles& P) {
   double M = 0.0;
   for (const double m : P.mass) M += m;
@@ -68,7 +62,7 @@ double total_mass(const Particles& P) {
 // mm^2) settled under its own weight M g as a bar (the first test case's comment).
 double settled_strain_energy(const Scene& scene, double M, double g) {
   const double L = 0.002, A = 0.004 * 0.002;
-  return (M * g) * (M * g) * L / (6.0 * youngs_modulus(scene) * A);
+  return (M * g) * (M * g) * L / (6.0 * test::youngs_modulus(scene) * A);
 }
 
 }  // namespace
@@ -81,7 +75,7 @@ BOOST_AUTO_TEST_CASE(a_block_at_rest_on_a_wall_stays_at_rest_with_closed_books) 
                         {"time", {{"max_time", 1.0}}}};
   const Scene scene = test::verification_scene("sliding_block.json", at_rest);
   Simulation sim(scene);
-  const double E = youngs_modulus(scene);
+  const double E = test::youngs_modulus(scene);
   const double L = 0.002, A = 0.004 * 0.002, g = 1.0e5;
   const double M = total_mass(sim.particles());
   const double U_s = settled_strain_energy(scene, M, g);
@@ -191,7 +185,7 @@ BOOST_AUTO_TEST_CASE(a_block_at_rest_in_a_corner_stays_at_rest) {
         {"time", {{"max_time", 1.0}}}};
     const Scene scene = test::verification_scene("sliding_block.json", corner);
     Simulation sim(scene);
-    const double E = youngs_modulus(scene);
+    const double E = test::youngs_modulus(scene);
     const double Lx = 0.002, Ly = 0.004, Lz = 0.002;
     const double M = total_mass(sim.particles());
     const double U_c = (M * c) * (M * c) / (6.0 * E) *
