@@ -10,8 +10,7 @@
 // contact again from the velocity the strain is built from, this scene gained +17 % of its energy
 // by 20 us with MUSL and +14 % with USL (+30 % / +22 % by 40 us, first order in dt: +15.5 /
 // +8.2 % at multipliers 0.25 / 0.125). Measured now (`mpm run` of the scene, --set
-// '{"time":{"max_time":2e-5}}'): MUSL between -0.40 and +0.21 %, USL between -1.22 and +0.15 %
-// (the gain is the stress power's mid-step term, which a single field has too).
+// '{"time":{"max_time":2e-5}}'): MUSL between -0.44 and +0.21 %, USL between -1.1 and +0.14 %.
 // Asserted: no gain above 0.5 % of E0, no loss beyond 3 %, the axial momentum exchanged to
 // round-off (p_x - p_x(0) is the faces' impulse J_x: the mirror overwrites what the rod's
 // particles give the ghost layer beyond the axis).
