@@ -235,7 +235,7 @@ std::size_t Grid::bytes() const {
       (mass.size() + heat.size()) * sizeof(double) +
       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size()) * sizeof(Vec3);
   b += active_.capacity() * sizeof(int);
-  b += marks_.size() + contact_held.size();
+  b += marks_.size();
   b += (boundary_nodes_.capacity() + active_boundary_.capacity()) * sizeof(int) +
        free_increment.capacity() * sizeof(Vec3) +
        (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite) +

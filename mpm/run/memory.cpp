@@ -55,8 +55,7 @@ double estimated_grid_bytes(const Scene& scene) {
   if (contact_heat || g.has_wall_friction()) per_entry += 8.0;  // friction heat
   if (g.has_walls()) per_entry += 1.0;                          // wall touch bits
   double bytes = fields * nodes * per_entry;
-  bytes += nodes * 4.0;            // active-node list (dense: every node; blocks: reserved for all)
-  if (fields > 1) bytes += nodes;  // the contact step's held nodes (Grid::contact_held)
+  bytes += nodes * 4.0;  // active-node list (dense: every node; blocks: reserved for all)
   if (g.active_blocks) {
     const double k = Grid::kBlock;
     bytes += std::ceil(nx / k) * std::ceil(ny / k) * std::ceil(nz / k);  // block marks
