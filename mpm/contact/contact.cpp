@@ -14,8 +14,6 @@ namespace impact::mpm {
 namespace {
 
 constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
-// Grid::contact_held bits: what the step pass corrected at a node.
-constexpr unsigned char kHeldBetweenBodies = 1, kHeldWithinBody = 2;
 
 // The mass at node n with the body's mirror images: at a `symmetric` face the body continues as
 // its image, which gives the nodes within one of the face (-1, 0, 1, or cells - 1 .. cells + 1)
@@ -126,10 +124,7 @@ Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNorma
   return larger == b ? Vec3(-B.grad[b]) : Vec3(B.grad[larger]);
 }
 
-// `hold`: the strain pass at a node the step held (contact.hpp): the relative normal velocity is
-// zeroed whatever its sign, Coulomb acts only where the fields approach.
-bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, bool hold, Vec3* dv,
-             double* heat) {
+bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, Vec3* dv, double* heat) {
   double M = 0.0;
   Vec3 P = Vec3::Zero(), P0 = Vec3::Zero(), gradM = Vec3::Zero();
   for (int b = 0; b < B.n; ++b) {
@@ -151,13 +146,13 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, bool hol
     const Vec3 n = g / gn;
     const Vec3 u = B.v[b] - vcm;
     const double un = u.dot(n);
-    if (!(un > 0.0) && !hold) continue;  // touching at rest or separating: never pulled back
+    if (!(un > 0.0)) continue;  // touching at rest or separating: never pulled back
     const Vec3 ut = u - un * n;
     const double ut_norm = ut.norm();
     dv[b] = -un * n;
     // Coulomb: the slip is reduced by s = min(mu u_n, |u_t|) (stick when it is all of it).
     double s = 0.0;
-    if (mu > 0.0 && ut_norm > 0.0 && un > 0.0) {
+    if (mu > 0.0 && ut_norm > 0.0) {
       s = std::min(mu * un, ut_norm);
       dv[b] -= s * (ut / ut_norm);
     }
@@ -209,7 +204,6 @@ MirrorView mirror_view(const Grid& G, const std::array<int, 3>& n) {
 ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec3>& v,
                             ContactPass pass) {
   const bool book = pass == ContactPass::step;
-  const bool strain = pass == ContactPass::strain;
   const bool write_heat = book && !G.heat.empty();
   const int nn = G.node_count();
   // read_scene refuses scenes with more fields; a grid built otherwise must not overrun the arrays.
@@ -237,12 +231,6 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
 #pragma omp for schedule(static)
     for (int a_node = 0; a_node < na_nodes; ++a_node) {
       const int I = nodes[a_node];
-      // The step marks what it held (between bodies, within one); the strain pass holds that,
-      // and elsewhere corrects where the fields approach.
-      unsigned char held = 0;
-      if (book) G.contact_held[I] = 0;
-      const bool hold_bodies = strain && (G.contact_held[I] & kHeldBetweenBodies);
-      const bool hold_pair = strain && (G.contact_held[I] & kHeldWithinBody);
       int active[kMaxFields];
       int na = 0;
       for (int f = 0; f < nf; ++f)
@@ -301,9 +289,8 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       Vec3 dv[kMaxFields];
       double heat[kMaxFields];
       bool any = false;
-      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, hold_bodies, dv, heat)) {
+      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, dv, heat)) {
         any = true;
-        held |= kHeldBetweenBodies;
         for (int a = 0; a < na; ++a) {
           const int e = active[a] * nn + I;
           const int b = body_index[a];
@@ -332,9 +319,8 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           pair.v0[pair.n] = as_mirrored(G.velocity[e]);
           ++pair.n;
         }
-        if (!correct(pair, contact.mu, contact.normal, book, hold_pair, dv, heat)) continue;
+        if (!correct(pair, contact.mu, contact.normal, book, dv, heat)) continue;
         any = true;
-        held |= kHeldWithinBody;
         for (int k = 0; k < pair.n; ++k) {
           v[field_of[k]] += dv[k];
           if (book) {
@@ -344,7 +330,6 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         }
       }
       if (any && owned) ++sum.contact_nodes;
-      if (book) G.contact_held[I] = held;
     }
     partial[omp_get_thread_num()] = sum;
   }

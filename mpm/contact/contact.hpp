@@ -69,30 +69,9 @@ struct ContactTotals {
 
 /// Which correction: `start` on the start velocities (the start the step's forces act from; the
 /// particles' velocities never carry it, so nothing is booked), `step` on v* (the step's contact
-/// impulse, which the particles see: books the friction work, writes G.heat and marks the nodes
-/// it corrected in G.contact_held), `strain` on the velocity the strain is built from (MUSL's
-/// re-map, USL's v^L; nothing booked): at the nodes the step corrected the relative normal
-/// velocity is zeroed whatever its sign (the step's decision holds), keeping the fields' centre
-/// of mass; elsewhere it is corrected where the fields approach; Coulomb acts where they approach.
-/// (Holding only the step's nodes and leaving the others alone let a block sliding on a block
-/// and its half cut by a symmetric plane differ by 0.016 m/s of a 5 m/s slip, against 1e-6.)
-///
-/// Why the strain pass follows the step. Summed over a node's fields, a step whose strain is built
-/// from v* books Delta KE + Delta U <= 0: at a held node (frictionless, forces along n)
-/// -dt^2 (f_1^2/m_1 + f_2^2/m_2)/2 + mu_12 dt^2 (f_1/m_1 + f_2/m_2)^2/2 <= 0 by Cauchy-Schwarz. The
-/// strain velocity is not v*: MUSL re-maps momenta that still carry the approach the start pass
-/// removes at every step (it is never handed to the particles), USL scales a light node's
-/// increment. Where that velocity let the fields separate or approach at a node the step held,
-/// the stress did work the nodes did not. Re-deciding contact from it (the earlier rule: correct
-/// where the re-mapped fields approach) made energy between dissimilar bodies, first order in dt:
-/// an elastic steel rod on an aluminium plate at 100 m/s, 6 cells per rod radius, +30.1 / +15.5 /
-/// +8.2 % of its energy at multipliers 0.5 / 0.25 / 0.125, +22 % with USL; holding the step's
-/// nodes, -0.05 % and -1.7 % (tests/mpm/verification/dissimilar_contact_test.cpp,
-/// docs/mpm.md#velocity-fields-and-contact-physicscontact-contact). Replacing the strain
-/// velocity's normal component by v*'s instead (a new switch, discontinuous in u_n) lost
-/// 6.6 % on two elastic blocks and swapped round-off for 1e-4 differences between a body and its
-/// symmetric half.
-enum class ContactPass { start, step, strain };
+/// impulse, which the particles see: books the friction work and writes G.heat),
+/// `projection` (the MUSL re-map: a projection of the particles' final momentum; nothing booked).
+enum class ContactPass { start, step, projection };
 
 /// Corrects the nodal velocities `v` (all fields, Grid entry order) at every node shared by two
 /// or more fields.

@@ -30,7 +30,6 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   velocity_L.assign(e, Vec3::Zero());
   if (friction_heat || spec.has_wall_friction()) heat.assign(e, 0.0);
   const int n = node_count();
-  if (fields_ > 1) contact_held.assign(n, 0);
   const bool has_wall = spec.has_walls();
   // The stored node range per axis: the faces' layers and rows are visited only where stored.
   const NodeBox x = stored();

@@ -227,10 +227,6 @@ class Grid {
   std::vector<Vec3> increment;     ///< v*_I - v_I (FLIP increment)
   std::vector<Vec3> velocity_L;    ///< the nodal velocity L_p is built from (USL/MUSL)
   std::vector<double> heat;  ///< friction heat of the step per entry [J] (contact or wall friction)
-  /// Per node, with two or more velocity fields: 1 where the step's contact pass corrected the
-  /// fields. The strain velocity (MUSL's re-map, USL's v^L) is held there too and nowhere else:
-  /// the same decision in both (contact/contact.hpp).
-  std::vector<unsigned char> contact_held;
   /// v*_I - v_I before the face conditions at the boundary nodes (field-major, boundary_nodes()
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;

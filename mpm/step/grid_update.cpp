@@ -105,9 +105,6 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
       const double alpha = G.mass[i] >= light ? 1.0 : G.mass[i] / light;
       G.velocity_L[i] = G.velocity[i] + alpha * G.increment[i];
     });
-    // The light-node rule scales an increment contact may have bounded: the step's held nodes
-    // stay held (contact.hpp, ContactPass::strain).
-    if (contact_on) apply_contact(G, *contact, G.velocity_L, ContactPass::strain);
     G.apply_mirror(G.velocity_L);
   }
   return out;
