@@ -13,11 +13,10 @@
 // its energy U_s leaves the books as the wall's residual; none may be created. Asserted: the run
 // is not stopped; the kinetic energy stays below 1.5 U_s at every step and ends below 0.5 U_s;
 // the books' residual in joules (Ledger::energy_excess, energy_error times the energy that has
-// entered) stays within
-// [-1.2 U_s, +0.25 U_s] (it rings: +0.16 U_s at most); the block's centre of mass sinks by less
-// than 3 times the settled compression M g L / (2 E A) = 7.8e-9 m and never lifts off; no particle
-// crosses the wall's plane. Measured: kinetic energy at most 1.04e-8 J (0.92 U_s), residual
-// -1.05e-8 J at most
+// entered) stays within [-1.2 U_s, +0.25 U_s] (it rings: +0.16 U_s at most); the block's centre
+// of mass sinks by less than 3 times the settled compression M g L / (2 E A) = 7.8e-9 m and never
+// lifts off; no particle crosses the wall's plane. Measured: kinetic energy at most 1.04e-8 J (0.92
+// U_s), residual -1.05e-8 J at most
 // (-0.93 U_s: the ringing dissipated; -1.10e-8 J at 1.6 ms, unchanged from 1 ms), centre sank
 // 9.6e-9 m at most. On main before issue 53 the same block started to rock and the energy check
 // stopped it at 204 us (particle speed 0.26 m/s): the wall's hold, decided each step by the sign
