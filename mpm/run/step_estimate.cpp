@@ -1,5 +1,6 @@
 #include "mpm/run/step_estimate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -53,6 +54,9 @@ std::string driver_of(const Scene& scene, const StepEstimate& e) {
   add(t.max_time / kUsualMaxTime, "time.max_time (", t.max_time, " s)");
   if (e.capped) {
     add(kUsualMaxDt / t.max_dt, "time.max_dt (", t.max_dt, " s)");
+  } else if (e.gravity_limited) {
+    add(kUsualMultiplier * kUsualCell / kUsualSignal / e.dt, "solver.gravity (",
+        scene.solver.gravity.stableNorm(), " m/s^2)");
   } else {
     add(kUsualMultiplier / t.multiplier, "time.multiplier (", t.multiplier, ")");
     add(kUsualCell / scene.grid.min_spacing(), "grid.cells (the smallest cell ",
@@ -91,8 +95,12 @@ StepEstimate estimate_steps(const Scene& scene) {
       e.wave_speed = c;
     }
   }
-  const double stable =
+  const double waves =
       stable_time_step(scene.grid.min_spacing(), e.signal_speed, scene.time.multiplier);
+  const double body = body_force_time_step(
+      scene.grid.min_spacing(), scene.solver.gravity.stableNorm(), scene.time.multiplier);
+  e.gravity_limited = body < waves;
+  const double stable = std::min(waves, body);
   e.capped = scene.time.max_dt < stable;
   e.dt = e.capped ? scene.time.max_dt : stable;
   e.steps = std::isinf(e.dt) ? 0.0 : std::ceil(scene.time.max_time / e.dt);
@@ -146,6 +154,10 @@ std::string step_refusal(const Scene& scene) {
     << t.max_time << " s over a first step of " << e.dt << " s: ";
   if (e.capped) {
     m << "time.max_dt, below the stable step";
+  } else if (e.gravity_limited) {
+    m << "sqrt(time.multiplier " << t.multiplier << " x the smallest cell "
+      << scene.grid.min_spacing() << " m / solver.gravity " << scene.solver.gravity.stableNorm()
+      << " m/s^2), the step in which gravity alone carries a particle that far";
   } else {
     const SceneObject& o = scene.objects[e.fastest];
     m << "time.multiplier " << t.multiplier << " x the smallest cell " << scene.grid.min_spacing()

@@ -3,7 +3,8 @@
 // docs/mpm.md#memory-and-step-estimates): time.max_time over the first stable step, which is
 // stable_time_step (mpm/step/time_step.cpp) of the smallest cell and the fastest signal
 // max_objects (c0 + |v0|), c0 the longitudinal wave speed of the object's material in its initial
-// state, capped at time.max_dt. Every particle of an object starts with the same c0 and v0, so
+// state, or the body-force step sqrt(multiplier dx / abs(g)) where it is smaller, capped at
+// time.max_dt. Every particle of an object starts with the same c0 and v0, so
 // this is the first step the run takes. A density of 1e-30 kg/m^3, a multiplier of 1e-300 or a
 // max_time of 1e30 s give 1e20 to 1e300 steps: a run that never finishes, refused at once. So is
 // one whose particle-steps (particles estimated from the geometry x steps) exceed
@@ -19,14 +20,15 @@
 namespace impact::mpm {
 
 struct StepEstimate {
-  double steps = 0.0;           ///< ceil(max_time / dt); 0 when no signal limits the step
-  double dt = 0.0;              ///< the first stable step, capped at time.max_dt [s]
-  double signal_speed = 0.0;    ///< the fastest signal c0 + |v0| [m/s]
-  std::size_t fastest = 0;      ///< the object that carries it
-  double wave_speed = 0.0;      ///< its material's initial longitudinal wave speed c0 [m/s]
-  bool capped = false;          ///< time.max_dt is below the stable step
-  double particles = 0.0;       ///< estimated from the geometry (estimated_particle_count)
-  double particle_steps = 0.0;  ///< particles x steps: what the run's wall time scales with
+  double steps = 0.0;            ///< ceil(max_time / dt); 0 when no signal limits the step
+  double dt = 0.0;               ///< the first stable step, capped at time.max_dt [s]
+  double signal_speed = 0.0;     ///< the fastest signal c0 + |v0| [m/s]
+  std::size_t fastest = 0;       ///< the object that carries it
+  double wave_speed = 0.0;       ///< its material's initial longitudinal wave speed c0 [m/s]
+  bool capped = false;           ///< time.max_dt is below the stable step
+  bool gravity_limited = false;  ///< the body-force step (solver.gravity) is below the waves'
+  double particles = 0.0;        ///< estimated from the geometry (estimated_particle_count)
+  double particle_steps = 0.0;   ///< particles x steps: what the run's wall time scales with
   /// The key that drives the count: of max_time, multiplier, max_dt (when it caps), the smallest
   /// cell, the fastest material's wave speed and object's speed, the one furthest (as a factor)
   /// from its usual value (1e-3 s, 0.5, the stable step, 1e-3 m, 6000 m/s, 1000 m/s), with its

@@ -156,8 +156,10 @@ void Simulation::restart_ledger() {
 }
 
 double Simulation::next_dt() const {
-  double dt =
-      stable_time_step(scene_.grid.min_spacing(), max_signal_speed_, scene_.time.multiplier);
+  double dt = std::min(
+      stable_time_step(scene_.grid.min_spacing(), max_signal_speed_, scene_.time.multiplier),
+      body_force_time_step(scene_.grid.min_spacing(), scene_.solver.gravity.stableNorm(),
+                           scene_.time.multiplier));
   if (steps_ == 0) dt = std::min(dt, scene_.time.initial_dt);
   dt = std::min(dt, scene_.time.max_dt);
   // No signal at all (every particle left the grid, grid.outflow = remove): nothing limits the

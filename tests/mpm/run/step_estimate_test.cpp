@@ -145,4 +145,44 @@ BOOST_AUTO_TEST_CASE(very_many_particle_steps_are_refused_naming_the_cells) {
           .empty());
 }
 
+// The body-force step (mpm/step/time_step.cpp): a particle released at rest under a gravity that
+// outruns the wave speed's step moves multiplier cells per step at most, (g dt) dt = multiplier dx.
+// Before it, 1e12 m/s^2 carried the block 10 cells in its first step, through the wall below it,
+// and the run stopped on "left the grid"; 1e300 m/s^2 was accepted by mpm check.
+BOOST_AUTO_TEST_CASE(gravity_that_outruns_the_waves_limits_the_step) {
+  const double dx = 0.06 / 12, multiplier = 0.5;  // rigid_translation.json
+  const double g = 1e12;
+  const Json patch = {{"objects", {{"block", {{"velocity", {0.0, 0.0, 0.0}}}}}},
+                      {"solver", {{"gravity", {-g, 0.0, 0.0}}}},
+                      {"time", {{"max_time", 1e-6}, {"initial_dt", 1.0}}}};
+  const Scene scene = test::verification_scene("rigid_translation.json", patch);
+  const double body = std::sqrt(multiplier * dx / g);  // 5e-8 s
+  const double waves = multiplier * dx / test::longitudinal_wave_speed(scene);
+  BOOST_TEST(body < waves);  // gravity binds: 5e-8 against 4.1e-7 s
+  BOOST_TEST(body_force_time_step(dx, g, multiplier) == body, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(std::isinf(body_force_time_step(dx, 0.0, multiplier)));
+  const StepEstimate e = estimate_steps(scene);
+  BOOST_TEST(e.gravity_limited);
+  BOOST_TEST(e.dt == body, boost::test_tools::tolerance(1e-14));
+  // The run takes the same step, and its first step moves the block by exactly the bound:
+  // x^1 - x^0 = dt v^1, v^1 = g dt (a free fall on a free grid, 4 cells clear of x-).
+  Simulation sim(scene);
+  const double x0 = sim.particles().x[0](0);
+  sim.step();
+  BOOST_TEST(sim.time() == body, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(x0 - sim.particles().x[0](0) == multiplier * dx, boost::test_tools::tolerance(1e-9));
+  // 1e300 m/s^2: refused before it starts, naming the key.
+  const std::string refusal = step_refusal(test::verification_scene(
+      "rigid_translation.json", {{"solver", {{"gravity", {-1e300, 0.0, 0.0}}}}}));
+  BOOST_TEST(contains(refusal,
+                      "over a first step of 5e-152 s: sqrt(time.multiplier 0.5 x the "
+                      "smallest cell 0.005 m / solver.gravity 1e+300 m/s^2)"),
+             refusal);
+  BOOST_TEST(contains(refusal, "the key that drives the count: solver.gravity (1e+300 m/s^2)"),
+             refusal);
+  // The shipped gravity scenes (1e5 m/s^2 on 1 mm cells: 7.1e-5 s) are far from the bound: 850
+  // times the step aluminium's waves allow there (0.5 x 1 mm / 6000 m/s).
+  BOOST_TEST(body_force_time_step(1e-3, 1e5, 0.5) > 500.0 * 0.5 * 1e-3 / 6000.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
