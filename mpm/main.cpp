@@ -310,6 +310,7 @@ int run_main(int argc, char** argv) {
   impact::mpm::ExtendsChain chain;  // the scene file's, for messages
   try {
     patches = impact::cli::patches_of(set_texts);
+    for (impact::Json& patch : patches) impact::mpm::resolve_patch_material_paths(patch);
     if (study->parsed() && study->get_option("--ladder")->count() > 0) {
       if (const std::string problem = ladder_levels_problem(ladder_levels); !problem.empty())
         return usage_error("study", "--ladder: " + problem);

@@ -871,6 +871,12 @@ Json load_scene_document(const std::string& file, ExtendsChain* chain) {
   return load_with_extends(file, extending, chain);
 }
 
+void resolve_patch_material_paths(Json& patch) {
+  std::error_code ec;
+  const fs::path cwd = fs::current_path(ec);
+  if (!ec) resolve_material_paths(patch, cwd);
+}
+
 PatchOrigins extends_origins(const ExtendsChain& chain) {
   std::vector<Json> documents;
   for (const auto& layer : chain) documents.push_back(layer.second);

@@ -27,6 +27,10 @@ using ExtendsChain = std::vector<std::pair<std::string, Json>>;
 /// The merged document only (extends resolved, material file paths made relative to the cwd);
 /// `chain`, when given, receives the files of the extends chain (extends_origins).
 Json load_scene_document(const std::string& file, ExtendsChain* chain = nullptr);
+/// A --set patch's relative material paths made absolute from the working directory, the base
+/// they are read from: "cannot open /home/u/data/m.json" then names it, where "data/m.json"
+/// left the user guessing (issue 53's trial).
+void resolve_patch_material_paths(Json& patch);
 /// Names a problem at a key that a base scene set, and the scene file did not, after the base
 /// (the last one to set it): "base.json (extended by scene.json): /grid/cell: unknown key ...",
 /// where read_scene's message said "scene.json: /grid/cell: ...". Apply it after the --set
