@@ -14,6 +14,9 @@ namespace impact::mpm {
 namespace {
 
 constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
+// Grid::contact_held bits per entry: what the step pass decided for the field's body against the
+// others, and within the body (a material's parent field and its companion).
+constexpr unsigned char kHeldBetweenBodies = 1, kHeldWithinBody = 2;
 
 // The mass at node n with the body's mirror images: at a `symmetric` face the body continues as
 // its image, which gives the nodes within one of the face (-1, 0, 1, or cells - 1 .. cells + 1)
@@ -124,7 +127,11 @@ Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNorma
   return larger == b ? Vec3(-B.grad[b]) : Vec3(B.grad[larger]);
 }
 
-bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, Vec3* dv, double* heat) {
+// `hold[b]` (the strain pass, null otherwise): body b was held by the step (contact.hpp), so its
+// relative normal velocity is zeroed whatever its sign; Coulomb acts only where it approaches.
+// `approached[b]`: body b passed the approach test (the step's decision).
+bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bool* hold, Vec3* dv,
+             double* heat, bool* approached) {
   double M = 0.0;
   Vec3 P = Vec3::Zero(), P0 = Vec3::Zero(), gradM = Vec3::Zero();
   for (int b = 0; b < B.n; ++b) {
@@ -140,19 +147,21 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, Vec3* dv
   for (int b = 0; b < B.n; ++b) {
     dv[b].setZero();
     heat[b] = 0.0;
+    approached[b] = false;
     const Vec3 g = surface_normal(B, gradM, b, rule);
     const double gn = g.norm();
     if (!(gn > 0.0)) continue;  // no surface here: leave the body alone
     const Vec3 n = g / gn;
     const Vec3 u = B.v[b] - vcm;
     const double un = u.dot(n);
-    if (!(un > 0.0)) continue;  // touching at rest or separating: never pulled back
+    approached[b] = un > 0.0;
+    if (!approached[b] && !(hold && hold[b])) continue;  // touching or separating: left alone
     const Vec3 ut = u - un * n;
     const double ut_norm = ut.norm();
     dv[b] = -un * n;
     // Coulomb: the slip is reduced by s = min(mu u_n, |u_t|) (stick when it is all of it).
     double s = 0.0;
-    if (mu > 0.0 && ut_norm > 0.0) {
+    if (mu > 0.0 && ut_norm > 0.0 && un > 0.0) {
       s = std::min(mu * un, ut_norm);
       dv[b] -= s * (ut / ut_norm);
     }
@@ -204,6 +213,10 @@ MirrorView mirror_view(const Grid& G, const std::array<int, 3>& n) {
 ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec3>& v,
                             ContactPass pass) {
   const bool book = pass == ContactPass::step;
+  const bool strain = pass == ContactPass::strain;
+  if (G.contact_held.size() != G.mass.size())  // sized by the Grid with two or more fields
+    throw std::logic_error("apply_contact: a grid with " + std::to_string(G.fields()) +
+                           " velocity field(s) has no contact marks");
   const bool write_heat = book && !G.heat.empty();
   const int nn = G.node_count();
   // read_scene refuses scenes with more fields; a grid built otherwise must not overrun the arrays.
@@ -231,10 +244,14 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
 #pragma omp for schedule(static)
     for (int a_node = 0; a_node < na_nodes; ++a_node) {
       const int I = nodes[a_node];
+      // The step marks per entry what it held (between bodies, within one); the strain pass
+      // holds that, and elsewhere corrects where the fields approach.
       int active[kMaxFields];
       int na = 0;
-      for (int f = 0; f < nf; ++f)
+      for (int f = 0; f < nf; ++f) {
+        if (book) G.contact_held[f * nn + I] = 0;
         if (G.mass[f * nn + I] > 0.0) active[na++] = f;
+      }
       if (na < 2) continue;
       const bool owned = G.owns(I);  // booked once in a domain decomposition
       const std::array<int, 3> ijk = G.ijk(I);
@@ -288,13 +305,21 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       }
       Vec3 dv[kMaxFields];
       double heat[kMaxFields];
+      bool hold[kMaxFields], approached[kMaxFields];
+      if (strain) {
+        for (int b = 0; b < B.n; ++b) hold[b] = false;
+        for (int a = 0; a < na; ++a)
+          if (G.contact_held[active[a] * nn + I] & kHeldBetweenBodies) hold[body_index[a]] = true;
+      }
       bool any = false;
-      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, dv, heat)) {
+      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, strain ? hold : nullptr, dv,
+                              heat, approached)) {
         any = true;
         for (int a = 0; a < na; ++a) {
           const int e = active[a] * nn + I;
           const int b = body_index[a];
           v[e] += dv[b];
+          if (book && approached[b]) G.contact_held[e] |= kHeldBetweenBodies;
           if (book && heat[b] > 0.0) {  // shared by the body's fields by mass
             const double h = members[b] == 1 ? heat[b] : heat[b] * G.mass[e] / B.m[b];
             if (owned) sum.friction_heat += h;
@@ -308,9 +333,11 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         if (members[b] < 2) continue;
         Bodies pair;
         int field_of[kMaxFields];
+        bool hold_pair = false;
         for (int a = 0; a < na; ++a) {
           if (body_index[a] != b) continue;
           const int e = active[a] * nn + I;
+          if (strain && (G.contact_held[e] & kHeldWithinBody)) hold_pair = true;
           field_of[pair.n] = e;
           pair.m[pair.n] = G.mass[e];
           pair.volume[pair.n] = G.mass[e] * inverse_density[active[a]];
@@ -319,10 +346,14 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           pair.v0[pair.n] = as_mirrored(G.velocity[e]);
           ++pair.n;
         }
-        if (!correct(pair, contact.mu, contact.normal, book, dv, heat)) continue;
+        for (int k = 0; k < pair.n; ++k) hold[k] = hold_pair;
+        if (!correct(pair, contact.mu, contact.normal, book, strain ? hold : nullptr, dv, heat,
+                     approached))
+          continue;
         any = true;
         for (int k = 0; k < pair.n; ++k) {
           v[field_of[k]] += dv[k];
+          if (book) G.contact_held[field_of[k]] |= kHeldWithinBody;
           if (book) {
             if (owned) sum.friction_heat += heat[k];
             if (write_heat) G.heat[field_of[k]] += heat[k];

@@ -30,6 +30,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   velocity_L.assign(e, Vec3::Zero());
   if (friction_heat || spec.has_wall_friction()) heat.assign(e, 0.0);
   const int n = node_count();
+  if (fields_ > 1) contact_held.assign(e, 0);
   const bool has_wall = spec.has_walls();
   // The stored node range per axis: the faces' layers and rows are visited only where stored.
   const NodeBox x = stored();
@@ -234,7 +235,7 @@ std::size_t Grid::bytes() const {
       (mass.size() + heat.size()) * sizeof(double) +
       (velocity.size() + velocity_new.size() + increment.size() + velocity_L.size()) * sizeof(Vec3);
   b += active_.capacity() * sizeof(int);
-  b += marks_.size();
+  b += marks_.size() + contact_held.size();
   b += (boundary_nodes_.capacity() + active_boundary_.capacity()) * sizeof(int) +
        free_increment.capacity() * sizeof(Vec3) +
        (mirror_all_.capacity() + mirror_active_.capacity()) * sizeof(MirrorWrite) +

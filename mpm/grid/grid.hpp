@@ -227,6 +227,10 @@ class Grid {
   std::vector<Vec3> increment;     ///< v*_I - v_I (FLIP increment)
   std::vector<Vec3> velocity_L;    ///< the nodal velocity L_p is built from (USL/MUSL)
   std::vector<double> heat;  ///< friction heat of the step per entry [J] (contact or wall friction)
+  /// Per entry, with two or more velocity fields: what the step's contact pass decided for the
+  /// field (bit 1: its body held against the others, bit 2: within its body); the strain pass
+  /// holds the strain velocity (MUSL's re-map, USL's v^L) there too (contact/contact.hpp).
+  std::vector<unsigned char> contact_held;
   /// v*_I - v_I before the face conditions at the boundary nodes (field-major, boundary_nodes()
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;

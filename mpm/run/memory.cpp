@@ -54,6 +54,7 @@ double estimated_grid_bytes(const Scene& scene) {
   if (musl) per_entry += 24.0;                                  // re-map momentum
   if (contact_heat || g.has_wall_friction()) per_entry += 8.0;  // friction heat
   if (g.has_walls()) per_entry += 1.0;                          // wall touch bits
+  if (fields > 1) per_entry += 1.0;  // what contact's step held (Grid::contact_held)
   double bytes = fields * nodes * per_entry;
   bytes += nodes * 4.0;  // active-node list (dense: every node; blocks: reserved for all)
   if (g.active_blocks) {

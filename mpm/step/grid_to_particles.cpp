@@ -186,9 +186,10 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
   G.for_active_entries([&](int i) {
     G.velocity_L[i] = G.mass[i] > 0.0 ? Vec3(momentum[i] / G.mass[i]) : Vec3::Zero();
   });
-  // Projections, not loads: the particles' momentum is already final.
+  // Projections, not loads: the particles' momentum is already final. Contact holds the nodes
+  // the step held (contact.hpp, ContactPass::strain).
   if (contact != nullptr && G.fields() > 1)
-    apply_contact(G, *contact, G.velocity_L, ContactPass::projection);
+    apply_contact(G, *contact, G.velocity_L, ContactPass::strain);
   G.apply_mirror(G.velocity_L);
   if (G.has_walls()) G.apply_walls(nullptr, G.velocity_L, WallPass::projection);
 #pragma omp parallel for schedule(static) num_threads(nt)

@@ -105,6 +105,13 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
       const double alpha = G.mass[i] >= light ? 1.0 : G.mass[i] / light;
       G.velocity_L[i] = G.velocity[i] + alpha * G.increment[i];
     });
+    // The light-node rule scales an increment contact may have bounded: the step's held nodes
+    // stay held (contact.hpp, ContactPass::strain).
+    if (contact_on) {
+      apply_contact(G, *contact, G.velocity_L, ContactPass::strain);
+      // As MUSL's re-map (grid_to_particles.cpp): the walls hold what contact may have moved.
+      if (G.has_walls()) G.apply_walls(nullptr, G.velocity_L, WallPass::projection);
+    }
     G.apply_mirror(G.velocity_L);
   }
   return out;

@@ -25,7 +25,8 @@
 // 2. Two spheres in frictionless multi-field contact (hertz_spheres.json, the same numbers: two
 //    equal spheres at +-10 m/s are one sphere on a rigid flat at 10 m/s). The force is the
 //    momentum the left sphere loses. Measured at h = 0.25 mm: t_c -42 %, F_max +54 %;
-//    restitution 0.995; |energy_error| <= 1.8 %; total momentum 1e-14 of p0. (Against t_c, by
+//    restitution 0.989; |energy_error| <= 0.18 % (1.8 % when the strain pass re-decided contact,
+//    contact/contact.hpp); total momentum 1e-14 of p0. (Against t_c, by
 //    per-step differences of a velocity gauge over the left sphere, at h = 0.5 / 0.25 / 0.125
 //    mm: -55 / -45 / -37 %, F_max +83 / +53 / +34 %.) The contact is too stiff because it starts
 //    too early: the approach test (contact/contact.hpp) takes two bodies as touching wherever
@@ -205,7 +206,7 @@ BOOST_AUTO_TEST_CASE(two_spheres_in_contact_meet_within_the_documented_distance_
   BOOST_TEST(pair.worst_momentum < 1e-12);  // the contact exchanges momentum, creates none
   BOOST_TEST(pair.restitution > 0.98);
   BOOST_TEST(pair.restitution < 1.0 + 1e-3);
-  BOOST_TEST(pair.worst_energy_error < 0.03);
+  BOOST_TEST(pair.worst_energy_error < 0.005);
   BOOST_TEST(std::abs(t_err) < 0.5);
   BOOST_TEST(std::abs(f_err) < 0.6);
 }
