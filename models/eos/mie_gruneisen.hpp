@@ -90,14 +90,17 @@ struct MieGruneisenStep {
 };
 
 /// One step from (rho_old, p_old, e_old) to rho_new.
-///   evolved:        e1 = e0 - (p0 + p1)/2 (v1 - v0) + dq,  p1 = p(rho_new, e1), solved exactly:
-///                   e1 = [e0 + dq - (p0 + p_c(rho_new)) dv/2] / (1 + rho0 Gamma0 dv/2),
-///                   with p_c the cold (e = 0) part. p_old should be p(rho_old, e_old).
+///   evolved:        de = -p dv + dq with p = p_c + rho0 Gamma0 e, the cold (e = 0) part p_c held
+///                   at its step mean (p_c(rho_old) + p_c(rho_new))/2, integrated exactly in e:
+///                   e1 = e0 + dq - (p_c_mean + k e0 + k dq/2) dv (1 - exp(-k dv)) / (k dv),
+///                   k = rho0 Gamma0, p1 = p(rho_new, e1). To x^2 (x = k dv) it is the trapezoidal
+///                   e1 = e0 - (p0 + p1)/2 dv + dq, whose 1 / (1 + x/2) has a pole at x = -2: a
+///                   few per cent compression of a point expanded 30-fold. p_old should be
+///                   p(rho_old, e_old).
 ///   cp_temperature: e1 = e_old + Cp (T_new - T_old), p1 = p(rho_new, e1); p_old and dq unused
 ///                   (the plastic heat is already in T_new).
 /// heat_per_mass [J/kg], specific_heat [J/(kg K)], temperatures [K]. Not admissible (pressure +inf,
-/// energy e_old) beyond the compression limit, or if 1 + rho0 Gamma0 dv/2 <= 0 (a compression by
-/// more than 2/Gamma0 of the specific volume in one step, impossible for Gamma0 < 2).
+/// energy e_old) beyond the compression limit only.
 MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, double rho_old,
                                       double rho_new, double p_old, double e_old,
                                       double heat_per_mass, double specific_heat,
@@ -111,7 +114,7 @@ inline EosStep eos_step(const MieGruneisenParams& p, const EosMaterial& m, const
   const MieGruneisenStep step = mie_gruneisen_update(
       p, m.density, in.density, in.new_density, in.pressure, in.internal_energy, in.heat_per_mass,
       m.specific_heat, in.temperature, in.new_temperature);
-  return {step.pressure, step.internal_energy, true};
+  return {step.pressure, step.internal_energy, step.admissible};
 }
 /// The isentropic bulk modulus at (density, internal_energy): mie_gruneisen_bulk_modulus.
 inline double eos_bulk_modulus(const MieGruneisenParams& p, const EosMaterial& m, double density,

@@ -102,7 +102,11 @@ std::vector<Check> mie_gruneisen_uniaxial_strain(const SuiteContext& ctx) {
       thermal.update(cT, r1.state.internal_energy - e_v, std::max(cT, 1.0));
       heat.update(q, cT, std::max(q, 1.0));
     }
-    rec.worst("adiabatic: e - int -p dv = c_p (T - T_0)", thermal, 1e-9);
+    // The EOS step is the exact flow of de/dv = -(p_c,mean + rho0 Gamma0 e) plus the heat, which
+    // departs from this trapezoid of p by (rho0 Gamma0 dv)^2 / 12 of each step's work: 2e-6 of
+    // c_p (T - T_0) over 5000 steps (1.3e-6 J/kg where e reaches 3e5 J/kg; 1e-12 when the step
+    // was the trapezoid itself).
+    rec.worst("adiabatic: e - int -p dv = c_p (T - T_0)", thermal, 1e-5);
     rec.worst("adiabatic: c_p (T - T_0) = chi int sigma_eq d eps_p / rho", heat, 1e-6);
   }
   const Row& last = r.rows.back();
