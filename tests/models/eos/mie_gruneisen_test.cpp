@@ -48,11 +48,11 @@ double eos_pressure(double v, double e) {
   return cold_pressure(1.0 / v) + rho0 * Gamma0 * e;
 }
 
-/// Specific internal energy on the isentrope through (v0, 0), at v1: RK4 on de/dv = -p(v, e).
-double rk4_isentrope(double v1, int steps) {
-  const double v0 = 1.0 / rho0;
+/// Specific internal energy on the isentrope through (v0, e0) (the reference state by default), at
+/// v1: RK4 on de/dv = -p(v, e).
+double rk4_isentrope(double v1, int steps, double v0 = 1.0 / rho0, double e0 = 0.0) {
   const double h = (v1 - v0) / steps;
-  double e = 0.0;
+  double e = e0;
   for (int i = 0; i < steps; ++i) {
     const double v = v0 + i * h;
     const double k1 = -eos_pressure(v, e);
@@ -227,17 +227,7 @@ BOOST_AUTO_TEST_CASE(a_compression_of_a_far_expanded_point_stays_finite) {
   const double e_mean_cold = rk4_mean_cold_step(v_a, v_b, e_a, 0.0, 2000);
   BOOST_TEST(std::abs(s.internal_energy - e_mean_cold) < 1e-10 * std::abs(e_mean_cold - e_a));
   // The isentrope itself, RK4 on de/dv = -p(v, e) from (v_a, e_a).
-  const int n = 2000;
-  const double hv = (v_b - v_a) / n;
-  double e = e_a;
-  for (int i = 0; i < n; ++i) {
-    const double v = v_a + i * hv;
-    const double k1 = -eos_pressure(v, e);
-    const double k2 = -eos_pressure(v + hv / 2, e + hv / 2 * k1);
-    const double k3 = -eos_pressure(v + hv / 2, e + hv / 2 * k2);
-    const double k4 = -eos_pressure(v + hv, e + hv * k3);
-    e += hv / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-  }
+  const double e = rk4_isentrope(v_b, 2000, v_a, e_a);
   BOOST_TEST_MESSAGE("e: exact form " << s.internal_energy << ", isentrope " << e << ", start "
                                       << e_a << " J/kg");
   BOOST_TEST(std::abs(s.internal_energy - e) < 0.01 * std::abs(e - e_a));
