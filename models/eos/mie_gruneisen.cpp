@@ -65,8 +65,10 @@ MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, 
     // de/dv = -(p_c + k e), k = rho0 Gamma0, with the cold pressure p_c held at its mean over the
     // step, integrated exactly: e1 = e0 + dq - (p_c_mean + k e0 + k dq/2) dv phi(k dv),
     // phi(x) = (1 - exp(-x)) / x. The trapezoidal rule's phi = 1 / (1 + x/2) agrees to x^2 but
-    // has a pole at x = -2: a 4 % compression of a point expanded 31-fold (k dv = -1.2; steel,
-    // rho0 Gamma0 = 1.3e4 kg/m^3) made the pressure infinite and stopped a valid run.
+    // has a pole at x = -2: a 4 % compression of a point expanded 31-fold (k dv = -2.1; steel,
+    // rho0 Gamma0 = 1.3e4 kg/m^3) made the pressure infinite and stopped a valid run. The start
+    // pressure is the point's own p_old (after erosion, the eroded one), as the trapezoid had it:
+    // the work is done by the stress the point carries.
     const double dv = 1.0 / rho_new - 1.0 / rho_old;
     const double x = stiffness * dv;
     const double phi = x == 0.0 ? 1.0 : -std::expm1(-x) / x;
@@ -74,6 +76,9 @@ MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, 
     step.internal_energy =
         e_old + heat_per_mass -
         (cold_mean + stiffness * e_old + 0.5 * stiffness * heat_per_mass) * dv * phi;
+    // exp(-x) beyond the doubles (x < -709: a point expanded a thousandfold halved in one step):
+    // out of range, reported, never an infinite energy taken as a state.
+    if (!std::isfinite(step.internal_energy)) return {infinity, e_old, false};
   }
   step.pressure = cold + stiffness * step.internal_energy;
   return step;

@@ -22,9 +22,10 @@
 //    nor a plausible wrong number) and mie_gruneisen_update() sets admissible = false; the caller
 //    must report the state as out of range.
 //  - Energy (MieGruneisenEnergy):
-//      evolved (default): de = -p dv + dq (v = 1/rho; dq = heat per unit mass from plastic work),
-//        trapezoidal in p. Since p is linear in e, the implicit update is solved in closed form;
-//        it is second order and reversible to round-off (the trapezoidal rule is symmetric).
+//      evolved (default): de = -p dv + dq (v = 1/rho; dq = heat per unit mass from plastic work).
+//        Since p is linear in e, the step with the cold pressure held at its mean is a linear ODE
+//        solved exactly (mie_gruneisen_update); it is second order and reversible to round-off
+//        (the same mean both ways), and agrees with the trapezoid of p to (rho0 Gamma0 dv)^2 / 12.
 //      cp_temperature: the report's approximation E = Cp T (eq. 15), measured from the point's
 //        initial state: e = Cp (T - T_0), advanced as e += Cp (T_{n+1} - T_n). The literal
 //        absolute form would put rho0 Gamma0 Cp T (= 2700 * 1.99 * 896 * 294 = 1.4 GPa for
@@ -100,7 +101,8 @@ struct MieGruneisenStep {
 ///   cp_temperature: e1 = e_old + Cp (T_new - T_old), p1 = p(rho_new, e1); p_old and dq unused
 ///                   (the plastic heat is already in T_new).
 /// heat_per_mass [J/kg], specific_heat [J/(kg K)], temperatures [K]. Not admissible (pressure +inf,
-/// energy e_old) beyond the compression limit only.
+/// energy e_old) beyond the compression limit, or where exp(-rho0 Gamma0 dv) leaves the doubles
+/// (a point expanded a thousandfold halved in one step).
 MieGruneisenStep mie_gruneisen_update(const MieGruneisenParams& p, double rho0, double rho_old,
                                       double rho_new, double p_old, double e_old,
                                       double heat_per_mass, double specific_heat,

@@ -220,7 +220,9 @@ void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
   s1.temperature = h.temperature;
 
   // 4. Pressure from the equation of state; the specific internal energy follows the work
-  //    -p dv (trapezoidal) plus the retained heat, so e = e_v + c_p (T - T_0) at every step.
+  //    -p dv plus the retained heat, so e = e_v + c_p (T - T_0) at every step (e_v the EOS step's
+  //    own work: the trapezoid of p for default_hypo, to (rho0 Gamma0 dv)^2 / 12 of it for
+  //    Mie-Gruneisen).
   const EosStep eos = eos_step(p_.equation_of_state, eos_material(),
                                {t.p_n, t.rho0_n, s0.internal_energy, T0, rho1, s1.temperature,
                                 lane_algebra::trace(to_lanes(t.D_hat)), dt, h.heat_per_mass});
