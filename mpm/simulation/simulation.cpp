@@ -156,16 +156,17 @@ void Simulation::restart_ledger() {
 }
 
 double Simulation::next_dt() const {
+  const double waves =
+      stable_time_step(scene_.grid.min_spacing(), max_signal_speed_, scene_.time.multiplier);
+  // No signal at all (every particle left the grid, grid.outflow = remove): nothing is left to
+  // integrate, and gravity, which limits the step of a body, has none to move.
+  if (max_signal_speed_ == 0.0 && std::isinf(std::min(waves, scene_.time.max_dt)))
+    return scene_.time.max_time - time_;
   double dt = std::min(
-      stable_time_step(scene_.grid.min_spacing(), max_signal_speed_, scene_.time.multiplier),
-      body_force_time_step(scene_.grid.min_spacing(), scene_.solver.gravity.stableNorm(),
-                           scene_.time.multiplier));
+      waves, body_force_time_step(scene_.grid.min_spacing(), scene_.solver.gravity.stableNorm(),
+                                  scene_.time.multiplier));
   if (steps_ == 0) dt = std::min(dt, scene_.time.initial_dt);
-  dt = std::min(dt, scene_.time.max_dt);
-  // No signal at all (every particle left the grid, grid.outflow = remove): nothing limits the
-  // step, and nothing is left to integrate.
-  if (std::isinf(dt) && max_signal_speed_ == 0.0) dt = scene_.time.max_time - time_;
-  return dt;
+  return std::min(dt, scene_.time.max_dt);
 }
 
 const StepTotals& Simulation::step() {
