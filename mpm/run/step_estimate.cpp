@@ -147,6 +147,18 @@ std::string particle_step_refusal(const Scene& scene, const StepEstimate& e) {
 std::string step_refusal(const Scene& scene) {
   const StepEstimate e = estimate_steps(scene);
   const TimeSpec& t = scene.time;
+  // Gravity is constant: a body-force step below time.min_dt would stop the run at its first
+  // step, blaming the fastest particle's signal. Say so before anything is seeded.
+  if (e.gravity_limited && !e.capped && e.dt < t.min_dt) {
+    std::ostringstream m;
+    m.precision(3);
+    m << "refusing to start: the body-force step sqrt(time.multiplier " << t.multiplier
+      << " x the smallest cell " << scene.grid.min_spacing() << " m / solver.gravity "
+      << scene.solver.gravity.stableNorm() << " m/s^2) = " << e.dt
+      << " s is below time.min_dt = " << t.min_dt
+      << " s, so the run would stop at its first step; lower solver.gravity or time.min_dt";
+    return m.str();
+  }
   if (!(e.steps > t.max_estimated_steps)) return particle_step_refusal(scene, e);
   std::ostringstream m;
   m.precision(3);

@@ -180,6 +180,18 @@ BOOST_AUTO_TEST_CASE(gravity_that_outruns_the_waves_limits_the_step) {
              refusal);
   BOOST_TEST(contains(refusal, "the key that drives the count: solver.gravity (1e+300 m/s^2)"),
              refusal);
+  // A body-force step below time.min_dt would stop the run at step 1 blaming the fastest signal:
+  // refused first, naming both keys (5e-8 s against 1e-7 s).
+  const std::string below = step_refusal(test::verification_scene(
+      "rigid_translation.json",
+      {{"solver", {{"gravity", {-g, 0.0, 0.0}}}}, {"time", {{"min_dt", 1e-7}}}}));
+  BOOST_TEST(
+      contains(below, "solver.gravity 1e+12 m/s^2) = 5e-08 s is below time.min_dt = 1e-07 s"),
+      below);
+  BOOST_TEST(step_refusal(test::verification_scene("rigid_translation.json",
+                                                   {{"solver", {{"gravity", {-g, 0.0, 0.0}}}},
+                                                    {"time", {{"min_dt", 1e-8}}}}))
+                 .empty());
   // The shipped gravity scenes (1e5 m/s^2 on 1 mm cells: 7.1e-5 s) are far from the bound: 850
   // times the step aluminium's waves allow there (0.5 x 1 mm / 6000 m/s).
   BOOST_TEST(body_force_time_step(1e-3, 1e5, 0.5) > 500.0 * 0.5 * 1e-3 / 6000.0);
