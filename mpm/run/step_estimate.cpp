@@ -142,6 +142,17 @@ std::string particle_step_refusal(const Scene& scene, const StepEstimate& e) {
   return m.str();
 }
 
+// "sqrt(time.multiplier 0.5 x the smallest cell 0.005 m / solver.gravity 1e+12 m/s^2)": how the
+// body-force step comes about, for the refusals.
+std::string body_force_step_text(const Scene& scene) {
+  std::ostringstream m;
+  m.precision(3);
+  m << "sqrt(time.multiplier " << scene.time.multiplier << " x the smallest cell "
+    << scene.grid.min_spacing() << " m / solver.gravity " << scene.solver.gravity.stableNorm()
+    << " m/s^2)";
+  return m.str();
+}
+
 }  // namespace
 
 std::string step_refusal(const Scene& scene) {
@@ -152,9 +163,7 @@ std::string step_refusal(const Scene& scene) {
   if (e.gravity_limited && !e.capped && e.dt < t.min_dt) {
     std::ostringstream m;
     m.precision(3);
-    m << "refusing to start: the body-force step sqrt(time.multiplier " << t.multiplier
-      << " x the smallest cell " << scene.grid.min_spacing() << " m / solver.gravity "
-      << scene.solver.gravity.stableNorm() << " m/s^2) = " << e.dt
+    m << "refusing to start: the body-force step " << body_force_step_text(scene) << " = " << e.dt
       << " s is below time.min_dt = " << t.min_dt
       << " s, so the run would stop at its first step; lower solver.gravity or time.min_dt";
     return m.str();
@@ -167,9 +176,8 @@ std::string step_refusal(const Scene& scene) {
   if (e.capped) {
     m << "time.max_dt, below the stable step";
   } else if (e.gravity_limited) {
-    m << "sqrt(time.multiplier " << t.multiplier << " x the smallest cell "
-      << scene.grid.min_spacing() << " m / solver.gravity " << scene.solver.gravity.stableNorm()
-      << " m/s^2), the step in which gravity alone carries a particle that far";
+    m << body_force_step_text(scene)
+      << ", the step in which gravity alone carries a particle that far";
   } else {
     const SceneObject& o = scene.objects[e.fastest];
     m << "time.multiplier " << t.multiplier << " x the smallest cell " << scene.grid.min_spacing()

@@ -27,10 +27,10 @@ bool outside(const Grid& G, const Vec3& x) {
 void onto_face_within_round_off(const Grid& G, Vec3& x) {
   const Vec3& lower = G.lower();
   const Vec3& upper = G.spec().upper;
-  const Vec3 band = 1e-12 * G.spacing();
+  const Vec3& band = G.spacing();  // times 1e-12 below
   for (int d = 0; d < 3; ++d) {
-    if (x(d) < lower(d) && x(d) >= lower(d) - band(d)) x(d) = lower(d);
-    if (x(d) > upper(d) && x(d) <= upper(d) + band(d)) x(d) = upper(d);
+    if (x(d) < lower(d) && x(d) >= lower(d) - 1e-12 * band(d)) x(d) = lower(d);
+    if (x(d) > upper(d) && x(d) <= upper(d) + 1e-12 * band(d)) x(d) = upper(d);
   }
 }
 
