@@ -113,14 +113,18 @@ struct Bodies {
   double m[kMaxFields];
   double volume[kMaxFields];  ///< sum over the body's fields of m_f / rho_f [m^3]
   Vec3 v[kMaxFields], grad[kMaxFields], v0[kMaxFields];
+  /// A pair's fitted plane (`logistic_regression`): the normal of each body into the other.
+  bool has_plane = false;
+  Vec3 plane[2];
 };
 
 // The (unnormalised) normal of body b, pointing from it into the others (contact.hpp):
 // grad m_rest - grad m_b, or for a pair with `larger_volume` the surface of the body with more
-// volume at the node.
+// volume at the node, or the plane that separates their particles where one was fitted.
 Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNormal rule) {
   const Vec3 sum = grad_total - 2.0 * B.grad[b];
-  if (B.n != 2 || rule == ContactNormal::mass_gradients) return sum;
+  if (B.n == 2 && B.has_plane) return B.plane[b];
+  if (B.n != 2 || rule != ContactNormal::larger_volume) return sum;
   const int larger = B.volume[1] > B.volume[0] ? 1 : 0;
   // A larger body without a gradient here (no surface of its own): the sum.
   if (B.grad[larger].squaredNorm() == 0.0) return sum;
@@ -269,6 +273,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       int body_index[kMaxFields];  // active field -> body slot
       int members[kMaxFields];     // fields per body slot
       int slot_of_body[kMaxFields];
+      int slot_body[kMaxFields];  // body slot -> body
       for (int b = 0; b < nf; ++b) slot_of_body[b] = -1;
       Bodies B;
       Vec3 P[kMaxFields], P0[kMaxFields];
@@ -276,6 +281,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         const int e = active[a] * nn + I;
         int& slot = slot_of_body[body_of[active[a]]];
         if (slot < 0) {
+          slot_body[B.n] = body_of[active[a]];
           slot = B.n++;
           B.m[slot] = 0.0;
           B.volume[slot] = 0.0;
@@ -295,6 +301,19 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       for (int b = 0; b < B.n; ++b) {
         B.v[b] = as_mirrored(P[b] / B.m[b]);
         B.v0[b] = as_mirrored(P0[b] / B.m[b]);
+      }
+      // The separating plane (`logistic_regression`, step/contact_planes.cpp) between two
+      // bodies, oriented from the lower-numbered body into the other, as the mirror leaves it
+      // (a face node's normal lies in the face, as its image's does).
+      if (B.n == 2 && contact.normal == ContactNormal::logistic_regression &&
+          !G.contact_plane.empty()) {
+        const Vec3 plane = as_mirrored(G.contact_plane[I]);
+        if (plane.squaredNorm() > 0.0) {
+          const bool first_is_lower = slot_body[0] < slot_body[1];
+          B.plane[0] = first_is_lower ? plane : Vec3(-plane);
+          B.plane[1] = -B.plane[0];
+          B.has_plane = true;
+        }
       }
       for (int a = 0; a < na; ++a) {  // a one-field body keeps its velocity bit for bit
         const int b = body_index[a];

@@ -13,6 +13,12 @@
 //               off a block sliding at 5 m/s on another, then decelerated it 1.6 times faster
 //               than Coulomb's law. Where two equal bodies' edges meet, the sum is the right one
 //               (docs/mpm.md#velocity-fields-and-contact-physicscontact-contact).
+//               `logistic_regression`, for a pair: the normal of the plane that separates the
+//               two bodies' particles weighing on the node (Nairn, Hammerquist & Smith 2020;
+//               contact/separating_plane.hpp, fitted each step by step/contact_planes.cpp): right
+//               at both a small body's edge on a large one and two equal bodies' edges; the sum
+//               where no plane was fitted (three or more bodies, a node another rank's particles
+//               reach) and within a body.
 //   detection   approaching, u_n = (v_f - v_cm) . n_f > 0. Bodies pressed together meet it at
 //               every step (the compressed material pushes its nodes outward), so the friction
 //               they transmit is bounded by the normal impulse of the step: a block resting on

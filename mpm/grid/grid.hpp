@@ -231,6 +231,10 @@ class Grid {
   /// field (bit 1: its body held against the others, bit 2: within its body); the strain pass
   /// holds the strain velocity (MUSL's re-map, USL's v^L) there too (contact/contact.hpp).
   std::vector<unsigned char> contact_held;
+  /// With `contact.normal = "logistic_regression"`, per node (one copy, not per field): the unit
+  /// normal of the plane separating the node's two bodies, from the body of lower index into the
+  /// other; zero where none was fitted (step/contact_planes.cpp) and contact uses the gradients.
+  std::vector<Vec3> contact_plane;
   /// v*_I - v_I before the face conditions at the boundary nodes (field-major, boundary_nodes()
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;

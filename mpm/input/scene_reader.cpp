@@ -369,10 +369,12 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
         type == "single_velocity" ? ContactType::single_velocity : ContactType::friction;
     ph.contact.mu =
         c->number_or("mu", 0.0, Range::non_negative(), "Coulomb friction coefficient [-]");
-    ph.contact.normal = c->choice("normal", {"mass_gradients", "larger_volume"},
-                                  "contact normal at a node", "mass_gradients") == "larger_volume"
-                            ? ContactNormal::larger_volume
-                            : ContactNormal::mass_gradients;
+    const std::string normal =
+        c->choice("normal", {"mass_gradients", "larger_volume", "logistic_regression"},
+                  "contact normal at a node", "mass_gradients");
+    ph.contact.normal = normal == "larger_volume"         ? ContactNormal::larger_volume
+                        : normal == "logistic_regression" ? ContactNormal::logistic_regression
+                                                          : ContactNormal::mass_gradients;
     // One shared velocity field has no contact surface: a friction coefficient or a normal rule
     // there would be read and ignored, so it is refused (issue 53). A scene that extends one with
     // friction removes the inherited keys with null (RFC 7396).

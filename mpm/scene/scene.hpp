@@ -135,8 +135,10 @@ enum class ContactType { single_velocity, friction };
 
 /// The contact normal at a node of two bodies (contact/contact.hpp): `mass_gradients` unit(grad
 /// m_other - grad m_self) (Bardenhagen et al. 2001); `larger_volume` the surface of the body with
-/// more volume at the node (Nairn's "maximum volume"; for a small body on a large flat one).
-enum class ContactNormal { mass_gradients, larger_volume };
+/// more volume at the node (Nairn's "maximum volume"; for a small body on a large flat one);
+/// `logistic_regression` the plane separating the two bodies' particles at the node (Nairn,
+/// Hammerquist & Smith 2020; contact/separating_plane.hpp).
+enum class ContactNormal { mass_gradients, larger_volume, logistic_regression };
 
 /// The most velocity fields multi-field contact handles at a node (its per-node arrays in
 /// contact.cpp are this long); the scene check refuses a scene with more (Scene::field_count).

@@ -216,11 +216,11 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
 // instantiates them here, for advance() to call.
 namespace {
 template <class... Shapes>
-struct Phases {
+struct GatherPhases {
   static constexpr auto functions =
       std::make_tuple(&grid_to_particles<Shapes>..., &remap_and_gradient<Shapes>...);
 };
-[[gnu::used]] const auto kEveryShape = WithEveryShape<Phases>::functions;
+[[gnu::used]] const auto kGatherPhasesForEveryShape = WithEveryShape<GatherPhases>::functions;
 }  // namespace
 
 }  // namespace impact::mpm

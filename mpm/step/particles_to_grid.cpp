@@ -97,11 +97,11 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
 // instantiates them here, for advance() to call.
 namespace {
 template <class... Shapes>
-struct Phases {
+struct ScatterPhases {
   static constexpr auto functions =
       std::make_tuple(&compute_stencils<Shapes>..., &particles_to_grid<Shapes>...);
 };
-[[gnu::used]] const auto kEveryShape = WithEveryShape<Phases>::functions;
+[[gnu::used]] const auto kScatterPhasesForEveryShape = WithEveryShape<ScatterPhases>::functions;
 }  // namespace
 
 }  // namespace impact::mpm

@@ -92,6 +92,12 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
 /// linear/USL rigid translation grew unstable within 150 steps (planar_verification_test.cpp).
 inline constexpr double kLightNodeMassFraction = 0.5;
 
+/// With `contact.normal = "logistic_regression"`: the plane separating the two bodies' particles
+/// at each node of two bodies, fitted by logistic regression (Nairn, Hammerquist & Smith 2020;
+/// contact/separating_plane.hpp), into Grid::contact_plane for the step's contact passes.
+template <class Shape>
+void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S);
+
 /// Grid update (eq. 24), per velocity field: v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g); with
 /// `contact` and more than one field the contact model corrects v_I (the impact) and v*_I (the
 /// step) (contact/contact.hpp); the face conditions as a mirror (grid/boundary.cpp) on v_I and

@@ -55,9 +55,38 @@ Bodies bodies(const Particles& P) {
   return b;
 }
 
+// Case 1's slide over its first 40 us with the contact normal `normal`: the worst
+// |v_y - (v0 - mu g t)| / v0 over the steps.
+double worst_slide(const char* normal) {
+  const double v0 = 5.0, g = 1.0e5, mu = 0.25;
+  Simulation sim(test::verification_scene(
+      "block_on_block.json",
+      {{"physics", {{"contact", {{"normal", normal}}}}}, {"time", {{"max_time", 4.0e-5}}}}));
+  double worst = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const double vy = bodies(sim.particles()).velocity[1](1);
+    worst = std::max(worst, std::abs(vy - (v0 - mu * g * sim.time())) / v0);
+  }
+  BOOST_TEST_MESSAGE(normal << ": v_y against v0 - mu g t over 40 us, worst " << worst << " v0");
+  return worst;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(contact_friction)
+
+// docs/mpm.md's guidance: at the corner of a small body on a large flat one only `larger_volume`
+// takes the large body's face as the contact surface (case 1 holds it to 0.04 v0). The sum of the
+// mass gradients and the separating plane (`logistic_regression`) both tilt there: the plane
+// separates the small body's corner particles from the flat body's particles in the node's
+// support, and the support cuts the flat face off beside the corner, so the widest separating
+// plane is not the face. Both read the slide as an approach and decelerate the block too fast.
+// If either stops doing so, this test fails and the guidance must change.
+BOOST_AUTO_TEST_CASE(at_a_small_bodys_corner_only_larger_volume_follows_coulombs_law) {
+  BOOST_TEST(worst_slide("mass_gradients") > 0.1);
+  BOOST_TEST(worst_slide("logistic_regression") > 0.1);
+}
 
 BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_block_follows_coulombs_law_and_its_loss_is_heat) {
   const double v0 = 5.0, g = 1.0e5, mu = 0.25;

@@ -6,21 +6,21 @@
 //    mu 1e-4, artificial viscosity, AllowNoTension with melting, create_new_particles) to 5 us at
 //    multiplier 0.2 (84 steps), with each contact: single_velocity; friction (mu 1e-4 as shipped,
 //    and mu 0.3 with the normal larger_volume); approach (mu 0 with mass_gradients, mu 0.3 with
-//    larger_volume). Asserted at every step: every particle stays in the plane z = 0 with zero
-//    hoop velocity v_z, bit for bit; the axial momentum closes, |p_x - p0_x - J_x| < 1e-9 |p0|
-//    (the 3D twin's closure, sphere_cylinder_short_test.cpp; measured 1.3e-15); every sink column
-//    non-decreasing, and at the end the artificial viscosity's work and the eroded energy are
-//    booked (> 0). At the end |energy_error| < 0.04 (the 3D case01's tolerance; measured
-//    -0.0019 to -0.0055). With two fields, particles fail (55-59) and every failed one is
-//    converted (create_new_particles).
-//    Before the normal was 2D, mass_gradient read the nodes k +- 1, which a 2D grid does not
-//    store: their indices are the neighbours along y, so the normal tilted out of the plane and
-//    the corrections gave particles hoop velocities up to 4.2 m/s and moved them off z = 0 at
-//    every step of every multi-field run (at the grid's first and last stored node the index
-//    left the array).
+//    larger_volume; friction mu 0.3 with logistic_regression). Asserted at every step: every
+//    particle stays in the plane z = 0 with zero hoop velocity v_z, bit for bit; the axial momentum
+//    closes, |p_x - p0_x - J_x| < 1e-9 |p0| (the 3D twin's closure, sphere_cylinder_short_test.cpp;
+//    measured 1.3e-15); every sink column non-decreasing, and at the end the artificial viscosity's
+//    work and the eroded energy are booked (> 0). At the end |energy_error| < 0.04 (the 3D case01's
+//    tolerance; measured -0.0019 to -0.0055). With two fields, particles fail (55-59) and every
+//    failed one is converted (create_new_particles). Before the normal was 2D, mass_gradient read
+//    the nodes k +- 1, which a 2D grid does not store: their indices are the neighbours along y, so
+//    the normal tilted out of the plane and the corrections gave particles hoop velocities up
+//    to 4.2 m/s and moved them off z = 0 at every step of every multi-field run (at the grid's
+//    first and last stored node the index left the array).
 // 2. The oblique elastic blocks of contact_blocks.json in plane strain (the 3D blocks' x-y
 //    section, 20 x 12 cells) at 2 x 10 m/s along x and +-5 m/s along y, free faces, 8 us, with
-//    friction (mu 0.3) and approach (mu 0, larger_volume): the momentum in the plane is conserved
+//    friction (mu 0.3, with mass_gradients and with logistic_regression) and approach (mu 0,
+//    larger_volume): the momentum in the plane is conserved
 //    to 1e-12 of one block's |p0| at every step (contact_blocks_test.cpp's bound), p_z is zero
 //    exactly, every particle stays at z = 0 with v_z = 0, and the blocks rebound (the relative
 //    normal velocity ends below -10 m/s, as in 3D).
@@ -188,6 +188,14 @@ BOOST_AUTO_TEST_CASE(plane_strain_friction) {
 
 BOOST_AUTO_TEST_CASE(plane_strain_approach_larger_volume) {
   plane_strain_blocks({{"type", "approach"}, {"mu", 0.0}, {"normal", "larger_volume"}});
+}
+
+BOOST_AUTO_TEST_CASE(axisymmetric_friction_logistic_regression) {
+  axisymmetric_contact({{"type", "friction"}, {"mu", 0.3}, {"normal", "logistic_regression"}});
+}
+
+BOOST_AUTO_TEST_CASE(plane_strain_friction_logistic_regression) {
+  plane_strain_blocks({{"type", "friction"}, {"mu", 0.3}, {"normal", "logistic_regression"}});
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,144 @@
+// The separating planes of `contact.normal = "logistic_regression"` (contact/separating_plane.hpp,
+// Nairn, Hammerquist & Smith 2020): after particles to grid, at every node where exactly two
+// bodies have mass, the particles of both that weigh on it (S_Ip > 0, the step's stencils) are
+// fitted by logistic regression, and the plane's unit normal is stored for contact
+// (Grid::contact_plane). A node shared with another rank's particles (within two node layers of a
+// box boundary: their uGIMP stencils reach it) has only part of its cloud here, and the ranks
+// would fit different planes: there the plane is left out and contact uses the mass gradients,
+// which the node sums make identical on every rank (docs/mpi.md). Per-node lists are sorted by
+// particle index, so the fit is the same bits on any thread count.
+#include <omp.h>
+
+#include <algorithm>
+#include <utility>
+
+#include "mpm/contact/separating_plane.hpp"
+#include "mpm/parallel/halo_exchange.hpp"
+#include "mpm/step/step.hpp"
+
+namespace impact::mpm {
+
+namespace {
+
+// Whether every particle that can weigh on node n is on this rank: n at least two node layers
+// inside the cells [c0, c1) of the rank's box on each side that has a neighbour (a side without
+// one stores the whole grid up to its ghost layer, -1 or cells + 1).
+bool cloud_is_local(const Grid& G, const std::array<int, 3>& n) {
+  const NodeBox stored = G.stored();
+  const int axes = G.spec().planar() ? 2 : 3;
+  for (int d = 0; d < axes; ++d) {
+    if (stored.first[d] > -1 && n[d] < stored.first[d] + kHaloPlanes + 2) return false;
+    if (stored.last[d] < G.cells()[d] + 1 && n[d] > stored.last[d] - kHaloPlanes - 2) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+template <class Shape>
+void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
+  constexpr int N = Shape::N, NZ = Shape::NZ;
+  const int nn = G.node_count();
+  const int nf = G.fields();
+  const int threads = G.threads();
+  if (G.contact_plane.size() != static_cast<std::size_t>(nn))
+    G.contact_plane.assign(nn, Vec3::Zero());
+  auto body_of = [&](int f) {
+    return f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
+  };
+  // 1. The nodes of two bodies: their slot, and the two bodies (lower index first).
+  const std::vector<int>& active = G.active_nodes();
+  std::vector<int> slot(nn, -1);
+  std::vector<int> pair_node;
+  std::vector<std::array<int, 2>> pair_bodies;
+  for (const int I : active) {
+    G.contact_plane[I].setZero();
+    std::array<int, 2> bodies{-1, -1};
+    int count = 0;
+    for (int f = 0; f < nf && count <= 2; ++f) {
+      if (!(G.mass[f * nn + I] > 0.0)) continue;
+      const int b = body_of(f);
+      if (b == bodies[0] || b == bodies[1]) continue;
+      if (count < 2) bodies[count] = b;
+      ++count;
+    }
+    if (count != 2 || !cloud_is_local(G, G.ijk(I))) continue;
+    if (bodies[0] > bodies[1]) std::swap(bodies[0], bodies[1]);
+    slot[I] = static_cast<int>(pair_node.size());
+    pair_node.push_back(I);
+    pair_bodies.push_back(bodies);
+  }
+  const int K = static_cast<int>(pair_node.size());
+  if (K == 0) return;
+  // 2. Each pair node's particles and their weights, as lists (counted, then filled).
+  const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(P.size());
+  const int sx = G.stride_x(), sy = G.stride_y();
+  const auto for_each_pair_node = [&](std::ptrdiff_t p, auto&& visit) {
+    if (!(P.mass[p] > 0.0)) return;
+    const Stencil<N>& s = S[p];
+    const int b = body_of(P.field[p]);
+    const int base = G.index(s.base[0], s.base[1], s.base[2]);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < NZ; ++k) {
+          const double w = s.w[0][i] * s.w[1][j] * s.w[2][k];
+          if (!(w > 0.0)) continue;
+          const int k_slot = slot[base + i * sx + j * sy + k];
+          if (k_slot < 0 || (pair_bodies[k_slot][0] != b && pair_bodies[k_slot][1] != b)) continue;
+          visit(k_slot, w);
+        }
+  };
+  std::vector<int> start(K + 1, 0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t p = 0; p < np; ++p)
+    for_each_pair_node(p, [&](int k, double) {
+#pragma omp atomic
+      ++start[k + 1];
+    });
+  for (int k = 0; k < K; ++k) start[k + 1] += start[k];
+  std::vector<std::pair<int, double>> entries(start[K]);  // (particle, S_Ip)
+  std::vector<int> next(start.begin(), start.end() - 1);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t p = 0; p < np; ++p)
+    for_each_pair_node(p, [&](int k, double w) {
+      int at;
+#pragma omp atomic capture
+      at = next[k]++;
+      entries[at] = {static_cast<int>(p), w};
+    });
+  // 3. The fit per node: w in cells^-1, the normal w / h (w . (x - x_I) / h is the plane),
+  //    pointing from the lower body into the higher.
+  const Vec3 h = G.spacing();
+  const int dims = G.spec().dimensions();
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<PlanePoint> points;
+#pragma omp for schedule(dynamic, 16)
+    for (int k = 0; k < K; ++k) {
+      const auto first = entries.begin() + start[k], last = entries.begin() + start[k + 1];
+      std::sort(first, last);  // by particle: the same sums on any thread count
+      const int I = pair_node[k];
+      const std::array<int, 3> n = G.ijk(I);
+      const Vec3 node = G.lower() + Vec3(n[0] * h(0), n[1] * h(1), n[2] * h(2));
+      points.clear();
+      for (auto e = first; e != last; ++e)
+        points.push_back({(P.x[e->first] - node).cwiseQuotient(h), e->second,
+                          body_of(P.field[e->first]) == pair_bodies[k][1]});
+      const Vec3 normal = separating_plane(points, dims).cwiseQuotient(h);
+      const double length = normal.norm();
+      if (length > 0.0) G.contact_plane[I] = normal / length;
+    }
+  }
+}
+
+// For every shape of the catalogue (mpm/shape/shape.hpp), as particles_to_grid.cpp does.
+namespace {
+template <class... Shapes>
+struct ContactPlanePhases {
+  static constexpr auto functions = std::make_tuple(&fit_contact_planes<Shapes>...);
+};
+[[gnu::used]] const auto kContactPlanesForEveryShape =
+    WithEveryShape<ContactPlanePhases>::functions;
+}  // namespace
+
+}  // namespace impact::mpm
