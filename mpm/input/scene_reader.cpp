@@ -866,6 +866,24 @@ void check_field_count(InputProblems& problems, const Scene& s) {
   problems.add("/materials", m.str());
 }
 
+// Contact separates materials, not objects (a material's particles share one velocity field): two
+// objects of one material meet as one body, as with single_velocity. Valid, and what a scene of
+// one body cut into objects wants, but a user who set friction between them gets no contact.
+void warn_of_contact_within_one_material(Scene& s) {
+  if (s.physics.contact.type != ContactType::friction || s.physics.create_new_particles ||
+      s.objects.size() < 2)
+    return;
+  for (const SceneObject& o : s.objects)
+    if (o.material != s.objects.front().material) return;
+  s.warnings.push_back(
+      "/physics/contact: \"friction\" acts between materials, and every object here is of "
+      "material \"" +
+      s.materials[s.objects.front().material].name +
+      "\": they share one velocity field and meet as one body, as with \"single_velocity\"; "
+      "give each body its own material (the same file under another name) for contact between "
+      "them");
+}
+
 }  // namespace
 
 Json load_scene_document(const std::string& file, ExtendsChain* chain) {
@@ -921,6 +939,7 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   problems.throw_if_any();
   s.warnings.insert(s.warnings.end(), problems.warnings().begin(), problems.warnings().end());
   for (std::string& w : fitted_range_warnings(s)) s.warnings.push_back(std::move(w));
+  warn_of_contact_within_one_material(s);
   return s;
 }
 

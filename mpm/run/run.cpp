@@ -50,6 +50,13 @@ std::string absolute_path(const std::string& file) {
 // Fewer steps than this in a completed run are warned about (above).
 constexpr long kFewSteps = 10;
 
+// The mass of the particles still in play, over every rank (removed particles have none).
+double mass_in_play(const Particles& P, const Communicator* comm) {
+  double mass = 0.0;
+  for (const double m : P.mass) mass += m;
+  return comm ? comm->sum(mass) : mass;
+}
+
 // A scene warning that names a likely unit slip ("... looks like mm ...").
 bool mentions_a_unit_slip(const std::vector<std::string>& warnings) {
   return std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
@@ -193,14 +200,26 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
   wall.restart(resume ? resumed.wall_time : 0.0);
   const long first_step = sim.steps();  // this process's steps: the halo traffic's divisor
   progress.start();
+  const bool removal = scene.grid.outflow == Outflow::remove;
+  bool grid_emptied = false;  // warned once
   std::string status = "completed", message;
   int code = 0;
   try {
     while (!sim.finished()) {
       const double t_before = sim.time();
       outputs.before_step(sim.particles());
-      sim.step();
+      const long removed = sim.step().particles.removed;
       outputs.after_step(sim.particles(), sim.time(), sim.time() - t_before);
+      if (removal && !grid_emptied && (comm ? comm->max(double(removed)) : double(removed)) > 0.0 &&
+          mass_in_play(sim.particles(), comm) == 0.0) {
+        // A valid end (grid.outflow = remove lets bodies go), but what follows is an empty grid.
+        grid_emptied = true;
+        if (root)
+          std::cerr << progress.break_line() << "mpm: warning: every particle has left the grid "
+                    << "(grid.outflow = remove) by step " << sim.steps() << ", t = " << sim.time()
+                    << " s; the run goes on to time.max_time " << scene.time.max_time
+                    << " s with nothing left to move\n";
+      }
       faults.report(sim);
       if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
         write_outputs(true, sim.steps());
