@@ -4,14 +4,26 @@
 // the node (shape weight S_p > 0) is a labelled point: y_p = 1 for one body, 0 for the other, at
 // xi_p = (x_p - x_I) / h (cells from the node). The fit finds w, c of the probability that a point
 // belongs to the second body, sigma(w . xi + c), sigma(z) = 1 / (1 + exp(-z)), by minimising
-//   L(w, c) = sum_p S_p [ln(1 + exp(z_p)) - y_p z_p] + (lambda / 2) |w|^2,   z_p = w . xi_p + c,
+//   L(w, c) = sum_p w_p [ln(1 + exp(z_p)) - y_p z_p] + (lambda / 2) |w|^2,   z_p = w . xi_p + c,
 // and w (pointing into the second body) is the plane's normal in cell units. Two bodies'
 // particles are separable, so without the penalty |w| would grow without bound; lambda =
-// kPlanePenalty sum_p S_p bounds it (the fit is then unique: L is strictly convex) and leaves the
-// direction that of the points near the plane. Newton's method with a backtracking line search
-// converges from w = 0, c = 0 (where the first step is the least-squares plane) in a few steps.
-// Where both bodies occupy the node's support alike (no plane separates them), w is small or zero
-// and the caller falls back to the mass gradients.
+// kPlanePenalty bounds it (the fit is then unique: L is strictly convex) and leaves the direction
+// that of the points near the plane. w_p are the shape weights S_p scaled per body (below).
+// Newton's method with a backtracking line search converges from w = 0, c = 0 (where the first step
+// is the least-squares plane) in a few steps. Each body's weights are scaled so that it weighs 1/2
+// in all (class balance): a body that reaches the node only with its stencils' tails would
+// otherwise leave the fit to the penalty and the normal would point at its centroid. No plane is
+// returned (w = 0: the caller falls back to the mass gradients) where one body holds less than
+// kPlaneLeastShare of the points' shape weight (a tail of 1e-10 tilted the normal by 23 degrees),
+// or where the fit leaves more than kPlaneMixedShare of the balanced weight on the wrong side (the
+// bodies' particles mixed). Departures from Nairn et al. (the paper and the NairnMPM code that
+// implements it): they fit 2 sigma - 1 to labels
+// +-1 by least squares with every particle weighted 1 and a penalty of 1e-7 cell^2, start from a
+// linear regression and stop after 15 iterations; here the cross-entropy (the logistic
+// likelihood) with shape weights, class balance and lambda = 1e-3, Newton from zero (its first
+// step is the least-squares plane) to convergence. Their fit also gives the bodies' separation
+// along n for a displacement contact check, not built here: contact is still detected by
+// approach (contact/contact.hpp).
 #pragma once
 
 #include <span>
@@ -27,8 +39,12 @@ struct PlanePoint {
   bool second = false;  ///< y_p = 1 (the second body), else y_p = 0
 };
 
-/// lambda / sum_p S_p: the penalty on |w|^2 relative to the points' total weight.
+/// lambda: the penalty on |w|^2 (the balanced weights sum to 1).
 inline constexpr double kPlanePenalty = 1e-3;
+/// A body with less than this share of the points' shape weight gets no plane fitted.
+inline constexpr double kPlaneLeastShare = 1e-5;
+/// A fit with more than this share of the balanced weight on the wrong side is no plane.
+inline constexpr double kPlaneMixedShare = 0.1;
 
 /// The fitted w (cells^-1; zero when no plane is found: one body only, or no weight). `dims` = 2
 /// fits in the (x, y) plane only (a 2D grid: xi_z is ignored and w_z = 0).

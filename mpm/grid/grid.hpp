@@ -235,6 +235,9 @@ class Grid {
   /// normal of the plane separating the node's two bodies, from the body of lower index into the
   /// other; zero where none was fitted (step/contact_planes.cpp) and contact uses the gradients.
   std::vector<Vec3> contact_plane;
+  /// Scratch of step/contact_planes.cpp, per node: -1, or the node's place among the step's
+  /// two-body nodes (reset after each use, so a step touches only its active nodes).
+  std::vector<int> contact_plane_slot;
   /// v*_I - v_I before the face conditions at the boundary nodes (field-major, boundary_nodes()
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;

@@ -14,6 +14,7 @@
 
 #include "mpm/contact/separating_plane.hpp"
 #include "mpm/parallel/halo_exchange.hpp"
+#include "mpm/parallel/slab_decomposition.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
@@ -21,8 +22,11 @@ namespace impact::mpm {
 namespace {
 
 // Whether every particle that can weigh on node n is on this rank: n at least two node layers
-// inside the cells [c0, c1) of the rank's box on each side that has a neighbour (a side without
-// one stores the whole grid up to its ghost layer, -1 or cells + 1).
+// inside the cells [c0, c1) of the rank's box on each side that has a neighbour (a neighbour's
+// uGIMP particles reach its node c0 + 1 at most). A side without one stores the whole grid up to
+// its ghost layer, -1 or cells + 1; a side with one stores from c0 - kHaloPlanes >= 0, as every
+// box has at least SlabDecomposition::kMinCells >= kHaloPlanes cells.
+static_assert(SlabDecomposition::kMinCells >= kHaloPlanes);
 bool cloud_is_local(const Grid& G, const std::array<int, 3>& n) {
   const NodeBox stored = G.stored();
   const int axes = G.spec().planar() ? 2 : 3;
@@ -41,14 +45,16 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   const int nn = G.node_count();
   const int nf = G.fields();
   const int threads = G.threads();
-  if (G.contact_plane.size() != static_cast<std::size_t>(nn))
+  if (G.contact_plane.size() != static_cast<std::size_t>(nn)) {
     G.contact_plane.assign(nn, Vec3::Zero());
+    G.contact_plane_slot.assign(nn, -1);
+  }
   auto body_of = [&](int f) {
     return f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
   };
   // 1. The nodes of two bodies: their slot, and the two bodies (lower index first).
   const std::vector<int>& active = G.active_nodes();
-  std::vector<int> slot(nn, -1);
+  std::vector<int>& slot = G.contact_plane_slot;  // all -1 between steps
   std::vector<int> pair_node;
   std::vector<std::array<int, 2>> pair_bodies;
   for (const int I : active) {
@@ -70,6 +76,13 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   }
   const int K = static_cast<int>(pair_node.size());
   if (K == 0) return;
+  struct ResetSlots {  // on every way out
+    std::vector<int>& slot;
+    const std::vector<int>& nodes;
+    ~ResetSlots() {
+      for (const int I : nodes) slot[I] = -1;
+    }
+  } reset{slot, pair_node};
   // 2. Each pair node's particles and their weights, as lists (counted, then filled).
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(P.size());
   const int sx = G.stride_x(), sy = G.stride_y();

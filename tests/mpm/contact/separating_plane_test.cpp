@@ -3,7 +3,7 @@
 // derived values:
 //   two points   xi = -+a e_x, weight 1 each, labels 0 and 1: by symmetry c = 0 and w = w e_x,
 //                and dL/dw = 0 reads lambda w = 2 a sigma(-a w), lambda = kPlanePenalty * 2. Its
-//                root by bisection (a = 0.5: w = 10.69...) matches to 1e-9 relative.
+//                root by bisection (a = 0.5: w = 8.19...) matches to 1e-9 relative.
 //   mirror       a cloud and its mirror image about the plane x = 0.2 with the labels swapped:
 //                the plane is x = 0.2 exactly, w along x (|w_y|, |w_z| < 1e-12 |w|) and
 //                c / w_x = -0.2 to 1e-9.
