@@ -15,11 +15,12 @@
 //               (docs/mpm.md#velocity-fields-and-contact-physicscontact-contact).
 //               `logistic_regression`, for a pair: the normal of the plane that separates the
 //               two bodies' particles weighing on the node (Nairn, Hammerquist & Smith 2020;
-//               contact/separating_plane.hpp, fitted each step by step/contact_planes.cpp): like
-//               the sum right where two equal bodies' edges meet, and like it tilted at a small
-//               body's corner on a large flat one (the node's support cuts the flat face off
-//               beside the corner); the sum where no plane was fitted (three or more bodies, a
-//               node another rank's particles reach, mixed particles) and within a body.
+//               contact/separating_plane.hpp, fitted each step by step/contact_planes.cpp to
+//               the particles within about two cells): right where two equal bodies' edges meet,
+//               close at a small body's corner on a large flat one, and the only normal that lets
+//               a pressed interface off the grid's axes slide (a block on a ramp); the sum where
+//               no plane was fitted (three or more bodies, a node another rank's particles reach,
+//               mixed particles) and within a body.
 //   detection   approaching, u_n = (v_f - v_cm) . n_f > 0. Bodies pressed together meet it at
 //               every step (the compressed material pushes its nodes outward), so the friction
 //               they transmit is bounded by the normal impulse of the step: a block resting on

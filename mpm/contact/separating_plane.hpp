@@ -1,28 +1,29 @@
 // The plane that separates two bodies' particles near a node, by logistic regression (Nairn,
 // Hammerquist & Smith 2020, CMAME 362:112859, sec. 3): the contact normal of
-// `contact.normal = "logistic_regression"` (contact/contact.hpp). Each particle p that weighs on
-// the node (shape weight S_p > 0) is a labelled point: y_p = 1 for one body, 0 for the other, at
-// xi_p = (x_p - x_I) / h (cells from the node). The fit finds w, c of the probability that a point
-// belongs to the second body, sigma(w . xi + c), sigma(z) = 1 / (1 + exp(-z)), by minimising
+// `contact.normal = "logistic_regression"` (contact/contact.hpp). Each particle p of the node's
+// cloud (step/contact_planes.cpp: within about two cells, tent weight > 0) is a labelled point:
+// y_p = 1 for one body, 0 for the other, at xi_p = (x_p - x_I) / h (cells from the node). The fit
+// finds w, c of the probability that a point belongs to the second body, sigma(w . xi + c),
+// sigma(z) = 1 / (1 + exp(-z)), by minimising
 //   L(w, c) = sum_p w_p [ln(1 + exp(z_p)) - y_p z_p] + (lambda / 2) |w|^2,   z_p = w . xi_p + c,
 // and w (pointing into the second body) is the plane's normal in cell units. Two bodies'
 // particles are separable, so without the penalty |w| would grow without bound; lambda =
 // kPlanePenalty bounds it (the fit is then unique: L is strictly convex) and leaves the direction
-// that of the points near the plane. w_p are the shape weights S_p scaled per body (below).
+// that of the points near the plane. w_p are the cloud's tent weights scaled per body (below).
 // Newton's method with a backtracking line search converges from w = 0, c = 0 (where the first step
 // is the least-squares plane) in a few steps. Each body's weights are scaled so that it weighs 1/2
 // in all (class balance): a body that reaches the node only with its stencils' tails would
 // otherwise leave the fit to the penalty and the normal would point at its centroid. No plane is
 // returned (w = 0: the caller falls back to the mass gradients) where one body holds less than
-// kPlaneLeastShare of the points' shape weight (a tail of 1e-10 tilted the normal by 23 degrees),
+// kPlaneLeastShare of the points' weight (a tail of 1e-10 tilted the normal by 23 degrees),
 // or where the fit leaves more than kPlaneMixedShare of the balanced weight on the wrong side (the
 // bodies' particles mixed). Departures from Nairn et al. (the paper and the NairnMPM code that
 // implements it): they fit 2 sigma - 1 to labels
 // +-1 by least squares with every particle weighted 1 and a penalty of 1e-7 cell^2, start from a
 // linear regression and stop after 15 iterations; here the cross-entropy (the logistic
-// likelihood) with shape weights, class balance and lambda = 1e-3, Newton from zero (its first
-// step is the least-squares plane) to convergence. Their fit also gives the bodies' separation
-// along n for a displacement contact check, not built here: contact is still detected by
+// likelihood) with tent weights over a wider cloud, class balance and lambda = 1e-3, Newton from
+// zero (its first step is the least-squares plane) to convergence. Their fit also gives the bodies'
+// separation along n for a displacement contact check, not built here: contact is still detected by
 // approach (contact/contact.hpp).
 #pragma once
 
@@ -32,7 +33,7 @@
 
 namespace impact::mpm {
 
-/// One particle in the fit: its offset from the node in cells, its shape weight and its body.
+/// One particle in the fit: its offset from the node in cells, its weight and its body.
 struct PlanePoint {
   Vec3 xi;
   double weight = 0.0;
