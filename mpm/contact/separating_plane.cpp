@@ -11,14 +11,9 @@ namespace {
 using Vec4 = Eigen::Vector4d;
 using Mat4 = Eigen::Matrix4d;
 
-// ln(1 + exp(z)) without overflow, and sigma(z).
+// ln(1 + exp(z)) without overflow.
 double softplus(double z) {
   return z > 0.0 ? z + std::log1p(std::exp(-z)) : std::log1p(std::exp(z));
-}
-double sigmoid(double z) {
-  if (z >= 0.0) return 1.0 / (1.0 + std::exp(-z));
-  const double e = std::exp(z);
-  return e / (1.0 + e);
 }
 
 // theta = (w_x, w_y, w_z, c); a 2D fit keeps w_z = 0 (its row and column are the identity).
@@ -66,10 +61,14 @@ Vec3 separating_plane(std::span<const PlanePoint> points, int dims) {
     for (const PlanePoint& p : points) {
       const Vec4 f = features(p, dims);
       const double z = theta.dot(f);
+      // sigma(z) = 1 / (1 + exp(-z)) and sigma(-z) from one exponential, without overflow.
+      const double e = std::exp(-std::abs(z));
+      const double s_up = 1.0 / (1.0 + e), s_down = e / (1.0 + e);  // sigma(|z|), sigma(-|z|)
+      const double s_plus = z >= 0.0 ? s_up : s_down, s_minus = z >= 0.0 ? s_down : s_up;
       // dL/dz = -sigma(-s) ds/dz, d2L/dz2 = sigma(z) sigma(-z), s = +-z the point's own side.
-      const double wrong = sigmoid(-side(p, z));  // the probability of the other body
+      const double wrong = p.second ? s_minus : s_plus;  // the probability of the other body
       gradient -= weight(p) * wrong * (p.second ? 1.0 : -1.0) * f;
-      hessian += weight(p) * sigmoid(z) * sigmoid(-z) * f * f.transpose();
+      hessian += weight(p) * s_plus * s_minus * f * f.transpose();
     }
     for (int d = 0; d < 3; ++d) {
       gradient(d) += lambda * theta(d);

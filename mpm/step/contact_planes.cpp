@@ -106,17 +106,16 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j)
         for (int k = 0; k < NZ; ++k) {
-          const double w = s.w[0][i] * s.w[1][j] * s.w[2][k];
-          if (!(w > 0.0)) continue;
+          if (!(s.w[0][i] * s.w[1][j] * s.w[2][k] > 0.0)) continue;
           const int k_slot = slot[base + i * sx + j * sy + k];
           if (k_slot < 0 || (pair_bodies[k_slot][0] != b && pair_bodies[k_slot][1] != b)) continue;
-          visit(k_slot, w);
+          visit(k_slot);
         }
   };
   std::vector<int> start(K + 1, 0);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t p = 0; p < np; ++p)
-    for_each_pair_node(p, [&](int k, double) {
+    for_each_pair_node(p, [&](int k) {
 #pragma omp atomic
       ++start[k + 1];
     });
@@ -125,7 +124,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   std::vector<int> next(start.begin(), start.end() - 1);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t p = 0; p < np; ++p)
-    for_each_pair_node(p, [&](int k, double) {
+    for_each_pair_node(p, [&](int k) {
       int at;
 #pragma omp atomic capture
       at = next[k]++;
@@ -135,6 +134,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   //    pointing from the lower body into the higher.
   const Vec3 h = G.spacing();
   const int dims = G.spec().dimensions();
+  const NodeBox stored = G.stored();
 #pragma omp parallel num_threads(threads)
   {
     std::vector<PlanePoint> points;
@@ -147,7 +147,6 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
       // The cloud: the two bodies' particles in the lists of this node and of its neighbours
       // that are two-body nodes too, weighted by a tent of kPlaneReach cells about this node.
       cloud.clear();
-      const NodeBox stored = G.stored();
       const int kz = dims == 3 ? 1 : 0;
       for (int a = -1; a <= 1; ++a)
         for (int b = -1; b <= 1; ++b)
