@@ -139,6 +139,9 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   {
     std::vector<PlanePoint> points;
     std::vector<int> cloud;
+    // The last node (k + 1) whose cloud took each particle: each is taken once, so that only the
+    // cloud itself is sorted, not the up to 27 lists' copies of it.
+    std::vector<int> taken(P.size(), 0);
 #pragma omp for schedule(dynamic, 16)
     for (int k = 0; k < K; ++k) {
       const int I = pair_node[k];
@@ -159,12 +162,14 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
             const int kj = slot[G.index(m[0], m[1], m[2])];
             if (kj < 0) continue;
             for (auto e = entries.begin() + start[kj]; e != entries.begin() + start[kj + 1]; ++e) {
+              if (taken[*e] == k + 1) continue;
               const int body = body_of(P.field[*e]);
-              if (body == pair_bodies[k][0] || body == pair_bodies[k][1]) cloud.push_back(*e);
+              if (body != pair_bodies[k][0] && body != pair_bodies[k][1]) continue;
+              taken[*e] = k + 1;
+              cloud.push_back(*e);
             }
           }
       std::sort(cloud.begin(), cloud.end());  // by particle: the same sums on any thread count
-      cloud.erase(std::unique(cloud.begin(), cloud.end()), cloud.end());
       points.clear();
       for (const int p : cloud) {
         const Vec3 xi = (P.x[p] - node).cwiseQuotient(h);
