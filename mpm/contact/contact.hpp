@@ -19,8 +19,7 @@
 //               the particles within about two cells): right where two equal bodies' edges meet,
 //               close at a small body's corner on a large flat one, and the only normal that lets
 //               a pressed interface off the grid's axes slide (a block on a ramp); the sum where
-//               no plane was fitted (three or more bodies, a node another rank's particles reach,
-//               mixed particles) and within a body.
+//               no plane was fitted (three or more bodies, mixed particles) and within a body.
 //   detection   approaching, u_n = (v_f - v_cm) . n_f > 0. Bodies pressed together meet it at
 //               every step (the compressed material pushes its nodes outward), so the friction
 //               they transmit is bounded by the normal impulse of the step: a block resting on

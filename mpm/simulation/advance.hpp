@@ -54,7 +54,7 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   order_for_scatter(S, G, order);  // by band and colour: race-free scatters, any thread count
   particles_to_grid<Shape>(P, G, S, order, dt, run.halo);  // m_I, p_I, f_I per field (eqs. 20-22)
   if (run.contact && run.contact->normal == ContactNormal::logistic_regression && G.fields() > 1)
-    fit_contact_planes<Shape>(P, G, S);  // the planes between two bodies' particles (Nairn 2020)
+    fit_contact_planes<Shape>(P, G, shape, S, run.halo);  // the planes between bodies (Nairn 2020)
   clock.lap(&PhaseTimes::particles_to_grid);
   t.grid = grid_update(G, dt, run.solver.gravity, usl, run.contact);  // v*_I, contact, faces (24)
   clock.lap(&PhaseTimes::grid_update);

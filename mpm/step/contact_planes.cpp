@@ -9,23 +9,36 @@
 // pressed interface whose nodes hold different normals holds every direction, and a block on a
 // 20-degree ramp of another body did not slide at all (0.008 m/s against 1.71 m/s in 50 us; 1.35
 // m/s with the wider cloud, 1.705 on the same ramp turned grid-aligned;
-// tests/mpm/verification/contact_friction_test.cpp). A node shared with another rank's particles
-// (within two node layers of a box boundary: their uGIMP stencils reach it) has only part of its
-// cloud here, and the ranks would fit different planes: there no plane is fitted and contact uses
-// the mass gradients, which the node sums make identical on every rank (docs/mpi.md). Each cloud
-// is sorted by particle index, so the fit is the same bits on any thread count.
+// tests/mpm/verification/contact_friction_test.cpp). Each cloud is sorted by particle (its seed
+// id), so the fit is the same bits on any thread count. On several ranks a node near a box
+// boundary has particles of the neighbouring ranks in its cloud: before the fit every rank sends
+// the others its particles within kPlaneGhostCells cells of their boxes (position, seed id, object
+// and field: the ghosts), and fits every node its own particles weigh on, the cells [c0, c1) of its
+// box widened by one node layer, from its particles and the ghosts. A node two ranks both fit has
+// the same cloud, in the same order, on both: the same plane, the same contact, as on one rank.
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include "mpm/contact/separating_plane.hpp"
+#include "mpm/parallel/box_decomposition.hpp"
+#include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/halo_exchange.hpp"
-#include "mpm/parallel/slab_decomposition.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
+
+// Another rank's particle, as a cloud needs it (named: a member of the fit's lambdas).
+struct PlaneGhost {
+  Vec3 x;
+  std::uint64_t id;
+  std::uint16_t object;
+  std::uint16_t field;
+};
 
 namespace {
 
@@ -33,26 +46,57 @@ namespace {
 // 1 + l_p (<= 1.5) cells beyond it, so the cloud reaches about 2.25 cells.
 constexpr double kPlaneReach = 2.25;
 
-// Whether every particle that can weigh on node n is on this rank: n at least two node layers
-// inside the cells [c0, c1) of the rank's box on each side that has a neighbour (a neighbour's
-// uGIMP particles reach its node c0 + 1 at most). A side without one stores the whole grid up to
-// its ghost layer, -1 or cells + 1; a side with one stores from c0 - kHaloPlanes >= 0, as every
-// box has at least SlabDecomposition::kMinCells >= kHaloPlanes cells.
-static_assert(SlabDecomposition::kMinCells >= kHaloPlanes);
-bool cloud_is_local(const Grid& G, const std::array<int, 3>& n) {
-  const NodeBox stored = G.stored();
-  const int axes = G.spec().planar() ? 2 : 3;
-  for (int d = 0; d < axes; ++d) {
-    if (stored.first[d] > -1 && n[d] < stored.first[d] + kHaloPlanes + 2) return false;
-    if (stored.last[d] < G.cells()[d] + 1 && n[d] > stored.last[d] - kHaloPlanes - 2) return false;
+// The ghosts a rank receives: the other ranks' particles in the cells [c0 - kPlaneGhostCells, c1 +
+// kPlaneGhostCells) of its box. A node it fits lies within one node layer of its cells, and the
+// cloud's tent reaches kPlaneReach = 2.25 cells beyond that node: 3.25 cells beyond the box, in
+// its fourth cell.
+constexpr int kPlaneGhostCells = 4;
+static_assert(kPlaneGhostCells > kPlaneReach + 1.0);
+// The neighbours of a fitted node (one layer further) must be stored: their two-body status comes
+// from the node sums and the contact layer copied beyond them (halo_exchange.hpp).
+static_assert(kHaloPlanes >= 2);
+
+std::vector<PlaneGhost> exchange_ghosts(const Particles& P, const Grid& G,
+                                        const HaloExchange& halo) {
+  const Communicator& comm = halo.comm();
+  const BoxDecomposition& boxes = halo.boxes();
+  const GridSpec& grid = G.spec();
+  std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
+  for (int r = 0; r < comm.size(); ++r) {
+    if (r == comm.rank()) continue;
+    std::array<int, 3> lo = boxes.first_cell(r), hi = boxes.end_cell(r);
+    for (int d = 0; d < 3; ++d) {
+      lo[d] -= kPlaneGhostCells;
+      hi[d] += kPlaneGhostCells;
+    }
+    std::vector<char>& bytes = to[static_cast<std::size_t>(r)];
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      if (!(P.mass[p] > 0.0)) continue;
+      const std::array<int, 3> c = grid.cell_of(P.x[p]);
+      bool near = true;
+      for (int d = 0; d < 3; ++d) near = near && c[d] >= lo[d] && c[d] < hi[d];
+      if (!near) continue;
+      const PlaneGhost g{P.x[p], P.id.empty() ? p : P.id[p], P.object[p], P.field[p]};
+      const std::size_t at = bytes.size();
+      bytes.resize(at + sizeof(PlaneGhost));
+      std::memcpy(bytes.data() + at, &g, sizeof(PlaneGhost));
+    }
   }
-  return true;
+  std::vector<PlaneGhost> ghosts;
+  for (const std::vector<char>& bytes : comm.all_to_all(to)) {
+    const std::size_t n = bytes.size() / sizeof(PlaneGhost);
+    const std::size_t at = ghosts.size();
+    ghosts.resize(at + n);
+    std::memcpy(static_cast<void*>(ghosts.data() + at), bytes.data(), n * sizeof(PlaneGhost));
+  }
+  return ghosts;
 }
 
 }  // namespace
 
 template <class Shape>
-void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
+void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const Stencils<Shape>& S,
+                        const HaloExchange* halo) {
   constexpr int N = Shape::N, NZ = Shape::NZ;
   const int nn = G.node_count();
   const int nf = G.fields();
@@ -63,6 +107,27 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
   }
   auto body_of = [&](int f) {
     return f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
+  };
+  // 0. The other ranks' particles near this rank's box, and the nodes this rank fits: those its
+  //    particles weigh on (all on one rank).
+  const std::vector<PlaneGhost> ghosts =
+      halo ? exchange_ghosts(P, G, *halo) : std::vector<PlaneGhost>();
+  std::array<int, 3> fit_first{-1, -1, -1}, fit_last{1 << 30, 1 << 30, 1 << 30};
+  if (halo) {
+    fit_first = halo->boxes().first_cell(halo->comm().rank());
+    fit_last = halo->boxes().end_cell(halo->comm().rank());
+    for (int d = 0; d < 3; ++d) {
+      fit_first[d] -= 1;
+      fit_last[d] += 1;
+    }
+  }
+  // Within `layers` node layers of the fitted nodes. The clouds read the lists of the fitted
+  // nodes' neighbours too: those are listed, one layer further.
+  const auto within = [&](const std::array<int, 3>& n, int layers) {
+    const int axes = G.spec().planar() ? 2 : 3;
+    for (int d = 0; d < axes; ++d)
+      if (n[d] < fit_first[d] - layers || n[d] > fit_last[d] + layers) return false;
+    return true;
   };
   // 1. The nodes of two bodies: their slot, and the two bodies (lower index first).
   const std::vector<int>& active = G.active_nodes();
@@ -80,7 +145,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
       if (count < 2) bodies[count] = b;
       ++count;
     }
-    if (count != 2 || !cloud_is_local(G, G.ijk(I))) continue;
+    if (count != 2 || !within(G.ijk(I), 1)) continue;
     if (bodies[0] > bodies[1]) std::swap(bodies[0], bodies[1]);
     slot[I] = static_cast<int>(pair_node.size());
     pair_node.push_back(I);
@@ -95,57 +160,80 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
       for (const int I : nodes) slot[I] = -1;
     }
   } reset{slot, pair_node};
-  // 2. Each pair node's particles, as lists (counted, then filled).
+  // 2. Each pair node's particles, as lists (counted, then filled): index q < np a particle of
+  //    this rank, q >= np the ghost q - np (its stencil computed here; only the nodes this rank
+  //    stores are visited).
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(P.size());
-  const int sx = G.stride_x(), sy = G.stride_y();
-  const auto for_each_pair_node = [&](std::ptrdiff_t p, auto&& visit) {
-    if (!(P.mass[p] > 0.0)) return;
-    const Stencil<N>& s = S[p];
-    const int b = body_of(P.field[p]);
-    const int base = G.index(s.base[0], s.base[1], s.base[2]);
+  const std::ptrdiff_t nq = np + static_cast<std::ptrdiff_t>(ghosts.size());
+  Stencils<Shape> ghost_stencils(ghosts.size());
+  for (std::size_t g = 0; g < ghosts.size(); ++g)
+    ghost_stencils[g] = shape.at(ghosts[g].x, ghosts[g].object);
+  const auto field_of = [&](std::ptrdiff_t q) {
+    return q < np ? int(P.field[q]) : int(ghosts[std::size_t(q - np)].field);
+  };
+  const auto position = [&](std::ptrdiff_t q) -> const Vec3& {
+    return q < np ? P.x[q] : ghosts[std::size_t(q - np)].x;
+  };
+  const auto seed_id = [&](std::ptrdiff_t q) -> std::uint64_t {
+    if (q >= np) return ghosts[std::size_t(q - np)].id;
+    return P.id.empty() ? std::uint64_t(q) : P.id[q];
+  };
+  const NodeBox stored = G.stored();
+  const auto for_each_pair_node = [&](std::ptrdiff_t q, auto&& visit) {
+    const bool ghost = q >= np;
+    if (!ghost && !(P.mass[q] > 0.0)) return;
+    const Stencil<N>& s = ghost ? ghost_stencils[std::size_t(q - np)] : S[q];
+    const int b = body_of(field_of(q));
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j)
         for (int k = 0; k < NZ; ++k) {
           if (!(s.w[0][i] * s.w[1][j] * s.w[2][k] > 0.0)) continue;
-          const int k_slot = slot[base + i * sx + j * sy + k];
+          const std::array<int, 3> m{s.base[0] + i, s.base[1] + j, s.base[2] + k};
+          if (ghost) {  // a ghost's stencil may reach beyond the stored nodes
+            bool inside = true;
+            for (int d = 0; d < 3; ++d)
+              inside = inside && m[d] >= stored.first[d] && m[d] <= stored.last[d];
+            if (!inside) continue;
+          }
+          const int k_slot = slot[G.index(m[0], m[1], m[2])];
           if (k_slot < 0 || (pair_bodies[k_slot][0] != b && pair_bodies[k_slot][1] != b)) continue;
           visit(k_slot);
         }
   };
   std::vector<int> start(K + 1, 0);
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::ptrdiff_t p = 0; p < np; ++p)
-    for_each_pair_node(p, [&](int k) {
+  for (std::ptrdiff_t q = 0; q < nq; ++q)
+    for_each_pair_node(q, [&](int k) {
 #pragma omp atomic
       ++start[k + 1];
     });
   for (int k = 0; k < K; ++k) start[k + 1] += start[k];
-  std::vector<int> entries(start[K]);  // particles
+  std::vector<int> entries(start[K]);  // particles and ghosts (q)
   std::vector<int> next(start.begin(), start.end() - 1);
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::ptrdiff_t p = 0; p < np; ++p)
-    for_each_pair_node(p, [&](int k) {
+  for (std::ptrdiff_t q = 0; q < nq; ++q)
+    for_each_pair_node(q, [&](int k) {
       int at;
 #pragma omp atomic capture
       at = next[k]++;
-      entries[at] = static_cast<int>(p);
+      entries[at] = static_cast<int>(q);
     });
   // 3. The fit per node: w in cells^-1, the normal w / h (w . (x - x_I) / h is the plane),
   //    pointing from the lower body into the higher.
   const Vec3 h = G.spacing();
   const int dims = G.spec().dimensions();
-  const NodeBox stored = G.stored();
 #pragma omp parallel num_threads(threads)
   {
     std::vector<PlanePoint> points;
     std::vector<int> cloud;
     // The last node (k + 1) whose cloud took each particle: each is taken once, so that only the
     // cloud itself is sorted, not the up to 27 lists' copies of it.
-    std::vector<int> taken(P.size(), 0);
+    std::vector<int> taken(static_cast<std::size_t>(nq), 0);
 #pragma omp for schedule(dynamic, 16)
     for (int k = 0; k < K; ++k) {
       const int I = pair_node[k];
       const std::array<int, 3> n = G.ijk(I);
+      if (!within(n, 0)) continue;  // listed only: no particle of this rank weighs on it
       const Vec3 node = G.lower() + Vec3(n[0] * h(0), n[1] * h(1), n[2] * h(2));
       // The cloud: the two bodies' particles in the lists of this node and of its neighbours
       // that are two-body nodes too, weighted by a tent of kPlaneReach cells about this node.
@@ -163,19 +251,20 @@ void fit_contact_planes(const Particles& P, Grid& G, const Stencils<Shape>& S) {
             if (kj < 0) continue;
             for (auto e = entries.begin() + start[kj]; e != entries.begin() + start[kj + 1]; ++e) {
               if (taken[*e] == k + 1) continue;
-              const int body = body_of(P.field[*e]);
+              const int body = body_of(field_of(*e));
               if (body != pair_bodies[k][0] && body != pair_bodies[k][1]) continue;
               taken[*e] = k + 1;
               cloud.push_back(*e);
             }
           }
-      std::sort(cloud.begin(), cloud.end());  // by particle: the same sums on any thread count
+      // By seed id: the same sums on any thread count, and on every rank that fits this node.
+      std::sort(cloud.begin(), cloud.end(), [&](int a, int b) { return seed_id(a) < seed_id(b); });
       points.clear();
       for (const int p : cloud) {
-        const Vec3 xi = (P.x[p] - node).cwiseQuotient(h);
+        const Vec3 xi = (position(p) - node).cwiseQuotient(h);
         double weight = 1.0;
         for (int d = 0; d < dims; ++d) weight *= std::max(0.0, 1.0 - std::abs(xi(d)) / kPlaneReach);
-        if (weight > 0.0) points.push_back({xi, weight, body_of(P.field[p]) == pair_bodies[k][1]});
+        if (weight > 0.0) points.push_back({xi, weight, body_of(field_of(p)) == pair_bodies[k][1]});
       }
       const Vec3 normal = separating_plane(points, dims).cwiseQuotient(h);
       const double length = normal.norm();
