@@ -28,6 +28,7 @@
 #include "mpm/parallel/box_decomposition.hpp"
 #include "mpm/parallel/communicator.hpp"
 #include "mpm/parallel/halo_exchange.hpp"
+#include "mpm/parallel/slab_decomposition.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
@@ -62,25 +63,36 @@ std::vector<PlaneGhost> exchange_ghosts(const Particles& P, const Grid& G,
   const BoxDecomposition& boxes = halo.boxes();
   const GridSpec& grid = G.spec();
   std::vector<std::vector<char>> to(static_cast<std::size_t>(comm.size()));
-  for (int r = 0; r < comm.size(); ++r) {
-    if (r == comm.rank()) continue;
-    std::array<int, 3> lo = boxes.first_cell(r), hi = boxes.end_cell(r);
+  // Per particle, the boxes whose cells widened by kPlaneGhostCells hold its cell: along each
+  // axis the slabs within reach (one or two, a few where slabs are thin), then their product.
+  std::array<std::vector<int>, 3> slabs;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (!(P.mass[p] > 0.0)) continue;
+    const std::array<int, 3> c = grid.cell_of(P.x[p]);
     for (int d = 0; d < 3; ++d) {
-      lo[d] -= kPlaneGhostCells;
-      hi[d] += kPlaneGhostCells;
+      const SlabDecomposition& axis = boxes.axis(d);
+      slabs[d].clear();
+      for (int a = 0; a < axis.ranks(); ++a)
+        if (c[d] >= axis.first_cell(a) - kPlaneGhostCells &&
+            c[d] < axis.first_cell(a + 1) + kPlaneGhostCells)
+          slabs[d].push_back(a);
     }
-    std::vector<char>& bytes = to[static_cast<std::size_t>(r)];
-    for (std::size_t p = 0; p < P.size(); ++p) {
-      if (!(P.mass[p] > 0.0)) continue;
-      const std::array<int, 3> c = grid.cell_of(P.x[p]);
-      bool near = true;
-      for (int d = 0; d < 3; ++d) near = near && c[d] >= lo[d] && c[d] < hi[d];
-      if (!near) continue;
-      const PlaneGhost g{P.x[p], P.id.empty() ? p : P.id[p], P.object[p], P.field[p]};
-      const std::size_t at = bytes.size();
-      bytes.resize(at + sizeof(PlaneGhost));
-      std::memcpy(bytes.data() + at, &g, sizeof(PlaneGhost));
-    }
+    PlaneGhost g;
+    std::memset(static_cast<void*>(&g), 0, sizeof g);  // no stray padding bytes on the wire
+    g.x = P.x[p];
+    g.id = P.id.empty() ? p : P.id[p];
+    g.object = P.object[p];
+    g.field = P.field[p];
+    for (const int a : slabs[0])
+      for (const int b : slabs[1])
+        for (const int k : slabs[2]) {
+          const int r = boxes.rank_at({a, b, k});
+          if (r == comm.rank()) continue;
+          std::vector<char>& bytes = to[static_cast<std::size_t>(r)];
+          const std::size_t at = bytes.size();
+          bytes.resize(at + sizeof(PlaneGhost));
+          std::memcpy(bytes.data() + at, &g, sizeof(PlaneGhost));
+        }
   }
   std::vector<PlaneGhost> ghosts;
   for (const std::vector<char>& bytes : comm.all_to_all(to)) {
@@ -218,6 +230,12 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
       at = next[k]++;
       entries[at] = static_cast<int>(q);
     });
+  // The particles and ghosts some list holds, numbered compactly for the stamps below (the
+  // numbering does not enter the fit).
+  std::vector<int> compact(static_cast<std::size_t>(nq), -1);
+  int listed = 0;
+  for (const int q : entries)
+    if (compact[q] < 0) compact[q] = listed++;
   // 3. The fit per node: w in cells^-1, the normal w / h (w . (x - x_I) / h is the plane),
   //    pointing from the lower body into the higher.
   const Vec3 h = G.spacing();
@@ -226,9 +244,9 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
   {
     std::vector<PlanePoint> points;
     std::vector<int> cloud;
-    // The last node (k + 1) whose cloud took each particle: each is taken once, so that only the
-    // cloud itself is sorted, not the up to 27 lists' copies of it.
-    std::vector<int> taken(static_cast<std::size_t>(nq), 0);
+    // The last node (k + 1) whose cloud took each listed particle (compact number): each is taken
+    // once, so that only the cloud itself is sorted, not the up to 27 lists' copies of it.
+    std::vector<int> taken(static_cast<std::size_t>(listed), 0);
 #pragma omp for schedule(dynamic, 16)
     for (int k = 0; k < K; ++k) {
       const int I = pair_node[k];
@@ -250,10 +268,10 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
             const int kj = slot[G.index(m[0], m[1], m[2])];
             if (kj < 0) continue;
             for (auto e = entries.begin() + start[kj]; e != entries.begin() + start[kj + 1]; ++e) {
-              if (taken[*e] == k + 1) continue;
+              if (taken[compact[*e]] == k + 1) continue;
               const int body = body_of(field_of(*e));
               if (body != pair_bodies[k][0] && body != pair_bodies[k][1]) continue;
-              taken[*e] = k + 1;
+              taken[compact[*e]] = k + 1;
               cloud.push_back(*e);
             }
           }
