@@ -191,11 +191,15 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
     return P.id.empty() ? std::uint64_t(q) : P.id[q];
   };
   const NodeBox stored = G.stored();
+  const int sx = G.stride_x(), sy = G.stride_y();
   const auto for_each_pair_node = [&](std::ptrdiff_t q, auto&& visit) {
     const bool ghost = q >= np;
     if (!ghost && !(P.mass[q] > 0.0)) return;
     const Stencil<N>& s = ghost ? ghost_stencils[std::size_t(q - np)] : S[q];
     const int b = body_of(field_of(q));
+    // Grid::index is linear in (i, j, k), also for a ghost's base outside the stored box: the
+    // nodes are base + strides, computed only once they are found inside.
+    const int base = G.index(s.base[0], s.base[1], s.base[2]);
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j)
         for (int k = 0; k < NZ; ++k) {
@@ -207,7 +211,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
               inside = inside && m[d] >= stored.first[d] && m[d] <= stored.last[d];
             if (!inside) continue;
           }
-          const int k_slot = slot[G.index(m[0], m[1], m[2])];
+          const int k_slot = slot[base + i * sx + j * sy + k];
           if (k_slot < 0 || (pair_bodies[k_slot][0] != b && pair_bodies[k_slot][1] != b)) continue;
           visit(k_slot);
         }
