@@ -52,6 +52,19 @@ std::array<int, 3> BoxDecomposition::ranks_per_axis(const std::array<int, 3>& ce
 
 BoxDecomposition BoxDecomposition::balanced(const AxisCounts& counts,
                                             const std::array<int, 3>& per_axis) {
+  for (int a = 0; a < 3; ++a) {  // the axis that is too thin, by name
+    const int cells = static_cast<int>(counts[std::size_t(a)].size());
+    if (per_axis[std::size_t(a)] > 1 &&
+        cells < SlabDecomposition::kMinCells * per_axis[std::size_t(a)]) {
+      std::ostringstream m;
+      m << cells << " grid cells along "
+        << "xyz"[a] << " cannot be split into " << per_axis[std::size_t(a)] << " slabs of at least "
+        << SlabDecomposition::kMinCells << " cells (grid.cells[" << a
+        << "] >= " << SlabDecomposition::kMinCells * per_axis[std::size_t(a)]
+        << " is needed; use fewer ranks or a finer grid)";
+      throw std::invalid_argument(m.str());
+    }
+  }
   return BoxDecomposition({SlabDecomposition::balanced(counts[0], per_axis[0]),
                            SlabDecomposition::balanced(counts[1], per_axis[1]),
                            SlabDecomposition::balanced(counts[2], per_axis[2])});

@@ -14,19 +14,33 @@ BoxDecomposition initial_boxes(const Scene& scene, int ranks, const AxisCounts& 
                                const std::function<std::vector<CellCount>()>& count_cells,
                                const TableSum& sum) {
   const std::array<int, 3>& p = scene.solver.ranks_per_axis;
-  if (p[0] == 0 && scene.solver.split == SplitRule::least_loaded)
-    return least_loaded_split(scene.grid.cells, counts, ranks, count_cells(), sum).boxes;
-  if (p[0] == 0)
-    return BoxDecomposition::balanced(counts,
-                                      BoxDecomposition::ranks_per_axis(scene.grid.cells, ranks));
+  // A grid too small for the ranks is the scene's key and the rank count's: an input error.
+  const auto refuse = [&](const std::string& key, const std::string& why) {
+    return InputError(
+        {scene.file + ": " + key + ": " + why + " (on " + std::to_string(ranks) + " MPI ranks)"});
+  };
+  if (p[0] == 0) {
+    try {
+      if (scene.solver.split == SplitRule::least_loaded)
+        return least_loaded_split(scene.grid.cells, counts, ranks, count_cells(), sum).boxes;
+      return BoxDecomposition::balanced(counts,
+                                        BoxDecomposition::ranks_per_axis(scene.grid.cells, ranks));
+    } catch (const std::invalid_argument& e) {
+      throw refuse("/grid/cells", e.what());
+    }
+  }
   if (p[0] * p[1] * p[2] != ranks) {
     std::ostringstream m;
-    m << scene.file << ": /solver/ranks_per_axis: [" << p[0] << ", " << p[1] << ", " << p[2]
-      << "] makes " << p[0] * p[1] * p[2] << " boxes; expected their product to be the rank count "
-      << ranks << " (or [0, 0, 0] or \"least_loaded\" for an automatic split)";
-    throw std::invalid_argument(m.str());
+    m << "[" << p[0] << ", " << p[1] << ", " << p[2] << "] makes " << p[0] * p[1] * p[2]
+      << " boxes; expected their product to be the rank count " << ranks
+      << " (or [0, 0, 0] or \"least_loaded\" for an automatic split)";
+    throw refuse("/solver/ranks_per_axis", m.str());
   }
-  return BoxDecomposition::balanced(counts, p);
+  try {
+    return BoxDecomposition::balanced(counts, p);
+  } catch (const std::invalid_argument& e) {
+    throw refuse("/solver/ranks_per_axis", e.what());
+  }
 }
 
 namespace {

@@ -19,8 +19,8 @@ namespace impact::mpm {
 /// particles per cell along it): solver.ranks_per_axis when given, else the split cutting the
 /// fewest node faces; with "least_loaded" the least loaded split with refined boundaries
 /// (least_loaded_split) from this process's particles per cell, `count_cells()`, summed over the
-/// ranks by `sum`. Throws std::invalid_argument when nothing fits (the message names the key or
-/// the grid).
+/// ranks by `sum`. Throws InputError when nothing fits, naming the scene file, the key
+/// (/grid/cells for an automatic split, else /solver/ranks_per_axis), the axis and the ranks.
 BoxDecomposition initial_boxes(const Scene& scene, int ranks, const AxisCounts& counts,
                                const std::function<std::vector<CellCount>()>& count_cells,
                                const TableSum& sum);

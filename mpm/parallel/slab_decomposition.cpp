@@ -11,8 +11,9 @@ SlabDecomposition SlabDecomposition::balanced(const std::vector<std::size_t>& co
   if (ranks < 1) throw std::invalid_argument("SlabDecomposition: ranks must be >= 1");
   if (ranks > 1 && cells < kMinCells * ranks) {  // one slab: the whole axis, however narrow
     std::ostringstream m;
-    m << cells << " grid cells along x cannot be split into " << ranks << " slabs of at least "
-      << kMinCells << " cells (the decomposition needs grid.cells[0] >= " << kMinCells * ranks
+    m << cells << " grid cells along one axis cannot be split into " << ranks
+      << " slabs of at least " << kMinCells
+      << " cells (the decomposition needs grid.cells[0] >= " << kMinCells * ranks
       << "; use fewer ranks or a finer grid)";
     throw std::invalid_argument(m.str());
   }

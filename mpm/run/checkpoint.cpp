@@ -156,11 +156,9 @@ CheckpointHeader read_checkpoint_header(const std::filesystem::path& file) {
   return read_header(r, length_of(file));
 }
 
-namespace {
-
 // The trailer is checked before any field is parsed: a flipped bit must read as corruption,
 // not as whichever field check it happens to land on.
-void verify_checksum(const std::filesystem::path& file) {
+void verify_checkpoint_checksum(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   std::uint64_t stored = 0;
@@ -172,15 +170,13 @@ void verify_checksum(const std::filesystem::path& file) {
     throw CheckpointError(file.string() + ": checksum mismatch (corrupt checkpoint)");
 }
 
-}  // namespace
-
 RunState read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw CheckpointError(file.string() + ": cannot open (no checkpoint here?)");
   CheckpointReader r(in, file.string());
   // Magic, version and length first: their own messages.
   const CheckpointHeader h = read_header(r, length_of(file));
-  verify_checksum(file);
+  verify_checkpoint_checksum(file);
   if (h.ranks != sim.ranks() || h.rank != sim.rank()) {
     r.fail("written by rank " + std::to_string(h.rank) + " of " + std::to_string(h.ranks) +
            ", read by rank " + std::to_string(sim.rank()) + " of " + std::to_string(sim.ranks()) +

@@ -87,6 +87,10 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
 /// Reads the header only (magic, version, byte order first) and checks the file's length against
 /// it; throws CheckpointError ("truncated: N of M bytes" for a file cut short).
 CheckpointHeader read_checkpoint_header(const std::filesystem::path& file);
+/// Checks `file`'s trailer (a checksum of every byte before it); throws CheckpointError
+/// ("checksum mismatch (corrupt checkpoint)"). A header field that refuses a restart is only
+/// believed once this passes: a flipped bit must read as corruption.
+void verify_checkpoint_checksum(const std::filesystem::path& file);
 /// Loads `file` into `sim` (built from the same scene with the checkpoint's thread count, on the
 /// same rank count: each rank its own file) and returns the run state; throws CheckpointError
 /// (the Simulation is then unusable).

@@ -386,6 +386,21 @@ int restart(const std::string& directory, const RunOptions& options) {
   } catch (const CheckpointError& e) {
     throw InputError({e.what()});
   }
+  // Each rank continues its own box: the run's rank count, not another (the split would differ).
+  const int ranks = options.comm ? options.comm->size() : 1;
+  if (header.ranks != ranks) {
+    try {
+      verify_checkpoint_checksum(file);
+    } catch (const CheckpointError& e) {
+      throw InputError({e.what()});
+    }
+    throw InputError({file.string() + ": written by a run on " + std::to_string(header.ranks) +
+                      " rank(s), this restart has " + std::to_string(ranks) +
+                      " (restart on the run's rank count: " +
+                      (header.ranks > 1 ? "mpirun -np " + std::to_string(header.ranks) + " mpm"
+                                        : "mpm without mpirun") +
+                      " run --restart " + directory + ")"});
+  }
   // The scene is the directory's scene.json, as the checkpointed run wrote it.
   const fs::path scene_file = dir / "scene.json";
   const std::string text = read_text(scene_file);

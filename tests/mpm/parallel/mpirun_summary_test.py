@@ -18,7 +18,8 @@ with exit code 3 and a message naming the step, the rank and the particle. Parti
 particles cross slab boundaries are written as on one rank (paths_across_ranks). The scene
 split in boxes across y and z (solver.ranks_per_axis 1 x 2 x RANKS/2) gives the same summary
 and restarts bit for bit; a split that does not multiply to RANKS is refused
-(boxes_across_y_and_z). Each rank's halo bytes and messages per step equal the cost model's
+(boxes_across_y_and_z), as is one the grid cannot hold along y, and a restart on another rank
+count. Each rank's halo bytes and messages per step equal the cost model's
 count (halo_traffic).
 """
 import json
@@ -256,10 +257,20 @@ def boxes_across_y_and_z(mpm, mpiexec, ranks, work, env, one):
         json.dump({"extends": scene, "solver": {"ranks_per_axis": [ranks, 2, 1]}}, f)
     done = subprocess.run(launch + [wrong, "--out", os.path.join(work, "wrong")],
                           capture_output=True, text=True, env=env)
-    assert done.returncode == 3, (done.returncode, done.stderr)
-    assert (f"/solver/ranks_per_axis: [{ranks}, 2, 1] makes {2 * ranks} boxes; expected their "
-            f"product to be the rank count {ranks}") in done.stderr, done.stderr
-    print("a split that does not match the rank count: refused, naming the key")
+    assert done.returncode == 2, (done.returncode, done.stderr)
+    assert (f"boxes_wrong.json: /solver/ranks_per_axis: [{ranks}, 2, 1] makes {2 * ranks} boxes; "
+            f"expected their product to be the rank count {ranks}") in done.stderr, done.stderr
+    # A split the grid cannot hold along y: the axis named, an input error.
+    thin = os.path.join(work, "boxes_thin.json")
+    with open(thin, "w") as f:
+        json.dump({"extends": scene, "solver": {"ranks_per_axis": [1, ranks, 1]},
+                   "grid": {"cells": [CELLS[0], 3 * ranks - 1, CELLS[2]]}}, f)
+    done = subprocess.run(launch + [thin, "--out", os.path.join(work, "thin")],
+                          capture_output=True, text=True, env=env)
+    assert done.returncode == 2, (done.returncode, done.stderr)
+    assert (f"boxes_thin.json: /solver/ranks_per_axis: {3 * ranks - 1} grid cells along y cannot "
+            f"be split into {ranks} slabs") in done.stderr, done.stderr
+    print("a split that does not match the rank count or the grid: refused, naming the key")
 
 
 def run(cmd, env=None):
@@ -323,6 +334,13 @@ def main(mpm, mpiexec, ranks, work):
                                     "sigterm:40"], capture_output=True, text=True, env=env)
     assert done.returncode == 143, (done.returncode, done.stderr)
     assert os.path.exists(os.path.join(cut, "checkpoint.rank1.bin"))
+    # On another rank count each rank would continue another box: refused, naming the count.
+    for other in ([mpm, "run"], [mpiexec, "-np", str(ranks + 1), "--oversubscribe", mpm, "run"]):
+        done = subprocess.run(other + ["--restart", cut], capture_output=True, text=True, env=env)
+        assert done.returncode == 2, (other, done.returncode, done.stderr)
+        assert f"checkpoint.bin: written by a run on {ranks} rank(s)" in done.stderr, done.stderr
+        assert f"mpirun -np {ranks} mpm run --restart" in done.stderr, done.stderr
+    print(f"restart on 1 or {ranks + 1} ranks: refused, naming the run's {ranks}")
     run(launch + ["--restart", cut], env)
     for name in ["history.csv", "particles.pvd"] + [os.path.join("particles", n) for n in
                                                     sorted(os.listdir(os.path.join(many, "particles")))]:
