@@ -18,9 +18,11 @@
 // alpha = 0.2, M = 63.546 g/mol, T_melt = 1356 K.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "helpers/cowper_symonds_mild_steel.hpp"
+#include "helpers/mts_illustrative.hpp"
 #include "models/flow_stress/flow_stress_law.hpp"
 #include "models/plasticity/radial_return.hpp"
 
@@ -102,6 +104,25 @@ PrestonTonksWallaceParams copper_ptw() {
   return p;
 }
 
+// One instance of every law of the catalogue (two of Zerilli-Armstrong: fcc and bcc; two of
+// Steinberg: SCG and Steinberg-Lund), the lists the every-law tests below sweep;
+// the_every_law_list_holds_every_law_of_the_catalogue fails when a law is added without one.
+std::vector<FlowStressLaw> every_law() {
+  InputProblems problems("mts_illustrative.json");
+  const Json mts_law = testing::mts_illustrative_law();  // the reader keeps a reference
+  JsonReader mts(mts_law, "/flow_stress", problems);
+  std::vector<FlowStressLaw> laws = {JohnsonCookParams{324e6, 114e6, 0.42, 0.002, 1.34},
+                                     copper_za(),
+                                     iron_za(),
+                                     al6061_scg(),
+                                     tantalum_like_sl(),
+                                     copper_ptw(),
+                                     read_flow_stress(mts, 294.0, 1356.0),
+                                     testing::cowper_symonds_mild_steel()};
+  problems.throw_if_any();
+  return laws;
+}
+
 FlowConditions at(double T, double pressure = 0.0, double compression = 1.0,
                   double density = 8960.0) {
   return {T, pressure, compression, density};
@@ -172,9 +193,7 @@ BOOST_AUTO_TEST_CASE(preston_tonks_wallace_equals_the_papers_equations) {
 // Central differences with steps 1e-6 relative (1e-7 absolute at ep = 0 is avoided: the laws'
 // slopes are unbounded there) against each law's derivatives.
 BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
-  const std::vector<FlowStressLaw> laws = {copper_za(),  iron_za(),
-                                           al6061_scg(), tantalum_like_sl(),
-                                           copper_ptw(), testing::cowper_symonds_mild_steel()};
+  const std::vector<FlowStressLaw> laws = every_law();
   int checked = 0;
   for (const FlowStressLaw& law : laws)
     for (const double ep : {0.01, 0.2, 0.6})
@@ -202,7 +221,7 @@ BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
           }
           ++checked;
         }
-  BOOST_TEST(checked == 108);
+  BOOST_TEST(checked == 18 * int(laws.size()));
 }
 
 // radial_return_test's sweep for every law: converged, on the yield surface at the step's rate
@@ -210,9 +229,7 @@ BOOST_AUTO_TEST_CASE(every_laws_derivatives_match_finite_differences) {
 // increment bound the Newton iteration starts from the elastic bound; the worst count is printed.
 BOOST_AUTO_TEST_CASE(the_radial_return_converges_with_every_law) {
   const double mu = 40e9, dt = 1e-8;
-  const std::vector<FlowStressLaw> laws = {copper_za(),  iron_za(),
-                                           al6061_scg(), tantalum_like_sl(),
-                                           copper_ptw(), testing::cowper_symonds_mild_steel()};
+  const std::vector<FlowStressLaw> laws = every_law();
   Mat3 direction;
   direction << 2.0, 0.3, -0.1, 0.3, -0.5, 0.2, -0.1, 0.2, -1.5;
   direction = deviator(direction);
@@ -244,18 +261,21 @@ BOOST_AUTO_TEST_CASE(the_radial_return_converges_with_every_law) {
               }
             }
           }
-  BOOST_TEST(cases == 864);
+  BOOST_TEST(cases == 144 * int(laws.size()));
   BOOST_TEST_MESSAGE("every law: " << cases << " returns, worst " << worst << " iterations");
+}
+
+BOOST_AUTO_TEST_CASE(the_every_law_list_holds_every_law_of_the_catalogue) {
+  std::set<std::string> listed;
+  for (const FlowStressLaw& law : every_law()) listed.insert(std::string(law_type(law)));
+  for (const auto& type : law_types())
+    BOOST_TEST(listed.count(std::string(type)) == 1,
+               "no instance of " << type << " in every_law()");
 }
 
 // Every law read from JSON and written back gives the same document; parameters by name.
 BOOST_AUTO_TEST_CASE(the_catalogue_reads_writes_and_names_every_laws_parameters) {
-  const std::vector<FlowStressLaw> laws = {JohnsonCookParams{324e6, 114e6, 0.42, 0.002, 1.34},
-                                           copper_za(),
-                                           iron_za(),
-                                           al6061_scg(),
-                                           tantalum_like_sl(),
-                                           copper_ptw()};
+  const std::vector<FlowStressLaw> laws = every_law();
   BOOST_TEST(law_types().size() == std::variant_size_v<FlowStressLaw>);
   for (const FlowStressLaw& law : laws) {
     const Json written = to_json(law);
