@@ -85,136 +85,177 @@ class WallClock {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// The run of run() and restart() (`resume`: from dir/checkpoint.bin): set-up, the step loop with
-// its outputs, checkpoints, signals and reports, then the summary. On several ranks every rank
-// steps its box and writes its snapshot piece and checkpoint; the gauges, observables and the
-// summary are reduced over the ranks, and rank 0 writes history.csv, the .pvtu/.pvd and the
-// summary. No rank ever holds another's particles. `scene_text`: DIR/scene.json as the first run
-// wrote it (a new run writes it); `origin`: its hash, working directory and the scene file it was
-// started from (empty: none, else absolute), whose ladder table gives the summary's error bar.
-// Every checkpoint carries `origin` unchanged, so a restarted run can be restarted again.
-int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& origin,
-           const RunOptions& options, const fs::path& dir, bool resume) {
-  const Communicator* comm =
-      options.comm != nullptr && options.comm->size() > 1 ? options.comm : nullptr;
-  const bool root = comm == nullptr || comm->root();
-  const int threads = run_threads(options.threads);
+// What every step of a run shares: the scene, where it was started from, the options, the
+// directory, whether it resumes, and the ranks (null on one: no collective call).
+struct RunContext {
+  const Scene& scene;
+  const RunOrigin& origin;
+  const RunOptions& options;
+  fs::path dir;
+  bool resume;
+  const Communicator* comm;
+  bool root;
+  int threads;
+};
+
+// How the step loop ended: "completed", "interrupted" or "failed", the message and exit code.
+struct RunEnd {
+  std::string status = "completed";
+  std::string message;
+  int code = 0;
+};
+
+// Before anything is allocated: the thread warning, the start refusal (kExitMemory; 0: none),
+// and for a new run the directory made ready (an unfinished run refused, the previous run's files
+// removed, scene.json written).
+int prepare(const RunContext& run, const std::string& scene_text) {
   // More threads than cores: each barrier waits for a descheduled thread (the rod at --threads
   // 256 on 2 cores took 24 s against 0.6 s).
-  if (const int cores = omp_get_num_procs(); threads > cores && options.threads > 0) {
-    std::cerr << "mpm: warning: --threads " << threads << " on " << cores
+  if (const int cores = omp_get_num_procs(); run.threads > cores && run.options.threads > 0) {
+    std::cerr << "mpm: warning: --threads " << run.threads << " on " << cores
               << " cores: the threads take turns, which is slower than " << cores
               << " threads, not faster\n";
   }
   // Refuse before anything is allocated or written.
-  if (const std::string refusal = start_refusal(scene); !refusal.empty()) {
-    if (root) std::cerr << "mpm: " << refusal << '\n';
+  if (const std::string refusal = start_refusal(run.scene); !refusal.empty()) {
+    if (run.root) std::cerr << "mpm: " << refusal << '\n';
     return kExitMemory;
   }
-  // Before the run: the material files as the run read them.
-  const std::string fingerprint = scene_fingerprint(scene.resolved);
-  if (!resume) {
+  if (!run.resume) {
     // Every rank looks, and they agree (a collective call: none looks after rank 0 removed).
-    std::string unfinished = options.overwrite ? "" : unfinished_run(dir);
-    if (comm && comm->max(unfinished.empty() ? 0.0 : 1.0) > 0.0 && unfinished.empty())
-      unfinished = dir.string() + ": holds an unfinished run (rank 0 says which)";
+    std::string unfinished = run.options.overwrite ? "" : unfinished_run(run.dir);
+    if (run.comm && run.comm->max(unfinished.empty() ? 0.0 : 1.0) > 0.0 && unfinished.empty())
+      unfinished = run.dir.string() + ": holds an unfinished run (rank 0 says which)";
     if (!unfinished.empty()) throw InputError({unfinished});
     // The previous run's files go before the Simulation's first collective call, so no other
     // rank writes into the directory before they are gone.
-    const std::size_t removed = root ? clear_previous_run(dir) : 0;
-    if (removed > 0 && options.report) {
-      std::cerr << "mpm: replacing the previous run in " << dir.string() << " (" << removed
+    const std::size_t removed = run.root ? clear_previous_run(run.dir) : 0;
+    if (removed > 0 && run.options.report) {
+      std::cerr << "mpm: replacing the previous run in " << run.dir.string() << " (" << removed
                 << " file(s) removed)\n";
     }
   }
-  if (root) {
-    create_output_directory(dir);
-    if (!resume)
-      write_file_atomically(dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
+  if (run.root) {
+    create_output_directory(run.dir);
+    if (!run.resume)
+      write_file_atomically(run.dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
   }
-  WallClock wall;
-  Simulation sim(scene, threads, comm);
-  if (resume && sim.threads() != threads) {
-    throw InputError({(dir / kCheckpointFile).string() + ": needs " + std::to_string(threads) +
-                      " threads, this process gets " + std::to_string(sim.threads())});
-  }
-  for (const FaultInjection& f : options.faults) {
+  return 0;
+}
+
+// The planted faults that are not signals, by seed index on any number of ranks (1: a particle
+// that does not exist; 0: none).
+int inject_faults(const RunContext& run, Simulation& sim) {
+  for (const FaultInjection& f : run.options.faults) {
     if (is_signal(f)) continue;
     try {
-      sim.inject(f);  // the particle's seed index, on any number of ranks
+      sim.inject(f);
     } catch (const std::out_of_range& e) {
-      if (root) std::cerr << "mpm: --inject-fault: " << e.what() << '\n';
+      if (run.root) std::cerr << "mpm: --inject-fault: " << e.what() << '\n';
       return 1;
     }
   }
-  // Every rank keeps its outputs: on several ranks the gauges, observables and snapshots read the
-  // particles each rank holds (collective calls), rank 0 writes history.csv and the .pvd.
-  RunOutputs outputs(scene, sim.particles(), sim.communicator());
-  RunStatus status_file(dir,
-                        scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle);
-  RunState resumed;
-  double paths_start = 0.0;  // after a restart: the paths begin there
-  if (resume) {
-    resumed = read_checkpoint(checkpoint_file(dir, sim.rank()), sim);
-    if (comm && comm->min(double(sim.steps())) != comm->max(double(sim.steps()))) {
-      throw InputError({(dir / kCheckpointFile).string() +
-                        ": the ranks' checkpoint files are of different steps (a run stopped "
-                        "while writing them)"});
-    }
-    if (root) {
-      std::cerr << "mpm: restarting " << dir.string() << " from step " << sim.steps() << ", time "
-                << sim.time() << " s (" << sim.threads() << " threads";
-      if (comm) std::cerr << ", " << comm->size() << " ranks";
-      std::cerr << ")\n";
-    }
-    paths_start = sim.time();
-    status_file.checkpointed(sim.steps(), sim.time());
-    // Snapshots a killed run wrote after the checkpoint: the continued .pvd will not name them.
-    if (root) remove_unlisted_snapshots(dir, resumed.snapshots);
-    if (comm) comm->barrier();  // gone before any rank writes a piece of the same name
+  return 0;
+}
+
+// A restart: each rank's checkpoint loaded, the ranks agreeing on its step, the snapshots a killed
+// run wrote after it removed. Returns the outputs' state at the checkpoint.
+RunState resume_from_checkpoint(const RunContext& run, Simulation& sim, RunStatus& status_file) {
+  const RunState resumed = read_checkpoint(checkpoint_file(run.dir, sim.rank()), sim);
+  if (run.comm && run.comm->min(double(sim.steps())) != run.comm->max(double(sim.steps()))) {
+    throw InputError({(run.dir / kCheckpointFile).string() +
+                      ": the ranks' checkpoint files are of different steps (a run stopped "
+                      "while writing them)"});
   }
-  outputs.open(scene, dir, sim.particles(), sim.ledger(), resume ? &resumed : nullptr);
-  ProgressLine progress(options.progress && root);
-  const auto write_outputs = [&](bool snapshot, long index) {
-    for (const int face : outputs.write_history(sim, sim.particles()))
-      if (root)
-        std::cerr << progress.break_line() << "mpm: warning: " << outputs.face_reach().warning(face)
-                  << '\n';
-    if (root) status_file.write(sim, wall.seconds(), "running");
-    if (snapshot) outputs.write_snapshot(sim.particles(), index, sim.time());
-  };
-  if (!resume) write_outputs(true, sim.steps());
-  double next_output = resume ? resumed.next_output : scene.output.interval;
+  if (run.root) {
+    std::cerr << "mpm: restarting " << run.dir.string() << " from step " << sim.steps() << ", time "
+              << sim.time() << " s (" << sim.threads() << " threads";
+    if (run.comm) std::cerr << ", " << run.comm->size() << " ranks";
+    std::cerr << ")\n";
+  }
+  status_file.checkpointed(sim.steps(), sim.time());
+  // Snapshots a killed run wrote after the checkpoint: the continued .pvd will not name them.
+  if (run.root) remove_unlisted_snapshots(run.dir, resumed.snapshots);
+  if (run.comm) run.comm->barrier();  // gone before any rank writes a piece of the same name
+  return resumed;
+}
+
+// What the step loop writes as it goes: the history row and status, a snapshot, a checkpoint.
+class RunWriter {
+ public:
+  RunWriter(const RunContext& run, Simulation& sim, RunOutputs& outputs, RunStatus& status_file,
+            const WallClock& wall, ProgressLine& progress)
+      : run_(run),
+        sim_(sim),
+        outputs_(outputs),
+        status_file_(status_file),
+        wall_(wall),
+        progress_(progress) {}
+
+  void outputs(bool snapshot, long index) {
+    for (const int face : outputs_.write_history(sim_, sim_.particles()))
+      if (run_.root)
+        std::cerr << progress_.break_line()
+                  << "mpm: warning: " << outputs_.face_reach().warning(face) << '\n';
+    if (run_.root) status_file_.write(sim_, wall_.seconds(), "running");
+    if (snapshot) outputs_.write_snapshot(sim_.particles(), index, sim_.time());
+  }
+
   // Every rank writes its own file; rank 0's also holds the outputs' positions.
-  const auto checkpoint = [&] {
-    const RunState state = outputs.state(next_output, wall.seconds());
-    write_checkpoint(checkpoint_file(dir, sim.rank()), sim, state, origin);
-    if (comm) comm->barrier();  // every file in place before the status names the checkpoint
-    status_file.checkpointed(sim.steps(), sim.time());
-  };
+  void checkpoint(double next_output) {
+    const RunState state = outputs_.state(next_output, wall_.seconds());
+    write_checkpoint(checkpoint_file(run_.dir, sim_.rank()), sim_, state, run_.origin);
+    if (run_.comm) run_.comm->barrier();  // every file in place before the status names it
+    status_file_.checkpointed(sim_.steps(), sim_.time());
+  }
+
+ private:
+  const RunContext& run_;
+  Simulation& sim_;
+  RunOutputs& outputs_;
+  RunStatus& status_file_;
+  const WallClock& wall_;
+  ProgressLine& progress_;
+};
+
+// The signal that stops every rank after this step (0: none): a pending SIGINT or SIGTERM, or one
+// an injected fault raises now. A signal reaches every rank (mpirun forwards it); they stop at the
+// same step.
+int agreed_interrupt(const RunContext& run, const Simulation& sim) {
+  for (const FaultInjection& f : run.options.faults) {
+    if (is_signal(f) && f.step == sim.steps())
+      raise_signal(f.kind == FaultInjection::Kind::sigint ? sigint_number() : sigterm_number());
+  }
+  int signal = pending_interrupt();
+  if (signal == 0 && run.options.poll_interrupt) signal = run.options.poll_interrupt();
+  if (run.comm) signal = static_cast<int>(run.comm->max(double(signal)));
+  return signal;
+}
+
+// Steps to the end time, writing the outputs at each interval and the checkpoints at theirs;
+// stops after the step a signal arrived in (checkpoint written) or on a solver failure (final
+// snapshot and history row written).
+RunEnd step_loop(const RunContext& run, Simulation& sim, RunOutputs& outputs,
+                 RunStatus& status_file, RunWriter& writer, double next_output,
+                 ProgressLine& progress, const WallClock& wall) {
+  const Scene& scene = run.scene;
   const long every = scene.output.checkpoint_interval_steps;
-  const InterruptHandlers handlers(
-      options.handle_signals ||
-      std::any_of(options.faults.begin(), options.faults.end(), is_signal));
   FaultReport faults(progress);
-  wall.restart(resume ? resumed.wall_time : 0.0);
-  const long first_step = sim.steps();  // this process's steps: the halo traffic's divisor
-  progress.start();
   const bool removal = scene.grid.outflow == Outflow::remove;
   bool grid_emptied = false;  // warned once
-  std::string status = "completed", message;
-  int code = 0;
+  RunEnd end;
   try {
     while (!sim.finished()) {
       const double t_before = sim.time();
       outputs.before_step(sim.particles());
       const long removed = sim.step().particles.removed;
       outputs.after_step(sim.particles(), sim.time(), sim.time() - t_before);
-      if (removal && !grid_emptied && (comm ? comm->max(double(removed)) : double(removed)) > 0.0 &&
-          mass_in_play(sim.particles(), comm) == 0.0) {
+      if (removal && !grid_emptied &&
+          (run.comm ? run.comm->max(double(removed)) : double(removed)) > 0.0 &&
+          mass_in_play(sim.particles(), run.comm) == 0.0) {
         // A valid end (grid.outflow = remove lets bodies go), but what follows is an empty grid.
         grid_emptied = true;
-        if (root)
+        if (run.root)
           std::cerr << progress.break_line() << "mpm: warning: every particle has left the grid "
                     << "(grid.outflow = remove) by step " << sim.steps() << ", t = " << sim.time()
                     << " s; the run goes on to time.max_time " << scene.time.max_time
@@ -222,103 +263,83 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
       }
       faults.report(sim);
       if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
-        write_outputs(true, sim.steps());
+        writer.outputs(true, sim.steps());
         while (next_output <= sim.time() * (1.0 + 1e-12)) next_output += scene.output.interval;
       }
-      if (every > 0 && sim.steps() % every == 0 && !sim.finished()) checkpoint();
-      for (const FaultInjection& f : options.faults) {
-        if (is_signal(f) && f.step == sim.steps()) {
-          raise_signal(f.kind == FaultInjection::Kind::sigint ? sigint_number() : sigterm_number());
-        }
-      }
-      // A signal reaches every rank (mpirun forwards it); they stop at the same step.
-      int signal = pending_interrupt();
-      if (signal == 0 && options.poll_interrupt) signal = options.poll_interrupt();
-      if (comm) signal = static_cast<int>(comm->max(double(signal)));
+      if (every > 0 && sim.steps() % every == 0 && !sim.finished()) writer.checkpoint(next_output);
+      const int signal = agreed_interrupt(run, sim);
       if (signal != 0 && !sim.finished()) {
         std::ostringstream m;
         m.precision(9);
         m << "interrupted by " << signal_name(signal) << " after step " << sim.steps() << ", time "
           << sim.time() << " s";
-        if (status_file.checkpoint_step() != sim.steps()) checkpoint();
-        m << ": checkpoint " << (dir / kCheckpointFile).string()
-          << "; continue with: " << (comm ? "mpirun -np " + std::to_string(comm->size()) + " " : "")
-          << "mpm run --restart " << dir.string();
-        status = "interrupted";
-        message = m.str();
-        code = kExitSignalBase + signal;
-        if (root) std::cerr << progress.break_line() << "mpm: " << message << '\n';
+        if (status_file.checkpoint_step() != sim.steps()) writer.checkpoint(next_output);
+        m << ": checkpoint " << (run.dir / kCheckpointFile).string() << "; continue with: "
+          << (run.comm ? "mpirun -np " + std::to_string(run.comm->size()) + " " : "")
+          << "mpm run --restart " << run.dir.string();
+        end = {"interrupted", m.str(), kExitSignalBase + signal};
+        if (run.root) std::cerr << progress.break_line() << "mpm: " << end.message << '\n';
         break;
       }
       progress.update(sim);
     }
   } catch (const SolverFailure& e) {  // on every rank alike: the ranks agree on a failure
-    status = "failed";
-    message = e.what();
-    code = kExitRunFailed;
-    if (root) std::cerr << progress.break_line() << "mpm: run failed: " << message << '\n';
+    end = {"failed", e.what(), kExitRunFailed};
+    if (run.root) std::cerr << progress.break_line() << "mpm: run failed: " << end.message << '\n';
     outputs.write_snapshot(sim.particles(), sim.steps() + 1, sim.time());
     outputs.write_history(sim, sim.particles());  // a face reached now: in the summary
-    if (root) status_file.write(sim, wall.seconds(), "running");
+    if (run.root) status_file.write(sim, wall.seconds(), "running");
   } catch (const std::exception& e) {  // e.g. an output that cannot be written: say so, re-throw
     try {
-      if (root) status_file.write(sim, wall.seconds(), "failed", e.what());
+      if (run.root) status_file.write(sim, wall.seconds(), "failed", e.what());
     } catch (const std::exception&) {  // keep the original error
     }
     throw;
   }
-  if (status != "interrupted") progress.end();
-  if (sim.faulted_particles() > 0 && root) {
-    std::cerr << "mpm: " << sim.faulted_particles()
-              << " particle(s) flagged failed by numerical faults (physics.on_numerical_fault = "
-                 "fail_particle)\n";
-  }
-  // Per rank: the particles it holds at the end and its time in MPI calls (waiting for the others
-  // and moving data): the load balance (docs/mpi.md).
-  std::vector<double> held, in_mpi, peak, halo_bytes, halo_messages;
-  Json phases = Json::object();  // each phase's seconds (per rank with several)
+  return end;
+}
+
+// Each phase's seconds (per rank with several), and on several ranks the load of each: the
+// particles it holds at the end, its time in MPI calls (waiting for the others and moving data),
+// its memory, its halo traffic per step since `first_step`, and the boxes (docs/mpi.md).
+// Collective.
+std::pair<Json, Json> phases_and_load(const RunContext& run, const Simulation& sim,
+                                      long first_step) {
+  Json phases = Json::object();
   for (const auto& [name, phase] : PhaseTimes::kPhases) {
     const double mine = sim.phase_totals().*phase;
-    phases[name] = comm ? Json(comm->gather_all(mine)) : Json(mine);
+    phases[name] = run.comm ? Json(run.comm->gather_all(mine)) : Json(mine);
   }
-  if (comm) {
-    held = comm->gather_all(double(sim.particles().size()));
-    in_mpi = comm->gather_all(comm->seconds_in_mpi());
-    peak = comm->gather_all(peak_resident_memory().value_or(0.0) / 1e6);
-    const double steps = double(std::max(sim.steps() - first_step, 1L));
-    halo_bytes = comm->gather_all(double(comm->exchanged_bytes()) / steps);
-    halo_messages = comm->gather_all(double(comm->exchanged_messages()) / steps);
-  }
-  const double seconds = wall.seconds();
-  Json summary = run_summary(sim, sim.particles(), status, message, seconds, outputs.observables(),
-                             outputs.gauge_extrema(), &outputs.paths());
-  summary["scene_fingerprint"] = fingerprint;
-  summary["material_reached_faces"] = outputs.face_reach().summary();
-  if (!root) return code;
-  outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
-  summary["phase_seconds [s]"] = phases;
-  if (comm) {
-    summary["ranks_load"] = {{"particles_at_end", held},
-                             {"seconds_in_mpi [s]", in_mpi},
-                             {"peak_resident_memory [MB]", peak},
-                             {"halo_bytes_sent_per_step [B]", halo_bytes},
-                             {"halo_messages_sent_per_step", halo_messages},
-                             {"rebalances", sim.rebalances()},
-                             {"boxes",
-                              {{"ranks_per_axis", sim.boxes().ranks_per_axis()},
-                               {"x", sim.boxes().axis(0).first_cells()},
-                               {"y", sim.boxes().axis(1).first_cells()},
-                               {"z", sim.boxes().axis(2).first_cells()}}}};
-  }
-  // Last: the ladder's pointers read the summary as written.
-  if (auto error = discretization_error(origin.scene_file, fingerprint, summary))
-    summary["discretization_error"] = std::move(*error);
-  write_file_atomically(dir / "summary.json",
-                        [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
-  status_file.write(sim, seconds, status, message);  // last: every file is then in place
+  if (!run.comm) return {phases, Json()};
+  const Communicator& comm = *run.comm;
+  const double steps = double(std::max(sim.steps() - first_step, 1L));
+  const std::vector<double> held = comm.gather_all(double(sim.particles().size()));
+  const std::vector<double> in_mpi = comm.gather_all(comm.seconds_in_mpi());
+  const std::vector<double> peak = comm.gather_all(peak_resident_memory().value_or(0.0) / 1e6);
+  const std::vector<double> bytes = comm.gather_all(double(comm.exchanged_bytes()) / steps);
+  const std::vector<double> messages = comm.gather_all(double(comm.exchanged_messages()) / steps);
+  Json load = {{"particles_at_end", held},
+               {"seconds_in_mpi [s]", in_mpi},
+               {"peak_resident_memory [MB]", peak},
+               {"halo_bytes_sent_per_step [B]", bytes},
+               {"halo_messages_sent_per_step", messages},
+               {"rebalances", sim.rebalances()},
+               {"boxes",
+                {{"ranks_per_axis", sim.boxes().ranks_per_axis()},
+                 {"x", sim.boxes().axis(0).first_cells()},
+                 {"y", sim.boxes().axis(1).first_cells()},
+                 {"z", sim.boxes().axis(2).first_cells()}}}};
+  return {phases, load};
+}
+
+// The lines a run ends with on the terminal: a warning when it completed in too few steps to
+// resolve anything, and the outcome line (steps, wall time, energy error, failed particles).
+void report_end(const RunContext& run, const Simulation& sim, const Json& summary,
+                const RunEnd& end, double seconds) {
+  const Scene& scene = run.scene;
   // A run that ends in a handful of steps resolves nothing: almost always lengths or times typed
   // in other units (a grid in mm makes the stable step a thousand times too long).
-  if (root && status == "completed" && sim.steps() < kFewSteps) {
+  if (run.root && end.status == "completed" && sim.steps() < kFewSteps) {
     std::cerr << "mpm: warning: the run completed in " << sim.steps()
               << " step(s) to t = " << sim.time() << " s (time.max_time " << scene.time.max_time
               << " s): too few to resolve a wave or an impact; check the scene's units (SI: "
@@ -326,22 +347,96 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
               << (mentions_a_unit_slip(scene.warnings) ? ", as the warnings above suggest" : "")
               << '\n';
   }
-  if (options.report && status == "completed") {
-    std::ostringstream line;
-    line.precision(4);
-    line << "mpm run: completed " << sim.steps() << " steps to t = " << sim.time() << " s in "
-         << seconds << " s wall, energy_error " << sim.ledger().row().energy_error;
-    // Failed particles change what the run measures (a Taylor rod with 480 of 672 failed said
-    // only "completed"): named here, their causes in summary.json.
-    const long failed = summary.value("failed_particles", 0L);
-    if (failed > 0)
-      line << ", " << failed << " of " << summary.value("particles", 0L)
-           << " particles failed (summary.json failed_by_cause)";
-    line << "; results in " << dir.string() << " (summary.json, history.csv"
-         << (scene.output.snapshots ? ", particles.pvd" : "") << ")\n";
-    std::cout << line.str() << std::flush;
+  if (!run.options.report || end.status != "completed") return;
+  std::ostringstream line;
+  line.precision(4);
+  line << "mpm run: completed " << sim.steps() << " steps to t = " << sim.time() << " s in "
+       << seconds << " s wall, energy_error " << sim.ledger().row().energy_error;
+  // Failed particles change what the run measures (a Taylor rod with 480 of 672 failed said
+  // only "completed"): named here, their causes in summary.json.
+  const long failed = summary.value("failed_particles", 0L);
+  if (failed > 0)
+    line << ", " << failed << " of " << summary.value("particles", 0L)
+         << " particles failed (summary.json failed_by_cause)";
+  line << "; results in " << run.dir.string() << " (summary.json, history.csv"
+       << (scene.output.snapshots ? ", particles.pvd" : "") << ")\n";
+  std::cout << line.str() << std::flush;
+}
+
+// The run of run() and restart() (`resume`: from dir/checkpoint.bin): prepare, (resume,) the step
+// loop with its outputs, checkpoints, signals and reports, then the summary. On several ranks
+// every rank steps its box and writes its snapshot piece and checkpoint; the gauges, observables
+// and the summary are reduced over the ranks, and rank 0 writes history.csv, the .pvtu/.pvd and
+// the summary. No rank ever holds another's particles. `scene_text`: DIR/scene.json as the first
+// run wrote it (a new run writes it); `origin`: its hash, working directory and the scene file it
+// was started from (empty: none, else absolute), whose ladder table gives the summary's error
+// bar. Every checkpoint carries `origin` unchanged, so a restarted run can be restarted again.
+int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& origin,
+           const RunOptions& options, const fs::path& dir, bool resume) {
+  const Communicator* comm =
+      options.comm != nullptr && options.comm->size() > 1 ? options.comm : nullptr;
+  const RunContext run{scene,
+                       origin,
+                       options,
+                       dir,
+                       resume,
+                       comm,
+                       comm == nullptr || comm->root(),
+                       run_threads(options.threads)};
+  if (const int code = prepare(run, scene_text)) return code;
+  // Before the run: the material files as the run read them.
+  const std::string fingerprint = scene_fingerprint(scene.resolved);
+  WallClock wall;
+  Simulation sim(scene, run.threads, comm);
+  if (resume && sim.threads() != run.threads) {
+    throw InputError({(dir / kCheckpointFile).string() + ": needs " + std::to_string(run.threads) +
+                      " threads, this process gets " + std::to_string(sim.threads())});
   }
-  return code;
+  if (const int code = inject_faults(run, sim)) return code;
+  // Every rank keeps its outputs: on several ranks the gauges, observables and snapshots read the
+  // particles each rank holds (collective calls), rank 0 writes history.csv and the .pvd.
+  RunOutputs outputs(scene, sim.particles(), sim.communicator());
+  RunStatus status_file(dir,
+                        scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle);
+  const RunState resumed = resume ? resume_from_checkpoint(run, sim, status_file) : RunState{};
+  const double paths_start = resume ? sim.time() : 0.0;  // after a restart the paths begin there
+  outputs.open(scene, dir, sim.particles(), sim.ledger(), resume ? &resumed : nullptr);
+  ProgressLine progress(options.progress && run.root);
+  RunWriter writer(run, sim, outputs, status_file, wall, progress);
+  if (!resume) writer.outputs(true, sim.steps());
+  const InterruptHandlers handlers(
+      options.handle_signals ||
+      std::any_of(options.faults.begin(), options.faults.end(), is_signal));
+  wall.restart(resume ? resumed.wall_time : 0.0);
+  const long first_step = sim.steps();  // this process's steps: the halo traffic's divisor
+  progress.start();
+  const RunEnd end =
+      step_loop(run, sim, outputs, status_file, writer,
+                resume ? resumed.next_output : scene.output.interval, progress, wall);
+  if (end.status != "interrupted") progress.end();
+  if (sim.faulted_particles() > 0 && run.root) {
+    std::cerr << "mpm: " << sim.faulted_particles()
+              << " particle(s) flagged failed by numerical faults (physics.on_numerical_fault = "
+                 "fail_particle)\n";
+  }
+  auto [phases, load] = phases_and_load(run, sim, first_step);
+  const double seconds = wall.seconds();
+  Json summary = run_summary(sim, sim.particles(), end.status, end.message, seconds,
+                             outputs.observables(), outputs.gauge_extrema(), &outputs.paths());
+  summary["scene_fingerprint"] = fingerprint;
+  summary["material_reached_faces"] = outputs.face_reach().summary();
+  if (!run.root) return end.code;
+  outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
+  summary["phase_seconds [s]"] = phases;
+  if (comm) summary["ranks_load"] = load;
+  // Last: the ladder's pointers read the summary as written.
+  if (auto error = discretization_error(origin.scene_file, fingerprint, summary))
+    summary["discretization_error"] = std::move(*error);
+  write_file_atomically(dir / "summary.json",
+                        [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
+  status_file.write(sim, seconds, end.status, end.message);  // last: every file is then in place
+  report_end(run, sim, summary, end, seconds);
+  return end.code;
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ TARGET_FILES = {
     "pointdriver_core": "pointdriver/CMakeLists.txt",
     "pointdriver": "pointdriver/CMakeLists.txt",
     "mpm_core": "mpm/CMakeLists.txt",
-    "mpm": "mpm/CMakeLists.txt",
+    "mpm": "commands/CMakeLists.txt",
     "mpm_campaigns": "campaigns/CMakeLists.txt",
     "impact_python": "python/CMakeLists.txt",
 }
@@ -100,7 +100,7 @@ def main():
                 problems.append(f"{lib}/: folders {missing} are not layers")
     # Every named path exists; every relative link resolves.
     for path in set(re.findall(r"`((?:models|support|tools|pointdriver|mpm|campaigns|python|"
-                               r"cmake|tests|docs|data)/[\w./-]*)`", page)):
+                               r"commands|cmake|tests|docs|data)/[\w./-]*)`", page)):
         if not os.path.exists(os.path.join(ROOT, path)):
             problems.append(f"names `{path}`, which does not exist")
     for link in re.findall(r"\]\(([^)#:]+)(?:#[^)]*)?\)", page):
