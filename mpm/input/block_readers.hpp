@@ -1,0 +1,59 @@
+// The scene reader's blocks (internal to mpm/input/): each reads one block of a scene document
+// into its part of the Scene, recording every problem with its key path; read_scene
+// (scene_reader.cpp) calls them in order and then the checks across blocks (scene_checks.cpp).
+#pragma once
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "models/core/input.hpp"
+#include "mpm/input/scene_reader.hpp"
+#include "mpm/scene/scene.hpp"
+
+namespace impact::mpm::scene_input {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// grid.geometry's names, in GridGeometry's order.
+inline const char* const kGeometryNames[] = {"3d", "axisymmetric", "plane_strain"};
+
+/// node[key], or an empty object when node is not an object or has no such key.
+inline const Json& at(const Json& node, const char* key) {
+  return node.is_object() && node.contains(key) ? node[key] : empty_json_object();
+}
+
+/// Three integers in [lo, hi] (grid_reader.cpp).
+std::array<int, 3> read_int3(JsonReader& r, const Json& node, std::string_view key, int lo, int hi,
+                             std::string_view meaning, std::optional<std::array<int, 3>> fallback);
+
+// grid_reader.cpp
+Json with_plane_arrays_completed(const Json& doc, InputProblems& problems);
+void read_grid(JsonReader& root, const Json& doc, GridSpec& g);
+
+// settings_reader.cpp: time, solver, physics
+void read_time(JsonReader& root, TimeSpec& t, std::vector<std::string>& warnings);
+void read_solver(JsonReader& root, const Json& doc, SolverSpec& s);
+void read_physics(JsonReader& root, PhysicsSpec& ph);
+void apply_physics_overrides(const PhysicsSpec& ph, std::vector<SceneMaterial>& materials);
+
+// output_reader.cpp
+void read_output(JsonReader& root, const Json& doc, const std::string& file, double max_time,
+                 OutputSpec& o);
+void read_observables(InputProblems& problems, const Json& doc, Scene& s);
+
+// bodies_reader.cpp: materials and objects
+void read_materials(JsonReader& root, const Json& doc, std::vector<SceneMaterial>& out);
+void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMaterial>& materials,
+                  std::vector<SceneObject>& out);
+
+// scene_checks.cpp: across blocks
+void check_objects_in_grid(InputProblems& problems, const Scene& s);
+void check_planar_scene(InputProblems& problems, Scene& s);
+void check_field_count(InputProblems& problems, const Scene& s);
+void warn_of_contact_within_one_material(Scene& s);
+
+}  // namespace impact::mpm::scene_input

@@ -1,0 +1,198 @@
+// The scene's grid block: bounds, cells, geometry, faces (docs/scenes.md#grid); a 2D grid's
+// [x, y] arrays completed to the 3D ones they stand for.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "mpm/input/block_readers.hpp"
+#include "mpm/input/scene_keys.hpp"
+#include "mpm/shape/shape.hpp"
+
+namespace impact::mpm::scene_input {
+
+std::array<int, 3> read_int3(JsonReader& r, const Json& node, std::string_view key, int lo, int hi,
+                             std::string_view meaning, std::optional<std::array<int, 3>> fallback) {
+  const Vec3 v =
+      read_vec3(r, node, key, meaning,
+                fallback ? std::optional<Vec3>(Vec3((*fallback)[0], (*fallback)[1], (*fallback)[2]))
+                         : std::nullopt);
+  r.amend_description(key, [&](KeyDescription& d) {
+    d.type = "[3 integers]";
+    d.range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  });
+  std::array<int, 3> out{};
+  for (int d = 0; d < 3; ++d) {
+    if (!(v(d) >= lo && v(d) <= hi && v(d) == std::floor(v(d)))) {
+      if (!std::isnan(v(d))) {
+        r.problems().add(r.key_path(key), "expected integers in [" + std::to_string(lo) + ", " +
+                                              std::to_string(hi) + "] (" + std::string(meaning) +
+                                              ")");
+      }
+      return fallback.value_or(std::array<int, 3>{1, 1, 1});
+    }
+    out[d] = static_cast<int>(v(d));
+  }
+  return out;
+}
+
+// The grid geometry the document asks for (grid.geometry, validated by read_grid; an unknown
+// value reads as 3d here).
+GridGeometry document_geometry(const Json& doc) {
+  const Json& g = at(at(doc, "grid"), "geometry");
+  if (g == kGeometryNames[1]) return GridGeometry::axisymmetric;
+  if (g == kGeometryNames[2]) return GridGeometry::plane_strain;
+  return GridGeometry::three_d;
+}
+
+// A 2D grid is written in its plane: grid.lower, grid.upper and grid.cells take [x, y], as do
+// objects' particles_per_cell and solver.ranks_per_axis. They are read as the 3D grid of one
+// cell of 1 m along z, centred on z = 0 (scene.hpp GridGeometry): this completes each [x, y]
+// with its z value, and refuses three numbers where two are expected. Every other vector (the
+// objects' geometry, velocities, gauge regions) stays 3D: the bodies are the 3D twin's.
+Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
+  if (document_geometry(doc) == GridGeometry::three_d) return doc;
+  Json out = doc;
+  const auto complete = [&](Json& node, const std::string& path, const char* key, double z) {
+    if (!node.is_object() || !node.contains(key) || !node[key].is_array()) return;
+    Json& a = node[key];
+    if (a.size() == 2) {
+      a.push_back(z);
+    } else if (a.size() == 3) {
+      problems.add(path + "/" + key,
+                   "expected an array of 2 numbers [x, y] on a 2D grid "
+                   "(grid.geometry \"" +
+                       at(doc["grid"], "geometry").get<std::string>() + "\"), got " + a.dump());
+      a[2] = z;  // read on, so that the other problems show too
+    }
+  };
+  Json& grid = out["grid"];
+  complete(grid, "/grid", "lower", -0.5);
+  complete(grid, "/grid", "upper", 0.5);
+  complete(grid, "/grid", "cells", 1);
+  if (out.contains("solver") && out["solver"].is_object())
+    complete(out["solver"], "/solver", "ranks_per_axis", 1);
+  if (out.contains("objects") && out["objects"].is_object())
+    for (auto& item : out["objects"].items())
+      complete(item.value(), "/objects/" + item.key(), "particles_per_cell", 1);
+  // Positions in the plane may be written [x, y] too (the particles lie at z = 0); [x, y, z]
+  // stays valid for them, as for the bodies.
+  const auto position = [](Json& node, const char* key) {
+    if (node.is_object() && node.contains(key) && node[key].is_array() && node[key].size() == 2)
+      node[key].push_back(0.0);
+  };
+  if (out.contains("output") && out["output"].is_object()) {
+    Json& output = out["output"];
+    if (output.contains("gauges") && output["gauges"].is_object())
+      for (auto& item : output["gauges"].items())
+        if (item.value().is_object() && item.value().contains("region")) {
+          position(item.value()["region"], "lower");
+          position(item.value()["region"], "upper");
+        }
+    if (output.contains("particle_paths") && output["particle_paths"].is_object())
+      for (auto& item : output["particle_paths"].items()) position(item.value(), "position");
+  }
+  return out;
+}
+
+void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
+  JsonReader r = root.child("grid", "background grid");
+  const Json& n = at(doc, "grid");
+  const std::string geometry =
+      r.choice("geometry", {kGeometryNames[0], kGeometryNames[1], kGeometryNames[2]},
+               "3d, or a 2D grid in the x-y plane: axisymmetric (x the axis, y the radius >= 0; "
+               "totals of the revolved body) or plane_strain (per metre along z)",
+               kGeometryNames[0]);
+  g.geometry = geometry == kGeometryNames[1]   ? GridGeometry::axisymmetric
+               : geometry == kGeometryNames[2] ? GridGeometry::plane_strain
+                                               : GridGeometry::three_d;
+  g.lower = read_vec3(r, n, "lower", "lower corner of the grid [m] ([x, y] on a 2D grid)");
+  g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m] ([x, y] on a 2D grid)");
+  g.cells =
+      read_int3(r, n, "cells", 1, 100000, "cells per axis ([x, y] on a 2D grid)", std::nullopt);
+  // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int; a 2D
+  // grid one node plane along z.
+  const double stored_nodes =
+      (g.cells[0] + 3.0) * (g.cells[1] + 3.0) * (g.planar() ? 1.0 : g.cells[2] + 3.0);
+  if (stored_nodes > static_cast<double>(std::numeric_limits<int>::max())) {
+    std::ostringstream m;
+    m << "(cells + 3) per axis multiplied is " << stored_nodes
+      << " stored grid nodes: expected at most 2147483647 (2^31 - 1)";
+    r.problems().add(r.key_path("cells"), m.str());
+  }
+  if (!((g.upper - g.lower).array() > 0.0).all()) {
+    r.problems().add(r.key_path("upper"), "expected upper > lower on every axis");
+  } else if (auto hint = unit_hint(Quantity::length, (g.upper - g.lower).maxCoeff())) {
+    // A scene typed in millimetres shows in the grid, which spans every object.
+    r.problems().warn(r.key_path("upper"),
+                      "largest extent (upper - lower) " + *hint + "; the value is used as given");
+  }
+  if (g.geometry == GridGeometry::axisymmetric && g.lower(1) != 0.0 && std::isfinite(g.lower(1))) {
+    std::ostringstream got;  // as typed, 1e-09 too (std::to_string would print 0.000000)
+    got << g.lower(1);
+    r.problems().add(r.key_path("lower") + "/1",
+                     "an axisymmetric grid starts at the axis, y = 0 (y is the radius); expected "
+                     "0, got " +
+                         got.str());
+  }
+  g.faces.fill(FaceCondition::symmetric);
+  // A 2D grid has no faces along z (its one cell of 1 m is not a mesh axis): they are free.
+  const int faces = g.planar() ? 4 : 6;
+  if (g.planar()) g.faces[4] = g.faces[5] = FaceCondition::free;
+  if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed, free or wall")) {
+    for (int f = 4; f < 6 && g.planar(); ++f)
+      if (b->has(kFaceNames[f])) {
+        b->problems().add(b->key_path(kFaceNames[f]),
+                          std::string("a 2D grid (grid.geometry \"") + geometry +
+                              "\") has no face along z; expected faces x-, x+, y- and y+ only");
+        b->ignore(kFaceNames[f]);
+      }
+    for (int f = 0; f < faces; ++f) {
+      const std::string c = b->choice(kFaceNames[f], {"symmetric", "fixed", "free", "wall"},
+                                      "grid face condition (symmetric: frictionless mirror plane; "
+                                      "wall: rigid wall that never pulls, with friction)",
+                                      "symmetric");
+      g.faces[f] = c == "fixed"  ? FaceCondition::fixed
+                   : c == "free" ? FaceCondition::free
+                   : c == "wall" ? FaceCondition::wall
+                                 : FaceCondition::symmetric;
+      if (f == 2 && g.geometry == GridGeometry::axisymmetric && c != "symmetric")
+        b->problems().add(b->key_path(kFaceNames[f]),
+                          "the face y- of an axisymmetric grid is the axis of symmetry, where the "
+                          "radial velocity is zero: expected \"symmetric\", got \"" +
+                              c + "\"");
+    }
+    b->reject_unknown_keys();
+  }
+  if (auto w = r.optional_child("wall_friction", "Coulomb friction coefficient per wall face")) {
+    for (int f = 0; f < 6; ++f) {
+      if (!w->has(kFaceNames[f])) continue;
+      if (g.faces[f] != FaceCondition::wall) {
+        w->problems().add(w->key_path(kFaceNames[f]),
+                          std::string("face ") + kFaceNames[f] +
+                              " is not a wall: friction acts only on a face whose "
+                              "grid.boundary." +
+                              kFaceNames[f] + " is \"wall\"");
+        w->ignore(kFaceNames[f]);  // reported above, not also as an unknown key
+        continue;
+      }
+      g.wall_friction[f] =
+          w->number(kFaceNames[f], Range::closed(0.0, 10.0), "Coulomb coefficient mu [-]");
+      w->amend_description(kFaceNames[f], [](KeyDescription& d) { d.default_value = "0"; });
+    }
+    w->reject_unknown_keys();
+  }
+  g.active_blocks = r.boolean_or(
+      "active_blocks", true,
+      "grid work only where the particles are (false: every node of the box every step)");
+  g.outflow = r.choice("outflow", {"stop", "remove"},
+                       "a particle that leaves the grid: stop the run, or remove it and book its "
+                       "mass, momentum and kinetic energy as outflow",
+                       "stop") == "remove"
+                  ? Outflow::remove
+                  : Outflow::stop;
+  r.reject_unknown_keys();
+}
+
+}  // namespace impact::mpm::scene_input

@@ -1,0 +1,172 @@
+// The checks across a scene's blocks: objects inside the grid, a 2D scene's bodies, the
+// velocity fields, contact within one material.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "mpm/input/block_readers.hpp"
+#include "mpm/input/scene_keys.hpp"
+#include "mpm/scene/grid_coverage.hpp"
+#include "mpm/scene/planar_form.hpp"
+#include "mpm/scene/seed_points.hpp"
+
+namespace impact::mpm::scene_input {
+
+std::string vec_text(const Vec3& v) {
+  std::ostringstream o;
+  o.precision(4);
+  o << '[' << v(0) << ", " << v(1) << ", " << v(2) << ']';
+  return o.str();
+}
+
+// Below this fraction of its volume inside the grid a body is refused: a length typed in mm
+// makes a body 1e9 times too large (mpm check measured a volume ratio of 1.9e-9), and a scene
+// that means to seed a thousandth of a body should give the body the size it means.
+constexpr double kMinInside = 1e-3;
+// Above this fraction lost beyond the grid (not mirrored by a symmetric face) a body is warned
+// about; below it the loss is within the seeding's own staircase (volume ratios 0.97-1.03 on the
+// shipped scenes) and the coverage lattice's resolution.
+constexpr double kMaxSilentLoss = 0.01;
+
+// Every object must lie in the grid: one wholly or almost wholly outside (no particle, or a
+// body typed in mm on a grid in m) is refused, one the grid clips is warned about. The checks are
+// on the whole scene, so every rank of a run finds the same.
+void check_objects_in_grid(InputProblems& problems, const Scene& s) {
+  const GridSpec& g = s.grid;
+  // A 2D grid as it was typed, [x, y] (its z extent is the reader's, scene.hpp GridGeometry).
+  const auto corner = [&](const Vec3& v) {
+    if (!g.planar()) return vec_text(v);
+    std::ostringstream o;
+    o.precision(4);
+    o << '[' << v(0) << ", " << v(1) << ']';
+    return o.str();
+  };
+  const std::string grid_text = corner(g.lower) + " to " + corner(g.upper) + " m";
+  for (std::size_t oi = 0; oi < s.objects.size(); ++oi) {
+    const SceneObject& o = s.objects[oi];
+    const std::string key = "/objects/" + o.name + "/geometry";
+    const auto [lo, hi] = bounds(o.geometry);
+    const std::string box_text = "its bounding box " + vec_text(lo) + " to " + vec_text(hi) + " m";
+    const GridCoverage c = grid_coverage(o.geometry, g);
+    std::ostringstream m;
+    m.precision(3);
+    if (c.disjoint || (c.sampled && c.inside == 0.0 && c.inside_bound >= kMinInside)) {
+      m << "lies wholly outside the grid " << grid_text << " (" << box_text
+        << "): no particle would be seeded; expected a body inside the grid";
+      problems.add(key, m.str());
+      continue;
+    }
+    // The bound is exact; the lattice may miss a sliver inside a body much larger than the grid.
+    const bool bounded = c.inside_bound < kMinInside;
+    if (bounded || (c.sampled && c.inside < kMinInside)) {
+      const double share = bounded ? c.inside_bound : c.inside;
+      m << (bounded ? "at most " : "only about ");
+      if (share > 0.0) {
+        m << share;
+      } else {  // below the doubles: a body of 1e300 m
+        m << "a share below 1e-300";
+      }
+      const double v = volume(o.geometry);
+      m << " of its volume (";
+      if (std::isfinite(v)) {
+        m << v;
+      } else {
+        m << "beyond 1.8e+308";
+      }
+      m << " m^3) lies inside the grid " << grid_text << " (" << box_text << "); expected at least "
+        << kMinInside << " (lengths in m";
+      if (auto hint = unit_hint(Quantity::length, (hi - lo).maxCoeff()))
+        m << "; its largest extent " << *hint;
+      m << ')';
+      problems.add(key, m.str());
+      continue;
+    }
+    if (!seeds_a_point(s, oi)) {
+      const Vec3 spacing = g.spacing().cwiseQuotient(
+          Vec3(o.particles_per_cell[0], o.particles_per_cell[1], o.particles_per_cell[2]));
+      m << "no particle would be seeded: none of the seed points (sub-cell centres, spacing "
+        << vec_text(spacing) << " m) lies inside it and outside every earlier object (" << box_text
+        << "); expected a body larger than the seed spacing (refine grid.cells or "
+        << "particles_per_cell)";
+      problems.add(key, m.str());
+      continue;
+    }
+    if (c.lost > kMaxSilentLoss) {
+      std::string faces;
+      for (std::size_t f = 0; f < 6; ++f)
+        if (c.lost_through[f]) faces += (faces.empty() ? "" : ", ") + std::string(kFaceNames[f]);
+      m << "clipped by the grid: about " << c.inside << " of its volume lies inside the grid "
+        << grid_text << "; " << c.lost << " lies beyond the face(s) " << faces
+        << " and is not seeded (" << box_text << "); the part inside is used as given";
+      problems.warn(key, m.str());
+    }
+  }
+}
+
+// On a 2D grid every body must have its 2D form (mpm/scene/planar_form.hpp) and move in the
+// plane: along the axis when axisymmetric (a uniform radial velocity is no body of revolution's),
+// with no z component in plane strain; gravity likewise.
+void check_planar_scene(InputProblems& problems, Scene& s) {
+  const GridGeometry kind = s.grid.geometry;
+  if (kind == GridGeometry::three_d) return;
+  const bool axi = kind == GridGeometry::axisymmetric;
+  const std::string grid = std::string("grid.geometry \"") + kGeometryNames[int(kind)] + "\"";
+  const auto moves_in_plane = [&](const Vec3& v) { return v(2) == 0.0 && (!axi || v(1) == 0.0); };
+  const std::string expected =
+      axi ? "expected [v, 0, 0]: a body of revolution moves along its axis x"
+          : "expected [vx, vy, 0]: a plane-strain body moves in the x-y plane";
+  for (SceneObject& o : s.objects) {
+    const std::string key = "/objects/" + o.name;
+    const std::string why = planar_form_problem(o.geometry, kind);
+    if (!why.empty()) problems.add(key + "/geometry", why + " (" + grid + ")");
+    if (!moves_in_plane(o.velocity))
+      problems.add(key + "/velocity",
+                   "initial velocity " + vec_text(o.velocity) + " on " + grid + ": " + expected);
+    o.particles_per_cell[2] = 1;  // the one cell along z
+  }
+  if (!moves_in_plane(s.solver.gravity))
+    problems.add("/solver/gravity",
+                 "gravity " + vec_text(s.solver.gravity) + " on " + grid + ": " + expected);
+  if (s.solver.ranks_per_axis[2] > 1)
+    problems.add("/solver/ranks_per_axis",
+                 "a 2D grid is split in x and y only; expected [px, py] (" + grid + ")");
+}
+
+// Multi-field contact keeps per-node arrays of kMaxContactFields fields (contact.cpp): a scene
+// with more velocity fields is refused here rather than have the rest ignored.
+void check_field_count(InputProblems& problems, const Scene& s) {
+  const int fields = s.field_count();
+  if (fields <= kMaxContactFields) return;
+  const bool conversion = s.physics.create_new_particles;
+  std::ostringstream m;
+  m << s.materials.size() << " materials make " << fields << " velocity fields"
+    << (conversion ? " (each with a companion field: physics.create_new_particles)" : "")
+    << " under physics.contact.type \""
+    << (s.physics.contact.type == ContactType::friction ? "friction" : "approach")
+    << "\": expected at most " << kMaxContactFields << " fields ("
+    << (conversion ? kMaxContactFields / 2 : kMaxContactFields)
+    << " materials), or contact \"single_velocity\" (one field)";
+  problems.add("/materials", m.str());
+}
+
+// Contact separates materials, not objects (a material's particles share one velocity field): two
+// objects of one material meet as one body, as with single_velocity. Valid, and what a scene of
+// one body cut into objects wants, but a user who set friction between them gets no contact.
+void warn_of_contact_within_one_material(Scene& s) {
+  if (s.physics.contact.type != ContactType::friction || s.physics.create_new_particles ||
+      s.objects.size() < 2)
+    return;
+  for (const SceneObject& o : s.objects)
+    if (o.material != s.objects.front().material) return;
+  s.warnings.push_back(
+      "/physics/contact: \"friction\" acts between materials, and every object here is of "
+      "material \"" +
+      s.materials[s.objects.front().material].name +
+      "\": they share one velocity field and meet as one body, as with \"single_velocity\"; "
+      "give each body its own material (the same file under another name) for contact between "
+      "them");
+}
+
+}  // namespace impact::mpm::scene_input
