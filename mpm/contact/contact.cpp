@@ -214,6 +214,8 @@ MirrorView mirror_view(const Grid& G, const std::array<int, 3>& n) {
 
 }  // namespace
 
+// Long on purpose (about 170 lines): one pass over the contact nodes, each node's fields read,
+// corrected and booked together in a loop a profiler reads as one (docs/architecture.md).
 ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec3>& v,
                             ContactPass pass) {
   const bool book = pass == ContactPass::step;

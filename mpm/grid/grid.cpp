@@ -32,6 +32,36 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   const int n = node_count();
   if (fields_ > 1) contact_held.assign(e, 0);
   const bool has_wall = spec.has_walls();
+  find_boundary_nodes();
+  build_face_writes();
+  if (has_wall) {
+    wall_touch.assign(e, 0);
+    wall_held.assign(e, 0);
+  }
+  bx_ = (nx_ + kBlock - 1) / kBlock;
+  by_ = (ny_ + kBlock - 1) / kBlock;
+  bz_ = (nz_ + kBlock - 1) / kBlock;
+  if (dense()) {
+    active_.resize(n);
+    for (int i = 0; i < n; ++i) active_[i] = i;
+    active_boundary_.resize(boundary_nodes_.size());
+    for (std::size_t k = 0; k < boundary_nodes_.size(); ++k) active_boundary_[k] = int(k);
+    mirror_active_ = mirror_all_;
+    mirror_after_walls_active_ = mirror_after_walls_all_;
+    wall_active_ = wall_all_;
+  } else {
+    marks_.assign(std::size_t(bx_) * by_ * bz_, 0);
+    active_.reserve(n);  // no allocation in a step
+    active_boundary_.reserve(boundary_nodes_.size());
+    mirror_active_.reserve(mirror_all_.size());
+    mirror_after_walls_active_.reserve(mirror_after_walls_all_.size());
+    wall_active_.reserve(wall_all_.size());
+  }
+}
+
+// The nodes of every constrained face's layer and ghost layer that this grid stores, ascending.
+void Grid::find_boundary_nodes() {
+  const int n = node_count();
   // The stored node range per axis: the faces' layers and rows are visited only where stored.
   const NodeBox x = stored();
   const std::array<int, 3>& lowest = x.first;
@@ -59,6 +89,18 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   for (int i = 0; i < n; ++i)
     if (mark[i]) boundary_nodes_.push_back(i);
   free_increment.assign(boundary_nodes_.size() * fields_, Vec3::Zero());
+}
+
+// The mirror's writes (symmetric and fixed faces), the wall nodes with their faces, ghosts and
+// images, and the walls' planes for the touch test.
+void Grid::build_face_writes() {
+  const int n = node_count();
+  const bool has_wall = spec_.has_walls();
+  // The stored node range per axis: the faces' layers and rows are visited only where stored.
+  const NodeBox x = stored();
+  const std::array<int, 3>& lowest = x.first;
+  const std::array<int, 3>& highest = x.last;
+  const auto stored = [&](int axis, int i) { return i >= lowest[axis] && i <= highest[axis]; };
   // The mirror's writes in its order: every face layer first (all faces), then the ghost layers
   // in face order, so that a ghost corner node is the reflection in both planes of an interior
   // node (grid/boundary.cpp). A wall's face layer and ghost layer are its own condition
@@ -139,29 +181,6 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
     wall_planes_.push_back({axis, face % 2 == 0 ? 1.0 : -1.0,
                             face % 2 == 0 ? spec_.lower(axis) : spec_.upper(axis),
                             std::uint8_t(1u << face)});
-  }
-  if (has_wall) {
-    wall_touch.assign(e, 0);
-    wall_held.assign(e, 0);
-  }
-  bx_ = (nx_ + kBlock - 1) / kBlock;
-  by_ = (ny_ + kBlock - 1) / kBlock;
-  bz_ = (nz_ + kBlock - 1) / kBlock;
-  if (dense()) {
-    active_.resize(n);
-    for (int i = 0; i < n; ++i) active_[i] = i;
-    active_boundary_.resize(boundary_nodes_.size());
-    for (std::size_t k = 0; k < boundary_nodes_.size(); ++k) active_boundary_[k] = int(k);
-    mirror_active_ = mirror_all_;
-    mirror_after_walls_active_ = mirror_after_walls_all_;
-    wall_active_ = wall_all_;
-  } else {
-    marks_.assign(std::size_t(bx_) * by_ * bz_, 0);
-    active_.reserve(n);  // no allocation in a step
-    active_boundary_.reserve(boundary_nodes_.size());
-    mirror_active_.reserve(mirror_all_.size());
-    mirror_after_walls_active_.reserve(mirror_after_walls_all_.size());
-    wall_active_.reserve(wall_all_.size());
   }
 }
 

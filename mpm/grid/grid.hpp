@@ -307,6 +307,8 @@ class Grid {
   std::size_t bytes() const;
 
  private:
+  void find_boundary_nodes();  ///< the constructor's: boundary_nodes_, free_increment
+  void build_face_writes();    ///< the constructor's: the mirror's writes, the walls
   GridSpec spec_;
   Vec3 dx_, inv_dx_;
   std::array<int, 3> first_;  ///< node index of the first stored node per axis

@@ -98,130 +98,145 @@ bool is_output_name(const std::string& name) {
   });
 }
 
-// output.gauges and output.crater (docs/scenes.md): need the objects, and (for "no particle
-// inside") the grid and the objects' geometry, so they are read after everything else.
+namespace {
+
+// output.gauges: named history columns, each an object's particles in a region (docs/scenes.md).
+void read_gauges(InputProblems& problems, const Json& out, Scene& s, bool check_seeds) {
+  const Json& gauges = out["gauges"];
+  JsonReader r(gauges, "/output/gauges", problems);
+  if (!gauges.is_object()) {
+    problems.add("/output/gauges", "expected an object of named gauges");
+  } else {
+    for (const auto& item : gauges.items()) {
+      JsonReader g = r.child(item.key(), "a gauge: type, object, region, component");
+      const std::string& name = item.key();
+      if (!is_output_name(name)) {
+        problems.add(r.key_path(name),
+                     "expected a gauge name of letters, digits and _ (it becomes the history "
+                     "column gauge_<name>)");
+      }
+      GaugeSpec spec;
+      spec.name = name;
+      const std::string type = g.choice("type", {"velocity", "strain", "pressure"},
+                                        "what the gauge averages over its particles");
+      spec.type = type == "strain"     ? GaugeType::strain
+                  : type == "pressure" ? GaugeType::pressure
+                                       : GaugeType::velocity;
+      const int object = read_object_name(g, s.objects, "name of an entry of /objects");
+      JsonReader region = g.child("region", "box of initial particle positions [m]");
+      const Json& rn = at(item.value(), "region");
+      spec.lower = read_vec3(region, rn, "lower", "lower corner of the region [m]");
+      spec.upper = read_vec3(region, rn, "upper", "upper corner of the region [m]");
+      const bool box_ok = (spec.upper.array() >= spec.lower.array()).all();
+      if (!box_ok && spec.lower.allFinite() && spec.upper.allFinite()) {
+        problems.add(region.key_path("upper"), "expected upper >= lower on every axis");
+      }
+      region.reject_unknown_keys();
+      if (type == "pressure") {
+        if (g.has("component")) {
+          g.ignore("component");
+          problems.add(g.key_path("component"),
+                       "a pressure gauge has no component (remove the key)");
+        }
+      } else if (!type.empty()) {
+        const std::string c =
+            g.choice("component", {"x", "y", "z"},
+                     type == "strain" ? "axis of the log strain" : "velocity component");
+        spec.component = c == "y" ? 1 : c == "z" ? 2 : 0;
+      }
+      g.reject_unknown_keys();
+      if (object < 0) continue;
+      spec.object = object;
+      // The first seed point found will do: the count (mpm check, summary.json) waits until
+      // the memory and step estimates have let the scene through.
+      if (check_seeds && box_ok &&
+          !seeds_a_point(s, static_cast<std::size_t>(object), spec.lower, spec.upper)) {
+        problems.add(g.key_path("region"), "no particle of object \"" + s.objects[object].name +
+                                               "\" inside (initial positions): expected a "
+                                               "region that contains at least one particle");
+      }
+      s.output.gauges.push_back(std::move(spec));
+    }
+  }
+}
+
+// output.crater: the crater profile of an object's face (docs/mpm.md#crater).
+void read_crater(InputProblems& problems, const Json& out, Scene& s, bool check_seeds) {
+  const Json& cn = out["crater"];
+  JsonReader c(cn.is_object() ? cn : empty_json_object(), "/output/crater", problems);
+  if (!cn.is_object()) {
+    problems.add("/output/crater", "expected an object {\"object\": ..., \"face\": ...}");
+  } else {
+    CraterSpec spec;
+    const int object = read_object_name(c, s.objects, "the impacted object");
+    spec.face = c.number("face", Range::any(), "x of the impacted face [m] (impact along +x)");
+    if (c.has("axis_y") || c.has("axis_z")) {  // both or neither
+      spec.axis = std::array<double, 2>{
+          c.number("axis_y", Range::any(), "y of the crater axis [m] (quarter model: 0)"),
+          c.number("axis_z", Range::any(), "z of the crater axis [m] (quarter model: 0)")};
+      // An axisymmetric crater is centred on the axis of symmetry, y = z = 0.
+      if (s.grid.geometry == GridGeometry::axisymmetric &&
+          ((*spec.axis)[0] != 0.0 || (*spec.axis)[1] != 0.0))
+        problems.add(c.key_path("axis_y"),
+                     "the crater of an axisymmetric scene is centred on the axis of symmetry: "
+                     "expected axis_y = axis_z = 0, or neither key");
+    }
+    c.reject_unknown_keys();
+    if (object >= 0 && std::isfinite(spec.face)) {
+      spec.object = object;
+      const double dx = s.grid.spacing()(0);
+      if (check_seeds && !seeds_a_point(s, static_cast<std::size_t>(object),
+                                        Vec3(spec.face - dx, s.grid.lower(1), s.grid.lower(2)),
+                                        Vec3(spec.face + dx, s.grid.upper(1), s.grid.upper(2)))) {
+        problems.add(c.key_path("face"),
+                     "no particle of object \"" + s.objects[object].name +
+                         "\" within one cell of the face: expected the x of a face of it [m]");
+      }
+      s.output.crater = spec;
+    }
+  }
+}
+
+// output.particle_paths: the path of the particle nearest a position, one file each.
+void read_particle_paths(InputProblems& problems, const Json& out, Scene& s) {
+  const Json& paths = out["particle_paths"];
+  JsonReader r(paths, "/output/particle_paths", problems);
+  if (!paths.is_object()) {
+    problems.add("/output/particle_paths", "expected an object of named particle paths");
+  } else {
+    for (const auto& item : paths.items()) {
+      JsonReader g = r.child(item.key(), "a particle path: object, position");
+      const std::string& name = item.key();
+      if (!is_output_name(name)) {
+        problems.add(r.key_path(name),
+                     "expected a name of letters, digits and _ (it becomes the file "
+                     "paths/<name>.json)");
+      }
+      ParticlePathSpec spec;
+      spec.name = name;
+      const int object = read_object_name(g, s.objects, "name of an entry of /objects");
+      spec.position = read_vec3(g, item.value(), "position",
+                                "initial position [m]; the object's nearest particle is taken");
+      g.reject_unknown_keys();
+      if (object < 0) continue;
+      spec.object = object;
+      s.output.particle_paths.push_back(std::move(spec));
+    }
+  }
+}
+
+}  // namespace
+
+// output.gauges, output.crater and output.particle_paths (docs/scenes.md): need the objects, and
+// (for "no particle inside") the grid and the objects' geometry, so they are read after
+// everything else.
 void read_observables(InputProblems& problems, const Json& doc, Scene& s) {
   const Json& out = at(doc, "output");
   const bool check_seeds = problems.empty();  // grid and objects valid: the seeds can be counted
-  if (out.is_object() && out.contains("gauges")) {
-    const Json& gauges = out["gauges"];
-    JsonReader r(gauges, "/output/gauges", problems);
-    if (!gauges.is_object()) {
-      problems.add("/output/gauges", "expected an object of named gauges");
-    } else {
-      for (const auto& item : gauges.items()) {
-        JsonReader g = r.child(item.key(), "a gauge: type, object, region, component");
-        const std::string& name = item.key();
-        if (!is_output_name(name)) {
-          problems.add(r.key_path(name),
-                       "expected a gauge name of letters, digits and _ (it becomes the history "
-                       "column gauge_<name>)");
-        }
-        GaugeSpec spec;
-        spec.name = name;
-        const std::string type = g.choice("type", {"velocity", "strain", "pressure"},
-                                          "what the gauge averages over its particles");
-        spec.type = type == "strain"     ? GaugeType::strain
-                    : type == "pressure" ? GaugeType::pressure
-                                         : GaugeType::velocity;
-        const int object = read_object_name(g, s.objects, "name of an entry of /objects");
-        JsonReader region = g.child("region", "box of initial particle positions [m]");
-        const Json& rn = at(item.value(), "region");
-        spec.lower = read_vec3(region, rn, "lower", "lower corner of the region [m]");
-        spec.upper = read_vec3(region, rn, "upper", "upper corner of the region [m]");
-        const bool box_ok = (spec.upper.array() >= spec.lower.array()).all();
-        if (!box_ok && spec.lower.allFinite() && spec.upper.allFinite()) {
-          problems.add(region.key_path("upper"), "expected upper >= lower on every axis");
-        }
-        region.reject_unknown_keys();
-        if (type == "pressure") {
-          if (g.has("component")) {
-            g.ignore("component");
-            problems.add(g.key_path("component"),
-                         "a pressure gauge has no component (remove the key)");
-          }
-        } else if (!type.empty()) {
-          const std::string c =
-              g.choice("component", {"x", "y", "z"},
-                       type == "strain" ? "axis of the log strain" : "velocity component");
-          spec.component = c == "y" ? 1 : c == "z" ? 2 : 0;
-        }
-        g.reject_unknown_keys();
-        if (object < 0) continue;
-        spec.object = object;
-        // The first seed point found will do: the count (mpm check, summary.json) waits until
-        // the memory and step estimates have let the scene through.
-        if (check_seeds && box_ok &&
-            !seeds_a_point(s, static_cast<std::size_t>(object), spec.lower, spec.upper)) {
-          problems.add(g.key_path("region"), "no particle of object \"" + s.objects[object].name +
-                                                 "\" inside (initial positions): expected a "
-                                                 "region that contains at least one particle");
-        }
-        s.output.gauges.push_back(std::move(spec));
-      }
-    }
-  }
-  if (out.is_object() && out.contains("crater")) {
-    const Json& cn = out["crater"];
-    JsonReader c(cn.is_object() ? cn : empty_json_object(), "/output/crater", problems);
-    if (!cn.is_object()) {
-      problems.add("/output/crater", "expected an object {\"object\": ..., \"face\": ...}");
-    } else {
-      CraterSpec spec;
-      const int object = read_object_name(c, s.objects, "the impacted object");
-      spec.face = c.number("face", Range::any(), "x of the impacted face [m] (impact along +x)");
-      if (c.has("axis_y") || c.has("axis_z")) {  // both or neither
-        spec.axis = std::array<double, 2>{
-            c.number("axis_y", Range::any(), "y of the crater axis [m] (quarter model: 0)"),
-            c.number("axis_z", Range::any(), "z of the crater axis [m] (quarter model: 0)")};
-        // An axisymmetric crater is centred on the axis of symmetry, y = z = 0.
-        if (s.grid.geometry == GridGeometry::axisymmetric &&
-            ((*spec.axis)[0] != 0.0 || (*spec.axis)[1] != 0.0))
-          problems.add(c.key_path("axis_y"),
-                       "the crater of an axisymmetric scene is centred on the axis of symmetry: "
-                       "expected axis_y = axis_z = 0, or neither key");
-      }
-      c.reject_unknown_keys();
-      if (object >= 0 && std::isfinite(spec.face)) {
-        spec.object = object;
-        const double dx = s.grid.spacing()(0);
-        if (check_seeds && !seeds_a_point(s, static_cast<std::size_t>(object),
-                                          Vec3(spec.face - dx, s.grid.lower(1), s.grid.lower(2)),
-                                          Vec3(spec.face + dx, s.grid.upper(1), s.grid.upper(2)))) {
-          problems.add(c.key_path("face"),
-                       "no particle of object \"" + s.objects[object].name +
-                           "\" within one cell of the face: expected the x of a face of it [m]");
-        }
-        s.output.crater = spec;
-      }
-    }
-  }
-  if (out.is_object() && out.contains("particle_paths")) {
-    const Json& paths = out["particle_paths"];
-    JsonReader r(paths, "/output/particle_paths", problems);
-    if (!paths.is_object()) {
-      problems.add("/output/particle_paths", "expected an object of named particle paths");
-    } else {
-      for (const auto& item : paths.items()) {
-        JsonReader g = r.child(item.key(), "a particle path: object, position");
-        const std::string& name = item.key();
-        if (!is_output_name(name)) {
-          problems.add(r.key_path(name),
-                       "expected a name of letters, digits and _ (it becomes the file "
-                       "paths/<name>.json)");
-        }
-        ParticlePathSpec spec;
-        spec.name = name;
-        const int object = read_object_name(g, s.objects, "name of an entry of /objects");
-        spec.position = read_vec3(g, item.value(), "position",
-                                  "initial position [m]; the object's nearest particle is taken");
-        g.reject_unknown_keys();
-        if (object < 0) continue;
-        spec.object = object;
-        s.output.particle_paths.push_back(std::move(spec));
-      }
-    }
-  }
+  if (!out.is_object()) return;
+  if (out.contains("gauges")) read_gauges(problems, out, s, check_seeds);
+  if (out.contains("crater")) read_crater(problems, out, s, check_seeds);
+  if (out.contains("particle_paths")) read_particle_paths(problems, out, s);
 }
 
 }  // namespace impact::mpm::scene_input

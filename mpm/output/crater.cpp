@@ -52,6 +52,8 @@ double thickness_along_x(const Geometry& g, double x0, double y, double z, doubl
 
 }  // namespace
 
+// Long on purpose (about 125 lines): the crater steps of docs/mpm.md in that order, each on the
+// profile the one before built.
 Crater crater_of(const std::vector<FacePoint>& all, double ring_width,
                  const std::optional<std::array<double, 2>>& axis, bool axisymmetric,
                  std::optional<double> thickness) {

@@ -106,6 +106,8 @@ std::vector<PlaneGhost> exchange_ghosts(const Particles& P, const Grid& G,
 
 }  // namespace
 
+// Long on purpose (about 190 lines): its stages 0-3 below share the pair nodes' lists, which
+// each stage fills for the next in one pass per step.
 template <class Shape>
 void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const Stencils<Shape>& S,
                         const HaloExchange* halo) {

@@ -76,6 +76,8 @@ bool checked(PointState& s1, StepReport& r, bool inject_nan) {
 
 }  // namespace
 
+// Long on purpose (about 140 lines): one parallel region whose threads share the chunk counter,
+// the batch per thread and the per-thread totals; split, those would cross function boundaries.
 StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, double dt,
                            std::optional<Failure>& failure) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
