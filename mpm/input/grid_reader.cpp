@@ -37,6 +37,8 @@ std::array<int, 3> read_int3(JsonReader& r, const Json& node, std::string_view k
   return out;
 }
 
+namespace {
+
 // The grid geometry the document asks for (grid.geometry, validated by read_grid; an unknown
 // value reads as 3d here).
 GridGeometry document_geometry(const Json& doc) {
@@ -45,6 +47,8 @@ GridGeometry document_geometry(const Json& doc) {
   if (g == kGeometryNames[2]) return GridGeometry::plane_strain;
   return GridGeometry::three_d;
 }
+
+}  // namespace
 
 // A 2D grid is written in its plane: grid.lower, grid.upper and grid.cells take [x, y], as do
 // objects' particles_per_cell and solver.ranks_per_axis. They are read as the 3D grid of one

@@ -73,6 +73,9 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
   }
   r.reject_unknown_keys();
 }
+
+namespace {
+
 std::string object_names(const std::vector<SceneObject>& objects) {
   std::string list;
   for (const auto& o : objects) list += (list.empty() ? "" : ", ") + o.name;
@@ -97,8 +100,6 @@ bool is_output_name(const std::string& name) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
   });
 }
-
-namespace {
 
 // output.gauges: named history columns, each an object's particles in a region (docs/scenes.md).
 void read_gauges(InputProblems& problems, const Json& out, Scene& s, bool check_seeds) {

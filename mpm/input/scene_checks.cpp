@@ -14,12 +14,16 @@
 
 namespace impact::mpm::scene_input {
 
+namespace {
+
 std::string vec_text(const Vec3& v) {
   std::ostringstream o;
   o.precision(4);
   o << '[' << v(0) << ", " << v(1) << ", " << v(2) << ']';
   return o.str();
 }
+
+}  // namespace
 
 // Below this fraction of its volume inside the grid a body is refused: a length typed in mm
 // makes a body 1e9 times too large (mpm check measured a volume ratio of 1.9e-9), and a scene

@@ -5,9 +5,8 @@
 
 namespace impact::mpm {
 
-using namespace scene_input;
-
 Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder* keys) {
+  using namespace scene_input;  // the blocks (block_readers.hpp)
   InputProblems problems(file);
   problems.record_keys_to(keys);
   // A 2D grid's [x, y] arrays read as the 3D ones they stand for (with_plane_arrays_completed).

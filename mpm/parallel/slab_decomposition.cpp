@@ -12,9 +12,8 @@ SlabDecomposition SlabDecomposition::balanced(const std::vector<std::size_t>& co
   if (ranks > 1 && cells < kMinCells * ranks) {  // one slab: the whole axis, however narrow
     std::ostringstream m;
     m << cells << " grid cells along one axis cannot be split into " << ranks
-      << " slabs of at least " << kMinCells
-      << " cells (the decomposition needs grid.cells[0] >= " << kMinCells * ranks
-      << "; use fewer ranks or a finer grid)";
+      << " slabs of at least " << kMinCells << " cells (the decomposition needs at least "
+      << kMinCells * ranks << " cells along it; use fewer ranks or a finer grid)";
     throw std::invalid_argument(m.str());
   }
   double total = 0.0;

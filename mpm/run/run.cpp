@@ -105,10 +105,9 @@ struct RunEnd {
   int code = 0;
 };
 
-// Before anything is allocated: the thread warning, the start refusal (kExitMemory; 0: none),
-// and for a new run the directory made ready (an unfinished run refused, the previous run's files
-// removed, scene.json written).
-int prepare(const RunContext& run, const std::string& scene_text) {
+// Before anything is allocated or written: the thread warning and the start refusal
+// (kExitMemory; 0: none).
+int refuse_start(const RunContext& run) {
   // More threads than cores: each barrier waits for a descheduled thread (the rod at --threads
   // 256 on 2 cores took 24 s against 0.6 s).
   if (const int cores = omp_get_num_procs(); run.threads > cores && run.options.threads > 0) {
@@ -121,6 +120,12 @@ int prepare(const RunContext& run, const std::string& scene_text) {
     if (run.root) std::cerr << "mpm: " << refusal << '\n';
     return kExitMemory;
   }
+  return 0;
+}
+
+// For a new run the directory made ready (an unfinished run refused, the previous run's files
+// removed, scene.json written); for a restart, only there.
+void ready_directory(const RunContext& run, const std::string& scene_text) {
   if (!run.resume) {
     // Every rank looks, and they agree (a collective call: none looks after rank 0 removed).
     std::string unfinished = run.options.overwrite ? "" : unfinished_run(run.dir);
@@ -140,7 +145,6 @@ int prepare(const RunContext& run, const std::string& scene_text) {
     if (!run.resume)
       write_file_atomically(run.dir / "scene.json", [&](std::ostream& o) { o << scene_text; });
   }
-  return 0;
 }
 
 // The planted faults that are not signals, by seed index on any number of ranks (1: a particle
@@ -363,7 +367,8 @@ void report_end(const RunContext& run, const Simulation& sim, const Json& summar
   std::cout << line.str() << std::flush;
 }
 
-// The run of run() and restart() (`resume`: from dir/checkpoint.bin): prepare, (resume,) the step
+// The run of run() and restart() (`resume`: from dir/checkpoint.bin): refuse or ready the
+// directory, (resume,) the step
 // loop with its outputs, checkpoints, signals and reports, then the summary. On several ranks
 // every rank steps its box and writes its snapshot piece and checkpoint; the gauges, observables
 // and the summary are reduced over the ranks, and rank 0 writes history.csv, the .pvtu/.pvd and
@@ -383,9 +388,11 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
                        comm,
                        comm == nullptr || comm->root(),
                        run_threads(options.threads)};
-  if (const int code = prepare(run, scene_text)) return code;
-  // Before the run: the material files as the run read them.
+  if (const int code = refuse_start(run)) return code;
+  // Before the directory is cleared (a material file may lie in it): the material files as the
+  // run reads them.
   const std::string fingerprint = scene_fingerprint(scene.resolved);
+  ready_directory(run, scene_text);
   WallClock wall;
   Simulation sim(scene, run.threads, comm);
   if (resume && sim.threads() != run.threads) {
