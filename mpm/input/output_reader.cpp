@@ -9,6 +9,7 @@
 
 #include "mpm/input/block_readers.hpp"
 #include "mpm/input/scene_keys.hpp"
+#include "mpm/particles/snapshot_fields.hpp"
 #include "mpm/scene/seed_points.hpp"
 
 namespace impact::mpm::scene_input {
@@ -58,11 +59,9 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
       r.problems().add(r.key_path("fields"), "expected an array of field names");
     } else {
       for (std::size_t i = 0; i < f.size(); ++i) {
-        const auto& known = known_output_fields();
-        if (!f[i].is_string() ||
-            std::find(known.begin(), known.end(), f[i].get<std::string>()) == known.end()) {
+        if (!f[i].is_string() || !find_snapshot_field(f[i].get<std::string>())) {
           std::string list;
-          for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+          for (const auto& k : snapshot_fields()) list += (list.empty() ? "" : ", ") + k.name;
           r.problems().add(r.key_path("fields") + "/" + std::to_string(i),
                            "unknown field " + f[i].dump() + "; known: " + list);
         } else {

@@ -1,19 +1,19 @@
 // XML VTK unstructured grid with raw appended binary data (<AppendedData encoding="raw">, each
 // array preceded by its UInt64 byte count; header_type="UInt64"): one vertex cell per particle,
 // point data as the scene's `output.fields` ask. ParaView and VTK read it directly; it is ~10x
-// faster to write than ASCII and about half the size. Fields: velocity [m/s], stress (6
-// components xx yy zz xy yz xz) [Pa], plastic_strain [-], temperature [K], damage [-], mass [kg],
-// volume [m^3], pressure [Pa], von_mises [Pa], material, object, field (indices), id (the seed
-// index). On several ranks each rank writes its own piece and rank 0 a .pvtu that names them
-// (VTK's parallel unstructured grid): ParaView opens the step as one data set, and no rank ever
-// holds another's particles.
+// faster to write than ASCII and about half the size. Fields: mpm/particles/snapshot_fields.hpp
+// (velocity [m/s], stress (6 components xx yy zz xy yz xz) [Pa], every other member of the
+// particles' state, pressure [Pa], von_mises [Pa], material, object, field (indices), id (the
+// seed index), ...). On several ranks each rank writes its own piece and rank 0 a .pvtu that names
+// them (VTK's parallel unstructured grid): ParaView opens the step as one data set, and no rank
+// ever holds another's particles.
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 
 #include "mpm/output/output.hpp"
+#include "mpm/particles/snapshot_fields.hpp"
 #include "support/atomic_file.hpp"
 
 namespace impact::mpm {
@@ -59,57 +59,16 @@ class Appended {
 
 // The number of components of an output field (the .pvtu declares them without the data).
 int components(const std::string& field) {
-  return field == "velocity" ? 3 : field == "stress" ? 6 : 1;
+  return find_snapshot_field(field)->components;
 }
 
 // Field `f` of the particles `in_play`, components() values per particle.
 std::vector<double> field_values(const std::string& f, const Particles& P,
                                  const std::vector<std::size_t>& in_play) {
-  const int c = components(f);
+  const SnapshotField& field = *find_snapshot_field(f);  // the scene reader checked the name
+  const auto c = static_cast<std::size_t>(field.components);
   std::vector<double> v(c * in_play.size());
-  const auto scalar = [&](const std::function<double(std::size_t)>& value) {
-    for (std::size_t i = 0; i < in_play.size(); ++i) v[i] = value(in_play[i]);
-  };
-  if (f == "velocity") {
-    for (std::size_t i = 0; i < in_play.size(); ++i)
-      for (int d = 0; d < 3; ++d) v[3 * i + d] = P.v[in_play[i]](d);
-  } else if (f == "stress") {
-    for (std::size_t i = 0; i < in_play.size(); ++i) {
-      const Mat3& s = P.state[in_play[i]].stress;
-      const double sc[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
-      for (int d = 0; d < 6; ++d) v[6 * i + d] = sc[d];
-    }
-  } else if (f == "plastic_strain") {
-    scalar([&](std::size_t p) { return P.state[p].plastic_strain; });
-  } else if (f == "temperature") {
-    scalar([&](std::size_t p) { return P.state[p].temperature; });
-  } else if (f == "damage") {
-    scalar([&](std::size_t p) { return P.state[p].damage; });
-  } else if (f == "mass") {
-    scalar([&](std::size_t p) { return P.mass[p]; });
-  } else if (f == "volume") {
-    scalar([&](std::size_t p) { return P.volume[p]; });
-  } else if (f == "pressure") {
-    scalar([&](std::size_t p) { return -mean(P.state[p].stress); });
-  } else if (f == "von_mises") {
-    scalar([&](std::size_t p) { return von_mises(P.state[p].stress); });
-  } else if (f == "material") {
-    scalar([&](std::size_t p) { return double(P.material[p]); });
-  } else if (f == "object") {
-    scalar([&](std::size_t p) { return double(P.object[p]); });
-  } else if (f == "field") {
-    scalar([&](std::size_t p) { return double(P.field[p]); });
-  } else if (f == "id") {
-    scalar([&](std::size_t p) { return double(P.id.empty() ? p : P.id[p]); });
-  } else if (f == "failure_cause") {
-    scalar([&](std::size_t p) { return double(P.state[p].failure_cause); });
-  } else if (f == "failed_in_tension") {
-    scalar([&](std::size_t p) { return P.state[p].failed_in_tension ? 1.0 : 0.0; });
-  } else if (f == "instability") {
-    scalar([&](std::size_t p) { return double(P.state[p].instability); });
-  } else if (f == "failed") {
-    scalar([&](std::size_t p) { return P.state[p].failed ? 1.0 : 0.0; });
-  }
+  for (std::size_t i = 0; i < in_play.size(); ++i) field.values(P, in_play[i], &v[c * i]);
   return v;
 }
 

@@ -6,8 +6,10 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <tuple>
 #include <vector>
 
+#include "models/core/aggregate_arity.hpp"
 #include "models/core/point_state.hpp"
 #include "mpm/scene/scene.hpp"
 #include "mpm/scene/seed_points.hpp"
@@ -41,35 +43,74 @@ struct Particles {
   /// rank holds some particles, in any order); empty on one rank, where it is the array index.
   std::vector<std::uint64_t> id;
 
-  /// f(array) for every per-particle array, optional ones (q, fault, removed, id) included even
-  /// when empty: what moves a particle whole (migration between ranks) visits this list, so a
-  /// new field is added here and nowhere else.
+  /// f(array) for every per-particle array of kParticleArrays (below), optional ones (q, fault,
+  /// removed, id) included even when empty: what moves a particle whole (migration between ranks),
+  /// resizes, filters and checkpoints the particles visits the table, so a new field is one member
+  /// here, one line there and its use.
   template <class F>
-  void for_each_array(F&& f) {
-    visit_arrays(*this, f);
-  }
+  void for_each_array(F&& f);
   template <class F>
-  void for_each_array(F&& f) const {
-    visit_arrays(*this, f);
-  }
+  void for_each_array(F&& f) const;
 
   std::size_t size() const { return x.size(); }
 
- private:
-  template <class Self, class F>
-  static void visit_arrays(Self& P, F& f) {
-    f(P.x), f(P.v), f(P.mass), f(P.volume0), f(P.volume), f(P.L), f(P.state), f(P.wave_speed),
-        f(P.material), f(P.object), f(P.field), f(P.q), f(P.fault), f(P.removed), f(P.id);
-  }
-
- public:
+  /// Reserves n particles in every array that is not optional.
   void reserve(std::size_t n);
   /// Keeps the particles p with keep[p] != 0, in order, in every array in use.
   void keep_only(const std::vector<char>& keep);
-  /// Approximate storage per particle [bytes] without the optional q (for `mpm check` and the
-  /// benchmark).
+  /// Storage per particle [bytes] of the arrays that are not optional (for `mpm check` and the
+  /// benchmark; mpm/run/memory.cpp adds the optional ones a scene uses).
   static std::size_t bytes_per_particle();
 };
+
+/// One per-particle array: its name (the checkpoint's tag), its SI unit ("-" for indices, codes
+/// and flags; a 2D grid's extensive values are per metre of thickness or per ring, scene.hpp
+/// GridGeometry), where it lives, and whether it is optional (empty unless the scene uses it).
+template <class T>
+struct ParticleArray {
+  using Element = T;
+  const char* name;
+  const char* unit;
+  std::vector<T> Particles::*member;
+  bool optional;
+};
+
+/// Every array of Particles, in declaration order (the order of a checkpoint and of a migrated
+/// particle's record). The particle snapshots' fields: mpm/particles/snapshot_fields.hpp.
+inline constexpr auto kParticleArrays = std::make_tuple(
+    ParticleArray<Vec3>{"x", "m", &Particles::x, false},
+    ParticleArray<Vec3>{"v", "m/s", &Particles::v, false},
+    ParticleArray<double>{"mass", "kg", &Particles::mass, false},
+    ParticleArray<double>{"volume0", "m^3", &Particles::volume0, false},
+    ParticleArray<double>{"volume", "m^3", &Particles::volume, false},
+    ParticleArray<Mat3>{"L", "1/s", &Particles::L, false},
+    ParticleArray<PointState>{"state", "-", &Particles::state, false},  // kPointStateMembers
+    ParticleArray<double>{"wave_speed", "m/s", &Particles::wave_speed, false},
+    ParticleArray<std::uint16_t>{"material", "-", &Particles::material, false},
+    ParticleArray<std::uint16_t>{"object", "-", &Particles::object, false},
+    ParticleArray<std::uint16_t>{"field", "-", &Particles::field, false},
+    ParticleArray<double>{"q", "Pa", &Particles::q, true},
+    ParticleArray<std::uint8_t>{"fault", "-", &Particles::fault, true},
+    ParticleArray<std::uint8_t>{"removed", "-", &Particles::removed, true},
+    ParticleArray<std::uint64_t>{"id", "-", &Particles::id, true});
+
+static_assert(aggregate_arity<Particles>() == std::tuple_size_v<decltype(kParticleArrays)>,
+              "a Particles array is missing from kParticleArrays");
+
+/// f(line) for every line of kParticleArrays, in order.
+template <class F>
+constexpr void for_each_particle_array(F&& f) {
+  std::apply([&](const auto&... a) { (f(a), ...); }, kParticleArrays);
+}
+
+template <class F>
+void Particles::for_each_array(F&& f) {
+  for_each_particle_array([&](const auto& a) { f(this->*a.member); });
+}
+template <class F>
+void Particles::for_each_array(F&& f) const {
+  for_each_particle_array([&](const auto& a) { f(this->*a.member); });
+}
 
 /// Seeds every object at the ppc^3 sub-cell centres of the grid cells that lie inside its
 /// geometry; a point already claimed by an earlier object is skipped. mass = rho0 * cell/ppc^3.

@@ -9,17 +9,9 @@
 namespace impact::mpm {
 
 void Particles::reserve(std::size_t n) {
-  x.reserve(n);
-  v.reserve(n);
-  mass.reserve(n);
-  volume0.reserve(n);
-  volume.reserve(n);
-  L.reserve(n);
-  state.reserve(n);
-  wave_speed.reserve(n);
-  material.reserve(n);
-  object.reserve(n);
-  field.reserve(n);
+  for_each_particle_array([&](const auto& a) {
+    if (!a.optional) (this->*a.member).reserve(n);
+  });
 }
 
 void Particles::keep_only(const std::vector<char>& keep) {
@@ -34,8 +26,11 @@ void Particles::keep_only(const std::vector<char>& keep) {
 }
 
 std::size_t Particles::bytes_per_particle() {
-  return 2 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(Mat3) + sizeof(PointState) +
-         sizeof(double) + 3 * sizeof(std::uint16_t);
+  std::size_t bytes = 0;
+  for_each_particle_array([&](const auto& a) {
+    if (!a.optional) bytes += sizeof(typename std::decay_t<decltype(a)>::Element);
+  });
+  return bytes;
 }
 
 namespace {

@@ -258,13 +258,4 @@ struct Scene {
   int companion_field(int material) const;
 };
 
-/// The VTU point-data fields known to the writer.
-inline const std::vector<std::string>& known_output_fields() {
-  static const std::vector<std::string> f = {
-      "velocity", "stress",        "plastic_strain",    "temperature", "damage", "mass",
-      "volume",   "pressure",      "von_mises",         "material",    "object", "field",
-      "failed",   "failure_cause", "failed_in_tension", "instability", "id"};
-  return f;
-}
-
 }  // namespace impact::mpm

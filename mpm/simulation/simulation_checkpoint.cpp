@@ -1,7 +1,9 @@
 // The Simulation's part of a checkpoint (format in mpm/run/checkpoint.hpp): every particle array,
 // the boxes, the counters and every ledger accumulator, so that load() continues bit for bit.
 #include <algorithm>
+#include <type_traits>
 
+#include "models/core/point_state_fields.hpp"
 #include "mpm/output/checkpoint_stream.hpp"
 #include "mpm/simulation/simulation.hpp"
 
@@ -12,50 +14,71 @@ namespace {
 // The tags of the boxes' boundaries along x, y and z (format 6).
 constexpr const char* kBoxTags[3] = {"boxes_x", "boxes_y", "boxes_z"};
 
-// A new PointState or Particles member must be added to save()/load() below (and the format
-// version raised): these fail to compile until then.
-static_assert(sizeof(PointState) == 3 * sizeof(Mat3) + 7 * sizeof(double) + 8,
-              "PointState changed: update Simulation::save/load and kCheckpointVersion");
-static_assert(sizeof(Particles) == 15 * sizeof(std::vector<double>),
-              "Particles changed: update Simulation::save/load and kCheckpointVersion");
 // Eigen's fixed-size Vec3 and Mat3 are plain arrays of doubles: written as stored.
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Mat3) == 9 * sizeof(double));
 
-// The PointState members, one record per particle (no padding bytes in the file).
-constexpr std::uint32_t kStateRecord = 3 * sizeof(Mat3) + 7 * sizeof(double) + 5;
+// A PointState member's bytes in the file: tensors and numbers as stored, flags and codes as one
+// byte each (no padding bytes in the file).
+template <class T>
+constexpr std::uint32_t stored_size() {
+  return std::is_same_v<T, Mat3> || std::is_same_v<T, double> ? sizeof(T) : 1;
+}
+
+// The PointState members, one record per particle, in the order of kPointStateMembers.
+constexpr std::uint32_t state_record() {
+  std::uint32_t bytes = 0;
+  for_each_state_member(
+      [&](const auto& m) { bytes += stored_size<typename std::decay_t<decltype(m)>::Type>(); });
+  return bytes;
+}
+constexpr std::uint32_t kStateRecord = state_record();
+static_assert(kStateRecord == 3 * sizeof(Mat3) + 7 * sizeof(double) + 5,
+              "PointState changed: raise kCheckpointVersion (mpm/run/checkpoint.hpp)");
+
+void save_states(CheckpointWriter& out, const char* tag, const std::vector<PointState>& states) {
+  out.section(tag, states.size(), kStateRecord);
+  for (const PointState& s : states) {
+    for_each_state_member([&](const auto& m) {
+      using T = typename std::decay_t<decltype(m)>::Type;
+      if constexpr (stored_size<T>() == 1)
+        out.value(static_cast<std::uint8_t>(s.*m.member));
+      else
+        out.value(s.*m.member);
+    });
+  }
+}
+
+void load_states(CheckpointReader& in, const char* tag, std::vector<PointState>& states) {
+  in.section(tag, kStateRecord, states.size());
+  for (PointState& s : states) {
+    for_each_state_member([&](const auto& m) {
+      using T = typename std::decay_t<decltype(m)>::Type;
+      if constexpr (std::is_same_v<T, bool>) {
+        s.*m.member = in.value<std::uint8_t>() != 0;
+      } else if constexpr (std::is_same_v<T, FailureCause>) {
+        const auto code = in.value<std::uint8_t>();
+        if (code > static_cast<std::uint8_t>(kLastFailureCause))
+          in.fail(std::string(m.name) + " out of range");
+        s.*m.member = static_cast<FailureCause>(code);
+      } else if constexpr (std::is_same_v<T, Mat3>) {
+        in.bytes(&(s.*m.member), sizeof(T));
+      } else {
+        s.*m.member = in.value<T>();
+      }
+    });
+  }
+}
 
 }  // namespace
 
 void Simulation::save(CheckpointWriter& out) const {
   const Particles& P = particles_;
-  out.array("x", P.x);
-  out.array("v", P.v);
-  out.array("mass", P.mass);
-  out.array("volume0", P.volume0);
-  out.array("volume", P.volume);
-  out.array("L", P.L);
-  out.section("state", P.size(), kStateRecord);
-  for (const PointState& s : P.state) {
-    out.value(s.stress);
-    out.value(s.F);
-    out.value(s.R);
-    for (const double d : {s.plastic_strain, s.plastic_strain_rate, s.temperature,
-                           s.internal_energy, s.damage, s.porosity, s.flow_internal})
-      out.value(d);
-    out.value(static_cast<std::uint8_t>(s.melted));
-    out.value(static_cast<std::uint8_t>(s.failed));
-    out.value(static_cast<std::uint8_t>(s.failure_cause));
-    out.value(s.instability);
-    out.value(static_cast<std::uint8_t>(s.failed_in_tension));
-  }
-  out.array("wave_speed", P.wave_speed);
-  out.array("material", P.material);
-  out.array("object", P.object);
-  out.array("field", P.field);
-  out.array("q", P.q);
-  out.array("fault", P.fault);
-  out.array("removed", P.removed);
-  out.array("id", P.id);
+  for_each_particle_array([&](const auto& a) {
+    if constexpr (std::is_same_v<typename std::decay_t<decltype(a)>::Element, PointState>)
+      save_states(out, a.name, P.*a.member);
+    else
+      out.array(a.name, P.*a.member);
+  });
   for (int d = 0; d < 3; ++d) out.array(kBoxTags[d], boxes_.axis(d).first_cells());
   out.value(static_cast<std::int64_t>(rebalances_));
   out.section("simulation", 1, 3 * sizeof(double) + 4 * sizeof(std::int64_t));
@@ -76,37 +99,13 @@ void Simulation::save(CheckpointWriter& out) const {
 void Simulation::load(CheckpointReader& in) {
   Particles& P = particles_;
   const std::uint64_t n = P.size();
-  in.array("x", P.x, n);
-  in.array("v", P.v, n);
-  in.array("mass", P.mass, n);
-  in.array("volume0", P.volume0, n);
-  in.array("volume", P.volume, n);
-  in.array("L", P.L, n);
-  in.section("state", kStateRecord, n);
-  for (PointState& s : P.state) {
-    in.bytes(&s.stress, sizeof s.stress);
-    in.bytes(&s.F, sizeof s.F);
-    in.bytes(&s.R, sizeof s.R);
-    for (double* d : {&s.plastic_strain, &s.plastic_strain_rate, &s.temperature, &s.internal_energy,
-                      &s.damage, &s.porosity, &s.flow_internal})
-      *d = in.value<double>();
-    s.melted = in.value<std::uint8_t>() != 0;
-    s.failed = in.value<std::uint8_t>() != 0;
-    const auto cause = in.value<std::uint8_t>();
-    if (cause > static_cast<std::uint8_t>(FailureCause::becker))
-      in.fail("failure cause out of range");
-    s.failure_cause = static_cast<FailureCause>(cause);
-    s.instability = in.value<std::uint8_t>();
-    s.failed_in_tension = in.value<std::uint8_t>() != 0;
-  }
-  in.array("wave_speed", P.wave_speed, n);
-  in.array("material", P.material, n);
-  in.array("object", P.object, n);
-  in.array("field", P.field, n);
-  in.array("q", P.q, P.q.size());
-  in.array("fault", P.fault, P.fault.size());
-  in.array("removed", P.removed, P.removed.size());
-  in.array("id", P.id, P.id.size());
+  for_each_particle_array([&](const auto& a) {
+    auto& values = P.*a.member;
+    if constexpr (std::is_same_v<typename std::decay_t<decltype(a)>::Element, PointState>)
+      load_states(in, a.name, values);
+    else
+      in.array(a.name, values, a.optional ? values.size() : n);  // optional: sized by the scene
+  });
   std::array<SlabDecomposition, 3> axes;
   for (int d = 0; d < 3; ++d) {
     std::vector<int> first_cells;

@@ -10,8 +10,11 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include "models/core/point_state_fields.hpp"
 #include "models/kinematics/deformation_gradient.hpp"
 #include "models/material/material.hpp"
 #include "models/material/update_batch.hpp"
@@ -23,67 +26,68 @@ namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// The scalar history fields of PointState, by their names in a state dict, with the values a
-/// state may hold: a NaN temperature or a negative plastic strain would not stop the update, it
-/// would return nonsense.
-struct ScalarField {
+/// The values a state dict's members may hold beyond their type, by member name: a NaN
+/// temperature or a negative plastic strain would not stop the update, it would return nonsense.
+/// The members themselves, their order and their types: kPointStateMembers
+/// (models/core/point_state_fields.hpp); a number this list does not name must be finite, a
+/// tensor finite, a flag 0 or 1, a code in its enumeration's range.
+struct ScalarCheck {
   const char* name;
-  double PointState::*member;
   bool (*admissible)(double);
   const char* expected;
 };
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::array<ScalarField, 7> kScalars{
-    {{"plastic_strain", &PointState::plastic_strain, [](double v) { return v >= 0.0 && v < kInf; },
-      "a plastic strain >= 0 [-]"},
-     {"plastic_strain_rate", &PointState::plastic_strain_rate,
-      [](double v) { return v >= 0.0 && v < kInf; }, "a plastic strain rate >= 0 [1/s]"},
-     {"temperature", &PointState::temperature, [](double v) { return v > 0.0 && v < kInf; },
-      "a temperature > 0 [K]"},
-     {"internal_energy", &PointState::internal_energy, [](double v) { return std::isfinite(v); },
+constexpr std::array<ScalarCheck, 7> kScalarChecks{
+    {{"plastic_strain", [](double v) { return v >= 0.0 && v < kInf; }, "a plastic strain >= 0 [-]"},
+     {"plastic_strain_rate", [](double v) { return v >= 0.0 && v < kInf; },
+      "a plastic strain rate >= 0 [1/s]"},
+     {"temperature", [](double v) { return v > 0.0 && v < kInf; }, "a temperature > 0 [K]"},
+     {"internal_energy", [](double v) { return std::isfinite(v); },
       "a finite specific internal energy [J/kg]"},
      // Johnson-Cook's D goes on past 1 (failure at D >= 1): no upper bound.
-     {"damage", &PointState::damage, [](double v) { return v >= 0.0 && v < kInf; },
-      "a damage >= 0 [-]"},
+     {"damage", [](double v) { return v >= 0.0 && v < kInf; }, "a damage >= 0 [-]"},
      // TEPLA's void fraction, kept below 1 by the library (1 - f divides).
-     {"porosity", &PointState::porosity, [](double v) { return v >= 0.0 && v < 1.0; },
-      "a porosity in [0, 1) [-]"},
-     {"flow_internal", &PointState::flow_internal, [](double v) { return std::isfinite(v); },
+     {"porosity", [](double v) { return v >= 0.0 && v < 1.0; }, "a porosity in [0, 1) [-]"},
+     {"flow_internal", [](double v) { return std::isfinite(v); },
       "a finite internal variable of the flow-stress law [Pa]"}}};
-struct TensorField {
+struct TensorCheck {
   const char* name;
-  Mat3 PointState::*member;
   bool (*admissible)(const Mat3&);
   const char* expected;
 };
-constexpr std::array<TensorField, 3> kTensors{
-    {{"stress", &PointState::stress, [](const Mat3& s) { return s.allFinite(); },
-      "a finite stress [Pa]"},
-     {"F", &PointState::F, [](const Mat3& F) { return F.allFinite() && F.determinant() > 0.0; },
+constexpr std::array<TensorCheck, 3> kTensorChecks{
+    {{"stress", [](const Mat3& s) { return s.allFinite(); }, "a finite stress [Pa]"},
+     {"F", [](const Mat3& F) { return F.allFinite() && F.determinant() > 0.0; },
       "a deformation gradient with det F > 0"},
-     {"R", &PointState::R,
+     {"R",
       [](const Mat3& R) {
         return R.allFinite() &&
                (R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
                R.determinant() > 0.0;
       },
       "a rotation (R^T R = I to 1e-6, det R = 1)"}}};
-struct FlagField {
+/// A code member's largest value and what its values mean.
+struct CodeCheck {
   const char* name;
-  bool PointState::*member;
+  int max;
+  const char* expected;
 };
-constexpr std::array<FlagField, 3> kFlags{{{"melted", &PointState::melted},
-                                           {"failed", &PointState::failed},
-                                           {"failed_in_tension", &PointState::failed_in_tension}}};
+constexpr std::array<CodeCheck, 2> kCodeChecks{
+    {{"failure_cause", static_cast<int>(kLastFailureCause), "codes 0-4 (impact.failure_causes)"},
+     {"instability", kDruckerFired | kBeckerFired, "bits 0-3 (1 Drucker fired, 2 Becker fired)"}}};
+
+/// The entry of `checks` for member `name`, or nullptr.
+template <class Checks>
+const typename Checks::value_type* check_of(const Checks& checks, const char* name) {
+  for (const auto& c : checks)
+    if (std::string_view(c.name) == name) return &c;
+  return nullptr;
+}
 
 /// Every key a state dict may have.
 std::vector<std::string> state_keys() {
   std::vector<std::string> keys;
-  for (const auto& f : kTensors) keys.emplace_back(f.name);
-  for (const auto& f : kScalars) keys.emplace_back(f.name);
-  for (const auto& f : kFlags) keys.emplace_back(f.name);
-  keys.emplace_back("failure_cause");
-  keys.emplace_back("instability");
+  for_each_state_member([&](const auto& m) { keys.emplace_back(m.name); });
   return keys;
 }
 
@@ -188,71 +192,67 @@ std::vector<PointState> read_states(const ElasticPlastic& model, const py::dict&
   }
   std::vector<PointState> out(static_cast<std::size_t>(n),
                               model.initial_state(model.params().room_temperature));
-  for (const auto& f : kTensors) {
-    if (!state.contains(f.name)) continue;
-    const std::string what = std::string("state['") + f.name + "']";
-    const auto t = tensor_list(tensors(state[f.name], n, what));
-    refuse_inadmissible(
-        what, n, f.expected, [&](py::ssize_t i) { return f.admissible(t[i]); },
-        [&](py::ssize_t i) { return tensor_text(t[i]); });
-    for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = t[i];
-  }
-  for (const auto& f : kScalars) {
-    if (!state.contains(f.name)) continue;
-    const auto v = scalars(state, f.name, n).unchecked<1>();
-    refuse_inadmissible(
-        std::string("state['") + f.name + "']", n, f.expected,
-        [&](py::ssize_t i) { return f.admissible(v(i)); },
-        [&](py::ssize_t i) { return number_text(v(i)); });
-    for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = v(i);
-  }
-  for (const auto& f : kFlags) {
-    if (!state.contains(f.name)) continue;
-    const auto v = codes(state, f.name, n, 1, "0 or 1 (False or True)");
-    for (py::ssize_t i = 0; i < n; ++i) out[i].*f.member = v[i] != 0;
-  }
-  if (state.contains("failure_cause")) {
-    const auto v = codes(state, "failure_cause", n, static_cast<int>(FailureCause::becker),
-                         "codes 0-4 (impact.failure_causes)");
-    for (py::ssize_t i = 0; i < n; ++i) out[i].failure_cause = static_cast<FailureCause>(v[i]);
-  }
-  if (state.contains("instability")) {
-    const auto v = codes(state, "instability", n, kDruckerFired | kBeckerFired,
-                         "bits 0-3 (1 Drucker fired, 2 Becker fired)");
-    for (py::ssize_t i = 0; i < n; ++i) out[i].instability = static_cast<std::uint8_t>(v[i]);
-  }
+  for_each_state_member([&](const auto& m) {
+    using T = typename std::decay_t<decltype(m)>::Type;
+    if (!state.contains(m.name)) return;
+    const std::string what = std::string("state['") + m.name + "']";
+    if constexpr (std::is_same_v<T, Mat3>) {
+      const auto t = tensor_list(tensors(state[m.name], n, what));
+      const TensorCheck* check = check_of(kTensorChecks, m.name);
+      refuse_inadmissible(
+          what, n, check ? check->expected : "a finite tensor",
+          [&](py::ssize_t i) { return check ? check->admissible(t[i]) : t[i].allFinite(); },
+          [&](py::ssize_t i) { return tensor_text(t[i]); });
+      for (py::ssize_t i = 0; i < n; ++i) out[i].*m.member = t[i];
+    } else if constexpr (std::is_same_v<T, double>) {
+      const auto v = scalars(state, m.name, n).template unchecked<1>();
+      const ScalarCheck* check = check_of(kScalarChecks, m.name);
+      refuse_inadmissible(
+          what, n, check ? check->expected : "a finite number",
+          [&](py::ssize_t i) { return check ? check->admissible(v(i)) : std::isfinite(v(i)); },
+          [&](py::ssize_t i) { return number_text(v(i)); });
+      for (py::ssize_t i = 0; i < n; ++i) out[i].*m.member = v(i);
+    } else if constexpr (std::is_same_v<T, bool>) {
+      const auto v = codes(state, m.name, n, 1, "0 or 1 (False or True)");
+      for (py::ssize_t i = 0; i < n; ++i) out[i].*m.member = v[i] != 0;
+    } else {  // a code: FailureCause or bits
+      const CodeCheck* check = check_of(kCodeChecks, m.name);
+      const auto v = codes(state, m.name, n, check ? check->max : 255,
+                           check ? check->expected : "codes 0-255");
+      for (py::ssize_t i = 0; i < n; ++i) out[i].*m.member = static_cast<T>(v[i]);
+    }
+  });
   return out;
 }
 
 py::dict write_states(const std::vector<PointState>& s) {
   const auto n = static_cast<py::ssize_t>(s.size());
   py::dict out;
-  for (const auto& f : kTensors) {
-    Array a({n, py::ssize_t{3}, py::ssize_t{3}});
-    auto v = a.mutable_unchecked<3>();
-    for (py::ssize_t i = 0; i < n; ++i)
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) v(i, r, c) = (s[i].*f.member)(r, c);
-    out[f.name] = a;
-  }
-  for (const auto& f : kScalars) {
-    Array a(n);
-    auto v = a.mutable_unchecked<1>();
-    for (py::ssize_t i = 0; i < n; ++i) v(i) = s[i].*f.member;
-    out[f.name] = a;
-  }
-  for (const auto& f : kFlags) {
-    py::array_t<bool> a(n);
-    for (py::ssize_t i = 0; i < n; ++i) a.mutable_at(i) = s[i].*f.member;
-    out[f.name] = a;
-  }
-  py::array_t<std::uint8_t> cause(n), instability(n);
-  for (py::ssize_t i = 0; i < n; ++i) {
-    cause.mutable_at(i) = static_cast<std::uint8_t>(s[i].failure_cause);
-    instability.mutable_at(i) = s[i].instability;
-  }
-  out["failure_cause"] = cause;
-  out["instability"] = instability;
+  for_each_state_member([&](const auto& m) {
+    using T = typename std::decay_t<decltype(m)>::Type;
+    if constexpr (std::is_same_v<T, Mat3>) {
+      Array a({n, py::ssize_t{3}, py::ssize_t{3}});
+      auto v = a.template mutable_unchecked<3>();
+      for (py::ssize_t i = 0; i < n; ++i)
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) v(i, r, c) = (s[i].*m.member)(r, c);
+      out[m.name] = a;
+    } else if constexpr (std::is_same_v<T, double>) {
+      Array a(n);
+      auto v = a.template mutable_unchecked<1>();
+      for (py::ssize_t i = 0; i < n; ++i) v(i) = s[i].*m.member;
+      out[m.name] = a;
+    } else if constexpr (std::is_same_v<T, bool>) {
+      py::array_t<bool> a(n);
+      for (py::ssize_t i = 0; i < n; ++i) a.mutable_at(i) = s[i].*m.member;
+      out[m.name] = a;
+    } else {  // a code
+      py::array_t<std::uint8_t> a(n);
+      for (py::ssize_t i = 0; i < n; ++i)
+        a.mutable_at(i) = static_cast<std::uint8_t>(s[i].*m.member);
+      out[m.name] = a;
+    }
+  });
   return out;
 }
 
