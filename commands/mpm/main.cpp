@@ -35,7 +35,7 @@ int run_main(int argc, char** argv) {
   MpiSession mpi(argc, argv);
   const Communicator comm(&mpi);
   commands::CommandLine c;
-  c.options.comm = &comm;
+  c.options.comm = comm;
   c.progress = isatty(STDERR_FILENO) != 0;
   commands::declare(c);
   if (const auto code = impact::cli::parse(c.app, argc, argv, c.verbosity)) return *code;

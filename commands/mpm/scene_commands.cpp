@@ -96,7 +96,7 @@ int scene_command(CommandLine& c) {
     if (c.study->parsed()) return study_command(c, patches);
     c.options.progress = c.progress;
     c.options.handle_signals = true;
-    c.options.report = c.options.comm->root();  // one rank prints the outcome
+    c.options.report = c.options.comm.get().root();  // one rank prints the outcome
     if (!c.restart_dir.empty()) return restart(c.restart_dir, c.options);
     return run_or_check(c, patches, chain);
   } catch (const InputError& e) {

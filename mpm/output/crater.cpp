@@ -182,7 +182,7 @@ Crater crater_of(const std::vector<FacePoint>& all, double ring_width,
 }
 
 CraterMeasure::CraterMeasure(const Scene& scene, const CraterSpec& spec, const Particles& initial,
-                             const Communicator* comm)
+                             const Communicator& comm)
     : spec_(spec),
       geometry_(scene.objects[std::size_t(spec.object)].geometry),
       dx_(scene.grid.spacing()(0)),
@@ -202,8 +202,8 @@ CraterMeasure::CraterMeasure(const Scene& scene, const CraterSpec& spec, const P
     if (std::abs(initial.x[p](0) - spec.face) > dx_) continue;
     layer.push_back({seed_index(initial, p), {initial.x[p](0), initial.x[p](1), initial.x[p](2)}});
   }
-  if (comm_ != nullptr && comm_->size() > 1) {
-    layer = comm_->concatenate(layer);
+  if (comm_.several()) {
+    layer = comm_.concatenate(layer);
     std::sort(layer.begin(), layer.end(), [](const Seed& a, const Seed& b) { return a.id < b.id; });
   }
   std::vector<std::uint64_t> ids;
@@ -211,7 +211,7 @@ CraterMeasure::CraterMeasure(const Scene& scene, const CraterSpec& spec, const P
     ids.push_back(s.id);
     face_x0_.emplace_back(s.x0[0], s.x0[1], s.x0[2]);
   }
-  face_.add(ids, nullptr);  // already every rank's
+  face_.add(std::move(ids));  // already every rank's
 }
 
 Crater CraterMeasure::measure(const Particles& P) const {
@@ -227,7 +227,7 @@ Crater CraterMeasure::measure(const Particles& P) const {
     mine.push_back({m.i, {x(0) - face_x0_[m.i](0), x(1), x(2), P.volume0[m.p]}});
   }
   // In seed-index order on any number of ranks: the rings' sums add in the same order.
-  if (comm_ != nullptr && comm_->size() > 1) mine = comm_->concatenate(mine);
+  mine = comm_.concatenate(mine);
   std::sort(mine.begin(), mine.end(), [](const Point& a, const Point& b) { return a.i < b.i; });
   std::vector<FacePoint> face;
   face.reserve(mine.size());

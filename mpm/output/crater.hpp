@@ -84,7 +84,7 @@ class CraterMeasure {
   /// `initial`: the particles as seeded (t = 0), those this rank holds; the face layer's seed
   /// indices and initial positions are kept (collective on several ranks).
   CraterMeasure(const Scene& scene, const CraterSpec& spec, const Particles& initial,
-                const Communicator* comm);
+                const Communicator& comm);
   /// The crater now (collective on several ranks).
   Crater measure(const Particles& P) const;
 
@@ -95,7 +95,7 @@ class CraterMeasure {
   bool axisymmetric_ = false;
   ParticleSets face_;          ///< set 0: the face layer
   std::vector<Vec3> face_x0_;  ///< their initial positions, in seed-index order
-  const Communicator* comm_;
+  const Communicator& comm_;
 };
 
 /// The crater of face particles (current positions across the face), without the particle

@@ -29,7 +29,7 @@ const char* condition_name(FaceCondition c) {
 
 }  // namespace
 
-FaceReach::FaceReach(const Scene& scene, const Particles& initial, const Communicator* comm)
+FaceReach::FaceReach(const Scene& scene, const Particles& initial, const Communicator& comm)
     : comm_(comm) {
   const GridSpec& g = scene.grid;
   const Vec3 h = g.spacing();
@@ -68,7 +68,7 @@ std::array<double, 6> FaceReach::count(const Particles& P,
       if (d <= within[f]) n[f] += 1.0;
     }
   }
-  if (comm_ != nullptr && comm_->size() > 1) n = comm_->sum(n);
+  n = comm_.sum(n);
   return {n[0], n[1], n[2], n[3], n[4], n[5]};
 }
 

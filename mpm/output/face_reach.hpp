@@ -26,7 +26,7 @@ namespace impact::mpm {
 class FaceReach {
  public:
   /// `initial`: the particles as seeded (those this rank holds).
-  FaceReach(const Scene& scene, const Particles& initial, const Communicator* comm = nullptr);
+  FaceReach(const Scene& scene, const Particles& initial, const Communicator& comm);
 
   /// At a history row: the watched faces' layers are counted; returns the faces reached for the
   /// first time now (kFaceNames indices).
@@ -49,7 +49,7 @@ class FaceReach {
   std::array<FaceCondition, 6> condition_{};
   std::array<double, 6> plane_{}, layer_{};  ///< the face's coordinate, one cell [m]
   std::array<double, 6> near_{};             ///< "near at the start": max(cell, 5 % extent) [m]
-  const Communicator* comm_;
+  const Communicator& comm_;
   /// Particles in each face's layer.
   std::array<double, 6> count(const Particles& P) const;
   /// Particles within `within` [m] of each watched face.

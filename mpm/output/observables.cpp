@@ -16,7 +16,7 @@ std::uint64_t seed_index(const Particles& P, std::size_t p) {
 
 }  // namespace
 
-Gauges::Gauges(const Scene& scene, const Particles& initial, const Communicator* comm)
+Gauges::Gauges(const Scene& scene, const Particles& initial, const Communicator& comm)
     : comm_(comm) {
   for (const GaugeSpec& g : scene.output.gauges) {
     Gauge gauge;
@@ -68,7 +68,7 @@ std::vector<double> Gauges::read(const Particles& P) const {
       sums[2 * k + 1] += P.mass[p];
     }
   }
-  if (comm_ != nullptr && comm_->size() > 1) sums = comm_->sum(sums);
+  sums = comm_.sum(sums);
   std::vector<double> values;
   values.reserve(gauges_.size());
   for (std::size_t k = 0; k < gauges_.size(); ++k) {
@@ -78,7 +78,7 @@ std::vector<double> Gauges::read(const Particles& P) const {
   return values;
 }
 
-Observables::Observables(const Scene& scene, const Particles& initial, const Communicator* comm)
+Observables::Observables(const Scene& scene, const Particles& initial, const Communicator& comm)
     : max_pressure_(scene.objects.size(), -std::numeric_limits<double>::infinity()),
       max_pressure_time_(scene.objects.size(), 0.0),
       axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
@@ -97,7 +97,7 @@ void Observables::sample(const Particles& P, double time) {
     const auto o = P.object[p];
     largest[o] = std::max(largest[o], pressure(P.state[p].stress));
   }
-  if (ranks()) largest = comm_->max(largest);
+  largest = comm_.max(largest);
   for (std::size_t o = 0; o < largest.size(); ++o) {
     if (largest[o] > max_pressure_[o]) {
       max_pressure_[o] = largest[o];
@@ -116,7 +116,7 @@ Json Observables::summary(const Particles& P) const {
     for (int d = 0; d < 3; ++d) s[1 + d] += P.mass[p] * P.v[p](d);
     s[4] += 0.5 * P.mass[p] * P.v[p].squaredNorm();
   }
-  if (ranks()) sums = comm_->sum(sums);
+  sums = comm_.sum(sums);
   Json objects = Json::object();
   for (std::size_t o = 0; o < n; ++o) {
     const double* s = &sums[5 * o];

@@ -39,7 +39,7 @@ class Gauges {
   /// `initial`: the particles as seeded (t = 0), those this rank holds; membership (initial
   /// position in the region, closed box) is fixed here. Throws std::logic_error for an empty
   /// gauge (read_scene rejects one).
-  Gauges(const Scene& scene, const Particles& initial, const Communicator* comm = nullptr);
+  Gauges(const Scene& scene, const Particles& initial, const Communicator& comm);
 
   bool empty() const { return gauges_.empty(); }
   std::size_t size() const { return gauges_.size(); }
@@ -62,13 +62,13 @@ class Gauges {
   };
   std::vector<Gauge> gauges_;
   ParticleSets members_;  ///< set g: gauge g's members
-  const Communicator* comm_;
+  const Communicator& comm_;
 };
 
 class Observables {
  public:
   /// `initial`: the particles as seeded (t = 0), those this rank holds.
-  Observables(const Scene& scene, const Particles& initial, const Communicator* comm = nullptr);
+  Observables(const Scene& scene, const Particles& initial, const Communicator& comm);
 
   /// At every history row: the running maximum pressure per object (sampled there only).
   void sample(const Particles& P, double time);
@@ -92,8 +92,7 @@ class Observables {
   /// their mean velocity is axial and the crater's axis is the axis of symmetry.
   bool axisymmetric_ = false;
   ExtensiveUnits units_;  ///< of the objects' mass and kinetic energy (plane strain: per metre)
-  const Communicator* comm_;
-  bool ranks() const { return comm_ != nullptr && comm_->size() > 1; }
+  const Communicator& comm_;
 };
 
 }  // namespace impact::mpm

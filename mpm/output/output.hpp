@@ -44,7 +44,7 @@ class SnapshotWriter {
   /// Writes into DIR/particles/ and DIR/particles.pvd. With `comm` of several ranks every rank
   /// constructs one and calls write() at the same steps (collective).
   SnapshotWriter(const std::string& directory, std::vector<std::string> fields,
-                 const Communicator* comm = nullptr);
+                 const Communicator& comm);
   /// Writes particles/step_NNNNNN.vtu (one rank) or each rank's particles/step_NNNNNN_rankR.vtu
   /// and rank 0's particles/step_NNNNNN.pvtu naming them (several ranks), and rewrites the .pvd
   /// so it is valid after every call. P: the particles this rank holds.
@@ -56,12 +56,12 @@ class SnapshotWriter {
   }
 
  private:
-  bool pieces() const { return comm_ != nullptr && comm_->size() > 1; }
-  bool root() const { return comm_ == nullptr || comm_->root(); }
+  bool pieces() const { return comm_.several(); }
+  bool root() const { return comm_.root(); }
 
   std::string directory_;
   std::vector<std::string> fields_;
-  const Communicator* comm_;
+  const Communicator& comm_;
   std::vector<std::pair<double, std::string>> entries_;
 };
 

@@ -28,8 +28,8 @@ Json symmetric(const Mat3& a) {
 
 }  // namespace
 
-ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial, const Communicator* comm)
-    : comm_(comm != nullptr && comm->size() > 1 ? comm : nullptr) {
+ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial, const Communicator& comm)
+    : comm_(comm) {
   // Each rank's nearest candidate per path; on several ranks every rank's, then the nearest.
   struct Candidate {
     double distance;
@@ -46,8 +46,8 @@ ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial, const
     }
     best.push_back(c);
   }
-  if (comm_) {
-    const std::vector<Candidate> every = comm_->concatenate(best);
+  if (comm_.several()) {
+    const std::vector<Candidate> every = comm_.concatenate(best);
     for (std::size_t i = 0; i < best.size(); ++i) {
       for (std::size_t r = 0; r < every.size() / best.size(); ++r) {
         const Candidate& c = every[r * best.size() + i];
@@ -84,7 +84,7 @@ void ParticlePaths::begin_at(const Particles& P) {
     const std::size_t p = find(tracks_[i], P);
     if (p < P.size()) mine.push_back({i, P.state[p]});
   }
-  for (const Start& s : comm_ ? comm_->concatenate(mine) : mine) tracks_[s.track].start = s.state;
+  for (const Start& s : comm_.concatenate(mine)) tracks_[s.track].start = s.state;
 }
 
 void ParticlePaths::before_step(const Particles& P) {
@@ -96,7 +96,7 @@ void ParticlePaths::before_step(const Particles& P) {
 }
 
 void ParticlePaths::after_step(const Particles& P, double time, double dt) {
-  if (!comm_) {
+  if (!comm_.several()) {
     for (Track& t : tracks_) {
       const std::size_t p = find(t, P);
       t.steps.push_back({time, dt, t.pending_temperature, P.L[p], P.state[p]});
@@ -124,7 +124,7 @@ void ParticlePaths::after_step(const Particles& P, double time, double dt) {
     mine.push_back(piece);
   }
   std::vector<Step> steps(tracks_.size(), Step{time, dt, 0.0, Mat3::Zero(), PointState{}});
-  for (const Piece& piece : comm_->concatenate(mine)) {
+  for (const Piece& piece : comm_.concatenate(mine)) {
     Step& s = steps[piece.track];
     if (piece.temperature) s.start_temperature = piece.step.start_temperature;
     if (piece.rest) {
@@ -137,7 +137,7 @@ void ParticlePaths::after_step(const Particles& P, double time, double dt) {
 
 void ParticlePaths::write(const fs::path& dir, const Scene& scene, const std::string& scene_file,
                           double start_time) const {
-  if (tracks_.empty() || (comm_ && !comm_->root())) return;  // rank 0 writes
+  if (tracks_.empty() || !comm_.root()) return;  // rank 0 writes
   const fs::path out = dir / "paths";
   fs::create_directories(out);
   for (std::size_t i = 0; i < tracks_.size(); ++i) {

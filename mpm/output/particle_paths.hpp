@@ -33,7 +33,7 @@ class ParticlePaths {
   /// `initial` (the particles as seeded, those this rank holds: also for a restarted run, which
   /// must follow the particle the first run followed) is nearest to the entry's position; of
   /// equally near ones the lowest seed index. Collective on several ranks (`comm`).
-  ParticlePaths(const Scene& scene, const Particles& initial, const Communicator* comm = nullptr);
+  ParticlePaths(const Scene& scene, const Particles& initial, const Communicator& comm);
 
   /// A restarted run: the paths begin at the restored particles `P` (each track's start state
   /// becomes its particle's there; the particles were chosen by their seeded positions, as the
@@ -70,7 +70,7 @@ class ParticlePaths {
   std::size_t find(Track& t, const Particles& P) const;
 
   std::vector<Track> tracks_;
-  const Communicator* comm_;
+  const Communicator& comm_;
 };
 
 }  // namespace impact::mpm

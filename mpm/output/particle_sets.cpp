@@ -5,9 +5,11 @@
 
 namespace impact::mpm {
 
-std::size_t ParticleSets::add(const std::vector<std::uint64_t>& local, const Communicator* comm) {
-  std::vector<std::uint64_t> ids =
-      comm != nullptr && comm->size() > 1 ? comm->concatenate(local) : local;
+std::size_t ParticleSets::add(const std::vector<std::uint64_t>& local, const Communicator& comm) {
+  return add(comm.concatenate(local));
+}
+
+std::size_t ParticleSets::add(std::vector<std::uint64_t> ids) {
   std::sort(ids.begin(), ids.end());
   sets_.push_back(std::move(ids));
   // The union with its owners, rebuilt (sets are added once, at the start).

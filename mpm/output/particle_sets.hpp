@@ -20,7 +20,9 @@ class ParticleSets {
   };
   /// Adds a set: the seed indices `local` this rank selected from the particles it holds,
   /// gathered from every rank (collective) and sorted. Returns the set's index.
-  std::size_t add(const std::vector<std::uint64_t>& local, const Communicator* comm);
+  std::size_t add(const std::vector<std::uint64_t>& local, const Communicator& comm);
+  /// Adds a set whose seed indices are already every rank's (not collective).
+  std::size_t add(std::vector<std::uint64_t> ids);
   /// The seed indices of set s, ascending.
   const std::vector<std::uint64_t>& ids(std::size_t s) const { return sets_[s]; }
   /// Per set, the members P holds, in P's order (on one rank: ascending seed index).

@@ -21,10 +21,10 @@ namespace impact::mpm {
 namespace fs = std::filesystem;
 
 SnapshotWriter::SnapshotWriter(const std::string& directory, std::vector<std::string> fields,
-                               const Communicator* comm)
+                               const Communicator& comm)
     : directory_(directory), fields_(std::move(fields)), comm_(comm) {
   if (root()) fs::create_directories(fs::path(directory_) / "particles");
-  if (pieces()) comm_->barrier();  // the directory exists before any rank writes into it
+  if (pieces()) comm_.barrier();  // the directory exists before any rank writes into it
 }
 
 namespace {
@@ -146,12 +146,12 @@ void SnapshotWriter::write(const Particles& P, long step, double time) {
     const auto piece = [&](int rank) {
       return std::string(stem) + "_rank" + std::to_string(rank) + ".vtu";
     };
-    write_piece(dir / piece(comm_->rank()), P, fields_);
-    comm_->barrier();  // every piece in place before the index names it
+    write_piece(dir / piece(comm_.rank()), P, fields_);
+    comm_.barrier();  // every piece in place before the index names it
     rel = fs::path("particles") / (std::string(stem) + ".pvtu");
     if (root()) {
       std::vector<std::string> names;
-      for (int r = 0; r < comm_->size(); ++r) names.push_back(piece(r));
+      for (int r = 0; r < comm_.size(); ++r) names.push_back(piece(r));
       write_parallel_index(fs::path(directory_) / rel, names, fields_);
     }
   }

@@ -68,10 +68,15 @@ MpiSession::~MpiSession() {
 Communicator::Communicator([[maybe_unused]] const MpiSession* session) {
 #ifdef IMPACT_MPI
   if (session == nullptr || !session->active()) return;
-  mpi_ = true;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  mpi_ = size_ > 1;  // one rank (mpirun -np 1 too): the identity, no MPI call
 #endif
+}
+
+const Communicator& Communicator::one_rank() {
+  static const Communicator alone;
+  return alone;
 }
 
 std::vector<double> Communicator::every_ranks(
@@ -109,9 +114,10 @@ std::vector<double> Communicator::sum_counts(const std::vector<double>& counts) 
 
 std::int64_t Communicator::sum(std::int64_t value) const {
   std::int64_t total = value;
+  if (!mpi_) return total;
 #ifdef IMPACT_MPI
   const MpiTimer timer(seconds_);
-  if (mpi_) MPI_Allreduce(&value, &total, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(&value, &total, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
 #endif
   return total;
 }
@@ -139,19 +145,21 @@ double Communicator::min(double value) const {
 
 bool Communicator::any(bool value) const {
   int result = value ? 1 : 0;
+  if (!mpi_) return result != 0;
 #ifdef IMPACT_MPI
   const int mine = result;
   const MpiTimer timer(seconds_);
-  if (mpi_) MPI_Allreduce(&mine, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&mine, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 #endif
   return result != 0;
 }
 
 std::vector<double> Communicator::gather_all(double value) const {
   std::vector<double> all(static_cast<std::size_t>(size_), value);
+  if (!mpi_) return all;
 #ifdef IMPACT_MPI
   const MpiTimer timer(seconds_);
-  if (mpi_) MPI_Allgather(&value, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
+  MPI_Allgather(&value, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
 #endif
   return all;
 }
@@ -243,9 +251,10 @@ std::vector<std::vector<char>> Communicator::all_to_all(
 }
 
 void Communicator::barrier() const {
+  if (!mpi_) return;
 #ifdef IMPACT_MPI
   const MpiTimer timer(seconds_);
-  if (mpi_) MPI_Barrier(MPI_COMM_WORLD);
+  MPI_Barrier(MPI_COMM_WORLD);
 #endif
 }
 

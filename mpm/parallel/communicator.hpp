@@ -34,6 +34,9 @@ bool mpi_available();
 /// Whether an MPI launcher (mpirun, srun) started this process.
 bool started_by_launcher();
 
+/// The ranks of a run. There is always one: on one rank (no session, a build without MPI, or
+/// `mpirun -np 1`) every call is the identity and makes no MPI call, so code that sums over the
+/// ranks reads the same, and gives the same bits, on one rank and on many.
 class Communicator {
  public:
   /// The world of an active MpiSession, or one rank.
@@ -42,6 +45,10 @@ class Communicator {
   int rank() const { return rank_; }
   int size() const { return size_; }
   bool root() const { return rank_ == 0; }
+  /// More than one rank: the particles and the grid are split.
+  bool several() const { return size_ > 1; }
+  /// This process alone: a constant (no call on it changes it, so threads may share it).
+  static const Communicator& one_rank();
 
   /// Element-wise sums over the ranks, taken in rank order on every rank.
   std::vector<double> sum(const std::vector<double>& values) const;
@@ -104,7 +111,7 @@ class Communicator {
   mutable std::uint64_t exchanged_bytes_ = 0, exchanged_messages_ = 0;
   int rank_ = 0;
   int size_ = 1;
-  bool mpi_ = false;
+  bool mpi_ = false;  ///< several ranks under an active MpiSession: MPI calls are made
 };
 
 }  // namespace impact::mpm

@@ -82,7 +82,7 @@ Json least_loaded(const Scene& scene, const Particles& P, const AxisCounts& coun
 }  // namespace
 
 Json plan_decomposition(const Scene& scene, const Particles& P, int ranks) {
-  const AxisCounts counts = axis_counts(P, scene.grid);
+  const AxisCounts counts = axis_counts(P, scene.grid, Communicator());  // every particle here
   const BoxDecomposition boxes = initial_boxes(
       scene, ranks, counts, [&] { return count_cells(P, scene.grid); }, on_one_process);
   std::vector<double> held(std::size_t(ranks), 0.0), nodes(held), bytes(held), messages(held);

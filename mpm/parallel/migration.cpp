@@ -51,7 +51,7 @@ void unpack(Particles& P, const std::vector<char>& in, const std::vector<bool>& 
 
 }  // namespace
 
-AxisCounts axis_counts(const Particles& P, const GridSpec& grid, const Communicator* comm) {
+AxisCounts axis_counts(const Particles& P, const GridSpec& grid, const Communicator& comm) {
   std::vector<double> local(std::size_t(grid.cells[0] + grid.cells[1] + grid.cells[2]), 0.0);
   for (const Vec3& x : P.x) {
     std::size_t offset = 0;
@@ -60,7 +60,7 @@ AxisCounts axis_counts(const Particles& P, const GridSpec& grid, const Communica
       offset += std::size_t(grid.cells[std::size_t(d)]);
     }
   }
-  const std::vector<double> all = comm ? comm->sum_counts(local) : local;
+  const std::vector<double> all = comm.sum_counts(local);
   AxisCounts counts;
   std::size_t offset = 0;
   for (int d = 0; d < 3; ++d) {

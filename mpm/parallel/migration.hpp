@@ -24,8 +24,7 @@ struct MigrationCounts {
 
 /// Particles per cell along each axis (what BoxDecomposition::balanced splits): of P alone, or
 /// with `comm` summed over the ranks.
-AxisCounts axis_counts(const Particles& P, const GridSpec& grid,
-                       const Communicator* comm = nullptr);
+AxisCounts axis_counts(const Particles& P, const GridSpec& grid, const Communicator& comm);
 
 /// Keeps on this rank the particles of its box; sends the others to their owners.
 MigrationCounts migrate(Particles& P, const BoxDecomposition& boxes, const GridSpec& grid,

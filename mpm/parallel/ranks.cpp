@@ -16,14 +16,11 @@ bool least_loaded(const Scene& scene) {
 
 }  // namespace
 
-Ranks::Ranks(const Communicator* comm)
-    : comm_(comm != nullptr && comm->size() > 1 ? comm : nullptr) {}
-
 Ranks::SeedCensus Ranks::census(const Scene& scene) const {
-  if (!comm_) return {};
+  if (!several()) return {};
   // Each rank counts an equal block of cell columns and the counts (whole numbers) are summed:
   // no rank walks every seed point of the scene.
-  const long columns = scene.grid.cells[0], ranks = comm_->size(), r = comm_->rank();
+  const long columns = scene.grid.cells[0], ranks = comm_.size(), r = comm_.rank();
   SeedCensus c;
   c.columns = seed_counts_per_column(
       scene, &c.per_axis, int(columns * r / ranks), int(columns * (r + 1) / ranks),
@@ -35,7 +32,7 @@ Ranks::SeedCensus Ranks::census(const Scene& scene) const {
     for (const std::size_t n : object) table.push_back(double(n));
   for (const auto& axis : c.per_axis)
     for (const std::size_t n : axis) table.push_back(double(n));
-  table = comm_->sum_counts(table);
+  table = comm_.sum_counts(table);
   std::size_t k = 0;
   for (auto& object : c.columns)
     for (std::size_t& n : object) n = std::size_t(table[k++]);
@@ -45,25 +42,25 @@ Ranks::SeedCensus Ranks::census(const Scene& scene) const {
 }
 
 BoxDecomposition Ranks::split(const Scene& scene, const SeedCensus& census) const {
-  if (!comm_) return BoxDecomposition(scene.grid.cells);
+  if (!several()) return BoxDecomposition(scene.grid.cells);
   // "least_loaded": the census counted this rank's block's points per cell; the tables the
   // search builds from them are summed over the ranks.
   return initial_boxes(
-      scene, comm_->size(), census.per_axis, [&] { return census.cells; },
-      [&](const std::vector<double>& table) { return comm_->sum_counts(table); });
+      scene, comm_.size(), census.per_axis, [&] { return census.cells; },
+      [&](const std::vector<double>& table) { return comm_.sum_counts(table); });
 }
 
 Particles Ranks::seed(const Scene& scene, const BoxDecomposition& boxes,
                       const SeedCensus& census) const {
   // On several ranks every rank seeds and stores only its box: no rank ever holds the whole
   // scene or the whole grid.
-  if (!comm_) return seed_particles(scene);
+  if (!several()) return seed_particles(scene);
   return seed_box(scene, boxes.first_cell(rank()), boxes.end_cell(rank()), census.columns);
 }
 
 std::optional<NodeBox> Ranks::stored_box(const BoxDecomposition& boxes,
                                          const GridSpec& grid) const {
-  if (!comm_) return std::nullopt;
+  if (!several()) return std::nullopt;
   return stored_nodes(boxes, grid, rank());
 }
 
@@ -80,39 +77,39 @@ NodeBox Ranks::owned_box(const BoxDecomposition& boxes, const std::array<int, 3>
 }
 
 std::optional<std::string> Ranks::first_failure(const std::optional<std::string>& mine) const {
-  if (!comm_) return mine;
-  const std::vector<double> failed = comm_->gather_all(mine ? 1.0 : 0.0);
-  for (int r = 0; r < comm_->size(); ++r)
-    if (failed[std::size_t(r)] != 0.0) return comm_->broadcast(mine.value_or(""), r);
+  if (!several()) return mine;
+  const std::vector<double> failed = comm_.gather_all(mine ? 1.0 : 0.0);
+  for (int r = 0; r < comm_.size(); ++r)
+    if (failed[std::size_t(r)] != 0.0) return comm_.broadcast(mine.value_or(""), r);
   return std::nullopt;
 }
 
 long Ranks::sum(long n) const {
-  return comm_ ? static_cast<long>(comm_->sum(static_cast<std::int64_t>(n))) : n;
+  return static_cast<long>(comm_.sum(static_cast<std::int64_t>(n)));
 }
 
 std::size_t Ranks::migrate(Particles& P, const BoxDecomposition& boxes,
                            const GridSpec& grid) const {
-  return comm_ ? mpm::migrate(P, boxes, grid, *comm_).sent : 0;
+  return several() ? mpm::migrate(P, boxes, grid, comm_).sent : 0;
 }
 
 std::optional<BoxDecomposition> Ranks::rebalanced(const Particles& P, const BoxDecomposition& boxes,
                                                   const Scene& scene) const {
-  if (!comm_) return std::nullopt;
-  const std::vector<double> held = comm_->gather_all(double(P.size()));
+  if (!several()) return std::nullopt;
+  const std::vector<double> held = comm_.gather_all(double(P.size()));
   double total = 0.0, largest = 0.0;
   for (const double n : held) {
     total += n;
     largest = std::max(largest, n);
   }
-  if (!(largest > scene.solver.rebalance_above * total / comm_->size())) return std::nullopt;
+  if (!(largest > scene.solver.rebalance_above * total / comm_.size())) return std::nullopt;
   BoxDecomposition next =
       BoxDecomposition::balanced(axis_counts(P, scene.grid, comm_), boxes.ranks_per_axis());
   if (least_loaded(scene)) {
     std::vector<CellCount> counted;  // this rank's particles, summed over the ranks per table
     for (const Vec3& x : P.x) count_cell(counted, scene.grid.cell_of(x));
     next = refine_boundaries(
-        next, counted, [&](const std::vector<double>& t) { return comm_->sum_counts(t); }, nullptr);
+        next, counted, [&](const std::vector<double>& t) { return comm_.sum_counts(t); }, nullptr);
   }
   if (next == boxes) return std::nullopt;  // already as balanced as boxes can be
   return next;

@@ -21,14 +21,13 @@ namespace impact::mpm {
 
 class Ranks {
  public:
-  /// The ranks of `comm`; null or one rank: this process alone.
-  explicit Ranks(const Communicator* comm);
+  /// The ranks of `comm` (one rank: this process alone).
+  explicit Ranks(const Communicator& comm) : comm_(comm) {}
 
-  bool several() const { return comm_ != nullptr; }
-  int rank() const { return comm_ ? comm_->rank() : 0; }
-  int size() const { return comm_ ? comm_->size() : 1; }
-  /// The communicator of several ranks; null on one rank.
-  const Communicator* communicator() const { return comm_; }
+  bool several() const { return comm_.several(); }
+  int rank() const { return comm_.rank(); }
+  int size() const { return comm_.size(); }
+  const Communicator& communicator() const { return comm_; }
 
   /// The seed points per cell column of each object (ids) and per cell along each axis (balance):
   /// what several ranks split the grid and seed their boxes from (empty on one rank).
@@ -58,11 +57,11 @@ class Ranks {
   /// every largest, in table order (mpm/ledger/totals.hpp); nothing on one rank.
   template <class... Totals>
   void reduce(Totals&... totals) const {
-    if (!comm_) return;
+    if (!several()) return;
     for (const Merge merge : {Merge::sum, Merge::max}) {
       std::vector<double> v;
       (append_fields(totals, merge, v), ...);
-      v = merge == Merge::sum ? comm_->sum(v) : comm_->max(v);
+      v = merge == Merge::sum ? comm_.sum(v) : comm_.max(v);
       std::size_t k = 0;
       (extract_fields(totals, merge, v, k), ...);
     }
@@ -70,9 +69,9 @@ class Ranks {
   /// A count, values, the least and the largest over the ranks (rank order: the same bits on
   /// every rank).
   long sum(long n) const;
-  std::vector<double> sum(const std::vector<double>& v) const { return comm_ ? comm_->sum(v) : v; }
-  double min(double x) const { return comm_ ? comm_->min(x) : x; }
-  double max(double x) const { return comm_ ? comm_->max(x) : x; }
+  std::vector<double> sum(const std::vector<double>& v) const { return comm_.sum(v); }
+  double min(double x) const { return comm_.min(x); }
+  double max(double x) const { return comm_.max(x); }
 
   /// Particles that left this rank's box go to their owner; returns how many this rank sent.
   std::size_t migrate(Particles& P, const BoxDecomposition& boxes, const GridSpec& grid) const;
@@ -83,7 +82,7 @@ class Ranks {
                                              const Scene& scene) const;
 
  private:
-  const Communicator* comm_ = nullptr;  ///< null on one rank
+  const Communicator& comm_;
 };
 
 }  // namespace impact::mpm

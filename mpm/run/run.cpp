@@ -51,10 +51,10 @@ std::string absolute_path(const std::string& file) {
 constexpr long kFewSteps = 10;
 
 // The mass of the particles still in play, over every rank (removed particles have none).
-double mass_in_play(const Particles& P, const Communicator* comm) {
+double mass_in_play(const Particles& P, const Communicator& comm) {
   double mass = 0.0;
   for (const double m : P.mass) mass += m;
-  return comm ? comm->sum(mass) : mass;
+  return comm.sum(mass);
 }
 
 // A scene warning that names a likely unit slip ("... looks like mm ...").
@@ -93,7 +93,7 @@ struct RunContext {
   const RunOptions& options;
   fs::path dir;
   bool resume;
-  const Communicator* comm;
+  const Communicator& comm;  ///< one rank: the identity
   bool root;
   int threads;
 };
@@ -129,7 +129,7 @@ void ready_directory(const RunContext& run, const std::string& scene_text) {
   if (!run.resume) {
     // Every rank looks, and they agree (a collective call: none looks after rank 0 removed).
     std::string unfinished = run.options.overwrite ? "" : unfinished_run(run.dir);
-    if (run.comm && run.comm->max(unfinished.empty() ? 0.0 : 1.0) > 0.0 && unfinished.empty())
+    if (run.comm.max(unfinished.empty() ? 0.0 : 1.0) > 0.0 && unfinished.empty())
       unfinished = run.dir.string() + ": holds an unfinished run (rank 0 says which)";
     if (!unfinished.empty()) throw InputError({unfinished});
     // The previous run's files go before the Simulation's first collective call, so no other
@@ -166,7 +166,7 @@ int inject_faults(const RunContext& run, Simulation& sim) {
 // run wrote after it removed. Returns the outputs' state at the checkpoint.
 RunState resume_from_checkpoint(const RunContext& run, Simulation& sim, RunStatus& status_file) {
   const RunState resumed = read_checkpoint(checkpoint_file(run.dir, sim.rank()), sim);
-  if (run.comm && run.comm->min(double(sim.steps())) != run.comm->max(double(sim.steps()))) {
+  if (run.comm.min(double(sim.steps())) != run.comm.max(double(sim.steps()))) {
     throw InputError({(run.dir / kCheckpointFile).string() +
                       ": the ranks' checkpoint files are of different steps (a run stopped "
                       "while writing them)"});
@@ -174,13 +174,13 @@ RunState resume_from_checkpoint(const RunContext& run, Simulation& sim, RunStatu
   if (run.root) {
     std::cerr << "mpm: restarting " << run.dir.string() << " from step " << sim.steps() << ", time "
               << sim.time() << " s (" << sim.threads() << " threads";
-    if (run.comm) std::cerr << ", " << run.comm->size() << " ranks";
+    if (run.comm.several()) std::cerr << ", " << run.comm.size() << " ranks";
     std::cerr << ")\n";
   }
   status_file.checkpointed(sim.steps(), sim.time());
   // Snapshots a killed run wrote after the checkpoint: the continued .pvd will not name them.
   if (run.root) remove_unlisted_snapshots(run.dir, resumed.snapshots);
-  if (run.comm) run.comm->barrier();  // gone before any rank writes a piece of the same name
+  run.comm.barrier();  // gone before any rank writes a piece of the same name
   return resumed;
 }
 
@@ -209,7 +209,7 @@ class RunWriter {
   void checkpoint(double next_output) {
     const RunState state = outputs_.state(next_output, wall_.seconds());
     write_checkpoint(checkpoint_file(run_.dir, sim_.rank()), sim_, state, run_.origin);
-    if (run_.comm) run_.comm->barrier();  // every file in place before the status names it
+    run_.comm.barrier();  // every file in place before the status names it
     status_file_.checkpointed(sim_.steps(), sim_.time());
   }
 
@@ -232,7 +232,7 @@ int agreed_interrupt(const RunContext& run, const Simulation& sim) {
   }
   int signal = pending_interrupt();
   if (signal == 0 && run.options.poll_interrupt) signal = run.options.poll_interrupt();
-  if (run.comm) signal = static_cast<int>(run.comm->max(double(signal)));
+  signal = static_cast<int>(run.comm.max(double(signal)));
   return signal;
 }
 
@@ -254,8 +254,7 @@ RunEnd step_loop(const RunContext& run, Simulation& sim, RunOutputs& outputs,
       outputs.before_step(sim.particles());
       const long removed = sim.step().particles.removed;
       outputs.after_step(sim.particles(), sim.time(), sim.time() - t_before);
-      if (removal && !grid_emptied &&
-          (run.comm ? run.comm->max(double(removed)) : double(removed)) > 0.0 &&
+      if (removal && !grid_emptied && run.comm.max(double(removed)) > 0.0 &&
           mass_in_play(sim.particles(), run.comm) == 0.0) {
         // A valid end (grid.outflow = remove lets bodies go), but what follows is an empty grid.
         grid_emptied = true;
@@ -279,7 +278,7 @@ RunEnd step_loop(const RunContext& run, Simulation& sim, RunOutputs& outputs,
           << sim.time() << " s";
         if (status_file.checkpoint_step() != sim.steps()) writer.checkpoint(next_output);
         m << ": checkpoint " << (run.dir / kCheckpointFile).string() << "; continue with: "
-          << (run.comm ? "mpirun -np " + std::to_string(run.comm->size()) + " " : "")
+          << (run.comm.several() ? "mpirun -np " + std::to_string(run.comm.size()) + " " : "")
           << "mpm run --restart " << run.dir.string();
         end = {"interrupted", m.str(), kExitSignalBase + signal};
         if (run.root) std::cerr << progress.break_line() << "mpm: " << end.message << '\n';
@@ -312,10 +311,10 @@ std::pair<Json, Json> phases_and_load(const RunContext& run, const Simulation& s
   Json phases = Json::object();
   for (const auto& [name, phase] : PhaseTimes::kPhases) {
     const double mine = sim.phase_totals().*phase;
-    phases[name] = run.comm ? Json(run.comm->gather_all(mine)) : Json(mine);
+    phases[name] = run.comm.several() ? Json(run.comm.gather_all(mine)) : Json(mine);
   }
-  if (!run.comm) return {phases, Json()};
-  const Communicator& comm = *run.comm;
+  if (!run.comm.several()) return {phases, Json()};
+  const Communicator& comm = run.comm;
   const double steps = double(std::max(sim.steps() - first_step, 1L));
   const std::vector<double> held = comm.gather_all(double(sim.particles().size()));
   const std::vector<double> in_mpi = comm.gather_all(comm.seconds_in_mpi());
@@ -378,16 +377,9 @@ void report_end(const RunContext& run, const Simulation& sim, const Json& summar
 // bar. Every checkpoint carries `origin` unchanged, so a restarted run can be restarted again.
 int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& origin,
            const RunOptions& options, const fs::path& dir, bool resume) {
-  const Communicator* comm =
-      options.comm != nullptr && options.comm->size() > 1 ? options.comm : nullptr;
-  const RunContext run{scene,
-                       origin,
-                       options,
-                       dir,
-                       resume,
-                       comm,
-                       comm == nullptr || comm->root(),
-                       run_threads(options.threads)};
+  const Communicator& comm = options.comm;
+  const RunContext run{scene,  origin, options,     dir,
+                       resume, comm,   comm.root(), run_threads(options.threads)};
   if (const int code = refuse_start(run)) return code;
   // Before the directory is cleared (a material file may lie in it): the material files as the
   // run reads them.
@@ -435,7 +427,7 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
   if (!run.root) return end.code;
   outputs.write_paths(dir, scene, paths_start);  // also after a failure: the path up to it
   summary["phase_seconds [s]"] = phases;
-  if (comm) summary["ranks_load"] = load;
+  if (comm.several()) summary["ranks_load"] = load;
   // Last: the ladder's pointers read the summary as written.
   if (auto error = discretization_error(origin.scene_file, fingerprint, summary))
     summary["discretization_error"] = std::move(*error);
@@ -489,7 +481,7 @@ int restart(const std::string& directory, const RunOptions& options) {
     throw InputError({e.what()});
   }
   // Each rank continues its own box: the run's rank count, not another (the split would differ).
-  const int ranks = options.comm ? options.comm->size() : 1;
+  const int ranks = options.comm.get().size();
   if (header.ranks != ranks) {
     try {
       verify_checkpoint_checksum(file);

@@ -28,8 +28,8 @@ struct RunOptions {
   /// The command line's own lines: the outcome line on stdout at the end of a completed run, and
   /// a note when a previous run's files were replaced (mpm run; not mpm study, not Python).
   bool report = false;
-  /// The ranks (docs/mpi.md); null or one rank: this process alone.
-  const Communicator* comm = nullptr;
+  /// The ranks (docs/mpi.md); by default this process alone.
+  std::reference_wrapper<const Communicator> comm = Communicator::one_rank();
 };
 
 /// Exit codes of `mpm run` (docs/mpm.md#exit-codes); 1 is a usage error, 2 bad input (also a

@@ -2,7 +2,7 @@
 
 namespace impact::mpm {
 
-RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Communicator* comm)
+RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Communicator& comm)
     : gauges_(scene, seeded, comm),
       gauge_extrema_(gauges_.units()),
       observables_(scene, seeded, comm),
@@ -22,7 +22,7 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
     gauge_extrema_.restore(resumed->gauge_extrema);
     face_reach_.restore(resumed->faces_reached);
   }
-  const bool root = comm_ == nullptr || comm_->root();
+  const bool root = comm_.root();
   if (root && resumed) {
     history_.emplace(history_file, ledger, columns, resumed->history_bytes, resumed->history_rows);
   } else if (root) {

@@ -22,7 +22,7 @@ class RunOutputs {
   /// loaded). On several ranks (`comm`) every rank makes one from the particles it holds, and
   /// every call below that takes particles is collective: the gauges, observables and snapshots
   /// reduce or write per rank, rank 0 alone writes history.csv and the .pvd.
-  RunOutputs(const Scene& scene, const Particles& seeded, const Communicator* comm = nullptr);
+  RunOutputs(const Scene& scene, const Particles& seeded, const Communicator& comm);
   /// Opens the files in `dir` for the particles as the run starts: as seeded, or, with `resumed`,
   /// as restored from a checkpoint (history.csv is then truncated to the checkpoint's rows and
   /// continued, the observables and the snapshot collection continue, the particle paths begin
@@ -63,7 +63,7 @@ class RunOutputs {
   FaceReach face_reach_;
   std::optional<ParticlePaths> paths_;
   bool faulted_column_;
-  const Communicator* comm_;
+  const Communicator& comm_;
   std::optional<HistoryCsv> history_;
   std::optional<SnapshotWriter> snapshots_;
 };

@@ -32,13 +32,13 @@ Json row_json(const Ledger& ledger) {
 }
 
 // Element-wise sums over the ranks (comm null: one rank, the values themselves).
-std::vector<double> over_ranks(const std::vector<double>& values, const Communicator* comm) {
-  return comm ? comm->sum(values) : values;
+std::vector<double> over_ranks(const std::vector<double>& values, const Communicator& comm) {
+  return comm.sum(values);
 }
 
 // Failed particles per cause (melting, tepla, drucker, becker) and the particles where a stability
 // check fired without failing them (stability_check.outcome = "report").
-Json failure_causes(const Particles& P, const Communicator* comm) {
+Json failure_causes(const Particles& P, const Communicator& comm) {
   // Counts by cause (5), in tension, Drucker and Becker reported: exact as doubles.
   std::vector<double> n(8, 0.0);
   for (const PointState& s : P.state) {
@@ -62,7 +62,7 @@ Json failure_causes(const Particles& P, const Communicator* comm) {
 // Per object counts, mass and volumes, and the memory estimate with the seeded count: what
 // `mpm check` and summary.json share. P: the particles this rank holds.
 Json particle_report(const Scene& scene, const Particles& P, int threads,
-                     const Communicator* comm = nullptr) {
+                     const Communicator& comm) {
   // Per object: count, mass, particle volume.
   std::vector<double> sums(3 * scene.objects.size(), 0.0);
   for (std::size_t p = 0; p < P.size(); ++p) {
@@ -126,7 +126,7 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
 
 Json check_report(const Scene& scene, int threads, int ranks) {
   const Particles P = seed_particles(scene);
-  Json report = particle_report(scene, P, threads);
+  Json report = particle_report(scene, P, threads, Communicator());  // every particle seeded here
   report.update(estimate_steps(scene).json(scene));
   report["scene_fingerprint"] = scene_fingerprint(scene.resolved);
   // The keys without a unit in their name: counts and ratios.
@@ -146,7 +146,7 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
                  const std::string& message, double wall, const Observables& observables,
                  const GaugeExtrema& gauges, const ParticlePaths* paths) {
   const Scene& scene = sim.scene();
-  const Communicator* comm = sim.communicator();
+  const Communicator& comm = sim.communicator();
   Json summary = particle_report(scene, P, sim.threads(), comm);
   const auto particles = summary["particles"].get<std::size_t>();
   summary["ranks"] = sim.ranks();

@@ -26,7 +26,7 @@ int thread_count(int requested) {
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm)
+Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm)
     : scene_(scene),
       ranks_(comm),
       // On several ranks every rank counts the seed points per cell (census_), splits the grid
@@ -48,7 +48,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator* comm
   census_ = {};  // needed for seeding only
   if (ranks_.several()) {
     grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
-    halo_.emplace(*ranks_.communicator(), boxes_);
+    halo_.emplace(ranks_.communicator(), boxes_);
   }
   const PhysicsSpec& ph = scene_.physics;
   StressUpdateSettings& st = stress_settings_;

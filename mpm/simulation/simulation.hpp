@@ -41,7 +41,10 @@ class Simulation {
   /// (solver.ranks_per_axis per axis): this rank keeps its box's particles, sums the node layers
   /// it shares with its neighbours, and every total (ledger, time step, failures) is reduced over
   /// the ranks, so the ledger and the time step are the same on every rank.
-  explicit Simulation(const Scene& scene, int threads = 0, const Communicator* comm = nullptr);
+  Simulation(const Scene& scene, int threads, const Communicator& comm);
+  /// This process alone (one rank).
+  explicit Simulation(const Scene& scene, int threads = 0)
+      : Simulation(scene, threads, Communicator::one_rank()) {}
   Simulation(const Simulation&) = delete;  // stress_settings_.models points into scene_
   Simulation& operator=(const Simulation&) = delete;
 
@@ -70,7 +73,7 @@ class Simulation {
   int rank() const { return ranks_.rank(); }
   int ranks() const { return ranks_.size(); }
   /// The ranks this run is on: null on one rank.
-  const Communicator* communicator() const { return ranks_.communicator(); }
+  const Communicator& communicator() const { return ranks_.communicator(); }
   const BoxDecomposition& boxes() const { return boxes_; }
   /// Particles that moved to another rank in the last step.
   std::size_t migrated() const { return migrated_; }

@@ -50,7 +50,7 @@ BOOST_AUTO_TEST_SUITE(mpm_face_reach)
 BOOST_AUTO_TEST_CASE(a_face_is_reached_when_a_particle_comes_within_one_cell) {
   const Scene s = scene_of({{"grid", {{"boundary", {{"x+", "symmetric"}}}}}});
   const Particles P0 = seed_particles(s);
-  FaceReach reach(s, P0);
+  FaceReach reach(s, P0, Communicator::one_rank());
   BOOST_TEST(reach.sample(P0, 0.0).empty());
   // 14.9 mm along x: the last particle column (x = 0.04 - 1.25 mm) stops short of 0.055 m.
   BOOST_TEST(reach.sample(shifted(P0, Vec3(0.0149, 0, 0)), 1e-6).empty());
@@ -72,7 +72,7 @@ BOOST_AUTO_TEST_CASE(a_face_is_reached_when_a_particle_comes_within_one_cell) {
   BOOST_TEST(j[0].at("particles").get<std::int64_t>() == 128);
   BOOST_TEST(reach.warning(1).find("material reached the x+ face (symmetric") != std::string::npos);
   // Through a checkpoint's state.
-  FaceReach again(s, P0);
+  FaceReach again(s, P0, Communicator::one_rank());
   again.restore(reach.state());
   BOOST_TEST(again.summary() == j);
   BOOST_CHECK_THROW(again.restore({1.0}), std::invalid_argument);
@@ -85,7 +85,7 @@ BOOST_AUTO_TEST_CASE(faces_a_body_lay_against_walls_and_the_axis_are_not_watched
                 {"grid", {{"boundary", {{"x-", "symmetric"}, {"x+", "wall"}}}}}};
   const Scene s = scene_of(patch);
   const Particles P0 = seed_particles(s);
-  FaceReach reach(s, P0);
+  FaceReach reach(s, P0, Communicator::one_rank());
   BOOST_TEST(reach.sample(shifted(P0, Vec3(-0.003, 0, 0)), 1e-6).empty());
   BOOST_TEST(reach.sample(shifted(P0, Vec3(0.0199, 0, 0)), 2e-6).empty());  // wall x+
   BOOST_TEST(reach.summary().empty());
@@ -106,7 +106,7 @@ BOOST_AUTO_TEST_CASE(whether_a_face_is_watched_does_not_change_with_the_grid) {
                {{"lower", {gap, 0.02, 0.02}}, {"upper", {gap + 0.02, 0.04, 0.04}}}}}}}}};
       const Scene s = scene_of(patch);
       const Particles P0 = seed_particles(s);
-      FaceReach reach(s, P0);
+      FaceReach reach(s, P0, Communicator::one_rank());
       // Moved onto the face: reached only where the face was watched.
       const std::vector<int> now = reach.sample(shifted(P0, Vec3(-gap, 0, 0)), 1e-6);
       BOOST_TEST(now.size() == (gap > 0.003 ? 1u : 0u), "cells " << cells << ", gap " << gap);

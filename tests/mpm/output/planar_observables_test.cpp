@@ -27,7 +27,7 @@ BOOST_AUTO_TEST_CASE(axisymmetric_mean_velocity_is_axial_and_the_crater_axis_is_
   const Scene scene = test::shipped_scene("sphere_cylinder/case01.json", patch);
   BOOST_REQUIRE(scene.output.crater.has_value());
   Particles P = seed_particles(scene);
-  const Observables observables(scene, P);
+  const Observables observables(scene, P, Communicator::one_rank());
   const double dx = scene.grid.spacing()(0), face = scene.output.crater->face;
   const int target = scene.output.crater->object;
   double widest = 0.0;

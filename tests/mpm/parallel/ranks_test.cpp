@@ -101,7 +101,7 @@ long step_both_to_the_end(Simulation& ranks, Simulation& alone, const Communicat
 void compare_with_one_rank(const Scene& scene, double tolerance, long max_steps = 1L << 40) {
   const Communicator comm(&fixture->session);
   BOOST_TEST_REQUIRE(comm.size() > 1);
-  Simulation ranks(scene, 1, &comm), alone(scene, 1);
+  Simulation ranks(scene, 1, comm), alone(scene, 1);
   const double e0 = alone.ledger().initial_energy();
   double mass = 0.0;
   for (double m : alone.particles().mass) mass += m;
@@ -178,7 +178,7 @@ BOOST_AUTO_TEST_CASE(the_least_loaded_boxes_are_found_by_counting_and_book_as_on
     for (const Vec3& x : all.x) held[std::size_t(boxes.owner_of_cell(g.cell_of(x)))] += 1.0;
     return *std::max_element(held.begin(), held.end());
   };
-  const Simulation run(scene, 1, &comm);
+  const Simulation run(scene, 1, comm);
   BOOST_TEST((run.boxes() == expected.boxes));
   const double fewest_cut = busiest(
       BoxDecomposition::balanced(counts, BoxDecomposition::ranks_per_axis(g.cells, comm.size())));
@@ -219,7 +219,7 @@ BOOST_AUTO_TEST_CASE(friction_contact_on_a_slab_boundary_books_as_on_one_rank) {
 // here.
 void expect_the_planes_of_one_rank(const Scene& scene) {
   const Communicator comm(&fixture->session);
-  Simulation ranks(scene, 1, &comm), alone(scene, 1);
+  Simulation ranks(scene, 1, comm), alone(scene, 1);
   ranks.step();
   alone.step();
   const Grid& G = ranks.grid();
@@ -296,7 +296,7 @@ BOOST_AUTO_TEST_CASE(the_slabs_are_rebalanced_as_the_block_moves) {
   const Communicator comm(&fixture->session);
   for (const Json& rule : {Json::array({0, 0, 0}), Json("least_loaded")}) {
     const Scene scene = flying_block(1.2, rule);
-    Simulation ranks(scene, 1, &comm), alone(scene, 1);
+    Simulation ranks(scene, 1, comm), alone(scene, 1);
     const BoxDecomposition first = ranks.boxes();
     while (!alone.finished()) {
       alone.step();
@@ -384,7 +384,7 @@ BOOST_AUTO_TEST_CASE(a_block_crossing_box_boundaries_diagonally_keeps_its_partic
                   {"grid", {{"upper", {0.12, 0.12, 0.04}}, {"cells", {24, 24, 8}}}},
                   {"solver", {{"rebalance_above", 1e300}, {"ranks_per_axis", {p, 2, 1}}}},
                   {"time", {{"max_time", 1.0e-4}}}});
-  Simulation ranks(scene, 1, &comm), alone(scene, 1);
+  Simulation ranks(scene, 1, comm), alone(scene, 1);
   const std::size_t n = alone.particles().size();
   const std::vector<double> held_before = comm.gather_all(double(ranks.particles().size()));
   const long migrated = step_both_to_the_end(ranks, alone, comm);
@@ -416,7 +416,7 @@ BOOST_AUTO_TEST_CASE(a_block_crossing_box_boundaries_diagonally_keeps_its_partic
 BOOST_AUTO_TEST_CASE(a_block_crossing_every_slab_boundary_keeps_its_particles_and_motion) {
   const Communicator comm(&fixture->session);
   const Scene scene = flying_block(1e300);  // the first slabs kept: the block crosses them all
-  Simulation ranks(scene, 1, &comm), alone(scene, 1);
+  Simulation ranks(scene, 1, comm), alone(scene, 1);
   const std::size_t n = alone.particles().size();
   const double mass = [&] {
     double m = 0.0;
@@ -457,7 +457,7 @@ BOOST_AUTO_TEST_CASE(the_same_rank_count_gives_the_same_bits_run_to_run) {
   const Communicator comm(&fixture->session);
   const Scene scene =
       scene_from("sphere_cylinder/recommended.json", {{"time", {{"max_time", 1.0e-6}}}});
-  Simulation first(scene, 1, &comm), second(scene, 1, &comm);
+  Simulation first(scene, 1, comm), second(scene, 1, comm);
   while (!first.finished()) {
     first.step();
     second.step();

@@ -176,7 +176,7 @@ BOOST_AUTO_TEST_CASE(strain_gauge_reads_the_log_stretch_of_a_homogeneous_compres
                           {"velocity", gauge("velocity", "x", lo, hi)}}}}}};
   const Scene scene = test::verification_scene("uniaxial_compression.json", patch);
   Simulation sim(scene);
-  const Gauges gauges(scene, sim.particles());
+  const Gauges gauges(scene, sim.particles(), Communicator::one_rank());
   const auto cols = gauges.columns();
   const auto index = [&](const std::string& c) {
     return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), c) - cols.begin());
@@ -225,8 +225,8 @@ BOOST_AUTO_TEST_CASE(strain_gauge_reads_the_log_stretch_of_a_homogeneous_compres
 BOOST_AUTO_TEST_CASE(a_scene_without_gauges_or_crater_stores_nothing) {
   const Scene scene = test::verification_scene("rigid_translation.json");
   const Particles P = seed_particles(scene);
-  const Gauges gauges(scene, P);
-  const Observables observables(scene, P);
+  const Gauges gauges(scene, P, Communicator::one_rank());
+  const Observables observables(scene, P, Communicator::one_rank());
   BOOST_TEST(gauges.empty());
   BOOST_TEST(gauges.read(P).empty());
   BOOST_TEST(!observables.has_crater());
