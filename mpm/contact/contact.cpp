@@ -236,9 +236,11 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   int body_of[kMaxFields];
   double inverse_density[kMaxFields];  // 1 / rho_f: the nodal volume m_f / rho_f
   for (int f = 0; f < nf; ++f) {
-    body_of[f] = f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
-    inverse_density[f] =
-        f < static_cast<int>(G.field_density.size()) ? 1.0 / G.field_density[f] : 1.0;
+    body_of[f] =
+        f < static_cast<int>(G.settings().field_body.size()) ? G.settings().field_body[f] : f;
+    inverse_density[f] = f < static_cast<int>(G.settings().field_density.size())
+                             ? 1.0 / G.settings().field_density[f]
+                             : 1.0;
   }
   ContactTotals partial[kMaxThreads];
   // G.heat was zeroed at the start of the step (grid_update): contact adds to it.

@@ -3,12 +3,13 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace impact::mpm {
 
-Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
-           std::optional<NodeBox> box)
+Grid::Grid(const GridSpec& spec, GridSettings settings, std::optional<NodeBox> box)
     : spec_(spec),
+      settings_(std::move(settings)),
       dx_(spec.spacing()),
       inv_dx_(dx_.cwiseInverse()),
       // A 2D grid stores its one node plane along z, k = 0 (scene.hpp GridGeometry).
@@ -19,8 +20,8 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
       nz_(spec.planar() ? 1
                         : (box ? std::min(box->last[2], spec.cells[2] + 1) : spec.cells[2] + 1) -
                               first_[2] + 1),
-      fields_(std::max(fields, 1)),
-      threads_(std::max(threads, 1)),
+      fields_(std::max(settings_.fields, 1)),
+      threads_(std::max(settings_.threads, 1)),
       nodes_(entry_count()) {
   const int e = entry_count();
   mass.assign(e, 0.0);
@@ -28,7 +29,7 @@ Grid::Grid(const GridSpec& spec, int threads, int fields, bool friction_heat,
   velocity_new.assign(e, Vec3::Zero());
   increment.assign(e, Vec3::Zero());
   velocity_L.assign(e, Vec3::Zero());
-  if (friction_heat || spec.has_wall_friction()) heat.assign(e, 0.0);
+  if (settings_.friction_heat || spec.has_wall_friction()) heat.assign(e, 0.0);
   const int n = node_count();
   if (fields_ > 1) contact_held.assign(e, 0);
   const bool has_wall = spec.has_walls();

@@ -101,15 +101,34 @@ struct NodeBox {
   bool operator==(const NodeBox&) const = default;
 };
 
+/// What a grid is given besides its geometry and its box: made once by the solver
+/// (Simulation::grid_settings) and kept whole, so that a grid rebuilt for another box (a
+/// re-balance, a restart on several ranks) is given the same.
+struct GridSettings {
+  int threads = 1;
+  int fields = 1;  ///< velocity fields
+  /// A heat array for friction contact's Coulomb work (a wall face with friction allocates it too).
+  bool friction_heat = false;
+  double light_mass = 0.0;  ///< [kg] see kLightNodeMassFraction in step/step.hpp
+  /// Axisymmetric: the radius light_mass holds at [m]; a node at r_I > light_radius is light
+  /// below light_mass r_I / light_radius (rings weigh in proportion to their radius). 0: off.
+  double light_radius = 0.0;
+  /// Contact body of each velocity field (its material: a material's parent and companion fields
+  /// are one body against the others, contact/contact.hpp); empty: every field its own body.
+  std::vector<int> field_body;
+  /// Reference density of each velocity field's material [kg/m^3] (contact's nodal volumes).
+  std::vector<double> field_density;
+  /// Per scene object: the particles' half-widths [m] (uGIMP's l times the spacing), the extent
+  /// of a particle's domain for the touch test of the wall faces; empty without walls.
+  std::vector<Vec3> particle_half_width;
+};
+
 class Grid {
  public:
-  /// `fields` velocity fields; `friction_heat`: a heat array for friction contact's Coulomb work
-  /// (a wall face with friction allocates it too);
   /// `box`: the nodes to store (all of them when absent; clipped to the grid and its ghost
   /// layers). Node indices stay those of the whole grid; a face condition applies where its layer
   /// is stored.
-  Grid(const GridSpec& spec, int threads, int fields = 1, bool friction_heat = false,
-       std::optional<NodeBox> box = std::nullopt);
+  Grid(const GridSpec& spec, GridSettings settings, std::optional<NodeBox> box = std::nullopt);
 
   const GridSpec& spec() const { return spec_; }
   const Vec3& lower() const { return spec_.lower; }
@@ -138,6 +157,7 @@ class Grid {
   int storage_x(int i) const { return i - first_[0]; }
   int threads() const { return threads_; }
   int fields() const { return fields_; }
+  const GridSettings& settings() const { return settings_; }
 
   /// The nodes whose ledger terms this grid books (all of them on one rank; a rank's own box in
   /// a domain decomposition, mpm/parallel/halo_exchange.hpp, so that a node several ranks share
@@ -241,15 +261,6 @@ class Grid {
   /// v*_I - v_I before the face conditions at the boundary nodes (field-major, boundary_nodes()
   /// order): the faces' impulse is what they changed in it.
   std::vector<Vec3> free_increment;
-  double light_mass = 0.0;  ///< [kg] see kLightNodeMassFraction in step/step.hpp
-  /// Axisymmetric: the radius light_mass holds at [m]; a node at r_I > light_radius is light
-  /// below light_mass r_I / light_radius (rings weigh in proportion to their radius). 0: off.
-  double light_radius = 0.0;
-  /// Contact body of each velocity field (its material: a material's parent and companion fields
-  /// are one body against the others, contact/contact.hpp); empty: every field its own body.
-  std::vector<int> field_body;
-  /// Reference density of each velocity field's material [kg/m^3] (contact's nodal volumes).
-  std::vector<double> field_density;
 
   /// Nodes touched by a constrained (symmetric or fixed) face: face layers, ghost layers, once
   /// each (for the impulse / boundary bookkeeping); indices within one field.
@@ -300,21 +311,18 @@ class Grid {
   /// Per entry: the bits of the wall faces the step pass held (its v*_n zeroed), which MUSL's
   /// re-map holds too, and only those (Grid::apply_walls); cleared with the grid each step.
   std::vector<std::uint8_t> wall_held;
-  /// Per scene object: the particles' half-widths [m] (uGIMP's l times the spacing), the extent
-  /// of a particle's domain for the touch test; set by the solver with wall faces.
-  std::vector<Vec3> particle_half_width;
-
   std::size_t bytes() const;
 
  private:
   void find_boundary_nodes();  ///< the constructor's: boundary_nodes_, free_increment
   void build_face_writes();    ///< the constructor's: the mirror's writes, the walls
   GridSpec spec_;
+  GridSettings settings_;
   Vec3 dx_, inv_dx_;
   std::array<int, 3> first_;  ///< node index of the first stored node per axis
   int nx_, ny_, nz_;
-  int fields_;
-  int threads_;
+  int fields_;   ///< settings_.fields, at least 1
+  int threads_;  ///< settings_.threads, at least 1
   std::vector<NodeData> nodes_;
   std::vector<Vec3> remap_;
   std::vector<int> boundary_nodes_;

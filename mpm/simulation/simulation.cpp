@@ -35,9 +35,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
       census_(ranks_.census(scene)),
       boxes_(ranks_.split(scene, census_)),
       particles_(ranks_.seed(scene, boxes_, census_)),
-      grid_(scene.grid, thread_count(threads), scene.field_count(),
-            scene.field_count() > 1 && scene.physics.contact.type == ContactType::friction &&
-                scene.physics.contact.mu > 0.0,
+      grid_(scene.grid, grid_settings(thread_count(threads)),
             ranks_.stored_box(boxes_, scene.grid)),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
@@ -87,15 +85,25 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   st.plastic_work = scene_.output.plastic_work;
   if (st.plastic_work)
     sinks_.plastic = ledger_.add_sink_column("plastic_work", /*in_balance=*/false);
-  if (grid_.fields() > 1) {  // contact bodies: a material's parent and companion fields
-    grid_.field_body.assign(grid_.fields(), 0);
-    grid_.field_density.assign(grid_.fields(), 1.0);
+  restart_ledger();
+}
+
+GridSettings Simulation::grid_settings(int threads) const {
+  GridSettings g;
+  g.threads = threads;
+  g.fields = scene_.field_count();
+  g.friction_heat = scene_.field_count() > 1 &&
+                    scene_.physics.contact.type == ContactType::friction &&
+                    scene_.physics.contact.mu > 0.0;
+  if (g.fields > 1) {  // contact bodies: a material's parent and companion fields
+    g.field_body.assign(std::size_t(g.fields), 0);
+    g.field_density.assign(std::size_t(g.fields), 1.0);
     for (int m = 0; m < static_cast<int>(scene_.materials.size()); ++m) {
-      grid_.field_body[scene_.parent_field(m)] = m;
-      grid_.field_body[scene_.companion_field(m)] = m;
+      g.field_body[std::size_t(scene_.parent_field(m))] = m;
+      g.field_body[std::size_t(scene_.companion_field(m))] = m;
       const double rho = scene_.materials[std::size_t(m)].material.model.params().density;
-      grid_.field_density[scene_.parent_field(m)] = rho;
-      grid_.field_density[scene_.companion_field(m)] = rho;
+      g.field_density[std::size_t(scene_.parent_field(m))] = rho;
+      g.field_density[std::size_t(scene_.companion_field(m))] = rho;
     }
   }
   double lightest = std::numeric_limits<double>::infinity();
@@ -111,21 +119,21 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
     per_radius = ranks_.min(per_radius);
     innermost = ranks_.min(innermost);
     if (std::isfinite(per_radius) && std::isfinite(innermost) && innermost > 0.0) {
-      grid_.light_radius = innermost;
+      g.light_radius = innermost;
       lightest = per_radius * innermost;
     }
   } else {
     for (const double m : particles_.mass) lightest = std::min(lightest, m);
     lightest = ranks_.min(lightest);
   }
-  if (std::isfinite(lightest)) grid_.light_mass = kLightNodeMassFraction * lightest;
+  if (std::isfinite(lightest)) g.light_mass = kLightNodeMassFraction * lightest;
   // Walls hold only where a particle's domain reaches them (grid/wall.cpp). Every rank scatters
   // the touch bits of its particles (the sums carry them to the rank holding the wall's nodes),
   // also one whose box stores no wall node.
   if (scene_.grid.has_walls())
     for (const Vec3& l : half_widths(scene_))
-      grid_.particle_half_width.push_back(l.cwiseProduct(scene_.grid.spacing()));
-  restart_ledger();
+      g.particle_half_width.push_back(l.cwiseProduct(scene_.grid.spacing()));
+  return g;
 }
 
 void Simulation::resize_particles(std::size_t n) {
@@ -235,14 +243,7 @@ void Simulation::stop_if(const std::optional<std::string>& message) const {
 }
 
 void Simulation::rebuild_grid() {
-  Grid next(scene_.grid, grid_.threads(), grid_.fields(), !grid_.heat.empty(),
-            ranks_.stored_box(boxes_, scene_.grid));
-  next.field_body = grid_.field_body;
-  next.field_density = grid_.field_density;
-  next.light_mass = grid_.light_mass;
-  next.light_radius = grid_.light_radius;
-  next.particle_half_width = grid_.particle_half_width;
-  grid_ = std::move(next);
+  grid_ = Grid(scene_.grid, grid_.settings(), ranks_.stored_box(boxes_, scene_.grid));
   grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
 }
 

@@ -145,6 +145,10 @@ class Simulation {
   /// Builds this rank's grid for the current boxes (after a re-balance or a restart), keeping
   /// the settings the constructor gave it; sets the owned nodes.
   void rebuild_grid();
+  /// What the grid is given (at construction; the same to a rebuilt grid): threads, fields and
+  /// their contact bodies, the light-node masses (collective: minima over the ranks), the
+  /// particles' half-widths for the wall faces. Reads scene_, ranks_ and particles_.
+  GridSettings grid_settings(int threads) const;
   /// New boxes when the ranks' particle counts drifted (solver.rebalance_above), and the
   /// particles moved to them.
   void rebalance_if_needed();

@@ -120,7 +120,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
     G.contact_plane_slot.assign(nn, -1);
   }
   auto body_of = [&](int f) {
-    return f < static_cast<int>(G.field_body.size()) ? G.field_body[f] : f;
+    return f < static_cast<int>(G.settings().field_body.size()) ? G.settings().field_body[f] : f;
   };
   // 0. The other ranks' particles near this rank's box, and the nodes this rank fits: those its
   //    particles weigh on (all on one rank).

@@ -93,13 +93,14 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     }
 
   if (usl_gradient) {
-    const double m_light = G.light_mass;
+    const double m_light = G.settings().light_mass;
     // Axisymmetric: the ring masses grow with the radius, so does the mass of a light node.
-    const double per_radius = G.light_radius > 0.0 ? m_light / G.light_radius : 0.0;
+    const double per_radius =
+        G.settings().light_radius > 0.0 ? m_light / G.settings().light_radius : 0.0;
     const int nn = G.node_count();
     G.for_active_entries([&](int i) {
       const double light =
-          per_radius > 0.0 ? per_radius * std::max(G.light_radius,
+          per_radius > 0.0 ? per_radius * std::max(G.settings().light_radius,
                                                    G.lower()(1) + G.ijk(i % nn)[1] * G.spacing()(1))
                            : m_light;
       const double alpha = G.mass[i] >= light ? 1.0 : G.mass[i] / light;

@@ -75,7 +75,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
         }
         if (touch && m > 0.0) {  // the nodes this particle weighs, where it reaches a wall
           const std::uint8_t bits =
-              G.touched_walls(P.x[p], P.v[p], G.particle_half_width[P.object[p]], dt);
+              G.touched_walls(P.x[p], P.v[p], G.settings().particle_half_width[P.object[p]], dt);
           if (bits == 0) return;
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)

@@ -87,9 +87,10 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
 /// without bound. The limiter bounds the factor by (c dt/dx)^2 / 0.5 < 2. FLIP velocity and
 /// position use the true v*_I (S_Ip dt f_I/m_I stays bounded), so momentum is untouched.
 /// Axisymmetric: a ring's mass grows with its radius (2 pi r A rho), so the lightest mass is that
-/// per unit radius times the node's radius (at least the innermost particle's; Grid::light_radius):
-/// one threshold for the whole grid let an outer node far lighter than its particles through, and a
-/// linear/USL rigid translation grew unstable within 150 steps (planar_verification_test.cpp).
+/// per unit radius times the node's radius (at least the innermost particle's;
+/// GridSettings::light_radius): one threshold for the whole grid let an outer node far lighter than
+/// its particles through, and a linear/USL rigid translation grew unstable within 150 steps
+/// (planar_verification_test.cpp).
 inline constexpr double kLightNodeMassFraction = 0.5;
 
 /// With `contact.normal = "logistic_regression"`: the plane separating the two bodies' particles

@@ -36,9 +36,16 @@ GridSpec unit_cells(GridGeometry geometry = GridGeometry::three_d) {
   return spec;
 }
 
+// One thread, two velocity fields (each its own body).
+GridSettings two_fields() {
+  GridSettings s;
+  s.fields = 2;
+  return s;
+}
+
 // The 4 x 4 x 4 grid with two velocity fields and a heat array.
 Grid two_field_grid() {
-  Grid G(unit_cells(), 1, 2);
+  Grid G(unit_cells(), two_fields());
   G.heat.assign(G.entry_count(), 0.0);
   return G;
 }
@@ -133,7 +140,7 @@ BOOST_AUTO_TEST_CASE(the_larger_body_gives_the_normal_at_the_corner_of_the_small
 // the bodies out of the plane (v_z +1/3 and -1/3 here, the cells being as wide as the 1 m along
 // z; on a rod-on-plate scene the particles drifted off z = 0 at up to 0.17 m/s).
 BOOST_AUTO_TEST_CASE(a_2d_grid_has_no_mass_gradient_along_z) {
-  Grid G(unit_cells(GridGeometry::plane_strain), 1, 2);
+  Grid G(unit_cells(GridGeometry::plane_strain), two_fields());
   G.mass[entry(G, 0, 1, 2, 0)] = 1.0;
   G.mass[entry(G, 0, 2, 2, 0)] = 0.5;
   G.mass[entry(G, 0, 2, 3, 0)] = 1.0;
@@ -158,7 +165,7 @@ BOOST_AUTO_TEST_CASE(a_2d_grid_has_no_mass_gradient_along_z) {
 // and both bodies were stopped radially; with the mass per unit radius the radial differences of
 // a uniform body are zero, on the axis by symmetry and next to it one-sided.
 BOOST_AUTO_TEST_CASE(an_axisymmetric_flat_interface_has_an_axial_normal) {
-  Grid G(unit_cells(GridGeometry::axisymmetric), 1, 2);
+  Grid G(unit_cells(GridGeometry::axisymmetric), two_fields());
   const double alpha = 0.75;
   for (int j = 0; j <= 4; ++j) {
     const double w = j == 0 ? 1.0 / 6.0 : double(j);
@@ -195,7 +202,7 @@ BOOST_AUTO_TEST_CASE(a_symmetric_face_adds_the_mirror_images_mass_to_its_normals
   spec.faces[2] = FaceCondition::symmetric;
   const double alpha = 0.75;
   for (const int node : {0, 1}) {
-    Grid G(spec, 1, 2);
+    Grid G(spec, two_fields());
     for (int j = -1; j <= 3; ++j) {
       const double w = j == -1 ? 0.1 : j == 0 ? 0.5 : j == 1 ? 0.9 : 1.0;
       for (int k = 1; k <= 3; ++k) {

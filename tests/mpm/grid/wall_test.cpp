@@ -33,7 +33,7 @@ Grid wall_grid(std::initializer_list<int> walls, double mu) {
     spec.wall_friction[f] = mu;
   }
   spec.active_blocks = false;
-  return Grid(spec, 1);
+  return Grid(spec, GridSettings{});  // one thread
 }
 
 std::uint8_t bit(int face) {

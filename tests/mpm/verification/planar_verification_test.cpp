@@ -245,7 +245,7 @@ void check_radial_expansion(const Scene& scene) {
   const Shape shape = Shape::make(scene);
   Stencils<Shape> S(P.size());
   compute_stencils(P, shape, S, 1);
-  Grid G(scene.grid, 1);
+  Grid G(scene.grid, GridSettings{});  // one thread
   for (int I = 0; I < G.node_count(); ++I) {
     const double y = G.lower()(1) + G.ijk(I)[1] * G.spacing()(1);
     G.mass[I] = 1.0;
