@@ -100,9 +100,13 @@ def _package_files(extension):
     """(path in the wheel, path on disk) of everything installed."""
     files = []
     package = os.path.join(SOURCE, "python", "impact")
-    for name in sorted(os.listdir(package)):
-        if name.endswith((".py", ".pyi")) or name == "py.typed":
-            files.append(("impact/" + name, os.path.join(package, name)))
+    for root, dirs, names in os.walk(package):  # impact/ and its subpackage impact/results/
+        dirs[:] = sorted(d for d in dirs if d != "__pycache__")
+        for name in sorted(names):
+            if name.endswith((".py", ".pyi")) or name == "py.typed":
+                disk = os.path.join(root, name)
+                files.append(("impact/" + os.path.relpath(disk, package).replace(os.sep, "/"),
+                              disk))
     files.append(("impact/" + os.path.basename(extension), extension))
     data = os.path.join(SOURCE, "data")
     prefix = f"{NAME}-{_version()}.data/data/share/impact/data/"

@@ -21,25 +21,52 @@ import re
 # cores (docs/performance.md#threads; the mpm program does the same, support/omp_wait_policy.hpp).
 os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 
-import numpy as np  # noqa: E402
+from ._errors import InputError, InputWarning, OutputError, RunError  # noqa: E402
+from ._errors import warn_input, writable_directory  # noqa: E402
 
-from ._errors import InputError, InputWarning, RunError, warn_input, writable_directory
-from ._run import Run, Snapshot, read_run
-from ._table import Table, read_history
-from ._table import table as _make_table
-from ._impact import OutputError  # noqa: F401  (public)
-from . import _impact
+# The results package (impact.results: read_run, read_history, the launcher, ...) is pure Python;
+# the rest needs the compiled module and NumPy. Without them `import impact` still works, and
+# the compiled API raises an ImportError saying what is missing.
+try:
+    import numpy as np
+    from . import _impact
+except ImportError as _missing:
+    np = None
+    _impact = None
+    _REASON = (str(_missing) if _missing.name not in ("impact", "impact._impact") else
+               f"no _impact extension in {os.path.dirname(os.path.abspath(__file__))}")
+    _MISSING = (f"impact: the compiled module impact._impact is not built or not installed "
+                f"({_REASON}); impact.results (read_run, read_history, the vtu readers, the mpm "
+                "launcher) works without it, the rest needs it: build with python3-dev and "
+                "pybind11-dev (docs/python.md)")
 
 __all__ = ["InputError", "OutputError", "RunError", "InputWarning", "Material", "Table", "Run", "Snapshot",
            "load_material", "update", "run_path", "fit", "check", "run_scene", "resume_scene",
            "check_scene", "read_history", "read_run", "data_path", "failure_causes",
            "update_statuses", "__version__"]
 
-__version__ = getattr(_impact, "__version__", "unknown")
+_RESULTS = ("Run", "Snapshot", "Table", "read_history", "read_run")
+_COMPILED = ("Material", "load_material", "update", "run_path", "fit", "check", "run_scene",
+             "resume_scene", "check_scene")
 
-#: Names of the codes in a state's ``failure_cause`` and of an update report's ``status``.
-failure_causes = list(_impact.failure_cause_names)
-update_statuses = list(_impact.update_status_names)
+
+def __getattr__(name):
+    """The results names (impact.results) on first use; without the compiled module, its names
+    raise ImportError."""
+    if name in _RESULTS:
+        from . import results
+        return getattr(results, name)
+    raise AttributeError(f"module 'impact' has no attribute {name!r}")
+
+
+if _impact is not None:
+    __version__ = getattr(_impact, "__version__", "unknown")
+    #: Names of the codes in a state's ``failure_cause`` and of an update report's ``status``.
+    failure_causes = list(_impact.failure_cause_names)
+    update_statuses = list(_impact.update_status_names)
+else:
+    __version__ = "unknown"
+    failure_causes, update_statuses = [], []
 
 
 def data_path(*relative):
@@ -232,6 +259,7 @@ def run_path(path, patches=None, base_dir=None):
         r = _impact.run_path_document(_dumps(_patched(path, patches, label), label), label)
     else:
         r = _impact.run_path_file(os.fspath(path), _patches(patches))
+    from .results.history import table as _make_table
     columns = r.pop("columns")
     warn_input(r["warnings"], stacklevel=2)
     replay = r.pop("replay")
@@ -371,6 +399,7 @@ def _finish(code, directory, warnings, message, interrupt):
     # Regular files only: a device in a file's place (the run failed writing it) would be read
     # without end.
     if os.path.isfile(os.path.join(directory, "history.csv")):
+        from .results.history import read_history
         result["history"] = read_history(directory)
     if code == 0:
         return result
@@ -392,3 +421,16 @@ def _read_json(path):
         return None
     with open(path) as f:
         return json.load(f)
+
+
+if _impact is None:
+    def _not_built(name):
+        def missing(*args, **kwargs):
+            raise ImportError(_MISSING)
+        missing.__name__ = missing.__qualname__ = name
+        missing.__doc__ = f"Needs the compiled module: {_MISSING}"
+        return missing
+
+    for _name in _COMPILED:
+        globals()[_name] = _not_built(_name)
+    del _name

@@ -6,7 +6,14 @@ import os
 import tempfile
 import warnings
 
-from ._impact import InputError, OutputError
+try:
+    from ._impact import InputError, OutputError
+except ImportError:  # the compiled module is not built or installed: the pure-Python parts
+    class InputError(ValueError):  # (impact.results) raise these, the same kinds of error
+        pass
+
+    class OutputError(OSError):
+        pass
 
 OutputError.__doc__ = (
     "An output that could not be written (a full disk, a file-size limit, a place no file can be "

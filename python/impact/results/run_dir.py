@@ -7,9 +7,9 @@ import re
 
 import numpy as np
 
-from ._errors import InputError
-from ._table import Table, read_history, table
-from ._vtu import read_collection, read_snapshot
+from .._errors import InputError
+from .history import Table, read_history, table
+from .vtu import read_collection, read_snapshot
 
 #: Units of the snapshot fields (docs/mpm.md#output); indices and flags are "-".
 FIELD_UNITS = {"velocity": "m/s", "stress": "Pa", "plastic_strain": "-", "temperature": "K",
