@@ -59,8 +59,11 @@ import textwrap
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+# impact.results (pure Python): <src>/python, or share/impact/python of an install.
+sys.path.insert(0, os.path.join(ROOT, "python"))
 import gci  # noqa: E402
 import quantity_format  # noqa: E402
+from impact import results  # noqa: E402
 
 ANVIL_LAYER = 0.5e-3  # Dm: particles within this distance of the anvil [m] (campaigns/taylor)
 
@@ -208,24 +211,24 @@ def run_level(args, scene_path, scene_text, run_dir):
     marker = os.path.join(run_dir, "ladder_scene.json")
     resumable = (os.path.exists(os.path.join(run_dir, "checkpoint.bin"))
                  and os.path.exists(marker) and open(marker).read() == scene_text)
-    prefix = shlex.split(args.mpirun) + ["-np", str(args.ranks)] if args.ranks > 1 else []
+    launcher = results.Launcher(args.mpm, args.mpirun)
     if resumable:
-        cmd = prefix + [args.mpm, "run", "--restart", run_dir, "--threads", str(args.threads),
-                        "-q"]
+        cmd = launcher.command("run", options=["--restart", run_dir], threads=args.threads,
+                               ranks=args.ranks, extra=["-q"])
     else:
         for stale in ("ladder_scene.json", "checkpoint.bin", "summary.json"):
             if os.path.exists(os.path.join(run_dir, stale)):
                 os.remove(os.path.join(run_dir, stale))
         with open(marker, "w") as f:
             f.write(scene_text)
-        cmd = prefix + [args.mpm, "run", scene_path, "--out", run_dir, "--overwrite",
-                        "--threads", str(args.threads), "-q"]
+        cmd = launcher.command("run", scene_path, out=run_dir, options=["--overwrite"],
+                               threads=args.threads, ranks=args.ranks, extra=["-q"])
     print(f"ladder: {'resuming' if resumable else 'running'} {os.path.basename(run_dir)}: "
           f"{shlex.join(cmd)}", flush=True)
     with open(os.path.join(run_dir, "ladder.log"), "a") as log:
         # Its own session: Ctrl-C reaches the ladder only, which passes on exactly one SIGINT
         # (mpm then writes its checkpoint; a second one would kill it outright).
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+        proc = launcher.popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
         try:
             return proc.wait()
         except KeyboardInterrupt:
@@ -239,9 +242,9 @@ def fingerprint_of(args, scene_path):
     summary.json), from --mpm or else this tree's build; None when neither knows the option."""
     for mpm in (args.mpm, os.path.join(ROOT, "build", "bin", "mpm")):
         try:
-            done = subprocess.run([mpm, "check", scene_path, "--fingerprint"],
-                                  capture_output=True, text=True, timeout=600)
-        except OSError:
+            done = results.Launcher(mpm).run("check", scene_path, options=["--fingerprint"],
+                                             check=False, timeout=600)
+        except results.LaunchError:  # not an executable
             continue
         text = done.stdout.strip()
         if done.returncode == 0 and len(text) == 16:
@@ -270,18 +273,17 @@ def gauge_peaks(run_dir):
     """{gauge name: (unit, peak)}: per history.csv column gauge_<name> [unit], the signed reading
     of largest magnitude over the rows (the first of equal magnitudes)."""
     try:
-        with open(os.path.join(run_dir, "history.csv"), newline="") as f:
-            rows = [r for r in csv.reader(f) if r]
-    except OSError:
+        head, rows = results.history_rows(run_dir)
+    except (OSError, ValueError):  # no history.csv (InputError is a ValueError)
         return {}
-    if len(rows) < 2:
+    if not rows:
         return {}
-    head, out = rows[0], {}
+    out = {}
     for i, col in enumerate(head):
         if not col.startswith("gauge_"):
             continue
         name, _, unit = col[len("gauge_"):].partition(" [")
-        values = [float(r[i]) for r in rows[1:] if len(r) == len(head)]
+        values = [r[i] for r in rows]
         peak = max(values, key=abs) if values else None  # max keeps the first of equal magnitudes
         out[name] = (unit.rstrip("]"), peak)
     return out
@@ -300,10 +302,9 @@ def taylor_measures(run_dir, scene, rod):
     note tells how many particles failed (debris, not measured), or is None. NotMeasured when
     no intact particle lies within 0.5 mm of the anvil."""
     import numpy as np
-    import vtu
     name, obj = rod
-    snaps = vtu.snapshots(run_dir)
-    first, last = vtu.read_vtu(snaps[0][1]), vtu.read_vtu(snaps[-1][1])
+    snaps = results.snapshots(run_dir)
+    first, last = results.read_points(snaps[0][1]), results.read_points(snaps[-1][1])
     ids = first["object"]
     index = sorted(scene["objects"]).index(name) if len(set(ids.tolist())) > 1 else ids[0]
     mine = ids == index
@@ -325,7 +326,7 @@ def taylor_measures(run_dir, scene, rod):
     face_lift = 0.0
     if scene["grid"].get("boundary", {}).get("x-") == "wall":
         lowest = min(snap["points"][snap["object"] == index][:, 0].min()
-                     for snap in (vtu.read_vtu(f) for _, f in snaps))
+                     for snap in (results.read_points(f) for _, f in snaps))
         face_lift = float(x[:, 0].min() - lowest)
     x = x - np.array([anvil + face_lift, 0.0, 0.0])
     # Failed particles are debris, not the rod's shape (with erosion off there are none).
@@ -871,7 +872,9 @@ def main(argv):
         return 3
 
 
-def ladder_main(argv):
+def parse_arguments(argv):
+    """(parser, args) of the command line, with args.levels worked out and the options checked
+    on their own (a bad one exits through the parser)."""
     ap = Parser(prog="ladder.py", description=__doc__.split("\n")[0])
     ap.add_argument("scene")
     ap.add_argument("--out", required=True)
@@ -907,6 +910,12 @@ def ladder_main(argv):
         ap.error("--particles-per-cell: expected whole numbers >= 1")
     if args.threads < 1 or args.ranks < 1 or args.checkpoint_steps < 1:
         ap.error("--threads, --ranks and --checkpoint-steps must be at least 1")
+    return ap, args
+
+
+def read_patched_scene(args):
+    """(scene resolved with the --set patches, the patches), or the exit code after saying on
+    stderr why not (1: a --set that is not a JSON object; 2: a scene without a usable grid)."""
     if not os.path.isfile(args.scene):
         print(f"ladder: {args.scene}: expected a scene file (JSON), "
               f"{'got a directory' if os.path.isdir(args.scene) else 'no such file'}",
@@ -939,6 +948,12 @@ def ladder_main(argv):
         print(f"ladder: {args.scene}: cannot read the scene's grid (/grid/cells, /grid/lower, "
               f"/grid/upper) and /time/max_time: {e}", file=sys.stderr)
         return 2
+    return scene, sets
+
+
+def check_destinations(ap, args):
+    """The output options against the file system; 1 (after a line on stderr) for an --mpm that
+    cannot run, else None. A bad --out, --runs or --table exits through the parser."""
     for path, what in ((args.out, "--out"), (args.runs, "--runs")):
         if path and os.path.exists(path) and not os.path.isdir(path):
             ap.error(f"{what} {path}: exists and is not a directory")
@@ -951,13 +966,13 @@ def ladder_main(argv):
         print(f"ladder: --mpm {args.mpm}: not an executable (build it: cmake --build build)",
               file=sys.stderr)
         return 1
-    rod = taylor_rod(scene)
-    observables = observables_of(scene, rod)
-    runs_root = args.runs or os.path.join(args.out, "runs")
-    with writing("--out"):
-        os.makedirs(os.path.join(args.out, "scenes"), exist_ok=True)
-    with writing("--runs" if args.runs else "--out"):
-        os.makedirs(runs_root, exist_ok=True)
+    return None
+
+
+def plan_levels(ap, args, scene):
+    """[(level, particles per cell or None)]: the grid levels, then the --ppc-levels per
+    --particles-per-cell. Two levels with the same cells exit through the parser; a level whose
+    whole cells refine the axes unevenly is a warning."""
     seen = {}
     for lv in sorted(args.levels):
         cells = tuple(level_cells(scene, lv))
@@ -970,23 +985,32 @@ def ladder_main(argv):
                   f"{', '.join(f'{r:.3f}' for r in ratios)} (whole cells): the representative h "
                   "takes it into account, but the refinement is not uniform", file=sys.stderr)
     plan = [(lv, None) for lv in sorted(args.levels)]
-    plan += [(lv, int(p)) for lv in sorted(args.ppc_levels) for p in args.particles_per_cell]
-    if not args.analyse_only:  # every level's scene is checked before anything runs
-        problems = []
-        for level, ppc in plan:
-            path = os.path.join(args.out, "scenes", run_name(level, ppc) + ".json")
-            with writing("a level's scene"):
-                write_level_scene(path, args.scene, scene, level, ppc, args.checkpoint_steps, rod,
-                                  sets)
-            done = subprocess.run([args.mpm, "check", path, "--threads", "1"],
-                                  capture_output=True, text=True)
-            if done.returncode != 0:
-                problems.append(f"level {run_name(level, ppc)} (exit {done.returncode}): "
-                                + (done.stderr.strip() or done.stdout.strip()))
-        if problems:
-            print("ladder: a level's scene is refused; nothing was run:\n" + "\n".join(problems),
-                  file=sys.stderr)
-            return 2
+    return plan + [(lv, int(p)) for lv in sorted(args.ppc_levels) for p in args.particles_per_cell]
+
+
+def check_level_scenes(args, scene, plan, rod, sets):
+    """Writes every level's scene and has `mpm check` read it before anything runs: 2 (after the
+    refusals on stderr) when one is refused, else 0."""
+    problems = []
+    for level, ppc in plan:
+        path = os.path.join(args.out, "scenes", run_name(level, ppc) + ".json")
+        with writing("a level's scene"):
+            write_level_scene(path, args.scene, scene, level, ppc, args.checkpoint_steps, rod,
+                              sets)
+        done = results.Launcher(args.mpm).run("check", path, threads=1, check=False)
+        if done.returncode != 0:
+            problems.append(f"level {run_name(level, ppc)} (exit {done.returncode}): "
+                            + (done.stderr.strip() or done.stdout.strip()))
+    if problems:
+        print("ladder: a level's scene is refused; nothing was run:\n" + "\n".join(problems),
+              file=sys.stderr)
+        return 2
+    return 0
+
+
+def run_plan(args, scene, plan, rod, sets, observables, runs_root):
+    """(runs, failed): each level run (unless finished, or --analyse-only) and read back, the
+    failed ones named with their log; None (after a line on stderr) when the user stops a run."""
     runs, failed = [], []
     for level, ppc in plan:
         name = run_name(level, ppc)
@@ -1001,7 +1025,7 @@ def ladder_main(argv):
                     code = run_level(args, scene_path, text, run_dir)
             except KeyboardInterrupt:
                 print("ladder: interrupted; run the same command again to resume", file=sys.stderr)
-                return 130
+                return None
             if code != 0:
                 failed.append(f"{name} (exit {code}; {run_dir}/ladder.log)")
                 print(f"ladder: {name} failed with exit {code}", file=sys.stderr)
@@ -1010,8 +1034,12 @@ def ladder_main(argv):
                      "scene_path": scene_path,
                      "h": representative_h(scene, cells),
                      "data": read_run(run_dir, text, scene, rod, observables)})
-    # Runs made before summary.json carried the fingerprint, and with --refingerprint every run:
-    # the fingerprint `mpm check` gives the level's scene today.
+    return runs, failed
+
+
+def fill_fingerprints(args, runs):
+    """Runs made before summary.json carried the fingerprint, and with --refingerprint every
+    run: the fingerprint `mpm check` gives the level's scene today."""
     for r in runs:
         if not r["data"]:
             continue
@@ -1024,9 +1052,14 @@ def ladder_main(argv):
                       f"{today} of the scene today (--refingerprint): the table takes today's",
                       file=sys.stderr)
                 r["data"]["fingerprint"] = today
+
+
+def report(args, scene, runs, observables):
+    """Analyses the runs and writes ladder.md, the table and the figure; the measures that could
+    not be taken are warnings, Lf and Dm sharing one line."""
     result = analyse(runs, observables)
     said = {}
-    for res in result.values():  # Lf and Dm share their reason: one line for both
+    for res in result.values():
         for note in res["notes"]:
             if "not measured" in note:
                 said.setdefault(note, []).append(res["name"])
@@ -1037,6 +1070,35 @@ def ladder_main(argv):
                       scene.get("objects", {}))
     print(f"ladder: {os.path.join(args.out, 'ladder.md')}" + (f", table {args.table}"
                                                                 if args.table else ""))
+
+
+def ladder_main(argv):
+    ap, args = parse_arguments(argv)
+    patched = read_patched_scene(args)
+    if isinstance(patched, int):
+        return patched
+    scene, sets = patched
+    code = check_destinations(ap, args)
+    if code:
+        return code
+    rod = taylor_rod(scene)
+    observables = observables_of(scene, rod)
+    runs_root = args.runs or os.path.join(args.out, "runs")
+    with writing("--out"):
+        os.makedirs(os.path.join(args.out, "scenes"), exist_ok=True)
+    with writing("--runs" if args.runs else "--out"):
+        os.makedirs(runs_root, exist_ok=True)
+    plan = plan_levels(ap, args, scene)
+    if not args.analyse_only:  # every level's scene is checked before anything runs
+        code = check_level_scenes(args, scene, plan, rod, sets)
+        if code:
+            return code
+    ran = run_plan(args, scene, plan, rod, sets, observables, runs_root)
+    if ran is None:
+        return 130
+    runs, failed = ran
+    fill_fingerprints(args, runs)
+    report(args, scene, runs, observables)
     if failed:
         print("ladder: failed: " + ", ".join(failed), file=sys.stderr)
         return 3

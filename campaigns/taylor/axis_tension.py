@@ -19,8 +19,8 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "study"))
-import taylor  # noqa: E402
+import taylor  # noqa: E402  (its import puts python/ on the path: impact.results)
+from impact import results  # noqa: E402
 
 
 def main():
@@ -30,7 +30,6 @@ def main():
     ap.add_argument("--cells-per-radius", default="3,4,6,8")
     ap.add_argument("--mpm", default=os.path.join(taylor.REPO, "build", "bin", "mpm"))
     a = ap.parse_args()
-    import vtu  # NumPy: only once the options are read (--help needs the standard library only)
     shot = next(s for s in taylor.read_shots() if s["shot"] == a.shot)
     print("cells/radius,core max tension [Pa],core max compression [Pa]")
     with tempfile.TemporaryDirectory() as work:
@@ -43,9 +42,9 @@ def main():
             with open(scene_file, "w") as f:
                 json.dump(sc, f)
             run = os.path.join(work, f"n{n}")
-            subprocess.run([a.mpm, "run", scene_file, "--out", run, "--threads", "2"],
-                           check=True, stdout=subprocess.DEVNULL)
-            snaps = [vtu.read_vtu(f) for _, f in vtu.snapshots(run)]
+            results.Launcher(a.mpm).run("run", scene_file, out=run, threads=2,
+                                        stdout=subprocess.DEVNULL)
+            snaps = [results.read_points(f) for _, f in results.snapshots(run)]
             X0 = snaps[0]["points"]
             core = (X0[:, 1] ** 2 + X0[:, 2] ** 2) ** 0.5 <= 0.25 * shot["D0"]
             mean = [d["stress"][core, :3].mean(axis=1) for d in snaps]

@@ -75,9 +75,11 @@ import subprocess
 import sys
 import time
 
-# campaigns/study/vtu.py reads the snapshots with NumPy: imported where a run is measured, so
-# that --help, the usage errors and the table of shots need the standard library only.
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
+# impact.results (python/, or share/impact/python of an install) runs mpm and reads the runs; it
+# imports NumPy only where a snapshot is read, so that --help, the usage errors and the table of
+# shots need the standard library only.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from impact import results  # noqa: E402
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 DATA = os.path.join(REPO, "data", "experiments", "taylor", "house1995.csv")
@@ -278,9 +280,8 @@ def measure(x, plastic_strain, shot, cells_per_radius, face_lift=0.0, geometry="
 def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     """(Lf, Dm, Xf and the failure counts, the profile, the outer faces material reached) of a
     finished run (module docstring)."""
-    import vtu
-    snaps = vtu.snapshots(run_dir)
-    first, last = vtu.read_vtu(snaps[0][1]), vtu.read_vtu(snaps[-1][1])
+    snaps = results.snapshots(run_dir)
+    first, last = results.read_points(snaps[0][1]), results.read_points(snaps[-1][1])
     rod0 = first["object"] == max(first["object"])
     X0, x = first["points"][rod0], last["points"][rod0]
     R0 = 0.5 * shot["D0"]
@@ -291,7 +292,7 @@ def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     # mirror holds the face on the anvil (no lift).
     face_lift = 0.0
     if wall:
-        lowest = min(vtu.read_vtu(f)["points"][rod0][:, 0].min() for _, f in snaps)
+        lowest = min(results.read_points(f)["points"][rod0][:, 0].min() for _, f in snaps)
         face_lift = float(x[:, 0].min() - lowest)
     Lf, Dm, Xf, profile = measure(x, last["plastic_strain"][rod0], shot, cells_per_radius,
                                   face_lift, geometry)
@@ -301,8 +302,8 @@ def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     with open(f"{run_dir}/summary.json") as f:
         summary = json.load(f)
     reached = summary.get("material_reached_faces") or []  # absent: no face reached
-    with open(f"{run_dir}/history.csv", newline="") as f:
-        hist = list(csv.DictReader(f))
+    header, rows = results.history_rows(run_dir)
+    hist = [dict(zip(header, r)) for r in rows]
     e0 = float(hist[0]["total_energy [J]"])
     # At rest: the first history row with the kinetic energy below 3 % of the impact energy (what is left is elastic ringing).
     rest = next((float(h["time [s]"]) for h in hist if float(h["kinetic_energy [J]"]) < 0.03 * e0),
@@ -375,8 +376,7 @@ def run_attempt(job, run_dir, radial):
     with open(scene_file, "w") as f:
         json.dump(the_scene, f, indent=1)
     start = time.time()
-    proc = subprocess.run([mpm, "run", scene_file, "--out", run_dir, "--threads", str(threads)],
-                          capture_output=True, text=True)
+    proc = results.Launcher(mpm).run("run", scene_file, out=run_dir, threads=threads, check=False)
     row = {"set": set_name, "failure": failure, "cells_per_radius": n,
            "anvil": anvil[0] if anvil[0] == "mirror" else f"wall:{anvil[1]:g}",
            "geometry": geometry, "shot": shot["shot"],
@@ -393,8 +393,7 @@ def run_attempt(job, run_dir, radial):
     row.update(m)
     record_shape(row, shot, profile, out_dir, tag)
     # Keep the last snapshot (the failure-cause figure); drop the others (tens of MB per run).
-    import vtu
-    snaps = vtu.snapshots(run_dir)
+    snaps = results.snapshots(run_dir)
     for _, f in snaps[:-1]:
         os.remove(f)
     with open(os.path.join(run_dir, "particles.pvd"), "w") as f:
@@ -479,7 +478,6 @@ def record_shape(row, shot, profile, out_dir, tag):
 def reextract(out_dir, data=DATA):
     """Re-measures Lf, Dm, Xf and the profiles of OUT/results.csv from the runs' last snapshots
     (after a change of the measures; nothing is re-run)."""
-    import vtu
     with open(os.path.join(out_dir, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     shots = {s["shot"]: s for s in read_shots(data)}
@@ -487,7 +485,7 @@ def reextract(out_dir, data=DATA):
         if row["exit_code"] != "0":
             continue
         shot, n = shots[row["shot"]], int(row["cells_per_radius"])
-        last = vtu.read_vtu(os.path.join(out_dir, row["last_snapshot"]))
+        last = results.read_points(os.path.join(out_dir, row["last_snapshot"]))
         rod = last["object"] == max(last["object"])
         Lf, Dm, Xf, profile = measure(last["points"][rod], last["plastic_strain"][rod], shot, n,
                                       float(row.get("face_lift [m]") or 0.0),

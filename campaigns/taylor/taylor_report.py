@@ -26,7 +26,9 @@ import sys
 from collections import defaultdict
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "study"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import gci  # noqa: E402
+from impact import results  # noqa: E402
 
 CAUSES = ["none", "melting", "tepla", "drucker", "becker"]
 CAUSE_COLOURS = {"none": "#c8c8c8", "melting": "tab:orange", "tepla": "tab:red",
@@ -302,7 +304,6 @@ def failure_table(rows):
 
 
 def figures(out, rows):
-    import vtu
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -383,7 +384,7 @@ def figures(out, rows):
             snapshot = os.path.join(out, r["last_snapshot"])  # relative to OUT
             if not os.path.exists(snapshot):
                 continue
-            d = vtu.read_vtu(snapshot)
+            d = results.read_points(snapshot)
             rod = d["object"] == d["object"].max()
             h = 0.5 * r["D0 [m]"] / r["cells_per_radius"] / 2
             cut = rod & (d["points"][:, 2] < h)  # the layer on the mirror plane z = 0

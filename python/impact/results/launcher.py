@@ -115,8 +115,13 @@ class Launcher:
               start_new_session=False, **options):
         """Starts ``command(action, *targets, **options)`` and returns the Popen (for a run the
         caller waits on, signals or times)."""
-        return subprocess.Popen(self.command(action, *targets, **options), env=env,
-                                stdout=stdout, stderr=stderr, start_new_session=start_new_session)
+        return self.popen(self.command(action, *targets, **options), env=env, stdout=stdout,
+                          stderr=stderr, start_new_session=start_new_session)
+
+    @staticmethod
+    def popen(command, **kwargs):
+        """Starts a command line ``command()`` built (to print or log it first): the Popen."""
+        return subprocess.Popen(command, **kwargs)
 
 
 def launch(action, *targets, mpm=None, mpirun="mpirun", mpirun_options=(), **options):

@@ -5,7 +5,7 @@
 
 `mpm run` on the verification Taylor rod (House H8, 3 cells per radius, the material's failure
 stack as shipped but with stability_check.outcome = report) for 3 us, with a snapshot at the end.
-From the last snapshot (read with campaigns/study/vtu.py) the failed particles are counted per
+From the last snapshot (read with impact.results.vtu) the failed particles are counted per
 failure_cause code (1 melting, 2 tepla, 3 drucker, 4 becker), failed with a tensile mean stress
 (failed_in_tension), and flagged by a stability check without failing (instability bits: 1
 Drucker, 2 Becker). Every count must equal summary.json's failed_by_cause entry, the causes must
@@ -20,8 +20,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
-import vtu  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "python"))  # impact.results, without the compiled module
+from impact.results import vtu  # noqa: E402
 
 CAUSES = {1: "melting", 2: "tepla", 3: "drucker", 4: "becker"}
 
@@ -43,7 +43,7 @@ def main(mpm, work):
     subprocess.run([mpm, "run", path, "--out", out], check=True, capture_output=True)
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
-    last = vtu.read_vtu(vtu.snapshots(out)[-1][1])
+    last = vtu.read_points(vtu.snapshots(out)[-1][1])
     failed = last["failed"] > 0.5
     counted = {name: int((failed & (last["failure_cause"] == code)).sum())
                for code, name in CAUSES.items()}

@@ -11,7 +11,7 @@ run: the rigid translation (data/scenes/verification/rigid_translation.json: a 2
   15.12 J and the momentum m v = (0.648, -0.432, 0.216) kg m/s (m = 2700 kg/m^3 x (0.02 m)^3 =
   0.0216 kg) to 1e-9 relative, the strain energy below 1e-9 J (the cube translates unstrained).
   particles.pvd: well-formed XML naming one snapshot per history row at the history's times; each
-  .vtu read back (campaigns/study/vtu.py, its byte counts checked against NumberOfPoints) holds the
+  .vtu read back (impact.results.vtu, its byte counts checked against NumberOfPoints) holds the
   8^3 = 512 particles, each at its seed position (sub-cell centres) plus v t to 1e-12 m and moving
   at v.
 check: `mpm check` on Case 1 of the sphere-cylinder. Per object the particles are counted here by
@@ -54,8 +54,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
-import vtu  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "python"))  # impact.results, without the compiled module
+from impact.results import vtu  # noqa: E402
 
 SCENES = os.path.join(ROOT, "data", "scenes")
 RIGID = os.path.join(SCENES, "verification", "rigid_translation.json")
@@ -120,7 +120,7 @@ def check_run(mpm, work):
         with open(path, "rb") as f:
             head = f.read().split(b"<AppendedData", 1)[0].decode()
         n = int(head.split('NumberOfPoints="', 1)[1].split('"', 1)[0])
-        s = vtu.read_vtu(path)
+        s = vtu.read_points(path)
         assert n == 512 and s["points"].shape == (512, 3), (path, n, s["points"].shape)
         assert s["velocity"].shape == (512, 3) and s["mass"].shape == (512,), path
         x = s["points"][np.lexsort((s["points"][:, 2], s["points"][:, 1], s["points"][:, 0]))]

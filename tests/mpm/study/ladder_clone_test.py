@@ -54,6 +54,10 @@ def main():
         os.makedirs(os.path.join(repo, "campaigns"))
         shutil.copytree(STUDY, os.path.join(repo, "campaigns", "study"),
                         ignore=shutil.ignore_patterns("__pycache__"))
+        # ladder.py runs mpm and reads the runs through impact.results (<repo>/python).
+        shutil.copytree(os.path.join(ROOT, "python", "impact"),
+                        os.path.join(repo, "python", "impact"),
+                        ignore=shutil.ignore_patterns("__pycache__"))
         with open(os.path.join(repo, "scene.json"), "w") as f:  # the shipped scene, from here
             json.dump({"extends": SCENE}, f, indent=1)
         # The outputs exist as tracked files before the ladder writes them, as the shipped ones do.

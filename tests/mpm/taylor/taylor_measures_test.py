@@ -4,7 +4,7 @@
   taylor_measures_test.py MPM WORK_DIR
 
 For three House shots at 3, 4 and 6 cells per radius, campaigns/taylor/taylor.py writes the scene and
-`mpm run` seeds it (the t = 0 snapshot, read with campaigns/study/vtu.py); the measures of
+`mpm run` seeds it (the t = 0 snapshot, read with impact.results.vtu); the measures of
 campaigns/taylor/taylor.py (final length Lf, impact-face diameter Dm) applied to the seeded particles
 must give L0 and D0 to 1e-12 relative: the seed offsets are what makes them exact at t = 0 (the
 plain half-spacing rule reads a 6-cells-per-radius rod 3 % too thick). Also checked: the
@@ -26,9 +26,9 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "campaigns", "taylor"))
-sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
+sys.path.insert(0, os.path.join(ROOT, "python"))  # impact.results, without the compiled module
 import taylor  # noqa: E402
-import vtu  # noqa: E402
+from impact.results import vtu  # noqa: E402
 
 
 def main(mpm, work):
@@ -48,7 +48,7 @@ def main(mpm, work):
             run = os.path.join(work, f"{name}_{n}{suffix}")
             subprocess.run([mpm, "run", scene_file, "--out", run, "--threads", "1"], check=True,
                            stdout=subprocess.DEVNULL)
-            seeded = vtu.read_vtu(vtu.snapshots(run)[0][1])
+            seeded = vtu.read_points(vtu.snapshots(run)[0][1])
             Lf, Dm, _, profile = taylor.measure(seeded["points"], seeded["plastic_strain"], shot,
                                                 n, geometry=geometry)
             radius_error = max(abs(r / (0.5 * shot["D0"]) - 1.0) for _, r, _ in profile)
