@@ -36,7 +36,9 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(ROOT, "python"))  # impact.results (pure Python)
 import gci  # noqa: E402
+from impact import results  # noqa: E402
 BASE = os.path.join(ROOT, "data", "scenes", "sphere_cylinder", "recommended.json")
 BASE_CELLS = (50, 20, 20)
 METHODS = [("gimp", "musl"), ("gimp", "usl"), ("linear", "musl"), ("linear", "usl")]
@@ -103,8 +105,9 @@ def run_in_parallel(mpm, scenes, runs_dir, table, jobs, threads):
             if os.path.exists(os.path.join(out, stale)):
                 os.remove(os.path.join(out, stale))
         with open(os.path.join(out, "mpm.log"), "w") as log:
-            code = subprocess.call([mpm, "run", os.path.join(scenes, name + ".json"), "--out", out,
-                                    "--threads", str(threads)], stdout=log, stderr=subprocess.STDOUT)
+            code = results.Launcher(mpm).run(
+                "run", os.path.join(scenes, name + ".json"), out=out, threads=threads,
+                check=False, stdout=log, stderr=subprocess.STDOUT).returncode
         if not os.path.exists(os.path.join(out, "summary.json")):
             with open(os.path.join(out, "summary.json"), "w") as f:
                 json.dump({"status": "failed", "exit_code": code}, f)
@@ -140,18 +143,15 @@ def read_runs(runs_dir, table):
         flatten("", s.get("observables", {}), flat)
         flat["abs_energy_error"] = abs(s.get("final", {}).get("energy_error [-]", float("nan")))
         obs = {k: v for k, v in flat.items() if k in OBSERVABLES}
-        hist = os.path.join(runs_dir, name, "history.csv")
         histories = {}
-        if os.path.exists(hist):
-            with open(hist, newline="") as f:
-                rows = [x for x in csv.reader(f) if x]
-            if len(rows) > 1:
-                rows = [rows[0]] + [x for x in rows[1:] if len(x) == len(rows[0])]
-                t = [float(x[0]) for x in rows[1:]]
-                for i, h in enumerate(rows[0]):
+        if os.path.exists(os.path.join(runs_dir, name, "history.csv")):
+            head, rows = results.history_rows(os.path.join(runs_dir, name))
+            if rows:
+                t = [x[0] for x in rows]
+                for i, h in enumerate(head):
                     if h.startswith("gauge_"):
-                        obs[h] = float(rows[-1][i])
-                        histories[h] = (t, [float(x[i]) for x in rows[1:]])
+                        obs[h] = rows[-1][i]
+                        histories[h] = (t, [x[i] for x in rows])
         runs.append({
             "name": name, "interp": interp, "scheme": scheme, "level": level,
             "multiplier": multiplier, "ppc": ppc, "status": s.get("status", "?"),
@@ -243,19 +243,35 @@ def confirmed_by_finer(rich, last, finer, name):
     return True
 
 
-def analyse(out, runs, levels):
+# A gauge the wave has not reached by max_time reads round-off: no accuracy to measure. Per unit,
+# the magnitude below which the finest run's value (or history) is taken as such.
+ROUND_OFF_FLOOR = {"[-]": 1e-6, "[m/s]": 1e-3, "[Pa]": 1e3}
+RUN_COLUMNS = ("name", "interp", "scheme", "level", "multiplier", "ppc", "status", "wall",
+               "particle_steps")
+
+
+def reference_runs(runs):
+    """(the completed gimp/musl runs at multiplier 0.1 and 2 particles per cell by level, the
+    finest, the next-finest or the finest again); SystemExit when there is none."""
     ref_runs = [r for r in runs if (r["interp"], r["scheme"]) == ("gimp", "musl")
                 and r["multiplier"] == 0.1 and r["ppc"] == 2 and r["status"] == "completed"]
     ref_runs.sort(key=lambda r: r["level"])
     if not ref_runs:
         raise SystemExit("accuracy_study: no completed gimp/musl reference run")
-    finest = ref_runs[-1]
-    second = ref_runs[-2] if len(ref_runs) > 1 else finest
+    return ref_runs, ref_runs[-1], ref_runs[-2] if len(ref_runs) > 1 else ref_runs[-1]
+
+
+def measured_names(runs, finest):
+    """The observables of any run, less those the finest run reads at round-off."""
     names = sorted(set().union(*(r["obs"].keys() for r in runs)))
-    # A gauge the wave has not reached by max_time reads round-off: no accuracy to measure.
-    floor = {"[-]": 1e-6, "[m/s]": 1e-3, "[Pa]": 1e3}
-    names = [n for n in names if not any(
-        n.endswith(u) and abs(finest["obs"].get(n, 0.0)) < f for u, f in floor.items())]
+    return [n for n in names if not any(n.endswith(u) and abs(finest["obs"].get(n, 0.0)) < f
+                                        for u, f in ROUND_OFF_FLOOR.items())]
+
+
+def references(names, ref_runs, finest):
+    """(reference value, Richardson's accepted order, the rejected order) per observable: the
+    extrapolation of the finest three levels of one ratio where its order lies in [MIN_ORDER,
+    MAX_ORDER] and the finer runs confirm it, else the finest run's value."""
     reference, orders, rejected = {}, {}, {}
     for n in names:
         if n == "abs_energy_error":
@@ -278,13 +294,17 @@ def analyse(out, runs, levels):
             elif rich:
                 rejected[n] = rich[0]
             break
-    # Gauge histories (the VISAR-like far-end velocity, the wall's strain gauges): the error is
-    # the largest difference over the reference's output times (linear interpolation) relative to
-    # the reference history's largest magnitude; the reference is the finest run (no Richardson
-    # for a whole history).
+    return reference, orders, rejected
+
+
+def history_errors(runs, finest):
+    """(the gauge histories compared, their rows). Gauge histories (the VISAR-like far-end
+    velocity, the wall's strain gauges): the error is the largest difference over the
+    reference's output times (linear interpolation) relative to the reference history's largest
+    magnitude; the reference is the finest run (no Richardson for a whole history)."""
     history_names = [h for h in sorted(finest["histories"])
                      if max(map(abs, finest["histories"][h][1]), default=0.0) >
-                     next((f for u, f in floor.items() if h.endswith(u)), 0.0)]
+                     next((f for u, f in ROUND_OFF_FLOOR.items() if h.endswith(u)), 0.0)]
     rows = []
     for r in runs:
         for h in history_names:
@@ -297,10 +317,15 @@ def analyse(out, runs, levels):
                 continue
             peak = max(abs(b) for _, b in common)
             diff = max(abs(interp(t, v, a) - b) for a, b in common)
-            rows.append({**{k: r[k] for k in ("name", "interp", "scheme", "level", "multiplier",
-                                                "ppc", "status", "wall", "particle_steps")},
+            rows.append({**{k: r[k] for k in RUN_COLUMNS},
                          "observable": "history " + h, "value": max(map(abs, v)),
                          "reference": peak, "error": diff / peak})
+    return history_names, rows
+
+
+def observable_errors(runs, names, reference, finest):
+    """A row per run and observable: its value, the reference and the relative error."""
+    rows = []
     for r in runs:
         for n in names:
             v, ref = r["obs"].get(n), reference.get(n)
@@ -310,9 +335,12 @@ def analyse(out, runs, levels):
                 err = v
             else:
                 err = abs(v - ref) / scale_of(n, ref, finest)
-            rows.append({**{k: r[k] for k in ("name", "interp", "scheme", "level", "multiplier",
-                                                "ppc", "status", "wall", "particle_steps")},
+            rows.append({**{k: r[k] for k in RUN_COLUMNS},
                          "observable": n, "value": v, "reference": ref, "error": err})
+    return rows
+
+
+def write_accuracy_csv(out, rows):
     with open(os.path.join(out, "accuracy.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["run", "interpolation", "scheme", "grid_level [-]", "multiplier [-]",
@@ -322,53 +350,76 @@ def analyse(out, runs, levels):
             w.writerow([x["name"], x["interp"], x["scheme"], x["level"], x["multiplier"],
                         x["ppc"], x["status"], x["wall"], x["particle_steps"], x["observable"],
                         x["value"], x["reference"], x["error"]])
-    lines = ["# Speed versus accuracy: recommended sphere-cylinder scene", "",
-             f"Reference: {'Richardson extrapolation where marked, else ' if orders else ''}"
-             f"the finest gimp/musl run ({finest['name']}). Errors relative to the reference "
-             "(abs_energy_error: the ledger's |energy_error| itself; kinetic energies relative "
-             f"to the initial kinetic energy E0 = {finest['e0']:.5g} J, mean velocities relative "
-             f"to the impact speed {finest['v0']:.5g} m/s; gauge histories: the largest "
-             "difference over time relative to the reference history's largest magnitude). "
-             f"Richardson's observed order is accepted in [{MIN_ORDER:g}, {MAX_ORDER:g}].", "",
-             f"The column x{second['level']:g} is the error of the next-finest gimp/musl level: "
-             "where the reference is the finest run itself, how far from converged the reference "
-             "may still be; where that exceeds a tolerance, no run is named for it (\"reference "
-             "not converged\").", "",
-             f"| observable [unit] | reference [the observable's unit] | observed order [-] | "
-             f"x{second['level']:g} error [%] | cheapest run <= 1 % (its wall time) | <= 5 % | "
-             "<= 10 % |",
-             "|---|---|---|---|---|---|---|"]
+
+
+def table_head(finest, second, orders):
+    """accuracy.md's title, the reference's description and the observables table's header."""
+    return ["# Speed versus accuracy: recommended sphere-cylinder scene", "",
+            f"Reference: {'Richardson extrapolation where marked, else ' if orders else ''}"
+            f"the finest gimp/musl run ({finest['name']}). Errors relative to the reference "
+            "(abs_energy_error: the ledger's |energy_error| itself; kinetic energies relative "
+            f"to the initial kinetic energy E0 = {finest['e0']:.5g} J, mean velocities relative "
+            f"to the impact speed {finest['v0']:.5g} m/s; gauge histories: the largest "
+            "difference over time relative to the reference history's largest magnitude). "
+            f"Richardson's observed order is accepted in [{MIN_ORDER:g}, {MAX_ORDER:g}].", "",
+            f"The column x{second['level']:g} is the error of the next-finest gimp/musl level: "
+            "where the reference is the finest run itself, how far from converged the reference "
+            "may still be; where that exceeds a tolerance, no run is named for it (\"reference "
+            "not converged\").", "",
+            f"| observable [unit] | reference [the observable's unit] | observed order [-] | "
+            f"x{second['level']:g} error [%] | cheapest run <= 1 % (its wall time) | <= 5 % | "
+            "<= 10 % |",
+            "|---|---|---|---|---|---|---|"]
+
+
+def observable_row(n, rows, finest, second, reference, orders, rejected):
+    """(the table's row of observable n, the next-finest level's error or None)."""
+    cells = []
+    prev = next((x["error"] for x in rows if x["observable"] == n
+                 and x["name"] == second["name"]), None)
+    for tol in (0.01, 0.05, 0.10):
+        # A reference that the next-finest level misses by more than tol is not known to
+        # tol itself: a coarse run that happens to land within tol of it is a coincidence.
+        if (n != "abs_energy_error" and n not in orders and prev is not None
+                and prev > tol):
+            cells.append("reference not converged")
+            continue
+        # The finest run is a candidate only where the reference is not the run itself.
+        ok = [x for x in rows if x["observable"] == n and x["error"] <= tol
+              and x["status"] == "completed"
+              and (n in orders or x["name"] != finest["name"])]
+        best = min(ok, key=lambda x: x["wall"]) if ok else None
+        cells.append(f"{best['name']} ({best['wall']:.1f} s)" if best else "none")
+    ref = reference.get(n)
+    shown = n if "[" in n else n + " [-]"  # every row names its unit
+    if n.startswith("history "):
+        line = f"| {shown} (max over time) | finest run | - |"
+    else:
+        line = (f"| {shown} | {ref:.4g} | {orders[n]:.2f} (Richardson) |" if n in orders
+                else f"| {shown} | {ref:.4g} | {rejected[n]:.2f} (not used: see below) |"
+                if n in rejected else f"| {shown} | {ref:.4g} | - |")
+    line += (f" {prev * 100:.1f} |" if prev is not None else " - |")
+    return line + " " + " | ".join(cells) + " |", prev
+
+
+def analyse(out, runs, levels):
+    """Writes accuracy.csv and accuracy.md of the runs; returns (rows, the observables' names,
+    {observable: (the next-finest level's error, that level)} where the reference is the finest
+    run itself)."""
+    ref_runs, finest, second = reference_runs(runs)
+    names = measured_names(runs, finest)
+    reference, orders, rejected = references(names, ref_runs, finest)
+    history_names, rows = history_errors(runs, finest)
+    rows += observable_errors(runs, names, reference, finest)
+    write_accuracy_csv(out, rows)
+    lines = table_head(finest, second, orders)
     names = names + ["history " + h for h in history_names]
     uncertainty = {}
     for n in names:
-        cells = []
-        prev = next((x["error"] for x in rows if x["observable"] == n
-                     and x["name"] == second["name"]), None)
+        line, prev = observable_row(n, rows, finest, second, reference, orders, rejected)
         if n != "abs_energy_error" and n not in orders and prev is not None:
             uncertainty[n] = (prev, second["level"])
-        for tol in (0.01, 0.05, 0.10):
-            # A reference that the next-finest level misses by more than tol is not known to
-            # tol itself: a coarse run that happens to land within tol of it is a coincidence.
-            if (n != "abs_energy_error" and n not in orders and prev is not None
-                    and prev > tol):
-                cells.append("reference not converged")
-                continue
-            # The finest run is a candidate only where the reference is not the run itself.
-            ok = [x for x in rows if x["observable"] == n and x["error"] <= tol
-                  and x["status"] == "completed"
-                  and (n in orders or x["name"] != finest["name"])]
-            best = min(ok, key=lambda x: x["wall"]) if ok else None
-            cells.append(f"{best['name']} ({best['wall']:.1f} s)" if best else "none")
-        ref = reference.get(n)
-        shown = n if "[" in n else n + " [-]"  # every row names its unit
-        if n.startswith("history "):
-            lines.append(f"| {shown} (max over time) | finest run | - |")
-        else:
-            lines.append(f"| {shown} | {ref:.4g} | {orders[n]:.2f} (Richardson) |" if n in orders
-                         else f"| {shown} | {ref:.4g} | {rejected[n]:.2f} (not used: see below) |"
-                         if n in rejected else f"| {shown} | {ref:.4g} | - |")
-        lines[-1] += (f" {prev * 100:.1f} |" if prev is not None else " - |")
-        lines[-1] += " " + " | ".join(cells) + " |"
+        lines.append(line)
     if rejected:
         lines += ["", "Not used: an order outside the accepted window, or a finer run that the "
                   "extrapolation does not predict (farther from the extrapolated value than twice "
@@ -467,8 +518,9 @@ def main():
         for v in table:
             write_scene(os.path.join(scenes, variant_name(*v) + ".json"), *v, a.max_time)
         if a.jobs == 1:
-            code = subprocess.call([a.mpm, "study", scenes, "--out", runs_dir, "--threads",
-                                    str(a.threads), "--no-plot"])
+            code = results.Launcher(a.mpm).run("study", scenes, out=runs_dir, threads=a.threads,
+                                               extra=["--no-plot"], check=False,
+                                               capture=False).returncode
         else:
             code = run_in_parallel(a.mpm, scenes, runs_dir, table, a.jobs, a.threads)
         if code not in (0, 3):
