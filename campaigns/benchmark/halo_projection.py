@@ -19,7 +19,12 @@ Prints, per exchange pattern, the halo milliseconds per step and the busiest ran
 import argparse
 import itertools
 import json
-import subprocess
+import os
+import sys
+
+# impact.results (pure Python; python/ of the source tree) runs mpm.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from impact import results  # noqa: E402
 
 NODE_BYTES = (64, 24)  # P2G node data, MUSL re-map momentum [B per node and field]
 
@@ -34,8 +39,8 @@ def main():
     ap.add_argument("--beta", type=float, default=1e10, help="bandwidth per rank [B/s]")
     ap.add_argument("--fields", type=int, default=1)
     a = ap.parse_args()
-    cmd = [a.mpm, "check", a.scene, "--ranks", str(a.ranks)] + (["--set", a.set] if a.set else [])
-    text = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+    text = results.Launcher(a.mpm).run("check", a.scene, options=["--ranks", str(a.ranks)],
+                                       sets=[a.set] if a.set else []).stdout
     checked = json.loads(text)  # mpm check: {"resolved", "warnings", "refusal", "report"}
     plan = checked["report"]["decomposition"]
     resolved = checked["resolved"]

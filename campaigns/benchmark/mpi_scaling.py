@@ -13,14 +13,18 @@ the 1-rank run of the same repeat, each rank's time in MPI calls and in the stre
 import argparse
 import json
 import os
-import subprocess
 import sys
+
+# impact.results (pure Python; python/ of the source tree) runs mpm.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from impact import results  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
-def run(cmd, env):
-    done = subprocess.run(cmd, capture_output=True, text=True, env=env)
+def run(launcher, scene, ranks, out, threads, env):
+    cmd = launcher.command("run", scene, out=out, threads=threads, ranks=ranks)
+    done = launcher.run("run", scene, out=out, threads=threads, ranks=ranks, env=env, check=False)
     if done.returncode != 0:
         sys.exit(f"mpi_scaling.py: {' '.join(cmd)} exited {done.returncode}\n{done.stderr}")
 
@@ -40,25 +44,24 @@ def main():
         json.dump({"extends": os.path.join(ROOT, "data/scenes/sphere_cylinder/recommended.json"),
                    "grid": {"cells": [112, 45, 45]}, "time": {"max_time": 5.0e-6},
                    "output": {"snapshots": False}}, f)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    mpirun = [a.mpirun, "-np", str(a.ranks), "--oversubscribe", a.mpm, "run"]
-    runs = [("1 rank, 1 thread", [a.mpm, "run", scene], 1),
-            (f"{a.ranks} ranks, 1 thread", mpirun + [scene], 1)]
+    env = results.mpi_environment()
+    launcher = results.Launcher(a.mpm, [a.mpirun], mpirun_options=["--oversubscribe"])
+    runs = [("1 rank, 1 thread", scene, 1, 1),
+            (f"{a.ranks} ranks, 1 thread", scene, a.ranks, 1)]
     for split in a.splits:
         p = [int(x) for x in split.split("x")]
         split_scene = os.path.join(a.out, f"scene_2.25x_{split}.json")
         with open(split_scene, "w") as f:
             json.dump({"extends": scene, "solver": {"ranks_per_axis": p}}, f)
-        runs.append((f"{a.ranks} ranks, {split}", mpirun + [split_scene], 1))
-    runs.append((f"1 rank, {a.ranks} threads", [a.mpm, "run", scene], a.ranks))
+        runs.append((f"{a.ranks} ranks, {split}", split_scene, a.ranks, 1))
+    runs.append((f"1 rank, {a.ranks} threads", scene, 1, a.ranks))
     print("repeat  run                  wall [s]  M p-steps/s  speed-up  seconds in MPI per rank"
           "  stress seconds per rank")
     for rep in range(a.repeats):
         base = None
-        for label, cmd, threads in runs:
+        for label, run_scene, ranks, threads in runs:
             out = os.path.join(a.out, f"run_{rep}_{label.replace(' ', '_').replace(',', '')}")
-            run(cmd + ["--out", out, "--threads", str(threads)],
-                dict(env, OMP_NUM_THREADS=str(threads)))
+            run(launcher, run_scene, ranks, out, threads, dict(env, OMP_NUM_THREADS=str(threads)))
             s = json.load(open(os.path.join(out, "summary.json")))
             wall = s["wall_time [s]"]
             base = base or wall

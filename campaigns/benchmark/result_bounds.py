@@ -55,7 +55,8 @@ SHA-256) matches is not run again. --reuse-ref relaxes the stamp of the REF runs
 to the scene alone, so that the REF results of one call serve later calls with other NEW binaries
 (and a REF binary rebuilt from the same commit).
 
-Only the standard library; `mpm run SCENE --out DIR --threads N` and `mpm check SCENE` are used.
+Only the standard library (with impact.results' launcher and plain readers, python/);
+`mpm run SCENE --out DIR --threads N` and `mpm check SCENE` are used.
 """
 import argparse
 import concurrent.futures
@@ -66,12 +67,12 @@ import json
 import math
 import os
 import re
-import struct
-import subprocess
 import sys
 import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "python"))  # impact.results (pure Python)
+from impact.results import Launcher, history_columns, read_points  # noqa: E402
 SCENES = os.path.join(ROOT, "data", "scenes")
 SETS = ("table2", "recommended", "taylor", "verification")
 
@@ -116,13 +117,6 @@ def flatten(node, prefix=""):
     elif isinstance(node, (int, float)):
         out[prefix] = float(node)
     return out
-
-
-def history_columns(rows):
-    """{column: [float per row]} of history.csv rows (dicts of strings)."""
-    if not rows:
-        return {}
-    return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
 def momentum_scale(cols, bodies=()):
@@ -304,7 +298,7 @@ def scenes_of(sets, mpm):
     if "verification" in sets:
         for p in sorted(glob.glob(os.path.join(SCENES, "verification", "*.json"))):
             # A base scene without a grid or objects (elastic_base.json) is not a scene to run.
-            if subprocess.run([mpm, "check", p], capture_output=True).returncode == 0:
+            if Launcher(mpm).run("check", p, check=False).returncode == 0:
                 out.append((f"verification_{os.path.basename(p)[:-5]}", "verification", p, None))
     return out
 
@@ -352,8 +346,7 @@ def run(mpm, scene_doc, run_dir, threads, scene_only):
     with open(scene_path, "w") as f:
         json.dump(scene_doc, f, indent=1)
     start = time.perf_counter()
-    done = subprocess.run([mpm, "run", scene_path, "--out", run_dir, "--threads", str(threads)],
-                          capture_output=True, text=True)
+    done = Launcher(mpm).run("run", scene_path, out=run_dir, threads=threads, check=False)
     wall = time.perf_counter() - start
     with open(os.path.join(run_dir, "bounds_stderr.txt"), "w") as f:
         f.write(done.stderr)
@@ -368,32 +361,7 @@ def run(mpm, scene_doc, run_dir, threads, scene_only):
 def read_run(run_dir):
     with open(os.path.join(run_dir, "summary.json")) as f:
         summary = json.load(f)
-    with open(os.path.join(run_dir, "history.csv"), newline="") as f:
-        cols = history_columns(list(csv.DictReader(f)))
-    return summary, cols
-
-
-_VTU_TYPES = {"Float64": "d", "Int64": "q", "UInt8": "B"}
-_VTU_ARRAY = re.compile(rb'<DataArray type="(\w+)"(?: Name="(\w+)")? NumberOfComponents="(\d+)"'
-                        rb' format="appended" offset="(\d+)"/>')
-
-
-def read_vtu(path):
-    """{"points": [(x, y, z)], field: [value or tuple]} of one snapshot (mpm's raw appended
-    UInt64-headed little-endian VTU; campaigns/study/vtu.py without numpy)."""
-    with open(path, "rb") as f:
-        blob = f.read()
-    start = blob.index(b'<AppendedData encoding="raw">')
-    data = blob.index(b"_", start) + 1
-    out = {}
-    for m in _VTU_ARRAY.finditer(blob[:start]):
-        code, comps, at = _VTU_TYPES[m.group(1).decode()], int(m.group(3)), data + int(m.group(4))
-        nbytes = struct.unpack_from("<Q", blob, at)[0]
-        n = nbytes // struct.calcsize(code)
-        values = struct.unpack_from(f"<{n}{code}", blob, at + 8)
-        key = m.group(2).decode() if m.group(2) else "points"
-        out[key] = [values[i:i + comps] for i in range(0, n, comps)] if comps > 1 else list(values)
-    return out
+    return summary, history_columns(run_dir)
 
 
 def rod_measures(run_dir):
@@ -405,7 +373,8 @@ def rod_measures(run_dir):
         scene = json.load(f)
     with open(os.path.join(run_dir, "particles.pvd")) as f:
         files = re.findall(r'file="([^"]+)"', f.read())
-    first, last = read_vtu(os.path.join(run_dir, files[0])), read_vtu(os.path.join(run_dir, files[-1]))
+    first = read_points(os.path.join(run_dir, files[0]), numpy=False)
+    last = read_points(os.path.join(run_dir, files[-1]), numpy=False)
     rod = scene["objects"]["rod"]["geometry"]
     axisymmetric = scene["grid"].get("geometry") == "axisymmetric"
     anvil = scene["grid"]["lower"][0]

@@ -17,17 +17,19 @@ import argparse
 import json
 import os
 import statistics
-import subprocess
 import sys
 import time
+
+# impact.results (pure Python; python/ of the source tree) runs mpm.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from impact import results  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
 def run(mpm, scene, out, threads):
     start = time.perf_counter()
-    done = subprocess.run([mpm, "run", scene, "--out", out, "--threads", str(threads)],
-                          capture_output=True, text=True)
+    done = results.Launcher(mpm).run("run", scene, out=out, threads=threads, check=False)
     wall = time.perf_counter() - start
     if done.returncode != 0:
         sys.exit(f"side_by_side.py: {mpm} on {scene} exited {done.returncode}\n{done.stderr}")

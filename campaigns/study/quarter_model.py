@@ -22,11 +22,13 @@ import argparse
 import csv
 import json
 import os
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "python"))  # impact.results (pure Python)
+from impact import results  # noqa: E402
+
 BASE = os.path.join(ROOT, "data", "scenes", "sphere_cylinder", "recommended.json")
 # Extensive quantities scale with the modelled fraction of the body.
 EXTENSIVE = ("kinetic_energy [J]", "mass [kg]")
@@ -53,9 +55,11 @@ def scenes(out, max_time):
 
 
 def run(mpm, scene, out_dir, threads):
-    cmd = [mpm, "run", scene, "--out", out_dir, "--threads", str(threads)]
+    launcher = results.Launcher(mpm)
+    cmd = launcher.command("run", scene, out=out_dir, threads=threads)
     print("quarter_model.py:", " ".join(cmd), flush=True)
-    return subprocess.run(cmd).returncode == 0
+    return launcher.run("run", scene, out=out_dir, threads=threads, check=False,
+                        capture=False).returncode == 0
 
 
 def flatten(prefix, node, out):
@@ -67,14 +71,6 @@ def flatten(prefix, node, out):
             flatten(f"{prefix}[{i}]", v, out)
     elif isinstance(node, (int, float)) and not isinstance(node, bool):
         out[prefix] = float(node)
-
-
-def history(path):
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    head = rows[0]
-    data = [list(map(float, r)) for r in rows[1:] if len(r) == len(head)]
-    return head, data
 
 
 def main():
@@ -93,7 +89,7 @@ def main():
             return 3
         with open(os.path.join(d, "summary.json")) as f:
             summary[name] = json.load(f)
-        hist[name] = history(os.path.join(d, "history.csv"))
+        hist[name] = results.history_rows(d)
 
     rows = []
     fl = {}

@@ -48,12 +48,13 @@ import json
 import os
 import re
 import shutil
-import subprocess
 import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "python"))  # impact.results (pure Python)
+from impact.results import Launcher  # noqa: E402
 SCENES = os.path.join(ROOT, "data", "scenes", "sphere_cylinder")
 
 DRIFT = 0.05  # abs(energy_error) at the end above which a completed run is "energy-drifting"
@@ -214,10 +215,12 @@ def run_study(mpm, scenes, runs, threads):
     # Leftover case directories of an earlier, larger map would otherwise enter summary.csv.
     if os.path.isdir(runs):
         shutil.rmtree(runs)
-    cmd = [mpm, "study", scenes, "--out", runs, "--threads", str(threads), "--no-plot"]
+    launcher = Launcher(mpm)
+    cmd = launcher.command("study", scenes, out=runs, threads=threads, extra=["--no-plot"])
     print("stability_map.py: " + " ".join(cmd), flush=True)
     t0 = time.monotonic()
-    code = subprocess.call(cmd)
+    code = launcher.run("study", scenes, out=runs, threads=threads, extra=["--no-plot"],
+                        check=False, capture=False).returncode
     wall = time.monotonic() - t0
     if code not in (0, 3):  # 3: some case failed, which is what the map is looking for
         raise InputError(f"mpm study exited with code {code}")

@@ -4,13 +4,12 @@ source tree's python/ alone, without the compiled module (`impact._impact` is no
 for the launcher and the plain readers, without NumPy; the launcher's command lines (--out,
 --threads, --set, extra flags, mpirun -np N for ranks); a short real `mpm run` of the rigid
 translation (2e-6 s via --set) read back with read_run, history_rows and read_points; a run that
-fails raises LaunchError carrying mpm's stderr; and no campaign script keeps its own `mpm`
-subprocess (they all go through impact.results.launcher).
+fails raises LaunchError carrying mpm's stderr. (That no campaign script keeps its own `mpm`
+subprocess is campaign_scripts_test.py's.)
 
   results_package_test.py MPM SOURCE_DIR WORK_DIR"""
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -131,32 +130,6 @@ else:
 print('ok')
 """, work=work)
     assert out.strip() == "ok", out
-
-
-def check_no_private_launchers(source):
-    """Every `mpm` the campaign scripts run goes through impact.results.launcher: no script
-    under campaigns/ builds an mpm argument list (`mpm, "run"`, `args.mpm, "check"`, ...) or
-    calls subprocess on one."""
-    found = []
-    argv = re.compile(r"\bmpm\w*\s*,\s*[\"'](?:run|check|study)[\"']")
-    call = re.compile(r"subprocess\.(?:run|call|Popen|check_call|check_output)\(")
-    for root, _, names in os.walk(os.path.join(source, "campaigns")):
-        for name in sorted(names):
-            if not name.endswith(".py"):
-                continue
-            path = os.path.join(root, name)
-            with open(path) as f:
-                text = f.read()
-            hits = list(argv.finditer(text)) + [
-                m for m in call.finditer(text)
-                if re.search(r"\bmpm\b|mpirun", text[m.start():m.start() + 150])]
-            for m in hits:  # (a call on an argument list is found twice: one line each)
-                line = text.count("\n", 0, m.start()) + 1
-                found.append(f"{os.path.relpath(path, source)}:{line}")
-    if found:
-        fail("private mpm launchers (use impact.results.Launcher): "
-             + ", ".join(sorted(set(found))))
-    return found
 
 
 def main(mpm, source, work):

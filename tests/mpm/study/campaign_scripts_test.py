@@ -5,11 +5,14 @@ campaigns/study, campaigns/taylor and campaigns/benchmark with a `__main__` bloc
 usage on stdout and nothing on stderr while `import numpy` fails (a directory holding a numpy.py
 that raises ImportError comes first on PYTHONPATH): the options are read before NumPy is needed.
 Also the Taylor campaign's exit codes without NumPy: a usage error 1 (also a missing --mpm), an
-unreadable table of shots 2, each one line on stderr naming the option or the file.
+unreadable table of shots 2, each one line on stderr naming the option or the file. And one
+launcher (issue 54): no script under campaigns/ builds an `mpm run|check|study` argument list or
+calls subprocess on one; they go through impact.results.Launcher (python/impact/results/).
 
   campaign_scripts_test.py"""
 
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -31,6 +34,29 @@ def scripts():
                     text = f.read()
                 if 'if __name__ == "__main__":' in text:
                     yield path, text
+
+
+def private_launchers(source):
+    """Every `mpm` the campaign scripts run goes through impact.results.launcher: no script
+    under campaigns/ builds an mpm argument list (`mpm, "run"`, `args.mpm, "check"`, ...) or
+    calls subprocess on one."""
+    found = []
+    argv = re.compile(r"\bmpm\w*\s*,\s*[\"'](?:run|check|study)[\"']")
+    call = re.compile(r"subprocess\.(?:run|call|Popen|check_call|check_output)\(")
+    for root, _, names in os.walk(os.path.join(source, "campaigns")):
+        for name in sorted(names):
+            if not name.endswith(".py"):
+                continue
+            path = os.path.join(root, name)
+            with open(path) as f:
+                text = f.read()
+            hits = list(argv.finditer(text)) + [
+                m for m in call.finditer(text)
+                if re.search(r"\bmpm\b|mpirun", text[m.start():m.start() + 150])]
+            for m in hits:  # (a call on an argument list is found twice: one line each)
+                line = text.count("\n", 0, m.start()) + 1
+                found.append(f"{os.path.relpath(path, source)}:{line}")
+    return sorted(set(found))
 
 
 def main():
@@ -77,6 +103,8 @@ def main():
             if done.returncode != code or last[0] != message or "Traceback" in done.stderr:
                 failures.append(f"taylor.py {' '.join(args)}: exit {done.returncode} (expected "
                                 f"{code}), stderr {done.stderr.strip()!r}")
+    failures += [f"{where}: runs mpm itself (use impact.results.Launcher)"
+                 for where in private_launchers(ROOT)]
     for f in failures:
         print(f"FAIL {f}")
     print(f"{len(found)} scripts, {len(failures)} problems")
