@@ -27,7 +27,6 @@ figure or stdout could not be written (one line: the file and the system's reaso
 missing, 130 Ctrl-C, 141 stdout closed by its reader (`| head`: nothing more is said).
 """
 import argparse
-import csv
 import json
 import math
 import os
@@ -38,7 +37,10 @@ import sys
 # pointdriver's plot.py in the source tree and under share/impact alike.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "pointdriver", "plot"))
+# impact.results (pure Python): python/ of the source tree, share/impact/python of an install.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 from axis_units import scaled_unit  # noqa: E402
+from impact.results import history_rows  # noqa: E402
 from plot_output import figure_format, print_lines, run_script, save_figure  # noqa: E402
 
 MISSING_MATPLOTLIB = 4
@@ -82,19 +84,10 @@ def read_history(run):
     path = os.path.join(run, "history.csv")
     if not os.path.isfile(path):
         raise InputError(f"{run}: no history.csv (expected a directory `mpm run` wrote)")
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if not rows:
+    head, data = history_rows(run)  # a short or broken line (a run killed mid-write): skipped
+    if not head:
         raise InputError(f"{path}: empty file")
-    header = [split(c) for c in rows[0]]
-    data = []
-    for row in rows[1:]:
-        try:  # a run killed mid-write leaves a short or broken last line: skipped
-            values = [float(c) for c in row]
-        except ValueError:
-            continue
-        if len(values) == len(header):
-            data.append(values)
+    header = [split(c) for c in head]
     if not data or header[0][0] != "time":
         raise InputError(f"{path}: expected a header starting with 'time [s]' and numeric rows")
     return header, [[r[k] for r in data] for k in range(len(header))]

@@ -31,7 +31,9 @@ import sys
 import textwrap
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import quantity_format  # noqa: E402
+from impact.results import history_rows  # noqa: E402
 
 MISSING_MATPLOTLIB = 4
 REFERENCE = "case01"
@@ -54,23 +56,14 @@ class History:
     """history.csv by column name (the header cell without its unit)."""
 
     def __init__(self, path):
-        with open(path, newline="") as f:
-            rows = list(csv.reader(f))
-        if not rows:
+        # A run killed mid-write leaves a short or broken last line: history_rows skips it.
+        head, data = history_rows(os.path.dirname(path))
+        if not head:
             raise InputError(f"{path}: empty file")
-        self.header = [h.strip() for h in rows[0]]
+        self.header = [h.strip() for h in head]
         self.names = [strip_unit(h) for h in self.header]
         # A plane-strain run's extensive columns are per metre of thickness (J/m, ...).
         self.units = {strip_unit(h): unit_of(h) for h in self.header}
-        data = []
-        for row in rows[1:]:
-            # A run killed mid-write leaves a short or broken last line: skip it.
-            if len(row) != len(self.header):
-                continue
-            try:
-                data.append([float(c) for c in row])
-            except ValueError:
-                continue
         self.columns = {n: [r[i] for r in data] for i, n in enumerate(self.names)}
         self.rows = len(data)
 

@@ -53,21 +53,21 @@ def _history_file(directory):
 
 def history_rows(directory):
     """(header, rows) of a run directory's history.csv: the header's cells as written, each row
-    a list of floats. Empty lines and a row of another length than the header (a last row cut
-    short: a run killed while writing it) are left out. InputError when there is no such file."""
+    a list of floats. Empty lines, rows of another length than the header and rows that are not
+    numbers (a last row cut short: a run killed while writing it) are left out. InputError when
+    there is no such file."""
     with open(_history_file(directory), newline="") as f:
         rows = [r for r in csv.reader(f) if r]
     if not rows:
         return [], []
     header, body = rows[0], []
-    for k, row in enumerate(rows[1:], 2):
+    for row in rows[1:]:
         if len(row) != len(header):
             continue
         try:
             body.append([float(c) for c in row])
         except ValueError:
-            if k != len(rows):  # only the last row may be cut short
-                raise InputError(f"{directory}/history.csv: row {k}: expected numbers") from None
+            continue
     return header, body
 
 
