@@ -40,6 +40,17 @@ assert run["exit_code"] == 0 and run["summary"]["status"] == "completed", run
 print("python OK", impact.__file__)
 """
 
+# impact.results from the install's share/impact/python alone (no compiled module there).
+RESULTS_SNIPPET = """
+import sys
+sys.path.insert(0, sys.argv[1])
+from impact.results import read_run
+run = read_run("rod")
+assert run.summary["status"] == "completed" and len(run.history["time"]) > 1, run
+import impact
+assert impact.__file__.startswith(sys.argv[1]) and "impact._impact" not in sys.modules
+"""
+
 
 def main(build, work, python=None):
     shutil.rmtree(work, ignore_errors=True)
@@ -76,7 +87,17 @@ def main(build, work, python=None):
                 % scene)
     run([os.path.join(bin_dir, "mpm"), "run", short, "--out", "rod", "--threads", "1"], cwd, env)
     assert os.path.exists(os.path.join(cwd, "rod", "summary.json"))
-    checked = "material_check, pointdriver run/verify/plot and mpm check/run"
+    # The installed plot script and ladder find impact.results (pure Python) at
+    # share/impact/python, with no compiled module: `mpm plot`, the ladder's --help, and the
+    # run read back from there.
+    run([os.path.join(bin_dir, "mpm"), "plot", "rod", "--out", "rod.png"], cwd, env)
+    assert os.path.getsize(os.path.join(cwd, "rod.png")) > 1000
+    ladder = os.path.join(share, "campaigns", "study", "ladder.py")
+    run(["/usr/bin/python3", ladder, "--help"], cwd, env)
+    run(["/usr/bin/python3", "-s", "-c", RESULTS_SNIPPET, os.path.join(share, "python")], cwd,
+        {k: v for k, v in env.items() if k != "PYTHONPATH"})
+    checked = ("material_check, pointdriver run/verify/plot, mpm check/run/plot and "
+               "impact.results")
     if python:
         version = subprocess.run([python, "-c", "import sys; print('%d.%d' % sys.version_info[:2])"],
                                  capture_output=True, text=True, check=True).stdout.strip()
