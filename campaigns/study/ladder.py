@@ -550,10 +550,8 @@ def git_commit():
         return "unknown"
 
 
-def write_outputs(args, scene_file, runs, observables, result, plot, scene_objects=None):
-    out = args.out
-    # Before anything is written: the outputs are tracked files, and writing them dirties the tree.
-    commit = git_commit()
+def write_csv(out, runs, observables):
+    """ladder.csv: a row per run and observable, with the run's cost."""
     with open(os.path.join(out, "ladder.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["run", "level [-]", "particles_per_cell [-]", "h [m]", "observable", "unit",
@@ -568,6 +566,10 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
                             unit, d["values"].get(name, ""), d["particles"], d["steps"],
                             (d["particles"] or 0) * (d["steps"] or 0), d["wall"], d["threads"],
                             d["ranks"]])
+
+
+def ladder_table(args, scene_file, runs, result, commit):
+    """ladder.json's document: the scene, the command, the levels and the observables."""
     ladder_runs = sorted([r for r in runs if r["ppc"] is None and r["data"]], key=lambda r: r["h"])
     table = {
         "scene": (os.path.relpath(os.path.abspath(scene_file), ROOT)
@@ -592,13 +594,26 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
     }
     for o in table["observables"]:
         o["triples"] = [{k: v for k, v in t.items()} for t in o["triples"]]
+    return table
+
+
+def write_table(args, table):
+    """ladder.json (and --table, the same text)."""
     text = json.dumps(table, indent=1, allow_nan=False,
                       default=lambda x: None) + "\n"
-    with open(os.path.join(out, "ladder.json"), "w") as f:
+    with open(os.path.join(args.out, "ladder.json"), "w") as f:
         f.write(text)
     if args.table:
         with open(args.table, "w") as f:
             f.write(text)
+
+
+def pct(x, signed=False):
+    return "-" if x is None else (f"{100 * x:+.2g}" if signed else f"{100 * x:.2g}")
+
+
+def summary_lines(args, table, result):
+    """ladder.md's head: the command and definitions, the levels' table and the observables'."""
     lines = [f"# Grid-convergence ladder: {table['scene']}", "",
              f"Command: `{args.command_line}` (commit {table['commit']}, {table['date']}). "
              "Definitions: docs/accuracy.md#grid-convergence-ladders. An extrapolated value, its "
@@ -625,9 +640,6 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
               "GCI_fine (finest) [%] | conservative GCI [%] | x1 error vs extrapolated [%] |",
               "|---|" + "---|" * len(table["levels"]) + "---|---|---|---|---|---|---|"]
 
-    def pct(x, signed=False):
-        return "-" if x is None else (f"{100 * x:+.2g}" if signed else f"{100 * x:.2g}")
-
     for res in result.values():
         factor, label = quantity_format.display_unit(res["unit"], res["values"])
         ext = res["extrapolated"] if res["quotable"] else None
@@ -641,7 +653,12 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
                      f"{pct(res['gci_fine [-]'] if ext is not None else None)} | "
                      f"{pct(res['gci_conservative [-]'] if ext is not None else None)} | "
                      f"{pct(err, signed=True)} |")
-    lines += ["", "Every consecutive triple (finest first): its cell sizes, condition, observed "
+    return lines
+
+
+def triple_lines(result):
+    """ladder.md's list of every consecutive triple per observable."""
+    lines = ["", "Every consecutive triple (finest first): its cell sizes, condition, observed "
               "order, Richardson's extrapolation with that order and GCI_fine (a triple's own "
               "figures: quote none of them unless the table above calls the observable "
               "quotable).", ""]
@@ -656,6 +673,17 @@ def write_outputs(args, scene_file, runs, observables, result, plot, scene_objec
                     else "-")
                  for t in res["triples"]]
         lines.append(f"- **{res['name']}**: " + ("; ".join(parts) if parts else "no triple"))
+    return lines
+
+
+def write_outputs(args, scene_file, runs, observables, result, plot, scene_objects=None):
+    out = args.out
+    # Before anything is written: the outputs are tracked files, and writing them dirties the tree.
+    commit = git_commit()
+    write_csv(out, runs, observables)
+    table = ladder_table(args, scene_file, runs, result, commit)
+    write_table(args, table)
+    lines = summary_lines(args, table, result) + triple_lines(result)
     first = next(iter(scene_objects.values()), {}) if scene_objects else {}
     lines += ppc_lines(runs, observables, (first.get("particles_per_cell") or [2])[0])
     with open(os.path.join(out, "ladder.md"), "w") as f:
