@@ -2,7 +2,8 @@
 """impact.results, the pure-Python results package (docs/python.md#results): importable from the
 source tree's python/ alone, without the compiled module (`impact._impact` is not imported) and,
 for the launcher and the plain readers, without NumPy; the launcher's command lines (--out,
---threads, --set, extra flags, mpirun -np N for ranks); a short real `mpm run` of the rigid
+--threads, --set, extra flags, mpirun -np N for ranks); find_mpm() from an install's layout
+(<prefix>/bin/mpm beside share/impact/python or site-packages); a short real `mpm run` of the rigid
 translation (2e-6 s via --set) read back with read_run, history_rows and read_points; a run that
 fails raises LaunchError carrying mpm's stderr. (That no campaign script keeps its own `mpm`
 subprocess is campaign_scripts_test.py's.)
@@ -67,7 +68,8 @@ m = Launcher('/opt/mpm', mpirun='mpirun --oversubscribe')
 print(json.dumps([
     m.command('run', 'a.json', out='o', threads=2),
     m.command('run', 'a.json', out='o', options=['--overwrite'], threads=1,
-              sets=['{"time": {"max_time": 1e-6}}', {"output": {"snapshots": False}}], extra=['-q']),
+              sets=['{"time": {"max_time": 1e-6}}', {"output": {"snapshots": False}}],
+              extra=['-q']),
     m.command('run', options=['--restart', 'o'], threads=3, ranks=4, extra=['-q']),
     m.command('check', 'a.json', options=['--ranks', '2'], sets='{"x": 1}'),
     m.command('study', 'scenes', out='runs', threads=2, extra=['--no-plot']),
@@ -95,6 +97,29 @@ for bad in ({'ranks': 0}, {'ranks': 1.5}):
             fail(f"command line {g}, expected {e}")
 
 
+def check_find_mpm(source, work):
+    """find_mpm() without an argument: the mpm of the install the package lies in (its
+    share/impact/python and its lib/python3.X/site-packages alike)."""
+    for package_dir in (("share", "impact", "python"), ("lib", "python3.9", "site-packages")):
+        prefix = os.path.join(work, "prefix_" + package_dir[0])
+        shutil.copytree(os.path.join(source, "python", "impact"),
+                        os.path.join(prefix, *package_dir, "impact"),
+                        ignore=shutil.ignore_patterns("__pycache__"))
+        os.makedirs(os.path.join(prefix, "bin"))
+        mpm = os.path.join(prefix, "bin", "mpm")
+        with open(mpm, "w") as f:
+            f.write("#!/bin/sh\n")
+        os.chmod(mpm, 0o755)
+        code = ("import sys; sys.path.insert(0, sys.argv[1])\n"
+                "from impact.results import find_mpm; print(find_mpm())")
+        done = subprocess.run([sys.executable, "-s", "-c", code,
+                               os.path.join(prefix, *package_dir)],
+                              capture_output=True, text=True, timeout=60)
+        if done.returncode != 0 or done.stdout.strip() != mpm:
+            fail(f"find_mpm() from {os.path.join(*package_dir)}: {done.stdout.strip()!r} "
+                 f"{done.stderr.strip()[-300:]}, expected {mpm}")
+
+
 def check_real_run(mpm, source, work):
     scene = os.path.join(source, "data", "scenes", "verification", "rigid_translation.json")
     out = isolated(source, f"""
@@ -103,7 +128,8 @@ from impact.results import (Launcher, LaunchError, read_run, history_rows, read_
                             snapshots, read_summary, completed)
 m = Launcher({mpm!r})
 done = m.run('run', {scene!r}, out='short', threads=1,
-             sets=[{{"time": {{"max_time": 2e-6}}}}, '{{"output": {{"snapshots": true, "interval": 1e-6}}}}'])
+             sets=[{{"time": {{"max_time": 2e-6}}}},
+                   '{{"output": {{"snapshots": true, "interval": 1e-6}}}}'])
 assert done.returncode == 0, done
 assert completed('short') and read_summary('short')['status'] == 'completed'
 run = read_run('short')
@@ -137,6 +163,7 @@ def main(mpm, source, work):
     os.makedirs(work)
     check_imports(source)
     check_command_lines(source)
+    check_find_mpm(source, work)
     check_real_run(os.path.abspath(mpm), source, work)
     print("results_package_test: ok")
 

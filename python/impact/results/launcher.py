@@ -36,13 +36,16 @@ class LaunchError(RuntimeError):
 def find_mpm(explicit=None):
     """The mpm program: ``explicit`` when given (a path, or a name on PATH), else the one built
     beside this package (<source>/build/bin/mpm from the source tree; <prefix>/bin/mpm from an
-    install, where the package lies in <prefix>/share/impact/python), else ``mpm`` on PATH.
+    install, the package in share/impact/python or lib/python3.X/site-packages), else ``mpm``
+    on PATH.
     Returns a path (or the name as given); FileNotFoundError when none is found."""
     if explicit:
         return os.fspath(explicit)
-    root = os.path.normpath(os.path.join(_HERE, "..", "..", ".."))  # <src> or <prefix>/share
+    # <src>/python/impact/results, <prefix>/share/impact/python/impact/results or
+    # <prefix>/lib/python3.X/site-packages/impact/results
+    root = os.path.normpath(os.path.join(_HERE, "..", "..", ".."))
     for candidate in (os.path.join(root, "build", "bin", "mpm"),
-                      os.path.join(os.path.dirname(root), "bin", "mpm")):
+                      os.path.normpath(os.path.join(root, "..", "..", "bin", "mpm"))):
         if os.access(candidate, os.X_OK) and os.path.isfile(candidate):
             return candidate
     found = shutil.which("mpm")
