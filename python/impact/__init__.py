@@ -51,8 +51,8 @@ _COMPILED = ("Material", "load_material", "update", "run_path", "fit", "check", 
 
 
 def __getattr__(name):
-    """The results names (impact.results) on first use; without the compiled module, its names
-    raise ImportError."""
+    """The results names (Run, Snapshot, Table, read_history, read_run: impact.results) on first
+    use, so that `import impact` needs neither NumPy nor the compiled module."""
     if name in _RESULTS:
         from . import results
         return getattr(results, name)
