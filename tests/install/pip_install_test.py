@@ -9,6 +9,7 @@ PYTHON makes the venv (--system-site-packages: Debian's NumPy, the wheel's one r
 Asserted: pip installs with build isolation on and no index; the module imports from the venv's
 site-packages, not from the source or build tree, with its type stub and py.typed; data_path
 finds the shipped data under the venv's share/impact/data; a material loads and a point updates;
+the subpackage impact.results is installed with it;
 pip show names the version of CMakeLists.txt; pip uninstall removes every file it installed.
 """
 import os
@@ -32,6 +33,8 @@ assert material == os.path.join(venv, "share", "impact", "data", "materials", "a
 m = impact.Material(material)
 state, report = impact.update(m, m.initial_state(), np.diag([1e3, 0.0, 0.0]), 1e-7)
 assert report["status"] == "ok" and state["stress"][0, 0] > 0.0
+import impact.results  # the subpackage is in the wheel too
+assert impact.results.__file__.startswith(venv) and impact.read_run is impact.results.read_run
 print("import OK", impact.__file__)
 """
 
