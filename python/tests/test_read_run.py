@@ -89,6 +89,31 @@ def test_snapshot_stress_is_the_particle_paths_stress(data, workdir):
     assert len({round(abs(path["stress_" + n][-1])) for n in ("xy", "yz", "zx")}) == 3
 
 
+def test_snapshot_deformation_gradient_is_the_volume_change(data, workdir):
+    """The sliding block after 2e-5 s with the tensors of its history in the snapshot (F and R,
+    9 components each, docs/mpm.md#snapshot-fields): read back as (N, 3, 3); the volume is V0
+    det F (V0 the first snapshot's volume, F = I there) to 1e-12, R is a rotation to 1e-9, and
+    the units are the table's."""
+    scene = {"extends": data("scenes", "verification", "sliding_block.json"),
+             "time": {"max_time": 2e-5},
+             "output": {"interval": 1e-5, "snapshots": True,
+                        "fields": ["F", "R", "volume", "id", "porosity", "melted"]}}
+    run = impact.read_run(impact.run_scene(scene, out="run", threads=1)["directory"])
+    first, last = run.snapshots[0], run.snapshots[-1]
+    assert last.fields["F"].shape == (len(last.positions), 3, 3)
+    assert last.fields.units["F"] == "-" and last.fields.units["porosity"] == "-"
+    assert last.fields["melted"].dtype == bool and not last.fields["melted"].any()
+    assert np.array_equal(first.fields["F"], np.broadcast_to(np.eye(3), first.fields["F"].shape))
+    order = np.argsort(last.fields["id"])
+    assert np.array_equal(last.fields["id"][order], np.sort(first.fields["id"]))
+    v0 = first.fields["volume"][np.argsort(first.fields["id"])]
+    F = last.fields["F"][order]
+    assert np.max(np.abs(F - np.eye(3))) > 1e-6  # the block has deformed
+    assert np.allclose(last.fields["volume"][order], v0 * np.linalg.det(F), rtol=1e-12, atol=0)
+    R = last.fields["R"]
+    assert np.max(np.abs(np.einsum("nji,njk->nik", R, R) - np.eye(3))) < 1e-9
+
+
 def test_history_units_are_the_headers_per_metre_in_plane_strain(workdir):
     """A plane-strain history labels its energies, momenta, masses and volumes per metre of
     thickness (`kinetic_energy [J/m]`, `momentum_x [(kg m/s)/m]`): the columns are named by

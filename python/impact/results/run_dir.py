@@ -15,11 +15,15 @@ from .vtu import read_collection, read_snapshot
 FIELD_UNITS = {"velocity": "m/s", "stress": "Pa", "plastic_strain": "-", "temperature": "K",
                "damage": "-", "mass": "kg", "volume": "m^3", "pressure": "Pa",
                "von_mises": "Pa", "material": "-", "object": "-", "field": "-", "id": "-",
-               "failure_cause": "-", "failed_in_tension": "-", "instability": "-", "failed": "-"}
+               "failure_cause": "-", "failed_in_tension": "-", "instability": "-", "failed": "-",
+               "F": "-", "R": "-", "plastic_strain_rate": "1/s", "internal_energy": "J/kg",
+               "porosity": "-", "flow_internal": "Pa", "melted": "-"}
 #: In plane strain the extensive fields are per metre of thickness along z (docs/mpm.md#output).
 PLANE_STRAIN_UNITS = {"mass": "kg/m", "volume": "m^3/m"}
 _INDICES = ("material", "object", "field", "id", "failure_cause", "instability")
-_FLAGS = ("failed", "failed_in_tension")
+_FLAGS = ("failed", "failed_in_tension", "melted")
+#: The tensors written row by row, 9 components (docs/mpm.md#snapshot-fields).
+_TENSORS = ("F", "R")
 
 
 class Snapshot:
@@ -48,6 +52,8 @@ class Snapshot:
                     for k, (i, j) in enumerate(((0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2))):
                         s[:, i, j] = s[:, j, i] = values[:, k]
                     values = s
+                elif name in _TENSORS:  # row by row -> (N, 3, 3)
+                    values = values.reshape(len(values), 3, 3)
                 elif name in _INDICES:
                     values = values.astype(np.int64)
                 elif name in _FLAGS:
