@@ -8,6 +8,10 @@ namespace impact::mpm::commands {
 
 namespace {
 
+// The largest --ranks accepted: far above any machine's, so that the check's message is a plain
+// range ("Value 0 not in range 1 to 1048576") rather than CLI11's PositiveNumber's DBL_MAX.
+constexpr int kMaxRanks = 1 << 20;
+
 // Each command's options in the order its --help lists them: its own first, then --set and
 // --progress (declared for several commands in declare), then its own again.
 void declare_run_scene(CommandLine& c) {
@@ -36,7 +40,7 @@ void declare_check(CommandLine& c) {
                    "also report the split over N MPI ranks: boxes, particles and halo bytes per "
                    "rank (docs/mpi.md)")
       ->type_name("N")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, kMaxRanks));
   c.check->add_flag("--fingerprint", c.fingerprint_only,
                     "print only the scene fingerprint (16 hex digits; docs/mpm.md#output)");
 }
@@ -54,7 +58,7 @@ void declare_study(CommandLine& c) {
       ->type_name("L1,L2,...");
   c.study->add_option("--ranks", c.ladder_ranks, "with --ladder: every level under mpirun -np N")
       ->type_name("N")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, kMaxRanks));
   c.study->add_option("-o,--out", c.options.out_dir, "output directory (one folder per case)")
       ->type_name("DIR")
       ->required();

@@ -58,14 +58,27 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
     if (!f.is_array()) {
       r.problems().add(r.key_path("fields"), "expected an array of field names");
     } else {
+      std::vector<std::string> known;
+      for (const SnapshotField& k : snapshot_fields()) known.push_back(k.name);
       for (std::size_t i = 0; i < f.size(); ++i) {
-        if (!f[i].is_string() || !find_snapshot_field(f[i].get<std::string>())) {
+        const std::string where = r.key_path("fields") + "/" + std::to_string(i);
+        if (!f[i].is_string()) {
+          r.problems().add(where, "expected a field name (a string), got " + f[i].dump());
+          continue;
+        }
+        const std::string name = f[i].get<std::string>();
+        if (!find_snapshot_field(name)) {
+          std::string message = "unknown field " + f[i].dump();
+          if (const auto near = nearest_name(name, known))
+            message += " (did you mean " + *near + "?)";
           std::string list;
-          for (const auto& k : snapshot_fields()) list += (list.empty() ? "" : ", ") + k.name;
-          r.problems().add(r.key_path("fields") + "/" + std::to_string(i),
-                           "unknown field " + f[i].dump() + "; known: " + list);
+          for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+          r.problems().add(where, message + "; known: " + list);
+        } else if (std::find(o.fields.begin(), o.fields.end(), name) != o.fields.end()) {
+          // Two arrays of one name in a .vtu: readers keep one of them.
+          r.problems().add(where, "field \"" + name + "\" is listed twice");
         } else {
-          o.fields.push_back(f[i].get<std::string>());
+          o.fields.push_back(name);
         }
       }
     }
