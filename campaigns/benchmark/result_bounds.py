@@ -125,7 +125,8 @@ def momentum_scale(cols, bodies=()):
     head-on are measured against one body's initial momentum sqrt(2 m KE) (bodies = [(m, KE0)]),
     as the verification tests measure them; bodies starting at rest (set moving by a face) against
     the largest momentum over the rows."""
-    p0 = math.sqrt(sum(cols.get(f"momentum_{c} [kg m/s]", [0.0])[0] ** 2 for c in "xyz"))
+    # A header-only history (a run stopped before its first row) has empty columns.
+    p0 = math.sqrt(sum((cols.get(f"momentum_{c} [kg m/s]") or [0.0])[0] ** 2 for c in "xyz"))
     body = max((math.sqrt(2.0 * m * ke) for m, ke in bodies if m > 0.0 and ke > 0.0), default=0.0)
     if p0 > 1e-9 * body and p0 > 0.0:
         return p0, "|p0|"

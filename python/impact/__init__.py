@@ -11,26 +11,32 @@ a warning (a likely unit slip) issue an ``impact.InputWarning`` through ``warnin
 the stub ``__init__.pyi`` beside this file.
 """
 import json
+import importlib
 import math
 import operator
 import os
 import re
 
-# OpenMP threads sleep at barriers unless the caller chose otherwise: libgomp reads the policy when
-# it is loaded, so before _impact (and NumPy) are. A busy core otherwise stalls every run on all
-# cores (docs/performance.md#threads; the mpm program does the same, support/omp_wait_policy.hpp).
-os.environ.setdefault("OMP_WAIT_POLICY", "passive")
-
 from ._errors import InputError, InputWarning, OutputError, RunError  # noqa: E402
 from ._errors import warn_input, writable_directory  # noqa: E402
 
 # The results package (impact.results: read_run, read_history, the launcher, ...) is pure Python;
-# the rest needs the compiled module and NumPy. Without them `import impact` still works, and
-# the compiled API raises an ImportError saying what is missing.
+# the rest needs the compiled module and NumPy. Without them `import impact` still works (and
+# loads neither), and the compiled API raises an ImportError saying what is missing.
+#
+# OpenMP threads sleep at barriers unless the caller chose otherwise: libgomp reads the policy when
+# it is loaded, so before _impact (and NumPy) are. A busy core otherwise stalls every run on all
+# cores (docs/performance.md#threads; the mpm program does the same, support/omp_wait_policy.hpp).
+# Set only for the compiled module: a script that merely reads runs or launches programs (an
+# older mpm in a benchmark) passes the environment on unchanged.
+_POLICY_SET = "OMP_WAIT_POLICY" not in os.environ
+if _POLICY_SET:
+    os.environ["OMP_WAIT_POLICY"] = "passive"
 try:
-    import numpy as np
     from . import _impact
 except ImportError as _missing:
+    if _POLICY_SET:
+        del os.environ["OMP_WAIT_POLICY"]
     np = None
     _impact = None
     _REASON = (str(_missing) if _missing.name not in ("impact", "impact._impact") else
@@ -39,11 +45,21 @@ except ImportError as _missing:
                 f"({_REASON}); impact.results (read_run, read_history, the vtu readers, the mpm "
                 "launcher) works without it, the rest needs it: build with python3-dev and "
                 "pybind11-dev (docs/python.md)")
+else:
+    try:
+        import numpy as np
+    except ImportError as _missing:
+        np = None
+        _impact = None
+        _MISSING = (f"impact: the compiled module needs NumPy ({_missing}): install "
+                    "python3-numpy; impact.results' launcher and plain readers work without it")
 
 __all__ = ["InputError", "OutputError", "RunError", "InputWarning", "Material", "Table", "Run", "Snapshot",
            "load_material", "update", "run_path", "fit", "check", "run_scene", "resume_scene",
            "check_scene", "read_history", "read_run", "data_path", "failure_causes",
            "update_statuses", "__version__"]
+if _impact is None:  # `from impact import *` takes what loads without NumPy and the module
+    __all__ = ["InputError", "OutputError", "RunError", "InputWarning", "data_path", "__version__"]
 
 _RESULTS = ("Run", "Snapshot", "Table", "read_history", "read_run")
 _COMPILED = ("Material", "load_material", "update", "run_path", "fit", "check", "run_scene",
@@ -51,11 +67,16 @@ _COMPILED = ("Material", "load_material", "update", "run_path", "fit", "check", 
 
 
 def __getattr__(name):
-    """The results names (Run, Snapshot, Table, read_history, read_run: impact.results) on first
-    use, so that `import impact` needs neither NumPy nor the compiled module."""
+    """The results package and its names (Run, Snapshot, Table, read_history, read_run:
+    impact.results) on first use, so that `import impact` needs neither NumPy nor the compiled
+    module; without the compiled module, the code tables it names (failure_causes,
+    update_statuses) raise its ImportError."""
+    if name == "results":
+        return importlib.import_module(".results", __name__)
     if name in _RESULTS:
-        from . import results
-        return getattr(results, name)
+        return getattr(importlib.import_module(".results", __name__), name)
+    if _impact is None and name in ("failure_causes", "update_statuses"):
+        raise ImportError(_MISSING)
     raise AttributeError(f"module 'impact' has no attribute {name!r}")
 
 
@@ -66,7 +87,6 @@ if _impact is not None:
     update_statuses = list(_impact.update_status_names)
 else:
     __version__ = "unknown"
-    failure_causes, update_statuses = [], []
 
 
 def data_path(*relative):
@@ -85,6 +105,11 @@ def data_path(*relative):
             return os.path.join(SOURCE_DIR, "data", *relative)
         except ImportError:
             pass
+        # The package read from the source tree itself (<src>/python/impact, no build).
+        tree = os.path.join(os.path.dirname(os.path.dirname(here)), "data")
+        if os.path.isfile(os.path.join(tree, "README.md")) or os.path.isdir(
+                os.path.join(tree, "materials")):
+            return os.path.join(tree, *relative)
     raise FileNotFoundError("impact: no shipped data found beside " + here)
 
 

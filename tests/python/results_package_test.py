@@ -35,6 +35,29 @@ def isolated(source, code, hide_numpy=False, work="."):
 
 
 def check_imports(source):
+    # Without the compiled module, `import impact` and `impact.results` load no NumPy and leave
+    # the environment alone (an mpm the scripts start keeps libgomp's default wait policy);
+    # impact.results is an attribute; the code tables raise the compiled module's ImportError;
+    # data_path finds the source tree's data.
+    out = isolated(source, """
+import os
+os.environ.pop('OMP_WAIT_POLICY', None)
+import impact
+from impact.results import Launcher, history_rows
+assert 'numpy' not in sys.modules, 'numpy was imported'
+assert 'OMP_WAIT_POLICY' not in os.environ, os.environ['OMP_WAIT_POLICY']
+assert impact.results.Launcher is Launcher
+try:
+    impact.failure_causes
+except ImportError as e:
+    assert 'not built or not installed' in str(e), e
+else:
+    raise AssertionError('impact.failure_causes without the compiled module did not raise')
+assert os.path.isfile(impact.data_path('materials', 'al6061_t6.json'))
+print('ok')
+""")
+    if out.strip() != "ok":
+        fail(f"import without the compiled module: {out!r}")
     out = isolated(source, """
 import impact, impact.results
 from impact.results import read_run, read_history, read_points, launch, Launcher, history_rows
@@ -73,8 +96,10 @@ print(json.dumps([
     m.command('run', options=['--restart', 'o'], threads=3, ranks=4, extra=['-q']),
     m.command('check', 'a.json', options=['--ranks', '2'], sets='{"x": 1}'),
     m.command('study', 'scenes', out='runs', threads=2, extra=['--no-plot']),
-    Launcher('/opt/mpm', mpirun_options=['--oversubscribe']).command('run', 'a', ranks=2)]))
-for bad in ({'ranks': 0}, {'ranks': 1.5}):
+    Launcher('/opt/mpm', mpirun_options=['--oversubscribe']).command('run', 'a', ranks=2),
+    m.command('run', 'a', threads=0, sets=None, options='--overwrite', extra=None)]))
+for bad in ({'ranks': 0}, {'ranks': 1.5}, {'threads': 1.7}, {'threads': -1},
+            {'sets': {'time': {'max_time': float('nan')}}}):
     try:
         m.command('run', 'a', **bad)
     except ValueError:
@@ -91,7 +116,11 @@ for bad in ({'ranks': 0}, {'ranks': 1.5}):
          "--threads", "3", "-q"],
         ["/opt/mpm", "check", "a.json", "--ranks", "2", "--set", '{"x": 1}'],
         ["/opt/mpm", "study", "scenes", "--out", "runs", "--threads", "2", "--no-plot"],
-        ["mpirun", "-np", "2", "--oversubscribe", "/opt/mpm", "run", "a"]]
+        ["mpirun", "-np", "2", "--oversubscribe", "/opt/mpm", "run", "a"],
+        # threads 0 is the program's default (as run_scene's), one string is one option
+        ["/opt/mpm", "run", "a", "--overwrite"]]
+    if len(got) != len(expected):
+        fail(f"{len(got)} command lines, expected {len(expected)}")
     for g, e in zip(got, expected):
         if g != e:
             fail(f"command line {g}, expected {e}")
@@ -118,6 +147,32 @@ def check_find_mpm(source, work):
         if done.returncode != 0 or done.stdout.strip() != mpm:
             fail(f"find_mpm() from {os.path.join(*package_dir)}: {done.stdout.strip()!r} "
                  f"{done.stderr.strip()[-300:]}, expected {mpm}")
+    # A build tree's copy of the package finds <build>/bin/mpm; a source tree without a build
+    # finds nothing of its own, and never an mpm beside the tree (<src>/../bin/mpm, a decoy).
+    for layout in ("build", "source"):
+        tree = os.path.join(work, "layout_" + layout, "tree")
+        shutil.copytree(os.path.join(source, "python", "impact"),
+                        os.path.join(tree, "python", "impact"),
+                        ignore=shutil.ignore_patterns("__pycache__"))
+        marker = "CMakeCache.txt" if layout == "build" else "CMakeLists.txt"
+        open(os.path.join(tree, marker), "w").close()
+        own = os.path.join(tree, "bin", "mpm")
+        decoy = os.path.join(work, "layout_" + layout, "bin", "mpm")
+        for exe in (own, decoy) if layout == "build" else (decoy,):
+            os.makedirs(os.path.dirname(exe), exist_ok=True)
+            with open(exe, "w") as f:
+                f.write("#!/bin/sh\n")
+            os.chmod(exe, 0o755)
+        code = ("import sys; sys.path.insert(0, sys.argv[1])\n"
+                "from impact.results import find_mpm\n"
+                "try:\n    print(find_mpm())\nexcept FileNotFoundError:\n    print('none')")
+        done = subprocess.run([sys.executable, "-s", "-c", code, os.path.join(tree, "python")],
+                              capture_output=True, text=True, timeout=60,
+                              env=dict(os.environ, PATH="/nonexistent"))
+        expected = own if layout == "build" else "none"
+        if done.returncode != 0 or done.stdout.strip() != expected:
+            fail(f"find_mpm() from a {layout} tree: {done.stdout.strip()!r} "
+                 f"{done.stderr.strip()[-300:]}, expected {expected}")
 
 
 def check_real_run(mpm, source, work):

@@ -41,17 +41,34 @@ def find_mpm(explicit=None):
     Returns a path (or the name as given); FileNotFoundError when none is found."""
     if explicit:
         return os.fspath(explicit)
-    # <src>/python/impact/results, <prefix>/share/impact/python/impact/results or
-    # <prefix>/lib/python3.X/site-packages/impact/results
-    root = os.path.normpath(os.path.join(_HERE, "..", "..", ".."))
-    for candidate in (os.path.join(root, "build", "bin", "mpm"),
-                      os.path.normpath(os.path.join(root, "..", "..", "bin", "mpm"))):
+    for candidate in _beside_package():
         if os.access(candidate, os.X_OK) and os.path.isfile(candidate):
             return candidate
     found = shutil.which("mpm")
     if found:
         return found
     raise FileNotFoundError("mpm: not built (cmake --build build) nor on PATH; pass its path")
+
+
+def _beside_package():
+    """Where the mpm of this package's own tree is, by the tree's layout (no guess outside it):
+    the source tree <src>/python/impact/results -> <src>/build/bin/mpm; the build tree's copy
+    <build>/python/impact/results -> <build>/bin/mpm; an install <prefix>/share/impact/python/
+    impact/results or <prefix>/lib/python3.X/site-packages/impact/results -> <prefix>/bin/mpm."""
+    package = os.path.dirname(_HERE)  # .../impact
+    parent = os.path.dirname(package)  # <src>/python, <build>/python, share/impact/python, ...
+    root = os.path.dirname(parent)  # <src> or <build> in a tree
+    if os.path.isfile(os.path.join(root, "CMakeCache.txt")):  # a build tree
+        return [os.path.join(root, "bin", "mpm")]
+    if os.path.isfile(os.path.join(root, "CMakeLists.txt")):  # the source tree
+        return [os.path.join(root, "build", "bin", "mpm")]
+    tail = parent.replace(os.sep, "/")
+    if tail.endswith("/share/impact/python"):
+        return [os.path.normpath(os.path.join(parent, "..", "..", "..", "bin", "mpm"))]
+    if os.path.basename(parent) == "site-packages" and os.path.basename(
+            os.path.dirname(parent)).startswith("python"):
+        return [os.path.normpath(os.path.join(parent, "..", "..", "..", "bin", "mpm"))]
+    return []
 
 
 def mpi_environment(env=None):
@@ -83,12 +100,15 @@ class Launcher:
         cmd = [self.mpm, action] + [os.fspath(t) for t in targets]
         if out is not None:
             cmd += ["--out", os.fspath(out)]
-        cmd += [os.fspath(o) for o in options]
-        if threads is not None:
-            cmd += ["--threads", str(int(threads))]
-        for patch in ([sets] if isinstance(sets, (str, dict)) else sets):
+        cmd += [os.fspath(o) for o in _listed(options)]
+        if threads is not None and threads != 0:  # 0 or None: the program's default
+            if not isinstance(threads, int) or isinstance(threads, bool) or threads < 0:
+                raise ValueError(f"threads: expected a whole number >= 1 (0 or None: the "
+                                 f"program's default), got {threads!r}")
+            cmd += ["--threads", str(threads)]
+        for patch in _listed(sets):
             cmd += ["--set", patch if isinstance(patch, str) else _json(patch)]
-        cmd += [os.fspath(e) for e in extra]
+        cmd += [os.fspath(e) for e in _listed(extra)]
         if ranks > 1:
             cmd = self.mpirun + ["-np", str(ranks)] + self.mpirun_options + cmd
         return cmd
@@ -133,6 +153,20 @@ def launch(action, *targets, mpm=None, mpirun="mpirun", mpirun_options=(), **opt
     return Launcher(mpm, mpirun, mpirun_options).run(action, *targets, **options)
 
 
+def _listed(items):
+    """A sequence of command-line items: None as none, one string, path or patch as one."""
+    if items is None:
+        return []
+    if isinstance(items, (str, bytes, dict, os.PathLike)):
+        return [items]
+    return list(items)
+
+
 def _json(document):
+    """A merge patch as JSON text; NaN and infinities are refused here (not JSON: mpm would
+    refuse the text with a parse error naming no key)."""
     import json
-    return json.dumps(document)
+    try:
+        return json.dumps(document, allow_nan=False)
+    except ValueError as e:
+        raise ValueError(f"sets: a patch holds a NaN or an infinity ({e}): {document!r}") from None
