@@ -35,6 +35,8 @@
 A Taylor rod whose shape cannot be measured (its anvil layer all failed: the shipped failure stack)
 has no Lf and Dm; the table's verdict and a warning on stderr say why and how to measure them
 (failure off: --set '{"physics": {"erosion": "none"}}').
+--analyse-only without --levels (and without --ratio/--count) re-analyses the levels already run:
+those of OUT/ladder.json, else of the run folders runs/x<level>; with none it is a usage error.
 --analyse-only --refingerprint labels each level with the fingerprint the scene has today (`mpm
 check --fingerprint`) rather than the one its run recorded, naming every level whose fingerprint
 changed: for a scene edited in keys that change no number (a key removed because the model never
@@ -49,6 +51,7 @@ import csv
 import datetime
 import json
 import math
+import re
 import os
 import shlex
 import signal
@@ -927,6 +930,13 @@ def parse_arguments(argv):
     ap.add_argument("--no-plot", action="store_true")
     args = ap.parse_args(argv)
     args.command_line = shlex.join(["campaigns/study/ladder.py"] + argv)
+    if args.levels is None and args.analyse_only and not {"--ratio", "--count"} & set(argv):
+        # Re-analysing: the levels already run, not the default ladder (which would write an
+        # empty analysis over a good one).
+        args.levels = levels_already_run(args)
+        if not args.levels:
+            ap.error(f"--analyse-only: no --levels given and none found in "
+                     f"{os.path.join(args.out, 'ladder.json')} or its runs")
     if args.levels is None:
         if not (args.ratio > 1 and args.count >= 1):
             ap.error("--ratio must exceed 1 and --count be at least 1")
@@ -995,6 +1005,28 @@ def check_destinations(ap, args):
               file=sys.stderr)
         return 1
     return None
+
+
+def levels_already_run(args):
+    """The levels of OUT/ladder.json, else those of the run folders (runs/x<level>), ascending;
+    [] when there are none."""
+    try:
+        with open(os.path.join(args.out, "ladder.json")) as f:
+            levels = [float(lv["level"]) for lv in json.load(f).get("levels", [])]
+        if levels:
+            return sorted(set(levels))
+    except (OSError, ValueError, KeyError, TypeError):
+        pass
+    runs_root = args.runs or os.path.join(args.out, "runs")
+    found = set()
+    for name in os.listdir(runs_root) if os.path.isdir(runs_root) else []:
+        match = re.fullmatch(r"x([0-9.eE+-]+)", name)
+        if match:
+            try:
+                found.add(float(match.group(1)))
+            except ValueError:
+                pass
+    return sorted(found)
 
 
 def plan_levels(ap, args, scene):

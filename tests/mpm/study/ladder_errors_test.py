@@ -6,6 +6,7 @@ write and a Ctrl-C with one line on stderr and the documented code, not a traceb
   be written (--out): REASON";
 - --out below a regular file: exit 3, the path and "Not a directory";
 - --out in a read-only directory (only when not root: root writes anyway): exit 3;
+- --analyse-only without --levels and nothing run in --out: exit 1, the folder untouched;
 - SIGINT while the ladder draws its figures (--analyse-only, so nothing runs; a stand-in
   matplotlib on PYTHONPATH writes a marker and waits, so the signal arrives inside the drawing):
   exit 130, "ladder: interrupted; ...".
@@ -62,6 +63,22 @@ def main():
             os.makedirs(locked, mode=0o555)
             expect(base + ["--out", os.path.join(locked, "out")], 3,
                    f"ladder: {os.path.join(locked, 'out')}", "Permission denied")
+        # --analyse-only without --levels re-analyses the levels already run (ladder.json's, else
+        # runs/x<level>); with none there it stops (exit 1, usage) and leaves the folder as it was,
+        # where it used to write an empty analysis of the default levels over it.
+        empty = os.path.join(tmp, "analysed")
+        os.makedirs(empty)
+        with open(os.path.join(empty, "ladder.md"), "w") as f:
+            f.write("a good analysis\n")
+        done = subprocess.run([sys.executable, LADDER, SCENE, "--analyse-only", "--no-plot",
+                               "--out", empty], capture_output=True, text=True, timeout=120)
+        with open(os.path.join(empty, "ladder.md")) as f:
+            kept = f.read() == "a good analysis\n"
+        if (done.returncode != 1 or "no --levels given and none found" not in done.stderr
+                or not kept or sorted(os.listdir(empty)) != ["ladder.md"]):
+            failures.append(f"--analyse-only without levels: exit {done.returncode}, "
+                            f"{done.stderr.strip()[-200:]!r}, ladder.md kept {kept}, "
+                            f"files {sorted(os.listdir(empty))}")
         # Ctrl-C while the figures are drawn.
         fake = os.path.join(tmp, "fake")
         os.makedirs(os.path.join(fake, "matplotlib"))
