@@ -86,7 +86,7 @@ Vec3 axisymmetric_mass_gradient(const Grid& G, const double* m, const std::array
 // outermost stored layers). The report's normals came from the same differences (sec. 14). A 2D
 // grid stores one node plane along z: no difference, no gradient along z.
 Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk) {
-  if (G.spec().geometry == GridGeometry::axisymmetric) return axisymmetric_mass_gradient(G, m, ijk);
+  if (G.spec().geometry_facts().rings) return axisymmetric_mass_gradient(G, m, ijk);
   Vec3 g;
   const NodeBox stored = G.stored();
   const int axes = G.spec().planar() ? 0b011 : 0b111;  // a 2D grid has no images along z

@@ -12,7 +12,7 @@ Grid::Grid(const GridSpec& spec, GridSettings settings, std::optional<NodeBox> b
       settings_(std::move(settings)),
       dx_(spec.spacing()),
       inv_dx_(dx_.cwiseInverse()),
-      // A 2D grid stores its one node plane along z, k = 0 (scene.hpp GridGeometry).
+      // A 2D grid stores its one node plane along z, k = 0 (scene/grid_geometry.hpp).
       first_{box ? std::max(box->first[0], -1) : -1, box ? std::max(box->first[1], -1) : -1,
              spec.planar() ? 0 : (box ? std::max(box->first[2], -1) : -1)},
       nx_((box ? std::min(box->last[0], spec.cells[0] + 1) : spec.cells[0] + 1) - first_[0] + 1),

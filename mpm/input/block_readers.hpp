@@ -18,9 +18,6 @@ namespace impact::mpm::scene_input {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// grid.geometry's names, in GridGeometry's order.
-inline const char* const kGeometryNames[] = {"3d", "axisymmetric", "plane_strain"};
-
 /// node[key], or an empty object when node is not an object or has no such key.
 inline const Json& at(const Json& node, const char* key) {
   return node.is_object() && node.contains(key) ? node[key] : empty_json_object();

@@ -43,20 +43,20 @@ namespace {
 // value reads as 3d here).
 GridGeometry document_geometry(const Json& doc) {
   const Json& g = at(at(doc, "grid"), "geometry");
-  if (g == kGeometryNames[1]) return GridGeometry::axisymmetric;
-  if (g == kGeometryNames[2]) return GridGeometry::plane_strain;
-  return GridGeometry::three_d;
+  if (g.is_string())
+    if (const auto named = geometry_named(g.get<std::string>())) return *named;
+  return kDefaultGeometry;
 }
 
 }  // namespace
 
 // A 2D grid is written in its plane: grid.lower, grid.upper and grid.cells take [x, y], as do
 // objects' particles_per_cell and solver.ranks_per_axis. They are read as the 3D grid of one
-// cell of 1 m along z, centred on z = 0 (scene.hpp GridGeometry): this completes each [x, y]
+// cell of 1 m along z, centred on z = 0 (scene/grid_geometry.hpp): this completes each [x, y]
 // with its z value, and refuses three numbers where two are expected. Every other vector (the
 // objects' geometry, velocities, gauge regions) stays 3D: the bodies are the 3D twin's.
 Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
-  if (document_geometry(doc) == GridGeometry::three_d) return doc;
+  if (!facts(document_geometry(doc)).planar()) return doc;
   Json out = doc;
   const auto complete = [&](Json& node, const std::string& path, const char* key, double z) {
     if (!node.is_object() || !node.contains(key) || !node[key].is_array()) return;
@@ -103,14 +103,9 @@ Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
 void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   JsonReader r = root.child("grid", "background grid");
   const Json& n = at(doc, "grid");
-  const std::string geometry =
-      r.choice("geometry", {kGeometryNames[0], kGeometryNames[1], kGeometryNames[2]},
-               "3d, or a 2D grid in the x-y plane: axisymmetric (x the axis, y the radius >= 0; "
-               "totals of the revolved body) or plane_strain (per metre along z)",
-               kGeometryNames[0]);
-  g.geometry = geometry == kGeometryNames[1]   ? GridGeometry::axisymmetric
-               : geometry == kGeometryNames[2] ? GridGeometry::plane_strain
-                                               : GridGeometry::three_d;
+  const std::vector<std::string_view> names = geometry_names();
+  const std::string geometry = r.choice("geometry", names, geometry_description(), names.front());
+  g.geometry = geometry_named(geometry).value_or(kDefaultGeometry);
   g.lower = read_vec3(r, n, "lower", "lower corner of the grid [m] ([x, y] on a 2D grid)");
   g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m] ([x, y] on a 2D grid)");
   g.cells =
@@ -132,20 +127,22 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
     r.problems().warn(r.key_path("upper"),
                       "largest extent (upper - lower) " + *hint + "; the value is used as given");
   }
-  if (g.geometry == GridGeometry::axisymmetric && g.lower(1) != 0.0 && std::isfinite(g.lower(1))) {
+  const int axis_face = g.geometry_facts().axis_face;
+  const int axis = axis_face / 2;  // the axis of symmetry lies in the face at lower(axis) = 0
+  if (axis_face >= 0 && g.lower(axis) != 0.0 && std::isfinite(g.lower(axis))) {
     std::ostringstream got;  // as typed, 1e-09 too (std::to_string would print 0.000000)
-    got << g.lower(1);
-    r.problems().add(r.key_path("lower") + "/1",
+    got << g.lower(axis);
+    r.problems().add(r.key_path("lower") + "/" + std::to_string(axis),
                      "an axisymmetric grid starts at the axis, y = 0 (y is the radius); expected "
                      "0, got " +
                          got.str());
   }
   g.faces.fill(FaceCondition::symmetric);
   // A 2D grid has no faces along z (its one cell of 1 m is not a mesh axis): they are free.
-  const int faces = g.planar() ? 4 : 6;
-  if (g.planar()) g.faces[4] = g.faces[5] = FaceCondition::free;
+  const int faces = g.geometry_facts().faces_read;
+  for (int f = faces; f < 6; ++f) g.faces[f] = FaceCondition::free;
   if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed, free or wall")) {
-    for (int f = 4; f < 6 && g.planar(); ++f)
+    for (int f = faces; f < 6; ++f)
       if (b->has(kFaceNames[f])) {
         b->problems().add(b->key_path(kFaceNames[f]),
                           std::string("a 2D grid (grid.geometry \"") + geometry +
@@ -161,7 +158,7 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
                    : c == "free" ? FaceCondition::free
                    : c == "wall" ? FaceCondition::wall
                                  : FaceCondition::symmetric;
-      if (f == 2 && g.geometry == GridGeometry::axisymmetric && c != "symmetric")
+      if (f == axis_face && c != "symmetric")
         b->problems().add(b->key_path(kFaceNames[f]),
                           "the face y- of an axisymmetric grid is the axis of symmetry, where the "
                           "radial velocity is zero: expected \"symmetric\", got \"" +

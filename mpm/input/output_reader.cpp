@@ -188,8 +188,7 @@ void read_crater(InputProblems& problems, const Json& out, Scene& s, bool check_
           c.number("axis_y", Range::any(), "y of the crater axis [m] (quarter model: 0)"),
           c.number("axis_z", Range::any(), "z of the crater axis [m] (quarter model: 0)")};
       // An axisymmetric crater is centred on the axis of symmetry, y = z = 0.
-      if (s.grid.geometry == GridGeometry::axisymmetric &&
-          ((*spec.axis)[0] != 0.0 || (*spec.axis)[1] != 0.0))
+      if (s.grid.geometry_facts().rings && ((*spec.axis)[0] != 0.0 || (*spec.axis)[1] != 0.0))
         problems.add(c.key_path("axis_y"),
                      "the crater of an axisymmetric scene is centred on the axis of symmetry: "
                      "expected axis_y = axis_z = 0, or neither key");

@@ -9,7 +9,7 @@
 #include "mpm/input/block_readers.hpp"
 #include "mpm/input/scene_keys.hpp"
 #include "mpm/scene/grid_coverage.hpp"
-#include "mpm/scene/planar_form.hpp"
+#include "mpm/scene/grid_geometry.hpp"
 #include "mpm/scene/seed_points.hpp"
 
 namespace impact::mpm::scene_input {
@@ -39,7 +39,7 @@ constexpr double kMaxSilentLoss = 0.01;
 // on the whole scene, so every rank of a run finds the same.
 void check_objects_in_grid(InputProblems& problems, const Scene& s) {
   const GridSpec& g = s.grid;
-  // A 2D grid as it was typed, [x, y] (its z extent is the reader's, scene.hpp GridGeometry).
+  // A 2D grid as it was typed, [x, y] (its z extent is the reader's, scene/grid_geometry.hpp).
   const auto corner = [&](const Vec3& v) {
     if (!g.planar()) return vec_text(v);
     std::ostringstream o;
@@ -113,29 +113,27 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
 // plane: along the axis when axisymmetric (a uniform radial velocity is no body of revolution's),
 // with no z component in plane strain; gravity likewise.
 void check_planar_scene(InputProblems& problems, Scene& s) {
-  const GridGeometry kind = s.grid.geometry;
-  if (kind == GridGeometry::three_d) return;
-  const bool axi = kind == GridGeometry::axisymmetric;
-  const std::string grid = std::string("grid.geometry \"") + kGeometryNames[int(kind)] + "\"";
-  const auto moves_in_plane = [&](const Vec3& v) { return v(2) == 0.0 && (!axi || v(1) == 0.0); };
-  const std::string expected =
-      axi ? "expected [v, 0, 0]: a body of revolution moves along its axis x"
-          : "expected [vx, vy, 0]: a plane-strain body moves in the x-y plane";
-  for (SceneObject& o : s.objects) {
-    const std::string key = "/objects/" + o.name;
-    const std::string why = planar_form_problem(o.geometry, kind);
-    if (!why.empty()) problems.add(key + "/geometry", why + " (" + grid + ")");
-    if (!moves_in_plane(o.velocity))
-      problems.add(key + "/velocity",
-                   "initial velocity " + vec_text(o.velocity) + " on " + grid + ": " + expected);
-    o.particles_per_cell[2] = 1;  // the one cell along z
-  }
-  if (!moves_in_plane(s.solver.gravity))
-    problems.add("/solver/gravity",
-                 "gravity " + vec_text(s.solver.gravity) + " on " + grid + ": " + expected);
-  if (s.solver.ranks_per_axis[2] > 1)
-    problems.add("/solver/ranks_per_axis",
-                 "a 2D grid is split in x and y only; expected [px, py] (" + grid + ")");
+  if (!s.grid.planar()) return;
+  visit_geometry(s.grid.geometry, [&](auto geometry) {
+    using Grid = decltype(geometry);
+    const std::string grid = "grid.geometry \"" + std::string(Grid::kName) + "\"";
+    const std::string expected(Grid::kExpectedMotion);
+    for (SceneObject& o : s.objects) {
+      const std::string key = "/objects/" + o.name;
+      const std::string why = Grid::form_problem(o.geometry);
+      if (!why.empty()) problems.add(key + "/geometry", why + " (" + grid + ")");
+      if (!Grid::moves_in_model(o.velocity))
+        problems.add(key + "/velocity",
+                     "initial velocity " + vec_text(o.velocity) + " on " + grid + ": " + expected);
+      o.particles_per_cell[2] = 1;  // the one cell along z
+    }
+    if (!Grid::moves_in_model(s.solver.gravity))
+      problems.add("/solver/gravity",
+                   "gravity " + vec_text(s.solver.gravity) + " on " + grid + ": " + expected);
+    if (s.solver.ranks_per_axis[2] > 1)
+      problems.add("/solver/ranks_per_axis",
+                   "a 2D grid is split in x and y only; expected [px, py] (" + grid + ")");
+  });
 }
 
 // Multi-field contact keeps per-node arrays of kMaxContactFields fields (contact.cpp): a scene

@@ -1,6 +1,6 @@
 // The units of the extensive totals a run books (energies, masses, momenta, impulses, volumes):
 // a 3D or an axisymmetric run books whole bodies (an axisymmetric ring is the revolved body,
-// scene.hpp GridGeometry); a plane-strain run books a slice of unit thickness along z, so its
+// scene/grid_geometry.hpp); a plane-strain run books a slice of unit thickness along z, so its
 // totals are per metre of thickness and say so in every label (history.csv, summary.json,
 // `mpm check`; docs/mpm.md#ledger). Intensive quantities (velocity, stress, strain, temperature,
 // energy_error) keep their units.

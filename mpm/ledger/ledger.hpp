@@ -54,8 +54,8 @@ class Ledger {
   /// mass, momentum and kinetic energy get columns.
   /// `momentum_components`: 1 for each component of the particles' sum m v that is the body's
   /// momentum, 0 for one that is not: on an axisymmetric grid only the axial (x) one, since the
-  /// radial momenta of a ring cancel (scene.hpp GridGeometry); the others are booked as zero.
-  /// `units`: of the columns (per metre of thickness in plane strain).
+  /// radial momenta of a ring cancel (scene/grid_geometry.hpp kMomentumComponents); the others are
+  /// booked as zero. `units`: of the columns (per metre of thickness in plane strain).
   explicit Ledger(bool with_external = false, bool with_outflow = false,
                   const Vec3& momentum_components = Vec3::Ones(), ExtensiveUnits units = {})
       : with_external_(with_external),

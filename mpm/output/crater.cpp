@@ -55,7 +55,7 @@ double thickness_along_x(const Geometry& g, double x0, double y, double z, doubl
 // Long on purpose (about 125 lines): the crater steps of docs/mpm.md in that order, each on the
 // profile the one before built.
 Crater crater_of(const std::vector<FacePoint>& all, double ring_width,
-                 const std::optional<std::array<double, 2>>& axis, bool axisymmetric,
+                 const std::optional<std::array<double, 2>>& axis, bool revolved,
                  std::optional<double> thickness) {
   Crater c;
   c.ring_width = ring_width;
@@ -84,7 +84,7 @@ Crater crater_of(const std::vector<FacePoint>& all, double ring_width,
   if (axis) {
     c.axis_y = (*axis)[0];
     c.axis_z = (*axis)[1];
-  } else if (!axisymmetric) {
+  } else if (!revolved) {
     double w = 0.0, sy = 0.0, sz = 0.0;
     for (const FacePoint& q : face) {
       if (q.u < half) continue;
@@ -97,7 +97,7 @@ Crater crater_of(const std::vector<FacePoint>& all, double ring_width,
   }
   // An axisymmetric particle is a ring: its y is its radius (the axis is y = 0 there).
   const auto radius = [&](const FacePoint& q) {
-    return axisymmetric ? std::abs(q.y) : std::hypot(q.y - c.axis_y, q.z - c.axis_z);
+    return revolved ? std::abs(q.y) : std::hypot(q.y - c.axis_y, q.z - c.axis_z);
   };
   if (!(floor > far)) {
     c.status = "no crater: the face moved as a whole";
@@ -187,7 +187,7 @@ CraterMeasure::CraterMeasure(const Scene& scene, const CraterSpec& spec, const P
       geometry_(scene.objects[std::size_t(spec.object)].geometry),
       dx_(scene.grid.spacing()(0)),
       grid_upper_x_(scene.grid.upper(0)),
-      axisymmetric_(scene.grid.geometry == GridGeometry::axisymmetric),
+      rings_(scene.grid.geometry_facts().rings),
       comm_(comm) {
   const Vec3 h = scene.grid.spacing();
   // The rings' width: the cell edge across the face (the radial one on a 2D grid).
@@ -240,7 +240,7 @@ Crater CraterMeasure::measure(const Particles& P) const {
     const Vec3& x0 = face_x0_[deepest.i];
     thickness = thickness_along_x(geometry_, x0(0), x0(1), x0(2), dx_, grid_upper_x_);
   }
-  Crater c = crater_of(face, ring_width_, spec_.axis, axisymmetric_, thickness);
+  Crater c = crater_of(face, ring_width_, spec_.axis, rings_, thickness);
   c.face_particles = face_.ids(0).size();
   return c;
 }

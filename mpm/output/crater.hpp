@@ -92,18 +92,19 @@ class CraterMeasure {
   CraterSpec spec_;
   Geometry geometry_;  ///< the target's (its thickness along x)
   double dx_ = 0.0, ring_width_ = 0.0, grid_upper_x_ = 0.0;
-  bool axisymmetric_ = false;
-  ParticleSets face_;          ///< set 0: the face layer
+  bool rings_ = false;  ///< the particles are rings about the x axis (scene/grid_geometry.hpp)
+  ParticleSets face_;   ///< set 0: the face layer
   std::vector<Vec3> face_x0_;  ///< their initial positions, in seed-index order
   const Communicator& comm_;
 };
 
 /// The crater of face particles (current positions across the face), without the particle
 /// bookkeeping: what CraterMeasure computes once the layer is gathered. `axis`: the fixed axis if
-/// any; `axisymmetric`: y is the radius and the axis y = 0; `thickness`: the target's along x at
-/// the floor, for the perforation test (nullopt: not tested).
+/// any; `revolved`: the particles are rings about x (axisymmetric), y is the radius and the axis y
+/// = 0; `thickness`: the target's along x at the floor, for the perforation test (nullopt: not
+/// tested).
 Crater crater_of(const std::vector<FacePoint>& face, double ring_width,
-                 const std::optional<std::array<double, 2>>& axis, bool axisymmetric,
+                 const std::optional<std::array<double, 2>>& axis, bool revolved,
                  std::optional<double> thickness = std::nullopt);
 
 }  // namespace impact::mpm

@@ -45,9 +45,7 @@ FaceReach::FaceReach(const Scene& scene, const Particles& initial, const Communi
     // more along the axis the extent decides.
     near_[f] = std::max(h(axis), kNearFraction * (g.upper(axis) - g.lower(axis)));
     // A 2D grid has no z faces; the y- face of an axisymmetric grid is its axis.
-    const bool face =
-        !(g.planar() && axis == 2) && !(g.geometry == GridGeometry::axisymmetric && f == 2);
-    watched_[f] = face && g.faces[f] != FaceCondition::wall;
+    watched_[f] = g.is_domain_face(f) && g.faces[f] != FaceCondition::wall;
   }
   const std::array<double, 6> start = count(initial, near_);
   for (int f = 0; f < 6; ++f) watched_[f] = watched_[f] && start[f] == 0.0;

@@ -13,6 +13,7 @@
 // collective, and no rank ever needs another's particles.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -88,9 +89,9 @@ class Observables {
   std::optional<CraterMeasure> crater_;
   std::string crater_object_;
   double crater_face_ = 0.0;
-  /// An axisymmetric grid (scene.hpp GridGeometry): the bodies are rings about the x axis, so
-  /// their mean velocity is axial and the crater's axis is the axis of symmetry.
-  bool axisymmetric_ = false;
+  /// The velocity components that are physical (1) or cancel by symmetry (0; an axisymmetric
+  /// grid's radial and hoop ones: scene/grid_geometry.hpp kMomentumComponents).
+  std::array<double, 3> momentum_components_{};
   ExtensiveUnits units_;  ///< of the objects' mass and kinetic energy (plane strain: per metre)
   const Communicator& comm_;
 };

@@ -27,7 +27,7 @@ constexpr int kHaloPlanes = 3;
 
 /// The nodes rank `rank`'s grid stores: its box's cells [c0, c1) per axis widened by kHaloPlanes
 /// on each side, clipped to the grid and its ghost layers [-1, cells + 1]; along z of a 2D grid
-/// the one node plane k = 0 (Grid stores no other: scene.hpp GridGeometry).
+/// the one node plane k = 0 (Grid stores no other: scene/grid_geometry.hpp).
 NodeBox stored_nodes(const BoxDecomposition& boxes, const GridSpec& grid, int rank);
 
 /// What a rank sends by the node sums per step (docs/mpi.md, "Cost model"): per neighbour along

@@ -44,14 +44,15 @@ void seed_object(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3&
   const ElasticPlastic& model = scene.materials[o.material].material.model;
   const auto& ppc = o.particles_per_cell;
   // A 2D grid's cell is 1 m along z: per metre of thickness (plane strain), or the ring the
-  // sub-cell sweeps about the axis, 2 pi r times its area (axisymmetric; scene.hpp GridGeometry).
+  // sub-cell sweeps about the axis, 2 pi r times its area (axisymmetric; scene/grid_geometry.hpp).
   const double cell_share = scene.grid.spacing().prod() / (ppc[0] * ppc[1] * ppc[2]);
-  const bool ring = scene.grid.geometry == GridGeometry::axisymmetric;
+  const auto particle_volume = visit_geometry(
+      scene.grid.geometry, [](auto geometry) { return &decltype(geometry)::particle_volume; });
   const PointState s0 = model.initial_state(o.temperature);
   const double c = model.wave_speed(s0);
   for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int) {
     if (!keep(x)) return;
-    const double v0 = ring ? 2.0 * std::numbers::pi * x(1) * cell_share : cell_share;
+    const double v0 = particle_volume(x, cell_share);
     p.x.push_back(x);
     p.v.push_back(o.velocity);
     p.mass.push_back(model.params().density * v0);

@@ -8,7 +8,7 @@
 
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
-#include "mpm/scene/planar_form.hpp"
+#include "mpm/scene/grid_geometry.hpp"
 #include "mpm/shape/shape.hpp"
 #include "support/system_resources.hpp"
 
@@ -29,13 +29,9 @@ double estimated_particle_count(const Scene& scene) {
     const auto [lo, hi] = bounds(o.geometry);
     const Vec3 extent = (hi.cwiseMin(g.upper) - lo.cwiseMax(g.lower)).cwiseMax(0.0);
     const auto& ppc = o.particles_per_cell;
-    if (g.planar()) {  // the seeded section, at most its bounding rectangle inside the grid
-      const double a = std::min(seeded_area(o.geometry, g.geometry), extent(0) * extent(1));
-      n += std::ceil(a / (h(0) * h(1)) * ppc[0] * ppc[1]);
-      continue;
-    }
-    const double v = std::min(volume(o.geometry), extent.prod());
-    n += std::ceil(v / h.prod() * ppc[0] * ppc[1] * ppc[2]);
+    n += visit_geometry(g.geometry, [&](auto geometry) {
+      return decltype(geometry)::estimated_seed_points(o.geometry, extent, h, ppc);
+    });
   }
   return n;
 }

@@ -15,7 +15,8 @@
 // The particle count is the exact seeded count when given, else the geometric estimate
 // sum_objects min(volume, volume of its bounding box inside the grid) x ppc^3 / cell volume
 // (an upper bound up to the shapes' overlap); on a 2D grid, with the area of the section it seeds
-// (planar_form.hpp seeded_area) and of the bounding rectangle, ppc^2 and the cell's area.
+// (scene/grid_geometry.hpp estimated_seed_points) and of the bounding rectangle, ppc^2 and the
+// cell's area.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 #include "mpm/run/summary.hpp"
-#include "mpm/scene/planar_form.hpp"
+#include "mpm/scene/grid_geometry.hpp"
 
 #include <array>
 #include <cmath>
@@ -83,7 +83,9 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
     const auto n = static_cast<std::size_t>(sums[3 * o]);
     const double mass = sums[3 * o + 1], vol = sums[3 * o + 2];
     // The revolved body's volume (axisymmetric), or per metre of thickness (plane strain).
-    const double exact = modelled_volume(scene.objects[o].geometry, scene.grid.geometry);
+    const double exact = visit_geometry(scene.grid.geometry, [&](auto geometry) {
+      return decltype(geometry)::modelled_volume(scene.objects[o].geometry);
+    });
     const double rho = scene.materials[scene.objects[o].material].material.model.params().density;
     objects[scene.objects[o].name] = {
         {"particles", n},

@@ -48,9 +48,7 @@ double nominal_strain_rate(const Scene& scene, std::size_t o) {
   const GridSpec& g = scene.grid;
   for (int f = 0; f < 6; ++f) {
     const int axis = f / 2;
-    const bool face =
-        !(g.planar() && axis == 2) && !(g.geometry == GridGeometry::axisymmetric && f == 2);
-    if (!face || g.faces[f] == FaceCondition::free) continue;
+    if (!g.is_domain_face(f) || g.faces[f] == FaceCondition::free) continue;
     const double toward = (f % 2 == 0 ? -1.0 : 1.0) * object.velocity(axis);
     const double length = box.second(axis) - box.first(axis);
     if (toward > 0.0 && length > 0.0) rate = std::max(rate, toward / length);

@@ -36,7 +36,9 @@ std::string text(const Vec3& v) {
   return s.str();
 }
 
-std::string axisymmetric_problem(const Geometry& g) {
+}  // namespace
+
+std::string revolution_problem(const Geometry& g) {
   return std::visit(
       [&](const auto& s) -> std::string {
         using T = std::decay_t<decltype(s)>;
@@ -60,7 +62,7 @@ std::string axisymmetric_problem(const Geometry& g) {
                  "; expected bottom and top on the axis, [x, 0, 0]";
         } else {
           for (std::size_t i = 0; i < s.parts.size(); ++i) {
-            const std::string why = axisymmetric_problem(s.parts[i]);
+            const std::string why = revolution_problem(s.parts[i]);
             if (!why.empty()) return "union part " + std::to_string(i) + ": " + why;
           }
           return "";
@@ -69,7 +71,7 @@ std::string axisymmetric_problem(const Geometry& g) {
       g.shape);
 }
 
-std::string plane_strain_problem(const Geometry& g) {
+std::string prism_problem(const Geometry& g) {
   return std::visit(
       [&](const auto& s) -> std::string {
         using T = std::decay_t<decltype(s)>;
@@ -96,7 +98,7 @@ std::string plane_strain_problem(const Geometry& g) {
           return "";
         } else {
           for (std::size_t i = 0; i < s.parts.size(); ++i) {
-            const std::string why = plane_strain_problem(s.parts[i]);
+            const std::string why = prism_problem(s.parts[i]);
             if (!why.empty()) return "union part " + std::to_string(i) + ": " + why;
           }
           return "";
@@ -151,27 +153,6 @@ double meridian_area(const Geometry& g) {
         }
       },
       g.shape);
-}
-
-}  // namespace
-
-std::string planar_form_problem(const Geometry& g, GridGeometry kind) {
-  switch (kind) {
-    case GridGeometry::axisymmetric:
-      return axisymmetric_problem(g);
-    case GridGeometry::plane_strain:
-      return plane_strain_problem(g);
-    default:
-      return "";
-  }
-}
-
-double modelled_volume(const Geometry& g, GridGeometry kind) {
-  return kind == GridGeometry::plane_strain ? section_area(g) * 1.0 : volume(g);
-}
-
-double seeded_area(const Geometry& g, GridGeometry kind) {
-  return kind == GridGeometry::axisymmetric ? meridian_area(g) : section_area(g);
 }
 
 }  // namespace impact::mpm

@@ -14,6 +14,7 @@
 #include "models/kinematics/deformation_gradient.hpp"
 #include "models/material/material.hpp"
 #include "mpm/geometry/geometry.hpp"
+#include "mpm/scene/grid_geometry.hpp"
 
 namespace impact::mpm {
 
@@ -28,15 +29,6 @@ enum class Outflow { stop, remove };
 
 /// Faces in the order x-, x+, y-, y+, z-, z+ (index 2*axis + side).
 inline constexpr std::array<const char*, 6> kFaceNames = {"x-", "x+", "y-", "y+", "z-", "z+"};
-
-/// The grid's kind (grid.geometry, docs/mpm.md#2d-grids): 3D, or a 2D grid in the x-y plane.
-/// axisymmetric (Sulsky & Schreyer 1996, CMAME 139:409): x the axis of symmetry, y the radius
-/// (>= 0, the axis at y = 0), z the hoop direction; every mass, volume, force, momentum and energy
-/// is that of the body revolved through the full circle, 2 pi. plane_strain: z the out-of-plane
-/// direction (no strain along it); every extensive quantity per metre of thickness. A 2D grid is
-/// one cell of 1 m along z, centred on z = 0, whose nodes are stored in the plane k = 0 only; its
-/// shapes (mpm/shape/shape.hpp) have one node along z.
-enum class GridGeometry { three_d, axisymmetric, plane_strain };
 
 struct GridSpec {
   Vec3 lower, upper;                      ///< [m]
@@ -58,14 +50,18 @@ struct GridSpec {
   /// false: every node of the box every step (the 2004 code's dense loops).
   bool active_blocks = true;
   Outflow outflow = Outflow::stop;
-  GridGeometry geometry = GridGeometry::three_d;
+  /// The grid's kind (grid.geometry; its catalogue: scene/grid_geometry.hpp).
+  GridGeometry geometry = kDefaultGeometry;
+  const GeometryFacts& geometry_facts() const { return facts(geometry); }
   /// A 2D grid (axisymmetric or plane strain): z is one cell of 1 m, not an axis of the mesh.
-  bool planar() const { return geometry != GridGeometry::three_d; }
+  bool planar() const { return geometry_facts().planar(); }
   /// The mesh's axes: 2 or 3.
-  int dimensions() const { return planar() ? 2 : 3; }
-  /// Plane strain: masses, energies, momenta and volumes are per metre of thickness
-  /// (mpm/ledger/extensive_units.hpp).
-  bool per_metre_of_thickness() const { return geometry == GridGeometry::plane_strain; }
+  int dimensions() const { return geometry_facts().mesh_axes; }
+  /// Masses, energies, momenta and volumes are per metre of thickness (plane strain;
+  /// mpm/ledger/extensive_units.hpp).
+  bool per_metre_of_thickness() const { return geometry_facts().per_metre_of_thickness; }
+  /// Face f (kFaceNames order) bounds the modelled domain: read from the scene, not the axis.
+  bool is_domain_face(int f) const { return geometry_facts().is_domain_face(f); }
   /// The smallest cell edge of the mesh's axes [m] (the time step).
   double min_spacing() const {
     const Vec3 h = spacing();

@@ -5,11 +5,14 @@
 //   - N, the nodes per axis of its stencil, and at(x, object) -> Stencil<N>,
 //   - OnGrid<G, N> as a base: the grid geometry it serves (NZ nodes along z, hoop terms),
 //   - make(scene), which builds it for a scene;
-// and its grid geometries in WithEveryShape below. docs/extending.md walks through adding one.
+// and its line in WithEveryShape below, which puts it on every grid geometry of the catalogue
+// (scene/grid_geometry.hpp). docs/extending.md walks through adding one.
 #pragma once
 
 #include <algorithm>
 #include <string_view>
+#include <tuple>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -33,26 +36,27 @@ inline void flatten_z(Stencil<N>& s) {
 ///   f_I,r -= V_p sigma_tt,p S_Ip / r_p,   L_tt,p = sum_I S_Ip v_I,r / r_p.
 template <GridGeometry G, int N>
 struct OnGrid {
+  using GridKind = GeometryOf<G>;  // not Geometry: that names the solid bodies
   static constexpr GridGeometry kGeometry = G;
-  static constexpr int NZ = G == GridGeometry::three_d ? N : 1;
-  static constexpr bool kHoop = G == GridGeometry::axisymmetric;
+  static constexpr int NZ = GridKind::template kNodesAlongZ<N>;
+  static constexpr bool kHoop = GridKind::kHoop;
   /// Whether a node of zero weight always has a zero gradient too (then a gather may take a
   /// massless node's zero velocity without testing its mass: it adds exact zeros). Not for the
   /// linear hat, whose slope is -1/h at the node it has just left.
   static constexpr bool kSlopeVanishesWithWeight = false;
 };
 
-template <GridGeometry G = GridGeometry::three_d>
+template <GridGeometry G = kDefaultGeometry>
 struct LinearShape : OnGrid<G, 2> {
   static constexpr std::string_view kName = "linear";
   static constexpr std::string_view kMeaning =
-      G == GridGeometry::three_d ? "8-node trilinear" : "4-node bilinear";
+      GeometryOf<G>::kMeshAxes == 3 ? "8-node trilinear" : "4-node bilinear";
   static constexpr int N = 2;  ///< nodes per axis: 8 in all (4 on a 2D grid)
   Vec3 lower, inv_dx;
   std::array<int, 3> cells;
   Stencil<2> at(const Vec3& x, int /*object*/) const {
     Stencil<2> s = linear_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, cells);
-    if constexpr (G != GridGeometry::three_d) flatten_z(s);
+    if constexpr (GeometryOf<G>::kMeshAxes < 3) flatten_z(s);
     return s;
   }
   static LinearShape make(const Scene& scene) {
@@ -60,11 +64,11 @@ struct LinearShape : OnGrid<G, 2> {
   }
 };
 
-template <GridGeometry G = GridGeometry::three_d>
+template <GridGeometry G = kDefaultGeometry>
 struct GimpShape : OnGrid<G, 3> {
   static constexpr std::string_view kName = "gimp";
   static constexpr std::string_view kMeaning =
-      G == GridGeometry::three_d ? "27-node uGIMP" : "9-node uGIMP";
+      GeometryOf<G>::kMeshAxes == 3 ? "27-node uGIMP" : "9-node uGIMP";
   static constexpr int N = 3;  ///< nodes per axis: 27 in all (9 on a 2D grid)
   static constexpr bool kSlopeVanishesWithWeight = true;  ///< S and dS/dr vanish at |r| = 1 + l
   Vec3 lower, inv_dx;
@@ -73,7 +77,7 @@ struct GimpShape : OnGrid<G, 3> {
   Stencil<3> at(const Vec3& x, int object) const {
     Stencil<3> s =
         gimp_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, half_width[object], cells);
-    if constexpr (G != GridGeometry::three_d) flatten_z(s);
+    if constexpr (GeometryOf<G>::kMeshAxes < 3) flatten_z(s);
     return s;
   }
   static GimpShape make(const Scene& scene) {
@@ -85,14 +89,31 @@ struct GimpShape : OnGrid<G, 3> {
   }
 };
 
-inline constexpr GridGeometry kAxisymmetric = GridGeometry::axisymmetric;
-inline constexpr GridGeometry kPlaneStrain = GridGeometry::plane_strain;
+namespace detail {
+// Shape S on every grid geometry, as a tuple of types.
+template <template <GridGeometry> class S>
+struct OnEveryGeometry {
+  template <class... G>
+  using type = std::tuple<S<G::kId>...>;
+};
+template <template <class...> class T, class Tuple>
+struct Rebind;
+template <template <class...> class T, class... X>
+struct Rebind<T, std::tuple<X...>> {
+  using type = T<X...>;
+};
+}  // namespace detail
 
-/// The catalogue: T<every shape on every grid geometry>, one line per shape (the first is the
-/// default).
+/// T<every shape in Shapes on every grid geometry>, shape by shape.
+template <template <class...> class T, template <GridGeometry> class... Shapes>
+using ShapesOnEveryGeometry = typename detail::Rebind<
+    T, decltype(std::tuple_cat(
+           std::declval<WithEveryGeometry<detail::OnEveryGeometry<Shapes>::template type>>()...))>::
+    type;
+
+/// The catalogue: one name per shape (the first is the default), each on every grid geometry.
 template <template <class...> class T>
-using WithEveryShape = T<GimpShape<>, GimpShape<kAxisymmetric>, GimpShape<kPlaneStrain>,  //
-                         LinearShape<>, LinearShape<kAxisymmetric>, LinearShape<kPlaneStrain>>;
+using WithEveryShape = ShapesOnEveryGeometry<T, GimpShape, LinearShape>;
 
 /// One of the shapes, as a run holds it.
 using AnyShape = WithEveryShape<std::variant>;

@@ -39,10 +39,9 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
             ranks_.stored_box(boxes_, scene.grid)),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
-      ledger_(
-          !scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove,
-          scene.grid.geometry == GridGeometry::axisymmetric ? Vec3(1.0, 0.0, 0.0) : Vec3::Ones(),
-          ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
+      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove,
+              Vec3(scene.grid.geometry_facts().momentum_components.data()),
+              ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
   census_ = {};  // needed for seeding only
   if (ranks_.several()) {
     grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
@@ -106,27 +105,13 @@ GridSettings Simulation::grid_settings(int threads) const {
       g.field_density[std::size_t(scene_.companion_field(m))] = rho;
     }
   }
-  double lightest = std::numeric_limits<double>::infinity();
-  if (scene_.grid.geometry == GridGeometry::axisymmetric) {
-    // A ring's mass is 2 pi r_p rho A_p: the lightest per unit radius, taken at the smallest
-    // radius seeded (kLightNodeMassFraction in step/step.hpp).
-    double per_radius = std::numeric_limits<double>::infinity();
-    double innermost = std::numeric_limits<double>::infinity();
-    for (std::size_t p = 0; p < particles_.size(); ++p) {
-      per_radius = std::min(per_radius, particles_.mass[p] / particles_.x[p](1));
-      innermost = std::min(innermost, particles_.x[p](1));
-    }
-    per_radius = ranks_.min(per_radius);
-    innermost = ranks_.min(innermost);
-    if (std::isfinite(per_radius) && std::isfinite(innermost) && innermost > 0.0) {
-      g.light_radius = innermost;
-      lightest = per_radius * innermost;
-    }
-  } else {
-    for (const double m : particles_.mass) lightest = std::min(lightest, m);
-    lightest = ranks_.min(lightest);
-  }
-  if (std::isfinite(lightest)) g.light_mass = kLightNodeMassFraction * lightest;
+  // The light-node rule's mass (kLightNodeMassFraction in step/step.hpp), by the geometry's rule.
+  const LightNode light = visit_geometry(scene_.grid.geometry, [&](auto geometry) {
+    return decltype(geometry)::light_node(particles_.mass, particles_.x,
+                                          [&](double v) { return ranks_.min(v); });
+  });
+  g.light_radius = light.radius;
+  if (std::isfinite(light.lightest)) g.light_mass = kLightNodeMassFraction * light.lightest;
   // Walls hold only where a particle's domain reaches them (grid/wall.cpp). Every rank scatters
   // the touch bits of its particles (the sums carry them to the rank holding the wall's nodes),
   // also one whose box stores no wall node.

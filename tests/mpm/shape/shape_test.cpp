@@ -4,6 +4,8 @@
 // Tolerance 1e-12 (round-off on O(1) sums in cell units).
 #include <boost/test/unit_test.hpp>
 #include <random>
+#include <type_traits>
+#include <variant>
 
 #include "mpm/shape/shape.hpp"
 
@@ -73,6 +75,17 @@ void check_consistency(const Shape& shape) {
   BOOST_TEST_MESSAGE("worst consistency error " << worst);
   BOOST_TEST(worst < 1e-12);
 }
+
+// The catalogue puts every shape on every grid geometry, shape by shape, the default first: the
+// alternatives' order is what a run's variant index and the phases' instantiations rely on.
+static_assert(
+    std::is_same_v<AnyShape, std::variant<GimpShape<>, GimpShape<kAxisymmetric>,
+                                          GimpShape<kPlaneStrain>, LinearShape<>,
+                                          LinearShape<kAxisymmetric>, LinearShape<kPlaneStrain>>>);
+static_assert(GimpShape<>::NZ == 3 && GimpShape<kPlaneStrain>::NZ == 1 && LinearShape<>::NZ == 2 &&
+              LinearShape<kAxisymmetric>::NZ == 1);
+static_assert(GimpShape<kAxisymmetric>::kHoop && !GimpShape<>::kHoop &&
+              !LinearShape<kPlaneStrain>::kHoop);
 
 }  // namespace
 
