@@ -75,8 +75,13 @@ Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
   complete(grid, "/grid", "lower", -0.5);
   complete(grid, "/grid", "upper", 0.5);
   complete(grid, "/grid", "cells", 1);
-  if (out.contains("solver") && out["solver"].is_object())
-    complete(out["solver"], "/solver", "ranks_per_axis", 1);
+  if (out.contains("solver") && out["solver"].is_object()) {
+    // [0, 0] is the automatic split ([0, 0, 0]); any other [px, py] has one box along z.
+    const Json& p =
+        out["solver"].contains("ranks_per_axis") ? out["solver"]["ranks_per_axis"] : Json();
+    const bool automatic = p.is_array() && p.size() == 2 && p[0] == 0 && p[1] == 0;
+    complete(out["solver"], "/solver", "ranks_per_axis", automatic ? 0.0 : 1.0);
+  }
   if (out.contains("objects") && out["objects"].is_object())
     for (auto& item : out["objects"].items())
       complete(item.value(), "/objects/" + item.key(), "particles_per_cell", 1);
@@ -128,7 +133,8 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
                       "largest extent (upper - lower) " + *hint + "; the value is used as given");
   }
   const int axis_face = g.geometry_facts().axis_face;
-  const int axis = axis_face / 2;  // the axis of symmetry lies in the face at lower(axis) = 0
+  // The axis of symmetry lies in the lower face of the radial axis: its coordinate must be 0.
+  const int axis = axis_face / 2;
   if (axis_face >= 0 && g.lower(axis) != 0.0 && std::isfinite(g.lower(axis))) {
     std::ostringstream got;  // as typed, 1e-09 too (std::to_string would print 0.000000)
     got << g.lower(axis);
@@ -169,6 +175,13 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   if (auto w = r.optional_child("wall_friction", "Coulomb friction coefficient per wall face")) {
     for (int f = 0; f < 6; ++f) {
       if (!w->has(kFaceNames[f])) continue;
+      if (f >= faces) {  // a 2D grid: the face along z does not exist
+        w->problems().add(w->key_path(kFaceNames[f]),
+                          std::string("a 2D grid (grid.geometry \"") + geometry +
+                              "\") has no face along z; expected faces x-, x+, y- and y+ only");
+        w->ignore(kFaceNames[f]);
+        continue;
+      }
       if (g.faces[f] != FaceCondition::wall) {
         w->problems().add(w->key_path(kFaceNames[f]),
                           std::string("face ") + kFaceNames[f] +

@@ -109,11 +109,11 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
   }
 }
 
-// On a 2D grid every body must have its 2D form (mpm/scene/planar_form.hpp) and move in the
-// plane: along the axis when axisymmetric (a uniform radial velocity is no body of revolution's),
-// with no z component in plane strain; gravity likewise.
+// Every body must have its grid's form (scene/grid_geometry.hpp form_problem: on a 2D grid the
+// 2D form, mpm/scene/planar_form.hpp) and move as the grid models: along the axis when
+// axisymmetric (a uniform radial velocity is no body of revolution's), with no z component in
+// plane strain; gravity likewise. A 2D grid has one cell and one box along z.
 void check_planar_scene(InputProblems& problems, Scene& s) {
-  if (!s.grid.planar()) return;
   visit_geometry(s.grid.geometry, [&](auto geometry) {
     using Grid = decltype(geometry);
     const std::string grid = "grid.geometry \"" + std::string(Grid::kName) + "\"";
@@ -125,14 +125,15 @@ void check_planar_scene(InputProblems& problems, Scene& s) {
       if (!Grid::moves_in_model(o.velocity))
         problems.add(key + "/velocity",
                      "initial velocity " + vec_text(o.velocity) + " on " + grid + ": " + expected);
-      o.particles_per_cell[2] = 1;  // the one cell along z
+      if constexpr (Grid::kMeshAxes < 3) o.particles_per_cell[2] = 1;  // the one cell along z
     }
     if (!Grid::moves_in_model(s.solver.gravity))
       problems.add("/solver/gravity",
                    "gravity " + vec_text(s.solver.gravity) + " on " + grid + ": " + expected);
-    if (s.solver.ranks_per_axis[2] > 1)
-      problems.add("/solver/ranks_per_axis",
-                   "a 2D grid is split in x and y only; expected [px, py] (" + grid + ")");
+    if constexpr (Grid::kMeshAxes < 3)
+      if (s.solver.ranks_per_axis[2] > 1)
+        problems.add("/solver/ranks_per_axis",
+                     "a 2D grid is split in x and y only; expected [px, py] (" + grid + ")");
   });
 }
 

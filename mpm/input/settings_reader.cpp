@@ -87,8 +87,8 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
   const auto& p = s.ranks_per_axis;
   if ((p[0] == 0 || p[1] == 0 || p[2] == 0) && !(p[0] == 0 && p[1] == 0 && p[2] == 0))
     r.problems().add(r.key_path("ranks_per_axis"),
-                     "expected three integers >= 1, [0, 0, 0] for the automatic split, or "
-                     "\"least_loaded\"");
+                     "expected three integers >= 1 ([px, py] on a 2D grid), [0, 0, 0] for the "
+                     "automatic split ([0, 0] on a 2D grid), or \"least_loaded\"");
   r.reject_unknown_keys();
 }
 

@@ -64,8 +64,9 @@ struct Particles {
 };
 
 /// One per-particle array: its name (the checkpoint's tag), its SI unit ("-" for indices, codes
-/// and flags; a 2D grid's extensive values are per metre of thickness or per ring, scene.hpp
-/// GridGeometry), where it lives, and whether it is optional (empty unless the scene uses it).
+/// and flags; a 2D grid's extensive values are per metre of thickness or per ring,
+/// scene/grid_geometry.hpp), where it lives, and whether it is optional (empty unless the scene
+/// uses it).
 template <class T>
 struct ParticleArray {
   using Element = T;

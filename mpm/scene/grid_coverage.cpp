@@ -22,6 +22,13 @@ GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& spec) {
     grid.lower(2) = -std::numeric_limits<double>::infinity();
     grid.upper(2) = std::numeric_limits<double>::infinity();
   }
+  // Rings about x (axisymmetric): a point of the body is modelled where its radius is, so it is
+  // taken at (x, r, 0); the bound below sees the grid's radial range on both sides of the axis.
+  const bool rings = spec.geometry_facts().rings;
+  if (rings) grid.lower(1) = -grid.upper(1);
+  const auto on_grid = [&](const Vec3& x) {
+    return rings ? Vec3(x(0), std::hypot(x(1), x(2)), 0.0) : x;
+  };
   GridCoverage c;
   const auto [lo, hi] = bounds(geometry);
   const Vec3 extent = hi - lo;
@@ -50,9 +57,10 @@ GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& spec) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) {
-        const Vec3 x = lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5));
-        if (!inside(geometry, x)) continue;
+        const Vec3 point = lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5));
+        if (!inside(geometry, point)) continue;
         ++body;
+        const Vec3 x = on_grid(point);
         if (in_grid(grid, x)) {
           ++in;
           continue;
@@ -67,7 +75,8 @@ GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& spec) {
           if (grid.faces[std::size_t(face)] == FaceCondition::symmetric)
             mirror(d) = 2.0 * plane - x(d);
         }
-        if (in_grid(grid, mirror) && inside(geometry, mirror)) continue;  // modelled by symmetry
+        // modelled by symmetry (a ring's mirror across the axis is itself: never reached)
+        if (in_grid(grid, mirror) && inside(geometry, mirror)) continue;
         ++lost;
         for (std::size_t f = 0; f < 6; ++f) c.lost_through[f] = c.lost_through[f] || beyond[f];
       }

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
@@ -286,6 +287,7 @@ inline constexpr GridGeometry kDefaultGeometry = kGeometryFacts[0].id;
 
 /// The facts of geometry g: an array load, not a switch (cheap in contact's per-node loop).
 constexpr const GeometryFacts& facts(GridGeometry g) {
+  assert(static_cast<std::size_t>(g) < kGeometryFacts.size());  // the reader makes no other
   return kGeometryFacts[static_cast<std::size_t>(g)];
 }
 
@@ -337,6 +339,7 @@ struct Visit {
 /// variant). Every f(G{}) must return one type.
 template <class F>
 decltype(auto) visit_geometry(GridGeometry g, F&& f) {
+  assert(static_cast<std::size_t>(g) < kGeometryCount);  // else the last line is visited
   return WithEveryGeometry<detail::Visit>::apply(g, std::forward<F>(f));
 }
 

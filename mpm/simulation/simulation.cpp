@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "mpm/simulation/advance.hpp"
 #include "mpm/simulation/diagnosis.hpp"

@@ -7,11 +7,12 @@ A geometry's terms live in its struct in mpm/scene/grid_geometry.hpp. The code o
 reads them through the catalogue: a struct member at compile time (GeometryOf<G>, a shape's
 OnGrid), facts(g) or the GridSpec accessors that read it, or visit_geometry(g, f). This fails,
 naming file:line, on the spellings that branch on one geometry instead:
-- an enumerator, GridGeometry::three_d (or any other; kDefaultGeometry, kAxisymmetric and
-  kPlaneStrain are the catalogue's names for the shapes' template arguments);
+- an enumerator, GridGeometry::three_d (or any other), one of the header's names for one geometry
+  (kAxisymmetric, kPlaneStrain: the tests' shape arguments), or a geometry's struct by name
+  (AxisymmetricGrid::kId == g); kDefaultGeometry, the catalogue's first line, is allowed;
 - a switch on a geometry, or a geometry cast to an integer (an index into a hand-made table);
-- a string literal that is a geometry's name, in mpm/ and commands/ (the reader takes the names
-  from the catalogue).
+- a string literal that is a geometry's name, in mpm/, commands/ and python/bindings/ (the reader
+  takes the names from the catalogue).
 Scanned: mpm/, commands/, campaigns/ (C++ only; a campaign's "axisymmetric" is a scene's name)
 and python/bindings/, with // comments removed. Not scanned: tests/, which name geometries on
 purpose. Not forbidden: planar(), dimensions(), is_domain_face(), which read the catalogue. A
@@ -27,6 +28,8 @@ HOME = "mpm/scene/grid_geometry.hpp"
 NAMES = ("3d", "axisymmetric", "plane_strain")
 RULES = [
     (re.compile(r"\bGridGeometry::\w+"), "names a geometry's enumerator"),
+    (re.compile(r"\b(?:kAxisymmetric|kPlaneStrain|ThreeDGrid|AxisymmetricGrid|PlaneStrainGrid)\b"),
+     "names one geometry of the catalogue"),
     (re.compile(r"\bswitch\s*\([^)]*geometry\b", re.I), "switches on a geometry"),
     (re.compile(r"\b(?:int|static_cast<int>|std::size_t|static_cast<std::size_t>)\s*\(\s*"
                 r"[\w.()]*geometry\s*\)", re.I), "casts a geometry to an index"),

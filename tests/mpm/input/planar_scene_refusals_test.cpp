@@ -142,6 +142,28 @@ BOOST_AUTO_TEST_CASE(a_face_along_z_is_refused) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(friction_on_a_face_along_z_is_refused_as_that_face) {
+  // Not "make z+ a wall": a 2D grid has no such face (a new user's trial, issue 54).
+  Json doc = plane_strain_block();
+  doc["grid"]["boundary"]["x-"] = "wall";
+  doc["grid"]["wall_friction"] = {{"x-", 0.2}, {"z+", 0.3}};
+  check_refused(doc, {"/grid/wall_friction/z+: a 2D grid (grid.geometry \"plane_strain\") has no "
+                      "face along z; expected faces x-, x+, y- and y+ only"});
+  BOOST_TEST(scene_error_of(doc).find("is not a wall") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_automatic_split_of_a_2d_grid_is_two_zeros) {
+  // [0, 0] is [0, 0, 0], the automatic split; [2, 1] is two boxes along x, one along z.
+  Json doc = axisymmetric_rod();
+  doc["solver"]["ranks_per_axis"] = {0, 0};
+  BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{0, 0, 0}));
+  doc["solver"]["ranks_per_axis"] = {2, 1};
+  BOOST_TEST((read_scene(doc, "test.json").solver.ranks_per_axis == std::array<int, 3>{2, 1, 1}));
+  doc["solver"]["ranks_per_axis"] = {2, 0};
+  check_refused(doc, {"/solver/ranks_per_axis: expected three integers >= 1 ([px, py] on a 2D "
+                      "grid), [0, 0, 0] for the automatic split ([0, 0] on a 2D grid)"});
+}
+
 BOOST_AUTO_TEST_CASE(three_numbers_where_two_are_expected_are_refused) {
   Json doc = axisymmetric_rod();
   doc["grid"]["lower"] = {0.0, 0.0, -0.005};

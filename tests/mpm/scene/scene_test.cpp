@@ -137,8 +137,9 @@ BOOST_AUTO_TEST_CASE(ranks_per_axis_is_all_positive_or_all_zero_or_a_rule) {
                     "least_loaded") != std::string::npos);
   doc["solver"]["ranks_per_axis"] = {2, 0, 1};
   e = scene_error_of(doc);
-  BOOST_TEST(e.find("/solver/ranks_per_axis: expected three integers >= 1, [0, 0, 0] for the "
-                    "automatic split, or \"least_loaded\"") != std::string::npos);
+  BOOST_TEST(e.find("/solver/ranks_per_axis: expected three integers >= 1 ([px, py] on a 2D "
+                    "grid), [0, 0, 0] for the automatic split ([0, 0] on a 2D grid), or "
+                    "\"least_loaded\"") != std::string::npos);
   doc["solver"]["ranks_per_axis"] = {2, -1, 1};
   e = scene_error_of(doc);
   BOOST_TEST(e.find("/solver/ranks_per_axis: expected integers in [0, 1048576]") !=
