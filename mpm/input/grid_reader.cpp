@@ -105,6 +105,71 @@ Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
   return out;
 }
 
+namespace {
+
+// A 2D grid's z faces, named under grid.boundary or grid.wall_friction.
+std::string no_face_along_z(const std::string& geometry) {
+  return "a 2D grid (grid.geometry \"" + geometry +
+         "\") has no face along z; expected faces x-, x+, y- and y+ only";
+}
+
+// grid.boundary and grid.wall_friction: the condition of each face the geometry reads (the rest,
+// a 2D grid's z faces, are free), its axis face a mirror, friction only on a wall.
+void read_faces(JsonReader& r, GridSpec& g, const std::string& geometry) {
+  g.faces.fill(FaceCondition::symmetric);
+  // A 2D grid has no faces along z (its one cell of 1 m is not a mesh axis): they are free.
+  const int faces = g.geometry_facts().faces_read, axis_face = g.geometry_facts().axis_face;
+  for (int f = faces; f < 6; ++f) g.faces[f] = FaceCondition::free;
+  if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed, free or wall")) {
+    for (int f = faces; f < 6; ++f)
+      if (b->has(kFaceNames[f])) {
+        b->problems().add(b->key_path(kFaceNames[f]), no_face_along_z(geometry));
+        b->ignore(kFaceNames[f]);
+      }
+    for (int f = 0; f < faces; ++f) {
+      const std::string c = b->choice(kFaceNames[f], {"symmetric", "fixed", "free", "wall"},
+                                      "grid face condition (symmetric: frictionless mirror plane; "
+                                      "wall: rigid wall that never pulls, with friction)",
+                                      "symmetric");
+      g.faces[f] = c == "fixed"  ? FaceCondition::fixed
+                   : c == "free" ? FaceCondition::free
+                   : c == "wall" ? FaceCondition::wall
+                                 : FaceCondition::symmetric;
+      if (f == axis_face && c != "symmetric")
+        b->problems().add(b->key_path(kFaceNames[f]),
+                          "the face y- of an axisymmetric grid is the axis of symmetry, where the "
+                          "radial velocity is zero: expected \"symmetric\", got \"" +
+                              c + "\"");
+    }
+    b->reject_unknown_keys();
+  }
+  if (auto w = r.optional_child("wall_friction", "Coulomb friction coefficient per wall face")) {
+    for (int f = 0; f < 6; ++f) {
+      if (!w->has(kFaceNames[f])) continue;
+      if (f >= faces) {  // a 2D grid: the face along z does not exist
+        w->problems().add(w->key_path(kFaceNames[f]), no_face_along_z(geometry));
+        w->ignore(kFaceNames[f]);
+        continue;
+      }
+      if (g.faces[f] != FaceCondition::wall) {
+        w->problems().add(w->key_path(kFaceNames[f]),
+                          std::string("face ") + kFaceNames[f] +
+                              " is not a wall: friction acts only on a face whose "
+                              "grid.boundary." +
+                              kFaceNames[f] + " is \"wall\"");
+        w->ignore(kFaceNames[f]);  // reported above, not also as an unknown key
+        continue;
+      }
+      g.wall_friction[f] =
+          w->number(kFaceNames[f], Range::closed(0.0, 10.0), "Coulomb coefficient mu [-]");
+      w->amend_description(kFaceNames[f], [](KeyDescription& d) { d.default_value = "0"; });
+    }
+    w->reject_unknown_keys();
+  }
+}
+
+}  // namespace
+
 void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   JsonReader r = root.child("grid", "background grid");
   const Json& n = at(doc, "grid");
@@ -143,60 +208,7 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
                      "0, got " +
                          got.str());
   }
-  g.faces.fill(FaceCondition::symmetric);
-  // A 2D grid has no faces along z (its one cell of 1 m is not a mesh axis): they are free.
-  const int faces = g.geometry_facts().faces_read;
-  for (int f = faces; f < 6; ++f) g.faces[f] = FaceCondition::free;
-  if (auto b = r.optional_child("boundary", "condition per face: symmetric, fixed, free or wall")) {
-    for (int f = faces; f < 6; ++f)
-      if (b->has(kFaceNames[f])) {
-        b->problems().add(b->key_path(kFaceNames[f]),
-                          std::string("a 2D grid (grid.geometry \"") + geometry +
-                              "\") has no face along z; expected faces x-, x+, y- and y+ only");
-        b->ignore(kFaceNames[f]);
-      }
-    for (int f = 0; f < faces; ++f) {
-      const std::string c = b->choice(kFaceNames[f], {"symmetric", "fixed", "free", "wall"},
-                                      "grid face condition (symmetric: frictionless mirror plane; "
-                                      "wall: rigid wall that never pulls, with friction)",
-                                      "symmetric");
-      g.faces[f] = c == "fixed"  ? FaceCondition::fixed
-                   : c == "free" ? FaceCondition::free
-                   : c == "wall" ? FaceCondition::wall
-                                 : FaceCondition::symmetric;
-      if (f == axis_face && c != "symmetric")
-        b->problems().add(b->key_path(kFaceNames[f]),
-                          "the face y- of an axisymmetric grid is the axis of symmetry, where the "
-                          "radial velocity is zero: expected \"symmetric\", got \"" +
-                              c + "\"");
-    }
-    b->reject_unknown_keys();
-  }
-  if (auto w = r.optional_child("wall_friction", "Coulomb friction coefficient per wall face")) {
-    for (int f = 0; f < 6; ++f) {
-      if (!w->has(kFaceNames[f])) continue;
-      if (f >= faces) {  // a 2D grid: the face along z does not exist
-        w->problems().add(w->key_path(kFaceNames[f]),
-                          std::string("a 2D grid (grid.geometry \"") + geometry +
-                              "\") has no face along z; expected faces x-, x+, y- and y+ only");
-        w->ignore(kFaceNames[f]);
-        continue;
-      }
-      if (g.faces[f] != FaceCondition::wall) {
-        w->problems().add(w->key_path(kFaceNames[f]),
-                          std::string("face ") + kFaceNames[f] +
-                              " is not a wall: friction acts only on a face whose "
-                              "grid.boundary." +
-                              kFaceNames[f] + " is \"wall\"");
-        w->ignore(kFaceNames[f]);  // reported above, not also as an unknown key
-        continue;
-      }
-      g.wall_friction[f] =
-          w->number(kFaceNames[f], Range::closed(0.0, 10.0), "Coulomb coefficient mu [-]");
-      w->amend_description(kFaceNames[f], [](KeyDescription& d) { d.default_value = "0"; });
-    }
-    w->reject_unknown_keys();
-  }
+  read_faces(r, g, geometry);
   g.active_blocks = r.boolean_or(
       "active_blocks", true,
       "grid work only where the particles are (false: every node of the box every step)");
