@@ -187,11 +187,16 @@ void read_crater(InputProblems& problems, const Json& out, Scene& s, bool check_
       spec.axis = std::array<double, 2>{
           c.number("axis_y", Range::any(), "y of the crater axis [m] (quarter model: 0)"),
           c.number("axis_z", Range::any(), "z of the crater axis [m] (quarter model: 0)")};
-      // An axisymmetric crater is centred on the axis of symmetry, y = z = 0.
-      if (s.grid.geometry_facts().rings && ((*spec.axis)[0] != 0.0 || (*spec.axis)[1] != 0.0))
-        problems.add(c.key_path("axis_y"),
+      // An axisymmetric crater is centred on the axis of symmetry, y = z = 0: the key that is not
+      // 0 is named (a missing one is already a problem of its own).
+      for (const auto& [i, key] : {std::pair{0, "axis_y"}, std::pair{1, "axis_z"}}) {
+        const double a = (*spec.axis)[std::size_t(i)];
+        if (!s.grid.geometry_facts().rings || !std::isfinite(a) || a == 0.0) continue;
+        problems.add(c.key_path(key),
                      "the crater of an axisymmetric scene is centred on the axis of symmetry: "
                      "expected axis_y = axis_z = 0, or neither key");
+        break;
+      }
     }
     c.reject_unknown_keys();
     if (object >= 0 && std::isfinite(spec.face)) {

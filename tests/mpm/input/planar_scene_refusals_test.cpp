@@ -164,6 +164,21 @@ BOOST_AUTO_TEST_CASE(the_automatic_split_of_a_2d_grid_is_two_zeros) {
                       "grid), [0, 0, 0] for the automatic split ([0, 0] on a 2D grid)"});
 }
 
+BOOST_AUTO_TEST_CASE(an_off_axis_crater_names_the_key_that_is_off) {
+  // axis_z, not axis_y (a new user's trial, issue 54); a missing one is its own problem only.
+  Json doc = axisymmetric_rod();
+  doc["output"]["crater"] = {{"object", "rod"}, {"face", 0.02}, {"axis_y", 0.0}, {"axis_z", 1e-3}};
+  check_refused(doc, {"/output/crater/axis_z: the crater of an axisymmetric scene is centred on "
+                      "the axis of symmetry"});
+  BOOST_TEST(scene_error_of(doc).find("/output/crater/axis_y") == std::string::npos);
+  doc["output"]["crater"].erase("axis_y");
+  const std::string e = scene_error_of(doc);
+  BOOST_TEST(e.find("/output/crater/axis_y") != std::string::npos, e);
+  BOOST_TEST(e.find("centred on the axis") != std::string::npos, e);  // axis_z is still off
+  doc["output"]["crater"]["axis_z"] = 0.0;
+  BOOST_TEST(scene_error_of(doc).find("centred on the axis") == std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(three_numbers_where_two_are_expected_are_refused) {
   Json doc = axisymmetric_rod();
   doc["grid"]["lower"] = {0.0, 0.0, -0.005};
