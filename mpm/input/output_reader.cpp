@@ -189,14 +189,12 @@ void read_crater(InputProblems& problems, const Json& out, Scene& s, bool check_
           c.number("axis_z", Range::any(), "z of the crater axis [m] (quarter model: 0)")};
       // An axisymmetric crater is centred on the axis of symmetry, y = z = 0: the key that is not
       // 0 is named (a missing one is already a problem of its own).
-      for (const auto& [i, key] : {std::pair{0, "axis_y"}, std::pair{1, "axis_z"}}) {
-        const double a = (*spec.axis)[std::size_t(i)];
-        if (!s.grid.geometry_facts().rings || !std::isfinite(a) || a == 0.0) continue;
-        problems.add(c.key_path(key),
+      const auto off = [](double a) { return std::isfinite(a) && a != 0.0; };
+      const auto& [y, z] = *spec.axis;
+      if (s.grid.geometry_facts().rings && (off(y) || off(z)))
+        problems.add(c.key_path(off(y) ? "axis_y" : "axis_z"),
                      "the crater of an axisymmetric scene is centred on the axis of symmetry: "
                      "expected axis_y = axis_z = 0, or neither key");
-        break;
-      }
     }
     c.reject_unknown_keys();
     if (object >= 0 && std::isfinite(spec.face)) {

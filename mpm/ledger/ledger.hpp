@@ -47,6 +47,13 @@ struct LedgerRow {
   double energy_error = 0.0;
 };
 
+/// The components of `v` that are the body's (`mask` 1), the others +0 (the radial and hoop
+/// components of a revolved body: scene/grid_geometry.hpp kMomentumComponents). A product with 0
+/// would keep the sign of a negative one, and history.csv and summary.json would print -0.
+inline Vec3 body_components(const Vec3& v, const Vec3& mask) {
+  return {mask(0) != 0.0 ? v(0) : 0.0, mask(1) != 0.0 ? v(1) : 0.0, mask(2) != 0.0 ? v(2) : 0.0};
+}
+
 class Ledger {
  public:
   /// `with_external`: gravity is on, so body-force impulse and work get columns too;
@@ -140,12 +147,7 @@ class Ledger {
   bool with_external_, with_outflow_;
   Vec3 components_;
   ExtensiveUnits units_;
-  /// The components of `v` that are the body's (components_), the others +0: a product with 0
-  /// would keep the sign of a negative one, and history.csv prints -0.
-  Vec3 booked(const Vec3& v) const {
-    return {components_(0) != 0.0 ? v(0) : 0.0, components_(1) != 0.0 ? v(1) : 0.0,
-            components_(2) != 0.0 ? v(2) : 0.0};
-  }
+  Vec3 booked(const Vec3& v) const { return body_components(v, components_); }
   State s_;
   std::vector<std::string> sink_names_;
   std::vector<bool> in_balance_;

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "mpm/ledger/ledger.hpp"
+
 namespace impact::mpm {
 
 namespace {
@@ -81,7 +83,7 @@ std::vector<double> Gauges::read(const Particles& P) const {
 Observables::Observables(const Scene& scene, const Particles& initial, const Communicator& comm)
     : max_pressure_(scene.objects.size(), -std::numeric_limits<double>::infinity()),
       max_pressure_time_(scene.objects.size(), 0.0),
-      momentum_components_(scene.grid.geometry_facts().momentum_components),
+      momentum_components_(scene.grid.geometry_facts().momentum_components.data()),
       units_(ExtensiveUnits::of(scene.grid.per_metre_of_thickness())),
       comm_(comm) {
   for (const SceneObject& o : scene.objects) names_.push_back(o.name);
@@ -122,10 +124,8 @@ Json Observables::summary(const Particles& P) const {
     const double* s = &sums[5 * o];
     Vec3 v = s[0] > 0.0 ? Vec3(Vec3(s[1], s[2], s[3]) / s[0]) : Vec3::Zero();
     // A ring's radial velocities cancel around it: the revolved body's mean velocity is axial
-    // (its momentum too: the ledger books the axial component only, ledger.hpp). Set to +0, not
-    // multiplied by 0 (which would give -0, and NaN from NaN).
-    for (int d = 0; d < 3; ++d)
-      if (momentum_components_[std::size_t(d)] == 0.0) v(d) = 0.0;
+    // (its momentum too: the ledger books the axial component only, ledger.hpp).
+    v = body_components(v, momentum_components_);
     const bool sampled = std::isfinite(max_pressure_[o]);
     objects[names_[o]] = {{"mass [" + units_.mass + "]", s[0]},
                           {"mean_velocity [m/s]", Json::array({v(0), v(1), v(2)})},

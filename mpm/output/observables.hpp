@@ -13,7 +13,6 @@
 // collective, and no rank ever needs another's particles.
 #pragma once
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -91,7 +90,7 @@ class Observables {
   double crater_face_ = 0.0;
   /// The velocity components that are physical (1) or cancel by symmetry (0; an axisymmetric
   /// grid's radial and hoop ones: scene/grid_geometry.hpp kMomentumComponents).
-  std::array<double, 3> momentum_components_{};
+  Vec3 momentum_components_ = Vec3::Ones();
   ExtensiveUnits units_;  ///< of the objects' mass and kinetic energy (plane strain: per metre)
   const Communicator& comm_;
 };
