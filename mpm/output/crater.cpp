@@ -9,11 +9,6 @@ namespace impact::mpm {
 
 namespace {
 
-// The seed index of particle p (on one rank the array index).
-std::uint64_t seed_index(const Particles& P, std::size_t p) {
-  return P.id.empty() ? p : P.id[p];
-}
-
 // The weighted median of u: the smallest u at which the weight below it reaches half.
 double weighted_median(std::vector<FacePoint> face) {
   std::sort(face.begin(), face.end(),

@@ -9,15 +9,6 @@
 
 namespace impact::mpm {
 
-namespace {
-
-// The seed index of particle p (on one rank the array index).
-std::uint64_t seed_index(const Particles& P, std::size_t p) {
-  return P.id.empty() ? p : P.id[p];
-}
-
-}  // namespace
-
 Gauges::Gauges(const Scene& scene, const Particles& initial, const Communicator& comm)
     : comm_(comm) {
   for (const GaugeSpec& g : scene.output.gauges) {

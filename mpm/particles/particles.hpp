@@ -98,6 +98,11 @@ inline constexpr auto kParticleArrays = std::make_tuple(
 static_assert(aggregate_arity<Particles>() == std::tuple_size_v<decltype(kParticleArrays)>,
               "a Particles array is missing from kParticleArrays");
 
+/// The seed index of particle p: Particles::id on several ranks, the array index on one.
+inline std::uint64_t seed_index(const Particles& P, std::size_t p) {
+  return P.id.empty() ? p : P.id[p];
+}
+
 /// f(line) for every line of kParticleArrays, in order.
 template <class F>
 constexpr void for_each_particle_array(F&& f) {

@@ -80,7 +80,7 @@ std::vector<PlaneGhost> exchange_ghosts(const Particles& P, const Grid& G,
     PlaneGhost g;
     std::memset(static_cast<void*>(&g), 0, sizeof g);  // no stray padding bytes on the wire
     g.x = P.x[p];
-    g.id = P.id.empty() ? p : P.id[p];
+    g.id = seed_index(P, std::size_t(p));
     g.object = P.object[p];
     g.field = P.field[p];
     for (const int a : slabs[0])
@@ -190,7 +190,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
   };
   const auto seed_id = [&](std::ptrdiff_t q) -> std::uint64_t {
     if (q >= np) return ghosts[std::size_t(q - np)].id;
-    return P.id.empty() ? std::uint64_t(q) : P.id[q];
+    return seed_index(P, std::size_t(q));
   };
   const NodeBox stored = G.stored();
   const int sx = G.stride_x(), sy = G.stride_y();
