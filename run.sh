@@ -35,8 +35,9 @@ cd "$(dirname "$0")"
 # python3-dev and pybind11-dev build the Python module impact (docs/python.md; optional: without
 # them it is left out).
 # libcli11-dev parses every program's command line (support/command_line.hpp).
+# libmuparser-dev compiles the expressions of scenes (mpm/scene/expression.hpp).
 PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev libcli11-dev
-  python3-matplotlib python3-dev pybind11-dev)
+  libmuparser-dev python3-matplotlib python3-dev pybind11-dev)
 # clang-14 + libclang-rt-14-dev (libFuzzer, sanitizer runtimes) build the fuzz targets (test, fuzz).
 FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
 # clang-format-14 checks every C++ file against .clang-format (test `clang_format`); pytest runs

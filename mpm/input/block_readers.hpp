@@ -39,18 +39,30 @@ void apply_physics_overrides(const PhysicsSpec& ph, std::vector<SceneMaterial>& 
 
 // output_reader.cpp
 void read_output(JsonReader& root, const Json& doc, const std::string& file, double max_time,
-                 OutputSpec& o);
+                 const NamedConstants& constants, OutputSpec& o);
 void read_observables(InputProblems& problems, const Json& doc, Scene& s);
+
+// expression_reader.cpp: /constants, and three components each a number or an expression (a
+// component's problem names its key path, the character and why; absent: `fallback`, or zero
+// for a key without a default)
+void read_constants(JsonReader& root, const Json& doc, NamedConstants& out);
+VectorExpression read_vector_expression(JsonReader& r, const Json& node, std::string_view key,
+                                        std::string_view meaning, const NamedConstants& constants,
+                                        const std::optional<Vec3>& fallback);
 
 // bodies_reader.cpp: materials and objects
 void read_materials(JsonReader& root, const Json& doc, std::vector<SceneMaterial>& out);
 void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMaterial>& materials,
-                  std::vector<SceneObject>& out);
+                  const NamedConstants& constants, std::vector<SceneObject>& out);
 
 // scene_checks.cpp: across blocks
 void check_objects_in_grid(InputProblems& problems, const Scene& s);
 void check_planar_scene(InputProblems& problems, Scene& s);
 void check_field_count(InputProblems& problems, const Scene& s);
+/// The expressions of the objects' velocities and body forces at their seed points (t = 0): a
+/// value that is not finite is refused, naming the point; sets each object's velocity peak and
+/// initial body-force peak for the estimates, and checks the velocity's units there.
+void check_initial_fields(InputProblems& problems, Scene& s);
 void warn_of_contact_within_one_material(Scene& s);
 
 }  // namespace impact::mpm::scene_input

@@ -42,7 +42,7 @@ void read_materials(JsonReader& root, const Json& doc, std::vector<SceneMaterial
 }
 
 void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMaterial>& materials,
-                  std::vector<SceneObject>& out) {
+                  const NamedConstants& constants, std::vector<SceneObject>& out) {
   JsonReader r = root.child("objects", "named objects (bodies) to seed with particles");
   const Json& n = at(doc, "objects");
   if (!n.is_object()) return;
@@ -69,11 +69,18 @@ void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMate
     JsonReader g = o.child("geometry", "shape of the object");
     obj.geometry = read_geometry(g, at(on, "geometry"));
     g.reject_unknown_keys();
-    obj.velocity = read_vec3(o, on, "velocity", "initial velocity [m/s]", Vec3::Zero());
+    obj.velocity_field = read_vector_expression(
+        o, on, "velocity", "initial velocity [m/s]; an expression is evaluated at t = 0", constants,
+        Vec3::Zero());
+    obj.velocity = obj.velocity_field.value;  // an expression's peak joins after the checks
     for (int d = 0; d < 3; ++d) {
-      o.problems().check_units(o.key_path("velocity") + "/" + std::to_string(d), Quantity::speed,
-                               obj.velocity(d));
+      if (obj.velocity_field.text[std::size_t(d)].empty())
+        o.problems().check_units(o.key_path("velocity") + "/" + std::to_string(d), Quantity::speed,
+                                 obj.velocity(d));
     }
+    obj.body_force = read_vector_expression(
+        o, on, "body_force", "body force per unit mass b(X, t) [m/s^2], beside solver.gravity",
+        constants, Vec3::Zero());
     obj.temperature = o.quantity_or("temperature", 294.0, Quantity::temperature,
                                     Range::open(0.0, 1e4), "initial temperature [K]");
     obj.particles_per_cell =

@@ -17,7 +17,7 @@ namespace impact::mpm::scene_input {
 namespace fs = std::filesystem;
 
 void read_output(JsonReader& root, const Json& doc, const std::string& file, double max_time,
-                 OutputSpec& o) {
+                 const NamedConstants& constants, OutputSpec& o) {
   JsonReader r = root.optional_child("output", "what is written and where")
                      .value_or(JsonReader(empty_json_object(), "/output", root.problems()));
   const Json& n = at(doc, "output");
@@ -36,6 +36,12 @@ void read_output(JsonReader& root, const Json& doc, const std::string& file, dou
                      "expected a whole number of steps (0: off)");
   }
   o.checkpoint_interval_steps = static_cast<long>(every);
+  const VectorExpression exact = read_vector_expression(
+      r, n, "exact_displacement",
+      "exact displacement u(X, t) [m] of the particles: history columns displacement_error_rms "
+      "and _max (absent: none)",
+      constants, std::nullopt);
+  if (n.is_object() && n.contains("exact_displacement")) o.exact_displacement = exact;
   o.fields = {"velocity", "stress", "plastic_strain", "temperature", "damage", "mass"};
   r.read_elsewhere("fields", [&] {
     std::string names;

@@ -10,6 +10,7 @@
 #include "mpm/input/scene_keys.hpp"
 #include "mpm/scene/grid_coverage.hpp"
 #include "mpm/scene/grid_geometry.hpp"
+#include "mpm/scene/initial_fields.hpp"
 #include "mpm/scene/seed_points.hpp"
 
 namespace impact::mpm::scene_input {
@@ -109,6 +110,15 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
   }
 }
 
+// What a field's varying part may do on grid G (appended to the refusal of a uniform part).
+template <class G>
+std::string varying_part_note() {
+  if constexpr (G::kRings)  // a body of revolution
+    return " (a radial component may be an expression of X and Y that vanishes on the axis, a "
+           "field of revolution)";
+  return "";
+}
+
 // Every body must have its grid's form (scene/grid_geometry.hpp form_problem: on a 2D grid the
 // 2D form, mpm/scene/planar_form.hpp) and move as the grid models: along the axis when
 // axisymmetric (a uniform radial velocity is no body of revolution's), with no z component in
@@ -122,9 +132,24 @@ void check_planar_scene(InputProblems& problems, Scene& s) {
       const std::string key = "/objects/" + o.name;
       const std::string why = Grid::form_problem(o.geometry);
       if (!why.empty()) problems.add(key + "/geometry", why + " (" + grid + ")");
-      if (!Grid::moves_in_model(o.velocity))
-        problems.add(key + "/velocity",
-                     "initial velocity " + vec_text(o.velocity) + " on " + grid + ": " + expected);
+      // The uniform part of a field (numbers, and texts without a variable) must move the body as
+      // the grid models; a part that varies may be radial on an axisymmetric grid (a field of
+      // revolution, which vanishes on the axis), never along z on a 2D grid.
+      const Vec3 v = o.velocity_field.uniform_part(s.constants);
+      if (Grid::kMeshAxes < 3 && !o.velocity_field.text[2].empty())
+        problems.add(key + "/velocity/2",
+                     "no expression along z on " + grid + " (a 2D grid has no motion along z)");
+      if (!Grid::moves_in_model(v))
+        problems.add(key + "/velocity", "initial velocity " + vec_text(v) + " on " + grid + ": " +
+                                            expected + varying_part_note<Grid>());
+      const VectorExpression& b = o.body_force;
+      if (Grid::kMeshAxes < 3 && !b.text[2].empty())
+        problems.add(key + "/body_force/2",
+                     "no expression along z on " + grid + " (a 2D grid has no motion along z)");
+      const Vec3 uniform = b.uniform_part(s.constants);
+      if (!Grid::moves_in_model(uniform))
+        problems.add(key + "/body_force", "body force " + vec_text(uniform) + " on " + grid + ": " +
+                                              expected + varying_part_note<Grid>());
       if constexpr (Grid::kMeshAxes < 3) o.particles_per_cell[2] = 1;  // the one cell along z
     }
     if (!Grid::moves_in_model(s.solver.gravity))
@@ -135,6 +160,29 @@ void check_planar_scene(InputProblems& problems, Scene& s) {
         problems.add("/solver/ranks_per_axis",
                      "a 2D grid is split in x and y only; expected [px, py] (" + grid + ")");
   });
+}
+
+void check_initial_fields(InputProblems& problems, Scene& s) {
+  for (std::size_t i = 0; i < s.objects.size(); ++i) {
+    SceneObject& o = s.objects[i];
+    if (!o.velocity_field.has_text() && !o.body_force.has_text()) continue;
+    const InitialFields f = initial_fields(s, i);
+    const std::string key = "/objects/" + o.name;
+    if (f.non_finite_velocity)
+      problems.add(key + "/velocity", "not finite at the seed point X = " +
+                                          vec_text(*f.non_finite_velocity) + " m (t = 0)");
+    if (f.non_finite_body_force)
+      problems.add(key + "/body_force", "not finite at the seed point X = " +
+                                            vec_text(*f.non_finite_body_force) + " m at t = 0");
+    if (o.velocity_field.has_text()) {
+      o.velocity = f.velocity_peak;
+      for (int d = 0; d < 3; ++d)
+        if (!o.velocity_field.text[std::size_t(d)].empty())
+          problems.check_units(key + "/velocity/" + std::to_string(d), Quantity::speed,
+                               f.velocity_peak(d));
+    }
+    o.initial_body_force_peak = f.body_force_peak;
+  }
 }
 
 // Multi-field contact keeps per-node arrays of kMaxContactFields fields (contact.cpp): a scene

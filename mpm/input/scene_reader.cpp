@@ -23,12 +23,14 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   read_time(root, s.time, s.warnings);
   read_solver(root, doc, s.solver);
   read_physics(root, s.physics);
-  read_output(root, doc, file, s.time.max_time, s.output);
+  read_constants(root, doc, s.constants);
+  read_output(root, doc, file, s.time.max_time, s.constants, s.output);
   read_materials(root, doc, s.materials);
-  read_objects(root, doc, s.materials, s.objects);
+  read_objects(root, doc, s.materials, s.constants, s.objects);
   apply_physics_overrides(s.physics, s.materials);
   if (problems.empty()) check_planar_scene(problems, s);
   if (problems.empty()) check_objects_in_grid(problems, s);  // grid and objects valid
+  if (problems.empty()) check_initial_fields(problems, s);   // expressions at the seed points
   read_observables(problems, doc, s);
   check_field_count(problems, s);
   root.reject_unknown_keys();

@@ -42,11 +42,14 @@ struct Particles {
   /// The particle's seed index, the same on any number of ranks (mpm/parallel/migration.hpp: a
   /// rank holds some particles, in any order); empty on one rank, where it is the array index.
   std::vector<std::uint64_t> id;
+  /// Reference (seed) position X [m], what the body forces' expressions and the exact
+  /// displacement read (scene/expression.hpp); empty unless the scene has either.
+  std::vector<Vec3> X;
 
   /// f(array) for every per-particle array of kParticleArrays (below), optional ones (q, fault,
-  /// removed, id) included even when empty: what moves a particle whole (migration between ranks),
-  /// resizes, filters and checkpoints the particles visits the table, so a new field is one member
-  /// here, one line there and its use.
+  /// removed, id, X) included even when empty: what moves a particle whole (migration between
+  /// ranks), resizes, filters and checkpoints the particles visits the table, so a new field is one
+  /// member here, one line there and its use.
   template <class F>
   void for_each_array(F&& f);
   template <class F>
@@ -93,7 +96,8 @@ inline constexpr auto kParticleArrays = std::make_tuple(
     ParticleArray<double>{"q", "Pa", &Particles::q, true},
     ParticleArray<std::uint8_t>{"fault", "-", &Particles::fault, true},
     ParticleArray<std::uint8_t>{"removed", "-", &Particles::removed, true},
-    ParticleArray<std::uint64_t>{"id", "-", &Particles::id, true});
+    ParticleArray<std::uint64_t>{"id", "-", &Particles::id, true},
+    ParticleArray<Vec3>{"X", "m", &Particles::X, true});
 
 static_assert(aggregate_arity<Particles>() == std::tuple_size_v<decltype(kParticleArrays)>,
               "a Particles array is missing from kParticleArrays");

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "mpm/particles/particles.hpp"
+#include "mpm/scene/initial_fields.hpp"
 
 namespace impact::mpm {
 
@@ -49,11 +50,12 @@ void seed_object(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3&
       scene.grid.geometry, [](auto geometry) { return &decltype(geometry)::particle_volume; });
   const PointState s0 = model.initial_state(o.temperature);
   const double c = model.wave_speed(s0);
+  InitialVelocity velocity(scene, oi);  // numbers, or expressions at the seed point
   for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int) {
     if (!keep(x)) return;
     const double v0 = particle_volume(x, cell_share);
     p.x.push_back(x);
-    p.v.push_back(o.velocity);
+    p.v.push_back(velocity.at(x));
     p.mass.push_back(model.params().density * v0);
     p.volume0.push_back(v0);
     p.volume.push_back(v0);

@@ -8,6 +8,9 @@ RunOutputs::RunOutputs(const Scene& scene, const Particles& seeded, const Commun
       observables_(scene, seeded, comm),
       face_reach_(scene, seeded, comm),
       paths_(std::in_place, scene, seeded, comm),
+      displacement_error_(scene.output.exact_displacement
+                              ? std::optional<DisplacementError>(std::in_place, scene, comm)
+                              : std::nullopt),
       faulted_column_(scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle),
       comm_(comm) {}
 
@@ -15,6 +18,8 @@ void RunOutputs::open(const Scene& scene, const std::filesystem::path& dir, cons
                       const Ledger& ledger, const RunState* resumed) {
   if (resumed) paths_->begin_at(P);  // the particles chosen as seeded, from their state now
   std::vector<std::string> columns = gauges_.columns();
+  if (displacement_error_)
+    for (const std::string& c : DisplacementError::columns()) columns.push_back(c);
   if (faulted_column_) columns.push_back("faulted_particles [-]");
   const std::string history_file = (dir / "history.csv").string();
   if (resumed) {
@@ -38,6 +43,8 @@ std::vector<int> RunOutputs::write_history(const Simulation& sim, const Particle
   observables_.sample(P, sim.time());  // max pressure: sampled at history rows
   std::vector<double> extra = gauges_.read(P);
   gauge_extrema_.sample(extra, sim.time());  // the gauges' columns of this row
+  if (displacement_error_)
+    for (const double e : displacement_error_->read(P, sim.time())) extra.push_back(e);
   if (faulted_column_) extra.push_back(double(sim.faulted_particles()));
   if (history_) history_->write(sim.ledger(), extra);
   return face_reach_.sample(P, sim.time());

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "mpm/output/displacement_error.hpp"
 #include "mpm/output/face_reach.hpp"
 #include "mpm/output/gauge_extrema.hpp"
 #include "mpm/output/observables.hpp"
@@ -62,6 +63,7 @@ class RunOutputs {
   Observables observables_;
   FaceReach face_reach_;
   std::optional<ParticlePaths> paths_;
+  std::optional<DisplacementError> displacement_error_;  ///< output.exact_displacement
   bool faulted_column_;
   const Communicator& comm_;
   std::optional<HistoryCsv> history_;

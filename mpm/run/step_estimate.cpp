@@ -12,6 +12,12 @@ namespace impact::mpm {
 
 namespace {
 
+// What sets the body-force step: gravity alone, or with the objects' body forces at t = 0.
+std::string body_force_name(const Scene& scene) {
+  return scene.has_body_force() ? "solver.gravity + the largest objects.<name>.body_force"
+                                : "solver.gravity";
+}
+
 // Usual values of the factors of the count (a shipped scene: about 1e4 steps), against which the
 // key that drives an absurd count is found.
 constexpr double kUsualMaxTime = 1e-3;    // [s]
@@ -55,8 +61,8 @@ std::string driver_of(const Scene& scene, const StepEstimate& e) {
   if (e.capped) {
     add(kUsualMaxDt / t.max_dt, "time.max_dt (", t.max_dt, " s)");
   } else if (e.gravity_limited) {
-    add(kUsualMultiplier * kUsualCell / kUsualSignal / e.dt, "solver.gravity (",
-        scene.solver.gravity.stableNorm(), " m/s^2)");
+    add(kUsualMultiplier * kUsualCell / kUsualSignal / e.dt, body_force_name(scene), " (",
+        scene.body_force_at_start(), " m/s^2)");
   } else {
     add(kUsualMultiplier / t.multiplier, "time.multiplier (", t.multiplier, ")");
     add(kUsualCell / scene.grid.min_spacing(), "grid.cells (the smallest cell ",
@@ -97,8 +103,8 @@ StepEstimate estimate_steps(const Scene& scene) {
   }
   const double waves =
       stable_time_step(scene.grid.min_spacing(), e.signal_speed, scene.time.multiplier);
-  const double body = body_force_time_step(
-      scene.grid.min_spacing(), scene.solver.gravity.stableNorm(), scene.time.multiplier);
+  const double body = body_force_time_step(scene.grid.min_spacing(), scene.body_force_at_start(),
+                                           scene.time.multiplier);
   e.gravity_limited = body < waves;
   const double stable = std::min(waves, body);
   e.capped = scene.time.max_dt < stable;
@@ -148,8 +154,8 @@ std::string body_force_step_text(const Scene& scene) {
   std::ostringstream m;
   m.precision(3);
   m << "sqrt(time.multiplier " << scene.time.multiplier << " x the smallest cell "
-    << scene.grid.min_spacing() << " m / solver.gravity " << scene.solver.gravity.stableNorm()
-    << " m/s^2)";
+    << scene.grid.min_spacing() << " m / " << body_force_name(scene) << " "
+    << scene.body_force_at_start() << " m/s^2)";
   return m.str();
 }
 
@@ -165,7 +171,8 @@ std::string step_refusal(const Scene& scene) {
     m.precision(3);
     m << "refusing to start: the body-force step " << body_force_step_text(scene) << " = " << e.dt
       << " s is below time.min_dt = " << t.min_dt
-      << " s, so the run would stop at its first step; lower solver.gravity or time.min_dt";
+      << " s, so the run would stop at its first step; lower " << body_force_name(scene)
+      << " or time.min_dt";
     return m.str();
   }
   if (!(e.steps > t.max_estimated_steps)) return particle_step_refusal(scene, e);
@@ -177,7 +184,7 @@ std::string step_refusal(const Scene& scene) {
     m << "time.max_dt, below the stable step";
   } else if (e.gravity_limited) {
     m << body_force_step_text(scene)
-      << ", the step in which gravity alone carries a particle that far";
+      << ", the step in which the body force alone carries a particle that far";
   } else {
     const SceneObject& o = scene.objects[e.fastest];
     m << "time.multiplier " << t.multiplier << " x the smallest cell " << scene.grid.min_spacing()

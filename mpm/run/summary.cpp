@@ -11,6 +11,7 @@
 #include "mpm/run/memory.hpp"
 #include "mpm/run/scene_fingerprint.hpp"
 #include "mpm/run/step_estimate.hpp"
+#include "mpm/scene/initial_fields.hpp"
 #include "mpm/scene/seed_points.hpp"
 #include "mpm/step/step.hpp"
 
@@ -94,7 +95,10 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
         {in("geometric_volume", u.volume), exact},
         {in("geometric_mass", u.mass), rho * exact},
         {"volume_ratio", exact > 0 ? vol / exact : 0.0},
-        {in("kinetic_energy", u.energy), 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
+        {in("kinetic_energy", u.energy),
+         scene.objects[o].velocity_field.has_text()  // a field: summed over its seed points
+             ? initial_fields(scene, o).kinetic_energy
+             : 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
     total_mass += mass;
     total += n;
   }

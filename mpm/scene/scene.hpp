@@ -14,6 +14,7 @@
 #include "models/kinematics/deformation_gradient.hpp"
 #include "models/material/material.hpp"
 #include "mpm/geometry/geometry.hpp"
+#include "mpm/scene/expression.hpp"
 #include "mpm/scene/grid_geometry.hpp"
 
 namespace impact::mpm {
@@ -216,6 +217,9 @@ struct OutputSpec {
   long checkpoint_interval_steps = 0;
   /// A history column plastic_work [J] (mpm/step/step.hpp StressTotals::plastic_work).
   bool plastic_work = false;
+  /// An exact displacement u(X, t) [m] to measure the particles against: history columns
+  /// displacement_error_rms and _max (mpm/output/displacement_error.hpp); none: no columns.
+  std::optional<VectorExpression> exact_displacement;
 };
 
 struct SceneMaterial {
@@ -226,10 +230,23 @@ struct SceneMaterial {
 struct SceneObject {
   std::string name;
   Geometry geometry;
-  int material = 0;                                ///< index into Scene::materials
-  Vec3 velocity = Vec3::Zero();                    ///< initial velocity [m/s]
+  int material = 0;  ///< index into Scene::materials
+  /// Initial velocity [m/s]: the numbers of velocity_field; where it has expressions, their
+  /// value of largest magnitude over the seed points (mpm/scene/initial_fields.hpp), what the
+  /// estimates of one velocity per object read.
+  Vec3 velocity = Vec3::Zero();
+  /// The initial velocity as written: numbers, or expressions over X, Y, Z at t = 0.
+  VectorExpression velocity_field;
   double temperature = 294.0;                      ///< initial temperature [K]
   std::array<int, 3> particles_per_cell{2, 2, 2};  ///< the report's `res`
+  /// Body force per unit mass b(X, t) [m/s^2] on this object's particles, beside solver.gravity
+  /// (numbers or expressions; zero: none).
+  VectorExpression body_force;
+  /// max |b(X_p, 0)| over the seed points [m/s^2] (the reader's, mpm/scene/initial_fields.hpp):
+  /// what the step estimate takes of the body force.
+  double initial_body_force_peak = 0.0;
+
+  bool has_body_force() const { return body_force.has_text() || !body_force.value.isZero(0.0); }
 };
 
 struct Scene {
@@ -242,6 +259,8 @@ struct Scene {
   OutputSpec output;
   std::vector<SceneMaterial> materials;
   std::vector<SceneObject> objects;
+  /// Named numbers the expressions may use (top-level "constants") [SI].
+  NamedConstants constants;
   /// Admissible but suspicious settings (e.g. a multiplier above 1), "file: /key/path: why";
   /// the command line prints them on stderr.
   std::vector<std::string> warnings;
@@ -249,6 +268,23 @@ struct Scene {
   /// Velocity fields: one per material when contact is not single_velocity (and a companion per
   /// material with create_new_particles), else one shared field (ordinary MPM).
   int field_count() const;
+  /// Whether the particles keep their reference positions (Particles::X): a body force or an
+  /// exact displacement reads them.
+  bool needs_reference_positions() const {
+    return has_body_force() || output.exact_displacement.has_value();
+  }
+  /// |solver.gravity| + the largest initial body force of an object [m/s^2]: the body-force step's
+  /// at the start.
+  double body_force_at_start() const {
+    double b = 0.0;
+    for (const SceneObject& o : objects) b = std::max(b, o.initial_body_force_peak);
+    return solver.gravity.stableNorm() + b;
+  }
+  /// Whether an object has a body force (SceneObject::body_force).
+  bool has_body_force() const {
+    return std::any_of(objects.begin(), objects.end(),
+                       [](const SceneObject& o) { return o.has_body_force(); });
+  }
   /// The field a particle of material m starts in, and the companion it moves to on failure.
   int parent_field(int material) const;
   int companion_field(int material) const;

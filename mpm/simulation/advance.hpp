@@ -24,6 +24,8 @@ struct StepSetup {
   const ContactSpec* contact;                      ///< null with one velocity field
   const std::vector<HeatCapacity>& heat_capacity;  ///< per material, for friction heating
   const HaloExchange* halo;                        ///< null on one rank
+  /// b_p per particle of this step [m/s^2] (step/body_force.hpp); null: no body force.
+  const std::vector<Vec3>* body_force;
 };
 
 /// Attributes wall time to the phases of a step.
@@ -41,8 +43,8 @@ class PhaseClock {
   double last_;
 };
 
-/// Advances P by dt on G; `failure` is set (and the stress update skipped) when a particle fails
-/// in the grid-to-particle phase on any rank.
+/// Advances P by dt on G; `failure` is set (and the stress update skipped) when a
+/// particle fails in the grid-to-particle phase on any rank.
 template <class Shape>
 StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S,
                    ScatterOrder& order, const StepSetup& run, double dt,
@@ -52,7 +54,8 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   const bool usl = run.solver.scheme == Scheme::usl;
   compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n, once per step
   order_for_scatter(S, G, order);  // by band and colour: race-free scatters, any thread count
-  particles_to_grid<Shape>(P, G, S, order, dt, run.halo);  // m_I, p_I, f_I per field (eqs. 20-22)
+  const Vec3* body = run.body_force ? run.body_force->data() : nullptr;  // b(X_p, t^n)
+  particles_to_grid<Shape>(P, G, S, order, dt, run.halo, body);  // m_I, p_I, f_I (eqs. 20-22)
   if (run.contact && run.contact->normal == ContactNormal::logistic_regression && G.fields() > 1)
     fit_contact_planes<Shape>(P, G, shape, S, run.halo);  // the planes between bodies (Nairn 2020)
   clock.lap(&PhaseTimes::particles_to_grid);
@@ -60,7 +63,7 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   clock.lap(&PhaseTimes::grid_update);
   // FLIP velocity, x from v*_I; USL: L from v^L_I (= v*_I but at light nodes)   (eqs. 23, 25-26)
   t.particles =
-      grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, run.heat_capacity, failure);
+      grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, run.heat_capacity, failure, body);
   clock.lap(&PhaseTimes::grid_to_particles);
   if (run.halo ? run.halo->comm().any(failure.has_value()) : failure.has_value()) return t;
   if (!usl) {

@@ -50,8 +50,43 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   return Failure{fastest, "energy", m.str()};
 }
 
+std::optional<std::string> Simulation::non_finite_body_force() const {
+  if (body_forces_->finite()) return std::nullopt;
+  static const Eigen::IOFormat kRow(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+  const std::size_t p = body_forces_->strongest();
+  const SceneObject& o = scene_.objects[particles_.object[p]];
+  std::ostringstream m;
+  m.precision(9);
+  m << "/objects/" << o.name << "/body_force = [";
+  for (int d = 0; d < 3; ++d) {
+    m << (d ? ", " : "");
+    if (o.body_force.text[d].empty())
+      m << o.body_force.value(d);
+    else
+      m << '"' << o.body_force.text[d] << '"';
+  }
+  m << "] is [" << body_forces_->values()[p].transpose().format(kRow) << "] m/s^2 at X = ["
+    << particles_.X[p].transpose().format(kRow) << "] m, t = " << time_ << " s: not finite";
+  return describe(Failure{p, "body force", m.str(), std::nullopt}, steps_ + 1, time_);
+}
+
 double Simulation::checked_dt() const {
   const double dt = next_dt();
+  const double body = scene_.solver.gravity.stableNorm() + max_body_force_;
+  if (!(dt >= scene_.time.min_dt) && std::isfinite(body) &&
+      body_force_time_step(scene_.grid.min_spacing(), body, scene_.time.multiplier) <
+          stable_time_step(scene_.grid.min_spacing(), max_signal_speed_, scene_.time.multiplier)) {
+    // The body force sets the step: name the particle that feels the most of it.
+    std::ostringstream m;
+    m.precision(6);
+    m << "stable time step " << dt << " s below time.min_dt = " << scene_.time.min_dt
+      << " s: the body-force step sqrt(time.multiplier x the smallest cell / (|solver.gravity| + "
+         "max |body_force|)), with "
+      << body << " m/s^2; this particle feels the largest body force";
+    const std::size_t p = body_forces_ ? body_forces_->strongest() : 0;
+    stop_if(ranks_.first_failure(
+        describe(Failure{p, "time step", m.str(), std::nullopt}, steps_ + 1, time_)));
+  }
   if (!(dt >= scene_.time.min_dt) || !std::isfinite(dt) || !(dt > 0.0)) {
     // The step collapses when one particle's signal speed c + |v| runs away: name it.
     std::size_t fastest = 0;

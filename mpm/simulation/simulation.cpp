@@ -38,7 +38,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
             ranks_.stored_box(boxes_, scene.grid)),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
-      ledger_(!scene.solver.gravity.isZero(0.0), scene.grid.outflow == Outflow::remove,
+      ledger_(!scene.solver.gravity.isZero(0.0) || scene.has_body_force(),
+              scene.grid.outflow == Outflow::remove,
               Vec3(scene.grid.geometry_facts().momentum_components.data()),
               ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
   census_ = {};  // needed for seeding only
@@ -62,6 +63,9 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   st.fail_particle = ph.on_numerical_fault == NumericalFaultAction::fail_particle;
   if (st.fail_particle) particles_.fault.assign(particles_.size(), 0);
   if (scene_.grid.outflow == Outflow::remove) particles_.removed.assign(particles_.size(), 0);
+  if (scene_.needs_reference_positions())
+    particles_.X = particles_.x;  // the reference positions: the seed points
+  if (scene_.has_body_force()) body_forces_.emplace(scene_, grid_.threads());
   st.mean_spacing = scene_.grid.mean_spacing();
   if (ph.artificial_viscosity.enabled) {
     st.viscosity = &scene_.physics.artificial_viscosity;
@@ -127,11 +131,13 @@ void Simulation::resize_particles(std::size_t n) {
   const bool fault = stress_settings_.fail_particle;
   const bool removed = scene_.grid.outflow == Outflow::remove;
   const bool id = ranks_.several();
+  const bool reference = scene_.needs_reference_positions();
   P.for_each_array([&](auto& a) { a.resize(n); });
   if (!q) P.q.clear();
   if (!fault) P.fault.clear();
   if (!removed) P.removed.clear();
   if (!id) P.id.clear();
+  if (!reference) P.X.clear();
 }
 
 void Simulation::restart_ledger() {
@@ -154,9 +160,10 @@ double Simulation::next_dt() const {
   // integrate, and gravity, which limits the step of a body, has none to move.
   if (max_signal_speed_ == 0.0 && std::isinf(std::min(waves, scene_.time.max_dt)))
     return scene_.time.max_time - time_;
+  // Gravity and the objects' body forces at the start of this step, at most their sum.
+  const double body = scene_.solver.gravity.stableNorm() + max_body_force_;
   double dt = std::min(
-      waves, body_force_time_step(scene_.grid.min_spacing(), scene_.solver.gravity.stableNorm(),
-                                  scene_.time.multiplier));
+      waves, body_force_time_step(scene_.grid.min_spacing(), body, scene_.time.multiplier));
   if (steps_ == 0) dt = std::min(dt, scene_.time.initial_dt);
   return std::min(dt, scene_.time.max_dt);
 }
@@ -164,6 +171,11 @@ double Simulation::next_dt() const {
 const StepTotals& Simulation::step() {
   apply_injections();
   stop_if(ranks_.first_failure(particle_outside_or_not_finite()));  // a failure stops every rank
+  if (body_forces_) {  // b(X_p, t^n), before the step it limits
+    body_forces_->evaluate(particles_, time_);
+    stop_if(ranks_.first_failure(non_finite_body_force()));
+    max_body_force_ = ranks_.max(body_forces_->peak());
+  }
   const double dt = checked_dt();
   std::optional<Failure> failure;
   last_ = advance_step(dt, failure);
@@ -183,8 +195,12 @@ const StepTotals& Simulation::step() {
 
 StepTotals Simulation::advance_step(double dt, std::optional<Failure>& failure) {
   const ContactSpec* contact = grid_.fields() > 1 ? &scene_.physics.contact : nullptr;
-  const StepSetup setup{stress_settings_, scene_.solver, contact, heat_capacity_,
-                        halo_ ? &*halo_ : nullptr};
+  const StepSetup setup{stress_settings_,
+                        scene_.solver,
+                        contact,
+                        heat_capacity_,
+                        halo_ ? &*halo_ : nullptr,
+                        body_forces_ ? &body_forces_->values() : nullptr};
   StepTotals t = std::visit(
       [&](const auto& shape) {
         using Shape = std::decay_t<decltype(shape)>;
@@ -202,7 +218,8 @@ void Simulation::book(double dt) {
   max_signal_speed_ = last_.stress.max_signal_speed;
   ledger_.record_step(time_, last_.particles.kinetic_energy, last_.particles.momentum,
                       last_.stress.strain_energy_increment, last_.grid.boundary_impulse,
-                      last_.grid.external_impulse, last_.grid.external_work);
+                      last_.grid.external_impulse + last_.particles.external_impulse,
+                      last_.grid.external_work + last_.particles.external_work);
   if (sinks_.viscous >= 0) ledger_.add_sink(sinks_.viscous, last_.stress.viscous_work);
   if (sinks_.friction >= 0) {
     ledger_.add_sink(sinks_.friction,

@@ -21,6 +21,7 @@
 #include "mpm/shape/shape.hpp"
 #include "mpm/simulation/fault_injection.hpp"
 #include "mpm/simulation/step_totals.hpp"
+#include "mpm/step/body_force.hpp"
 #include "mpm/step/step.hpp"
 
 namespace impact::mpm {
@@ -132,6 +133,9 @@ class Simulation {
   /// The particle loops' start-of-step check: the first particle outside the grid or with a
   /// velocity that is not finite, described (nullopt: none).
   std::optional<std::string> particle_outside_or_not_finite() const;
+  /// The particle whose body force (of this step) is not finite, described with its object's
+  /// expressions, reference position and time (nullopt: none).
+  std::optional<std::string> non_finite_body_force() const;
   /// The stable dt of the coming step, landing on max_time; a diagnosis naming the particle with
   /// the fastest signal when it falls below time.min_dt (every rank gets the same dt).
   double checked_dt() const;
@@ -159,6 +163,9 @@ class Simulation {
   double time_ = 0.0;
   long steps_ = 0;
   double max_signal_speed_ = 0.0;
+  /// The objects' body forces (SceneObject::body_force), evaluated at the start of each step.
+  std::optional<BodyForces> body_forces_;
+  double max_body_force_ = 0.0;  ///< max_p |b_p| of this step, over the ranks [m/s^2]
 };
 
 }  // namespace impact::mpm

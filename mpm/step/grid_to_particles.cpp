@@ -88,7 +88,7 @@ Mat3 gradient(const Grid& G, const Stencil<Shape::N>& s, const std::vector<Vec3>
 template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
                                  bool usl_gradient, const std::vector<HeatCapacity>& heat_capacity,
-                                 std::optional<Failure>& failure) {
+                                 std::optional<Failure>& failure, const Vec3* body_force) {
   constexpr int N = Shape::N, NZ = Shape::NZ;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
@@ -124,6 +124,11 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
         }
       if (usl_gradient) P.L[p] = gradient<Shape>(G, s, G.velocity_L, P.v[p], offset);
       const double m = P.mass[p];
+      if (body_force) {  // sum_I S_Ip (v_I + v*_I)/2 = v_new - dv/2 (step.hpp ParticleTotals)
+        const Vec3 J = dt * m * body_force[p];
+        sum.external_impulse += J;
+        sum.external_work += J.dot(v_new - 0.5 * dv);
+      }
       if (h != 0.0) {
         const HeatCapacity& c = heat_capacity[P.material[p]];
         retain_heat(P.state[p], h, c.retained, c.specific_heat);

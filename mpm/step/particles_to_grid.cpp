@@ -21,7 +21,8 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
-                       const ScatterOrder& order, double dt, const HaloExchange* halo) {
+                       const ScatterOrder& order, double dt, const HaloExchange* halo,
+                       const Vec3* body_force) {
   constexpr int N = Shape::N, NZ = Shape::NZ;  // NZ = 1 on a 2D grid
   G.clear();                                   // where the last step put mass: now zero everywhere
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
@@ -50,6 +51,8 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
         if constexpr (Shape::kHoop) hoop(1) = P.x[p](1) > 0.0 ? vs(2, 2) / P.x[p](1) : 0.0;
         const double m = P.mass[p];
         const Vec3 mv = m * P.v[p];
+        // A body force adds m_p b_p S_Ip, a term of a with w_z (step/body_force.hpp).
+        const Vec3 mb = body_force ? Vec3(m * body_force[p]) : Vec3::Zero();
         for (int i = 0; i < N; ++i) {
           for (int j = 0; j < N; ++j) {
             const int row_index = base_index + i * sx + j * sy;
@@ -60,6 +63,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
             // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
             Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
             if constexpr (Shape::kHoop) a = a + hoop * wij;  // w_z = 1, dw_z = 0 on a 2D grid
+            if (body_force) a += mb * wij;
             const Vec3 b = vs.col(2) * wij;
             for (int k = 0; k < NZ; ++k) {
               NodeData& node = row[k];

@@ -75,9 +75,11 @@ void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 /// scattered in `order` (order_for_scatter on S); with wall faces, also the walls each particle
 /// reaches within the step `dt` (Grid::wall_touch); `halo` (several ranks) completes the sums at
 /// the node planes shared with the neighbouring ranks before the step's nodes are activated.
+/// With `body_force` (b_p per particle [m/s^2], step/body_force.hpp) f_I += sum_p S_Ip m_p b_p.
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
-                       const ScatterOrder& order, double dt, const HaloExchange* halo = nullptr);
+                       const ScatterOrder& order, double dt, const HaloExchange* halo = nullptr,
+                       const Vec3* body_force = nullptr);
 
 /// USL's velocity gradient limits the acceleration part of v*_I at nodes lighter than this
 /// fraction of the lightest particle mass: v^L_I = v_I + min(1, m_I/m_light) (v*_I - v_I). Why:
@@ -137,6 +139,11 @@ struct ParticleTotals {
   Vec3 outflow_momentum = Vec3::Zero();
   double outflow_kinetic_energy = 0.0;
   long removed = 0;
+  /// The body forces' impulse sum_p dt m_p b_p and work sum_p dt m_p b_p . sum_I S_Ip (v_I +
+  /// v*_I)/2 [N s, J]: by linearity, exactly the nodal sum_I dt f^b_I . (v_I + v*_I)/2 at the
+  /// velocities the nodes keep, as gravity's in grid_update.
+  Vec3 external_impulse = Vec3::Zero();
+  double external_work = 0.0;
   /// How each total combines over threads and ranks (mpm/ledger/totals.hpp).
   static constexpr auto kFields = std::tuple{summed(&ParticleTotals::kinetic_energy),
                                              summed(&ParticleTotals::momentum),
@@ -145,7 +152,9 @@ struct ParticleTotals {
                                              summed(&ParticleTotals::outflow_mass),
                                              summed(&ParticleTotals::outflow_momentum),
                                              summed(&ParticleTotals::outflow_kinetic_energy),
-                                             summed(&ParticleTotals::removed)};
+                                             summed(&ParticleTotals::removed),
+                                             summed(&ParticleTotals::external_impulse),
+                                             summed(&ParticleTotals::external_work)};
 };
 
 /// Per material: whether a particle retains heat (adiabatic heating on) and its c_p [J/(kg K)].
@@ -163,10 +172,11 @@ struct HeatCapacity {
 /// delivered exactly), retained by the rule of models/thermal/adiabatic_heating.hpp
 /// (`heat_capacity` per material). A particle that leaves the grid stops the step (a Failure), or
 /// with grid.outflow = remove (Particles::removed allocated) leaves the simulation.
+/// With `body_force` (the b_p particles-to-grid added), its impulse and work (ParticleTotals).
 template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
                                  bool usl_gradient, const std::vector<HeatCapacity>& heat_capacity,
-                                 std::optional<Failure>& failure);
+                                 std::optional<Failure>& failure, const Vec3* body_force = nullptr);
 
 /// MUSL (Sulsky et al. 1995; Nairn 2003): re-map the updated particle momentum with the same
 /// weights, v^{n+1}_I = sum_p S_Ip m_p v_p^{n+1} / m_I, correct it by the contact model (if any)

@@ -36,6 +36,8 @@ unfinished: a run stopped by SIGTERM (injected at step 5, checkpoint written) is
   byte for byte); `--restart` continues it and removes a snapshot the checkpoint does not list
   (planted: step_999999.vtu) and nothing else; after a second SIGTERM, `--overwrite` starts over
   (no checkpoint left, every snapshot named by the .pvd).
+exact: output.exact_displacement (--set) 1 m/s off the rigid translation's: history.csv ends in
+  displacement_error_rms [m] and displacement_error_max [m], each t x 1 m/s in every row to 1e-9.
 fingerprint: `mpm check --fingerprint` on the rigid translation prints 16 lowercase hex digits and
   a newline, nothing else on stdout, exit 0; the same with a --set of output keys only, another
   with a --set of the grid; it is the "scene_fingerprint" of `mpm check`'s report and of the
@@ -214,6 +216,24 @@ def check_set(mpm, work):
     assert written["time"]["max_time"] == 1e-6, written["time"]
 
 
+def check_exact(mpm, work):
+    out = os.path.join(work, "exact")
+    shutil.rmtree(out, ignore_errors=True)
+    # The block's exact displacement is (30, -20, 10) m/s x t; the one given is 1 m/s off along x.
+    run_mpm(mpm, ["run", RIGID, "--out", out, "--threads", "2", "--set",
+                  json.dumps({"output": {"exact_displacement": ["31*t", "-20*t", "10*t"],
+                                         "snapshots": False}})])
+    header, rows = history(out)
+    rms = header.index("displacement_error_rms [m]")
+    top = header.index("displacement_error_max [m]")
+    assert header[-2:] == ["displacement_error_rms [m]", "displacement_error_max [m]"], header
+    for row in rows:
+        t = row[0]
+        assert abs(row[rms] - t) <= 1e-9 * max(t, 1e-12), (t, row[rms])
+        assert abs(row[top] - t) <= 1e-9 * max(t, 1e-12), (t, row[top])
+    print(f"{len(rows)} rows: displacement error {rows[-1][rms]} m at t = {rows[-1][0]} s")
+
+
 def check_fingerprint(mpm, work):
     def fingerprint(*patches):
         sets = [a for p in patches for a in ("--set", json.dumps(p))]
@@ -371,5 +391,6 @@ if __name__ == "__main__":
     mpm_program, work_dir, what = sys.argv[1:4]
     os.makedirs(work_dir, exist_ok=True)
     {"run": check_run, "check": check_check, "set": check_set, "rerun": check_rerun,
-     "unfinished": check_unfinished, "fingerprint": check_fingerprint}[what](mpm_program, work_dir)
+     "unfinished": check_unfinished, "fingerprint": check_fingerprint,
+     "exact": check_exact}[what](mpm_program, work_dir)
     print("OK")
