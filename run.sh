@@ -43,7 +43,9 @@ FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
 # clang-format-14 checks every C++ file against .clang-format (test `clang_format`); pytest runs
 # the Python module's tests (python_pytest); python3-venv makes the virtual environment that
 # `pip install .` installs into (python_pip_install; it brings pip's wheel for the venv).
-TEST_TOOL_PACKAGES=(clang-format-14 python3-pytest python3-venv)
+# python3-sympy derives the manufactured solutions' body forces
+# (campaigns/verification/manufactured_solutions.py, tests mpm_manufactured_*).
+TEST_TOOL_PACKAGES=(clang-format-14 python3-pytest python3-venv python3-sympy)
 # Open MPI builds the domain decomposition (docs/mpi.md); the test job runs it on 2 and 4 ranks.
 # Optional: without it everything builds and runs on one rank.
 MPI_PACKAGES=(libopenmpi-dev openmpi-bin)
