@@ -1,5 +1,6 @@
 // The scene's named constants and its fields of three components, each a number or an
 // expression (docs/scenes.md#expressions; mpm/scene/expression.hpp).
+#include <cctype>
 #include <limits>
 #include <sstream>
 
@@ -23,6 +24,8 @@ void read_constants(JsonReader& root, const Json& doc, NamedConstants& out) {
       root.problems().add(key, *why);
     } else if (!item.value().is_number()) {
       root.problems().add(key, "expected a number, got " + item.value().dump());
+      // Declared all the same: an expression that uses it gets no second problem.
+      out.emplace_back(item.key(), std::numeric_limits<double>::quiet_NaN());
     } else {
       out.emplace_back(item.key(), item.value().get<double>());
     }
@@ -75,6 +78,38 @@ VectorExpression read_vector_expression(JsonReader& r, const Json& node, std::st
     }
   }
   return e;
+}
+
+namespace {
+
+// Whether `text` names `name` as a whole word (an identifier of the expression).
+bool names(const std::string& text, const std::string& name) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    const bool start = at == 0 || !word(text[at - 1]);
+    const bool end = at + name.size() == text.size() || !word(text[at + name.size()]);
+    if (start && end) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void warn_of_idle_expression_names(InputProblems& problems, const Scene& s) {
+  std::vector<const VectorExpression*> fields;
+  for (const SceneObject& o : s.objects)
+    fields.insert(fields.end(), {&o.body_force, &o.velocity_field});
+  if (s.output.exact_displacement) fields.push_back(&*s.output.exact_displacement);
+  for (const auto& [name, value] : s.constants) {
+    bool used = false;
+    for (const VectorExpression* f : fields)
+      for (const std::string& text : f->text) used = used || names(text, name);
+    if (!used) problems.warn("/constants/" + name, "not used by any expression");
+  }
+  for (const SceneObject& o : s.objects)
+    if (o.velocity_field.uses("t", s.constants))
+      problems.warn("/objects/" + o.name + "/velocity",
+                    "an initial velocity is evaluated at t = 0: its t is always 0");
 }
 
 }  // namespace impact::mpm::scene_input

@@ -75,6 +75,9 @@ BOOST_AUTO_TEST_CASE(a_wrong_constant_is_refused_by_name) {
   check_refused(block_with({"k", 0, 0}, {{"X", 1.0}, {"k", "one"}, {"sqrt", 2.0}, {"2b", 1.0}}),
                 {"/constants/X: \"X\" is a variable", "/constants/k: expected a number",
                  "/constants/sqrt: \"sqrt\" is a function", "/constants/2b: a constant's name"});
+  // A constant refused for its value is still declared: no second problem where it is used.
+  BOOST_TEST(scene_error_of(block_with({"k", 0, 0}, {{"k", "one"}})).find("unknown name") ==
+             std::string::npos);
   Json doc = block_with({0, 0, 0});
   doc["constants"] = Json::array({1, 2});
   check_refused(doc, {"/constants: expected an object of named numbers"});
@@ -99,6 +102,21 @@ BOOST_AUTO_TEST_CASE(a_field_that_is_not_finite_at_a_seed_point_is_refused) {
   for (const std::string& w : s.warnings) warnings += w + "\n";
   BOOST_TEST_MESSAGE(warnings);
   BOOST_TEST(warnings.find("/objects/block/velocity/0") != std::string::npos, warnings);
+}
+
+BOOST_AUTO_TEST_CASE(an_idle_name_is_warned_of) {
+  // "Kx" is used, "K" only inside it; "w" nowhere; the velocity reads t, always 0 there.
+  Json doc = block_with({"Kx*X", 0, 0}, {{"Kx", 1.0}, {"K", 2.0}, {"w", 3.0}});
+  doc["objects"]["block"]["velocity"] = {"10*cos(t)", 0, 0};
+  const Scene s = read_scene(doc, "test.json");
+  std::string warnings;
+  for (const std::string& w : s.warnings) warnings += w + "\n";
+  BOOST_TEST_MESSAGE(warnings);
+  BOOST_TEST(warnings.find("/constants/K: not used by any expression") != std::string::npos);
+  BOOST_TEST(warnings.find("/constants/w: not used by any expression") != std::string::npos);
+  BOOST_TEST(warnings.find("/constants/Kx") == std::string::npos);
+  BOOST_TEST(warnings.find("/objects/block/velocity: an initial velocity is evaluated at t = 0") !=
+             std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_2d_body_force_moves_as_its_grid_models) {
