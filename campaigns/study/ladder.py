@@ -22,8 +22,9 @@
    the crater's depth, half-depth and surface diameters (output.crater), each gauge's peak over
    the history rows (output.gauges; the signed reading of largest magnitude), each object's
    largest pressure and the fastest object's (the projectile's) final mean velocity along its
-   impact direction, and for a
-   Taylor rod (one cylinder along x moving along -x) its final length Lf and mushroom diameter Dm.
+   impact direction, for a
+   Taylor rod (one cylinder along x moving along -x) its final length Lf and mushroom diameter Dm,
+   and with output.exact_displacement the displacement error (rms and max) of the last history row.
 4. For every observable: the values per level, then per consecutive triple of levels the
    convergence condition, observed order, Richardson extrapolation and fine-grid GCI of Celik et
    al. (2008) (campaigns/study/gci.py), and whether the finest triple is in the asymptotic range
@@ -359,7 +360,9 @@ def observables_of(scene, rod):
                 ("crater half-depth diameter", "/observables/crater/half_depth_diameter [m]", "m"),
                 ("crater surface diameter", "/observables/crater/surface_diameter [m]", "m")]
     objects = scene.get("objects", {})
-    speeds = {n: max((abs(c) for c in o.get("velocity", [0.0])), default=0.0)
+    # A velocity component written as an expression (docs/scenes.md#expressions) counts as 0 here.
+    speeds = {n: max((abs(c) if isinstance(c, (int, float)) else 0.0
+                      for c in o.get("velocity", [0.0])), default=0.0)
               for n, o in objects.items()}
     fastest = max(speeds, key=speeds.get) if speeds else None
     if fastest is not None and speeds[fastest] > 0 and rod is None:
@@ -377,7 +380,23 @@ def observables_of(scene, rod):
         out.append((f"gauge {g} peak", f"/gauges/{g}/peak [{unit.replace('/', '~1')}]", unit))
     if rod is not None:
         out += [("Lf", None, "m"), ("Dm", None, "m")]
+    # A manufactured solution's error at the end of the run (output.exact_displacement).
+    if "exact_displacement" in scene.get("output", {}):
+        out += [(f"displacement error {k}", None, "m") for k in ("rms", "max")]
     return out
+
+
+def final_history_value(run_dir, column):
+    """The last history.csv row's value in the column whose name is `column` (unit aside), or
+    None when the run wrote no such column."""
+    try:
+        head, rows = results.history_rows(run_dir)
+    except (OSError, ValueError):  # no history.csv (InputError is a ValueError)
+        return None
+    names = [c.partition(" [")[0] for c in head]
+    if column not in names or not rows:
+        return None
+    return rows[-1][names.index(column)]
 
 
 def read_run(run_dir, scene_text, scene, rod, observables):
@@ -392,6 +411,8 @@ def read_run(run_dir, scene_text, scene, rod, observables):
         v = None
         if name.startswith("gauge "):
             v = peaks.get(name[len("gauge "):-len(" peak")], (None, None))[1]
+        elif name.startswith("displacement error "):
+            v = final_history_value(run_dir, "displacement_error_" + name.split()[-1])
         elif name in ("Lf", "Dm"):
             if "Lf" in values or "Lf" in notes:
                 continue
