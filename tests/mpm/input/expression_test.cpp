@@ -15,7 +15,7 @@
 #include <numbers>
 #include <string>
 
-#include "helpers/scene_error.hpp"
+#include "helpers/scene_refusal.hpp"
 #include "mpm/scene/expression.hpp"
 
 using namespace impact;
@@ -148,6 +148,8 @@ BOOST_AUTO_TEST_SUITE_END()
 
 namespace {
 
+using impact::testing::axisymmetric_rod;
+using impact::testing::check_refused;
 using impact::testing::scene_error_of;
 
 const std::string kScenes = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/";
@@ -158,14 +160,6 @@ Json block_with(const Json& b, const Json& k = Json::object()) {
   doc["objects"]["block"]["body_force"] = b;
   if (!k.empty()) doc["constants"] = k;
   return doc;
-}
-
-void check_refused(const Json& doc, const std::vector<std::string>& parts) {
-  const std::string e = scene_error_of(doc);
-  BOOST_TEST_MESSAGE(e);
-  BOOST_TEST(e.find("test.json: ") != std::string::npos);
-  for (const std::string& part : parts)
-    BOOST_TEST(e.find(part) != std::string::npos, "\"" << part << "\" in\n" << e);
 }
 
 }  // namespace
@@ -259,22 +253,7 @@ BOOST_AUTO_TEST_CASE(an_idle_name_is_warned_of) {
 BOOST_AUTO_TEST_CASE(a_2d_body_force_moves_as_its_grid_models) {
   // An axisymmetric rod: a radial field of revolution is fine, a uniform radial one is not, and
   // nothing along z.
-  Json doc = load_scene_document(kScenes + "verification/elastic_base.json");
-  doc.merge_patch({{"grid",
-                    {{"geometry", "axisymmetric"},
-                     {"lower", {0.0, 0.0}},
-                     {"upper", {0.04, 0.01}},
-                     {"cells", {8, 2}},
-                     {"boundary", {{"x+", "free"}, {"y+", "free"}}}}},
-                   {"objects",
-                    {{"rod",
-                      {{"material", "elastic_al"},
-                       {"geometry",
-                        {{"type", "cylinder"},
-                         {"bottom", {0.0, 0.0, 0.0}},
-                         {"top", {0.02, 0.0, 0.0}},
-                         {"radius", 0.005}}},
-                       {"particles_per_cell", {2, 2}}}}}}});
+  Json doc = axisymmetric_rod();
   doc["objects"]["rod"]["body_force"] = {"1e3*X", "1e5*Y", 0};
   BOOST_TEST(scene_error_of(doc) == "");
   doc["objects"]["rod"]["body_force"] = {0, 10.0, 0};

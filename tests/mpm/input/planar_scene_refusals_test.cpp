@@ -6,38 +6,16 @@
 #include <boost/test/unit_test.hpp>
 #include <string>
 
-#include "helpers/scene_error.hpp"
+#include "helpers/scene_refusal.hpp"
 
 using namespace impact;
 using namespace impact::mpm;
 
 namespace {
 
+using impact::testing::axisymmetric_rod;
+using impact::testing::check_refused;
 using impact::testing::scene_error_of;
-
-const std::string kScenes = std::string(IMPACT_SOURCE_DIR) + "/data/scenes/";
-
-// A rod on the axis of an axisymmetric grid (a valid scene).
-Json axisymmetric_rod() {
-  Json doc = load_scene_document(kScenes + "verification/elastic_base.json");
-  doc.merge_patch({{"grid",
-                    {{"geometry", "axisymmetric"},
-                     {"lower", {0.0, 0.0}},
-                     {"upper", {0.04, 0.01}},
-                     {"cells", {8, 2}},
-                     {"boundary", {{"x+", "free"}, {"y+", "free"}}}}},
-                   {"objects",
-                    {{"rod",
-                      {{"material", "elastic_al"},
-                       {"geometry",
-                        {{"type", "cylinder"},
-                         {"bottom", {0.0, 0.0, 0.0}},
-                         {"top", {0.02, 0.0, 0.0}},
-                         {"radius", 0.005}}},
-                       {"velocity", {30.0, 0.0, 0.0}},
-                       {"particles_per_cell", {2, 2}}}}}}});
-  return doc;
-}
 
 // A box spanning z = 0 on a plane-strain grid (a valid scene).
 Json plane_strain_block() {
@@ -48,15 +26,6 @@ Json plane_strain_block() {
       {"type", "box"}, {"lower", {0.0, -0.005, -0.5}}, {"upper", {0.02, 0.005, 0.5}}};
   doc["objects"]["rod"]["velocity"] = {30.0, -20.0, 0.0};
   return doc;
-}
-
-// The message, checked to name the file and to contain every expected part.
-void check_refused(const Json& doc, const std::vector<std::string>& parts) {
-  const std::string e = scene_error_of(doc);
-  BOOST_TEST_MESSAGE(e);
-  BOOST_TEST(e.find("test.json: ") != std::string::npos);
-  for (const std::string& part : parts)
-    BOOST_TEST(e.find(part) != std::string::npos, "\"" << part << "\" in\n" << e);
 }
 
 }  // namespace

@@ -118,6 +118,36 @@ std::vector<double> ledger_row(const Simulation& sim) {
   return sim.ledger().values(sim.ledger().row());
 }
 
+// `steps` steps of `s` uninterrupted against `half` steps, a checkpoint in memory and the rest:
+// both runs' particles at the end, how many of the continued run's ledger rows differ, and its
+// last row.
+struct Continuation {
+  Particles uninterrupted, continued;
+  std::size_t rows_differ = 0;
+  LedgerRow last;
+};
+Continuation continue_from_checkpoint(const Scene& s, int steps, int half) {
+  Continuation out;
+  std::vector<std::vector<double>> rows_a;
+  {
+    Simulation a(s, 2);
+    for (int i = 0; i < steps; ++i) {
+      a.step();
+      rows_a.push_back(ledger_row(a));
+    }
+    out.uninterrupted = a.particles();
+  }
+  Simulation c(s, 2);
+  load_after(c, s, half);
+  for (int i = half; i < steps; ++i) {
+    c.step();
+    out.rows_differ += ledger_row(c) == rows_a[i] ? 0 : 1;
+  }
+  out.continued = c.particles();
+  out.last = c.ledger().row();
+  return out;
+}
+
 // Every file of the run directory that must be identical, relative names.
 std::vector<std::string> output_files(const fs::path& dir) {
   std::vector<std::string> files = {"history.csv", "particles.pvd", "scene.json"};
@@ -246,29 +276,11 @@ BOOST_AUTO_TEST_CASE(a_body_force_run_continues_bit_for_bit_from_a_checkpoint) {
   doc["constants"] = {{"K", 3e8}, {"w", 4e4}};
   for (auto& [name, object] : doc["objects"].items())
     object["body_force"] = {"K*(X - 0.03)*cos(w*t)", "-K*Y*0.1", 0};
-  const Scene s = read_scene(doc, kScene);
-  constexpr int kSteps = 40, kHalf = 20;
-  std::vector<std::vector<double>> rows_a;
-  Particles end_a;
-  {
-    Simulation a(s, 2);
-    for (int i = 0; i < kSteps; ++i) {
-      a.step();
-      rows_a.push_back(ledger_row(a));
-    }
-    end_a = a.particles();
-  }
-  Simulation c(s, 2);
-  load_after(c, s, kHalf);
-  std::size_t rows_differ = 0;
-  for (int i = kHalf; i < kSteps; ++i) {
-    c.step();
-    rows_differ += ledger_row(c) == rows_a[i] ? 0 : 1;
-  }
-  BOOST_TEST_REQUIRE(end_a.X.size() == end_a.size());
-  BOOST_TEST(differing(end_a, c.particles()) == 0u);
-  BOOST_TEST(rows_differ == 0u);
-  BOOST_TEST(c.ledger().row().external_work != 0.0);
+  const Continuation r = continue_from_checkpoint(read_scene(doc, kScene), 40, 20);
+  BOOST_TEST_REQUIRE(r.uninterrupted.X.size() == r.uninterrupted.size());
+  BOOST_TEST(differing(r.uninterrupted, r.continued) == 0u);
+  BOOST_TEST(r.rows_differ == 0u);
+  BOOST_TEST(r.last.external_work != 0.0);
 }
 
 BOOST_AUTO_TEST_CASE(interrupted_and_restarted_run_matches_the_uninterrupted_one) {
@@ -329,28 +341,13 @@ BOOST_AUTO_TEST_CASE(an_axisymmetric_run_continues_bit_for_bit_from_a_checkpoint
   constexpr int kSteps = 40, kHalf = 20;
   for (const Scene& s : axisymmetric_scenes()) {
     BOOST_REQUIRE(s.grid.geometry == GridGeometry::axisymmetric);
-    std::vector<std::vector<double>> rows_a;
-    Particles end_a;
-    {
-      Simulation a(s, 2);
-      for (int i = 0; i < kSteps; ++i) {
-        a.step();
-        rows_a.push_back(ledger_row(a));
-      }
-      end_a = a.particles();
-    }
-    Simulation c(s, 2);
-    load_after(c, s, kHalf);
-    std::size_t rows_differ = 0;
-    for (int i = kHalf; i < kSteps; ++i) {
-      c.step();
-      rows_differ += ledger_row(c) == rows_a[i] ? 0 : 1;
-    }
-    const std::size_t particles_differ = differing(end_a, c.particles());
-    BOOST_TEST_MESSAGE(s.file << " (axisymmetric): " << end_a.size() << " particles, " << kSteps
-                              << " steps against " << kHalf << " + checkpoint + " << kSteps - kHalf
-                              << ": " << particles_differ << " particles and " << rows_differ
-                              << " ledger rows differ");
+    const Continuation r = continue_from_checkpoint(s, kSteps, kHalf);
+    const std::size_t particles_differ = differing(r.uninterrupted, r.continued);
+    const std::size_t rows_differ = r.rows_differ;
+    BOOST_TEST_MESSAGE(s.file << " (axisymmetric): " << r.uninterrupted.size() << " particles, "
+                              << kSteps << " steps against " << kHalf << " + checkpoint + "
+                              << kSteps - kHalf << ": " << particles_differ << " particles and "
+                              << rows_differ << " ledger rows differ");
     BOOST_TEST(particles_differ == 0u);
     BOOST_TEST(rows_differ == 0u);
 
