@@ -24,7 +24,8 @@ std::string_view to_string(UpdateStatus s) {
     case UpdateStatus::eos_out_of_range:
       return "compression beyond the Mie-Gruneisen limit";
     case UpdateStatus::non_finite_wave_speed:
-      return "no wave speed: the equation of state's K_s + 4 mu/3 <= 0 (tension beyond its range)";
+      return "no wave speed: the equation of state's K_s + 4 mu/3 <= 0 (tension beyond its range), "
+             "or a neo_hookean solid strained past strong ellipticity";
   }
   return "unknown";
 }
@@ -53,6 +54,7 @@ PointState ElasticPlastic::initial_state(double temperature) const {
 }
 
 double ElasticPlastic::wave_speed(const PointState& s) const {
+  if (hyperelastic()) return neo_hookean_wave_speed(s.F, neo_hookean_moduli(), p_.density);
   return wave_speed(p_.density / lane_algebra::determinant(to_lanes(s.F)), s.internal_energy,
                     shear_modulus_of(s));
 }
@@ -85,6 +87,9 @@ double ElasticPlastic::wave_speed(double rho, double internal_energy) const {
 }
 
 double ElasticPlastic::wave_speed(double rho, double internal_energy, double mu) const {
+  // The neo-Hookean solid at rest, or any state's estimate before its first step:
+  // sqrt((lambda + 2 mu) / rho) (the state's own bound is wave_speed(state)).
+  if (hyperelastic()) return longitudinal_wave_speed(p_.bulk_modulus, mu, rho);
   const double bulk = eos_bulk_modulus(p_.equation_of_state, eos_material(), rho, internal_energy);
   if (!(bulk + 4.0 * mu / 3.0 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
   return longitudinal_wave_speed(bulk, mu, rho);
@@ -106,6 +111,21 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
   s1 = s0;
   s1.F = F1;
   s1.melted = false;
+  t.hyperelastic = false;  // a batch reuses its trials: a neo_hookean lane's flag must not stay
+  if (hyperelastic()) {    // sigma(F1), and the stored energy per unit mass as e
+    const NeoHookeanModuli m = neo_hookean_moduli();
+    s1.stress = neo_hookean_stress(F1, m);
+    s1.internal_energy = neo_hookean_energy(F1, m) / p_.density;
+    t.hyperelastic = true;
+    t.batched = false;
+    t.rho1 = p_.density / J1;
+    report.wave_speed = neo_hookean_wave_speed(F1, m, p_.density);
+    if (!s1.stress.allFinite())
+      report.status = UpdateStatus::non_finite_stress;
+    else if (!std::isfinite(report.wave_speed))
+      report.status = UpdateStatus::non_finite_wave_speed;
+    return true;
+  }
 
   // 1. Kinematics: work in the unrotated frame (Green-Naghdi) or in the lab frame after a
   //    Hughes-Winget rotation of the old stress (Jaumann).
@@ -161,6 +181,7 @@ bool ElasticPlastic::begin_update(const PointState& s0, const Mat3& L, const Mat
 ReturnResult ElasticPlastic::unbatched_return(const PointState& s0, const UpdateTrial& t,
                                               double dt) const {
   ReturnResult r;
+  if (t.hyperelastic) return r;
   if (t.molten) {  // no deviatoric strength once molten; the EOS still acts
     r.deviator = Mat3::Zero();
     return r;
@@ -196,6 +217,7 @@ StepReport ElasticPlastic::update(const PointState& s0, const Mat3& L, const Mat
 void ElasticPlastic::finish_update(const PointState& s0, const UpdateTrial& t,
                                    const ReturnResult& r, double dt, PointState& s1,
                                    StepReport& report) const {
+  if (t.hyperelastic) return;  // begin_update wrote the end state
   const double rho1 = t.rho1;
   const double T0 = s0.temperature;
   s1.melted = t.molten;

@@ -1,3 +1,9 @@
+// The constitutive model of a material (constitutive_model.type). `elastic_plastic`, the composed
+// model of the report's constitutive_model block (sec. 2-3), is described below; `neo_hookean` is
+// the hyperelastic compressible neo-Hookean solid (models/elasticity/neo_hookean.hpp): its stress
+// is a function of F1 alone, with no plastic flow, heating, damage or failure, so its step is
+// begin_update alone (the rest returns at once) and it never takes the vector lanes.
+//
 // The composed `elastic_plastic` model (the report's constitutive_model block, sec. 2-3): a
 // hypoelastic update in the unrotated (Green-Naghdi) frame with a chosen equation of state for the
 // pressure, von Mises radial return on the Johnson-Cook flow stress for the deviator, and optional
@@ -26,6 +32,7 @@
 #include "models/core/input.hpp"
 #include "models/core/point_state.hpp"
 #include "models/damage/damage_law.hpp"
+#include "models/elasticity/neo_hookean.hpp"
 #include "models/elasticity/shear_modulus.hpp"
 #include "models/eos/equation_of_state.hpp"
 #include "models/failure/erosion.hpp"
@@ -41,7 +48,11 @@
 
 namespace impact {
 
+/// constitutive_model.type: the composed hypoelastic-plastic model, or the neo-Hookean solid.
+enum class ConstitutiveType : std::uint8_t { elastic_plastic, neo_hookean };
+
 struct ElasticPlasticParams {
+  ConstitutiveType type = ConstitutiveType::elastic_plastic;
   double density = 0.0;                 ///< reference density rho0 [kg/m^3]
   double bulk_modulus = 0.0;            ///< K [Pa]
   double shear_modulus = 0.0;           ///< mu0 [Pa]
@@ -110,6 +121,8 @@ struct UpdateTrial {
   /// Newton's return of a Johnson-Cook point, which a batch can do (johnson_cook_return_batch);
   /// other laws take the one-point return with the same Newton iteration.
   bool batched = false;
+  /// A neo_hookean step: begin_update wrote the whole end state; no return, nothing to finish.
+  bool hyperelastic = false;
 };
 
 std::string_view to_string(UpdateStatus);
@@ -122,6 +135,11 @@ class ElasticPlastic {
   explicit ElasticPlastic(ElasticPlasticParams params) : p_(std::move(params)) {}
 
   const ElasticPlasticParams& params() const { return p_; }
+  bool hyperelastic() const { return p_.type == ConstitutiveType::neo_hookean; }
+  /// mu and lambda = K - 2 mu / 3 of the neo_hookean law.
+  NeoHookeanModuli neo_hookean_moduli() const {
+    return {p_.shear_modulus, p_.bulk_modulus - 2.0 / 3.0 * p_.shear_modulus};
+  }
 
   /// A point at rest in the reference configuration at temperature T.
   PointState initial_state(double temperature) const;

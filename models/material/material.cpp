@@ -61,10 +61,42 @@ Material read_material(const Json& document, const std::string& file, InputKeyRe
                                   Range::open_closed(0.0, 2e12), "shear modulus mu [Pa]");
   p.bulk_modulus = root.quantity("bulk_modulus", Quantity::elastic_modulus,
                                  Range::open_closed(0.0, 2e12), "bulk modulus K [Pa]");
-  p.specific_heat = root.quantity("specific_heat", Quantity::specific_heat,
-                                  Range::open_closed(0.0, 1e5), "specific heat cp [J/(kg K)]");
   const double conductivity = root.number_or("thermal_conductivity", 0.0, Range::non_negative(),
                                              "thermal conductivity [W/(m K)]");
+  JsonReader cm = root.child("constitutive_model", "the constitutive model and its sub-models");
+  const std::string type = cm.choice(
+      "type", {"elastic_plastic", "neo_hookean"},
+      "constitutive model: the hypoelastic-plastic composition of the report, or the hyperelastic "
+      "compressible neo-Hookean solid (docs/models.md)",
+      "elastic_plastic");
+  if (type == "neo_hookean") {
+    // Elastic: stress from F with mu and lambda = K - 2 mu / 3, nothing else to read. Every key
+    // of the composed model is refused by name (unknown here), temperatures and heat included.
+    p.type = ConstitutiveType::neo_hookean;
+    // lambda < 0 (nu < 0) makes the volumetric energy -mu ln J + lambda/2 (ln J)^2 non-convex
+    // once mu + lambda (1 - ln J) < 0: the pressure falls under moderate compression (nu = -0.5:
+    // from J = 0.59) and the mean stress turns tensile. Refused, naming nu.
+    if (p.bulk_modulus < 2.0 / 3.0 * p.shear_modulus) {
+      const double nu = (3.0 * p.bulk_modulus - 2.0 * p.shear_modulus) /
+                        (2.0 * (3.0 * p.bulk_modulus + p.shear_modulus));
+      problems.add("/bulk_modulus",
+                   "expected at least 2/3 of shear_modulus for neo_hookean (lambda = K - 2 mu / 3 "
+                   ">= 0, Poisson's ratio >= 0; got nu = " +
+                       std::to_string(nu) +
+                       "): with lambda < 0 its volumetric energy is not "
+                       "convex and it softens under compression");
+    }
+    p.heating.enabled = false;
+    p.melting.do_melting = false;
+    p.tepla.enabled = false;
+    cm.reject_unknown_keys();
+    root.reject_unknown_keys();
+    problems.throw_if_any();
+    return Material{
+        name, file, conductivity, ElasticPlastic(std::move(p)), std::nullopt, problems.warnings()};
+  }
+  p.specific_heat = root.quantity("specific_heat", Quantity::specific_heat,
+                                  Range::open_closed(0.0, 1e5), "specific heat cp [J/(kg K)]");
   p.room_temperature =
       root.quantity_or("room_temperature", 294.0, Quantity::temperature, Range::open(0.0, 1e4),
                        "room (reference) temperature T_r [K]");
@@ -80,8 +112,6 @@ Material read_material(const Json& document, const std::string& file, InputKeyRe
                                        "fitted on (mpm warns outside them)"))
     fitted = read_fitted_range(*range);
 
-  JsonReader cm = root.child("constitutive_model", "the constitutive model and its sub-models");
-  cm.choice("type", {"elastic_plastic"}, "constitutive model", "elastic_plastic");
   p.objective_rate = read_objective_rate(cm);
   const std::string algorithm =
       cm.choice("return_algorithm", {"newton", "report_2004"},
@@ -142,6 +172,11 @@ Json to_json(const Material& material) {
   j["density"] = p.density;
   j["shear_modulus"] = p.shear_modulus;
   j["bulk_modulus"] = p.bulk_modulus;
+  if (material.model.hyperelastic()) {
+    j["thermal_conductivity"] = material.thermal_conductivity;
+    j["constitutive_model"] = {{"type", "neo_hookean"}};
+    return j;
+  }
   j["specific_heat"] = p.specific_heat;
   j["thermal_conductivity"] = material.thermal_conductivity;
   j["room_temperature"] = p.room_temperature;

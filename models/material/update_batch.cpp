@@ -34,7 +34,7 @@ int UpdateBatch::add(const ElasticPlastic& model, const PointState& s0, const Ma
   lane.report = StepReport{};
   const ElasticPlasticParams& p = model.params();
   const double J1 = lane_algebra::determinant(to_lanes(F1));
-  lane.polar = p.objective_rate == ObjectiveRate::green_naghdi && J1 > 0.0;
+  lane.polar = !model.hyperelastic() && p.objective_rate == ObjectiveRate::green_naghdi && J1 > 0.0;
   // The one combination with vector kernels (speed); the catalogues' other models take the
   // one-point steps (docs/extending.md, "Where a model is still named").
   lane.lanes = lane.polar && p.return_algorithm == ReturnAlgorithm::newton && !model.molten(s0) &&

@@ -168,6 +168,7 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
 // its <MPM> block, for all materials).
 void apply_physics_overrides(const PhysicsSpec& ph, std::vector<SceneMaterial>& materials) {
   for (SceneMaterial& m : materials) {
+    if (m.material.model.hyperelastic()) continue;  // no erosion, melting or heating to switch
     ElasticPlasticParams p = m.material.model.params();
     if (ph.erosion) p.erosion = *ph.erosion;
     if (ph.do_melting) p.melting.do_melting = *ph.do_melting;

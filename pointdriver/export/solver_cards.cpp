@@ -56,6 +56,10 @@ std::string data(const std::vector<double>& values) {
 // Cowper-Symonds (LS-DYNA's power-law plasticity; Abaqus's tabulated hardening with its power-law
 // rate dependence). Another law is refused with the file, the key path and the laws that have.
 void refuse_other_laws(const Material& m) {
+  if (m.model.hyperelastic())
+    throw std::invalid_argument(m.file +
+                                ": /constitutive_model/type: neo_hookean has no flow stress; cards "
+                                "are written for elastic_plastic materials only");
   const FlowStressLaw& law = m.model.params().flow_stress;
   if (std::holds_alternative<JohnsonCookParams>(law) ||
       std::holds_alternative<CowperSymondsParams>(law))

@@ -1,7 +1,11 @@
 #include "pointdriver/verify/closed_forms.hpp"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace impact::pointdriver::closed_forms {
 
@@ -129,6 +133,42 @@ double johnson_cook_fracture_strain(const JohnsonCookDamage& p, double eta, doub
 
 double adiabatic_temperature_rise(double chi, double work_per_mass, double cp) {
   return chi * work_per_mass / cp;
+}
+
+ShearStress neo_hookean_simple_shear(double mu, double gamma) {
+  return {mu * gamma * gamma, 0.0, mu * gamma};
+}
+
+UniaxialStretch neo_hookean_uniaxial_stress(double mu, double lambda, double stretch) {
+  struct Data {
+    double mu, lambda, s;
+  } data{mu, lambda, stretch};
+  gsl_function f;
+  f.params = &data;
+  f.function = [](double t, void* p) {
+    const Data& d = *static_cast<const Data*>(p);
+    return d.mu * (t * t - 1.0) + d.lambda * std::log(d.s * t * t);
+  };
+  // With lambda > 0, g(t) -> -inf as t -> 0 and grows as mu t^2: one root, bracketed from 1e-6
+  // to 1e3 for any stretch a solid reaches.
+  if (!(lambda > 0.0)) throw std::invalid_argument("neo_hookean_uniaxial_stress: lambda <= 0");
+  gsl_set_error_handler_off();
+  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  if (gsl_root_fsolver_set(solver, &f, 1e-6, 1e3) != GSL_SUCCESS) {
+    gsl_root_fsolver_free(solver);
+    throw std::runtime_error("neo_hookean_uniaxial_stress: no bracket");
+  }
+  double t = 1.0;
+  int status = GSL_CONTINUE;
+  for (int i = 0; i < 200 && status == GSL_CONTINUE; ++i) {
+    gsl_root_fsolver_iterate(solver);
+    t = gsl_root_fsolver_root(solver);
+    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver),
+                                    gsl_root_fsolver_x_upper(solver), 0.0, 1e-15);
+  }
+  gsl_root_fsolver_free(solver);
+  if (status != GSL_SUCCESS) throw std::runtime_error("neo_hookean_uniaxial_stress: no root");
+  return {t, mu * (stretch * stretch - t * t) / (stretch * t * t)};
 }
 
 }  // namespace impact::pointdriver::closed_forms

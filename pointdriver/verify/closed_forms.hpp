@@ -100,6 +100,22 @@ struct JohnsonCookDamage {
 double johnson_cook_fracture_strain(const JohnsonCookDamage& p, double triaxiality, double rate,
                                     double temperature);
 
+// ---- the compressible neo-Hookean solid (models/elasticity/neo_hookean.hpp), written here
+// from W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2 alone, not from the library ----
+/// Simple shear F = I + gamma e_x (x) e_y: J = 1 and sigma = mu (b - I), so sigma_xy = mu gamma,
+/// sigma_xx = mu gamma^2, sigma_yy = 0 (Ogden 1984, Non-linear Elastic Deformations, sec. 5.2.2,
+/// for any J = 1 neo-Hookean).
+ShearStress neo_hookean_simple_shear(double mu, double gamma);
+
+/// Uniaxial stress F = diag(s, t, t): the lateral stretch t solves sigma_yy = 0,
+///   mu (t^2 - 1) + lambda ln(s t^2) = 0   (monotonic in t for lambda > 0; GSL's Brent),
+/// and then sigma_xx = mu (s^2 - t^2) / (s t^2).
+struct UniaxialStretch {
+  double lateral = 1.0;  ///< t [-]
+  double axial = 0.0;    ///< sigma_xx [Pa]
+};
+UniaxialStretch neo_hookean_uniaxial_stress(double mu, double lambda, double stretch);
+
 // ---- adiabatic heating (Taylor & Quinney 1934; report eq. 8) ----
 /// Temperature rise chi W / (rho cp) of a plastic work per unit mass W/rho [J/kg].
 double adiabatic_temperature_rise(double taylor_quinney, double plastic_work_per_mass,

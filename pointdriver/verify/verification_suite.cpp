@@ -33,6 +33,9 @@ const std::vector<VerificationCase>& verification_cases() {
        johnson_cook_damage},
       {"becker_drucker_indicators", "Becker and Drucker indicators vs an independent evaluation",
        stability_indicators},
+      {"neo_hookean_large_strain",
+       "neo-Hookean uniaxial stress (stretch 2, 1/2) and simple shear (gamma 2) vs closed forms",
+       neo_hookean},
       {"mixed_control", "mixed control: stress-controlled components within tolerance",
        mixed_control},
   };

@@ -26,6 +26,8 @@ std::vector<Check> mie_gruneisen_uniaxial_strain(const SuiteContext& ctx);
 std::vector<Check> johnson_cook_damage(const SuiteContext& ctx);
 /// Becker and Drucker indicators against an independent evaluation.
 std::vector<Check> stability_indicators(const SuiteContext& ctx);
+/// The compressible neo-Hookean solid in uniaxial stress and simple shear at large strain.
+std::vector<Check> neo_hookean(const SuiteContext& ctx);
 /// Mixed control: stress-controlled components within the solver tolerance at every step.
 std::vector<Check> mixed_control(const SuiteContext& ctx);
 

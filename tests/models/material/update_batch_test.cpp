@@ -273,4 +273,57 @@ BOOST_AUTO_TEST_CASE(lanes_on_the_whole_step_and_one_point_lanes_mix_with_the_on
   BOOST_TEST(failed >= 3);  // erosion was exercised
 }
 
+// Neo-Hookean points (constitutive_model.type neo_hookean: stress from F, no return) in the same
+// batches as elastic-plastic ones on the lanes: each gets the one-point bits, which are sigma(F1)
+// of models/elasticity/neo_hookean.hpp, and its neighbours theirs.
+BOOST_AUTO_TEST_CASE(neo_hookean_points_in_a_batch_get_the_one_point_bits_and_their_stress_of_F) {
+  const Material al = load_material(kMaterialFile);
+  const Material soft =
+      load_material(std::string(IMPACT_SOURCE_DIR) + "/data/materials/neo_hookean_soft.json");
+  BOOST_TEST(soft.model.hyperelastic());
+  // An elastic-plastic material on the one-point path too (the 2004 return): a lane that held a
+  // neo-Hookean point in one block and this one in the next must not keep the neo-Hookean step.
+  const Material old = load_material(kMaterialFile, Json::parse(R"({"constitutive_model": {
+      "return_algorithm": "report_2004", "erosion": {"algorithm": "none"}}})"));
+  const ElasticPlastic* models[] = {&al.model,   &soft.model, &soft.model, &old.model,
+                                    &soft.model, &old.model,  &al.model};
+  std::mt19937_64 gen(7);
+  std::vector<Point> points;
+  for (int i = 0; i < 29; ++i) {
+    const ElasticPlastic* model = models[i % 7];
+    points.push_back({model, model->initial_state(294.0), Mat3::Zero()});
+  }
+  int plastic = 0;
+  const Differences differing = differing_points(points, 30, 8, gen, plastic);
+  BOOST_TEST_INFO(differing.first);
+  BOOST_TEST(differing.points == 0);
+  BOOST_TEST(plastic > 0);  // the aluminium points yielded beside them
+  // One batch step from a strained state, F1 = (I + L dt) F0 at 30 % strain: sigma(F1) exactly.
+  UpdateBatch batch;
+  Mat3 F0 = Mat3::Identity(), L = Mat3::Zero();
+  F0(0, 1) = 0.3;
+  F0(2, 2) = 1.2;
+  L(0, 0) = 1e5;
+  L(1, 2) = -3e5;
+  const double dt = 1e-7;
+  const Mat3 F1 = (Mat3::Identity() + L * dt) * F0;
+  std::vector<PointState> s0(5), s1(5);
+  for (int k = 0; k < 5; ++k) {
+    s0[k] = models[k]->initial_state(294.0);
+    s0[k].F = F0;
+    batch.add(*models[k], s0[k], L, F1, s1[k]);
+  }
+  batch.run(dt);
+  for (int k = 0; k < 5; ++k) {
+    const StepReport r = batch.finish(k, dt, s1[k]);
+    if (models[k] != &soft.model) continue;
+    const Mat3 expected = neo_hookean_stress(F1, soft.model.neo_hookean_moduli());
+    BOOST_TEST((r.status == UpdateStatus::ok));
+    BOOST_TEST((s1[k].stress - expected).norm() <= 1e-14 * expected.norm());
+    BOOST_TEST(s1[k].F.isApprox(F1, 0.0));
+    BOOST_TEST(r.wave_speed == neo_hookean_wave_speed(F1, soft.model.neo_hookean_moduli(),
+                                                      soft.model.params().density));
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
