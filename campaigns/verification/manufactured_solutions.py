@@ -21,6 +21,12 @@ Usage:
   manufactured_solutions.py --check    compare every body force with an independent evaluation
                                        (central differences of u and of P in numpy, no sympy) at
                                        random points and times; exit 1 beyond 1e-6 relative
+  manufactured_solutions.py --scenes DIR
+                                       write the verification scenes mms_<field>.json into DIR
+                                       (data/scenes/verification/, committed): the body fills
+                                       [0, L] per axis, every face `symmetric` (each field is odd
+                                       about X = 0 and X = L, the mirror's own symmetry), the
+                                       neo-Hookean material of data/materials/neo_hookean_soft.json
 """
 import json
 import sys
@@ -174,9 +180,62 @@ def check():
     return 0 if worst <= 1e-6 else 1
 
 
+# The scenes' numbers: the soft solid of data/materials/neo_hookean_soft.json (E = 1e7 Pa, nu = 0.3,
+# rho0 = 1000 kg/m^3), a body L = 1 m wide and an amplitude A = 0.05 m: |Grad u| up to
+# 2 pi A / L = 0.31, J from 0.33 to 2.2 at the peak, large deformation. c = sqrt(mu / rho0), so the
+# displacement peaks at t = L / (2 c) = 8.06 ms, the scenes' end.
+SOFT = {"A": 0.05, "L": 1.0, "mu": 1.0e7 / 2.6, "lambda_": 1.0e7 * 0.3 / (1.3 * 0.4),
+        "rho0": 1000.0}
+SOFT["c"] = (SOFT["mu"] / SOFT["rho0"]) ** 0.5
+GEOMETRY = {
+    "axis_aligned": ({"lower": [0, 0, 0], "upper": [1, 1, 1], "cells": [8, 8, 8]},
+                     {"type": "box", "lower": [0, 0, 0], "upper": [1, 1, 1]}),
+    "plane_strain": ({"geometry": "plane_strain", "lower": [0, 0], "upper": [1, 1],
+                      "cells": [16, 16]},
+                     {"type": "box", "lower": [0, 0, -0.5], "upper": [1, 1, 0.5]}),
+    "axisymmetric": ({"geometry": "axisymmetric", "lower": [0, 0], "upper": [1, 1],
+                      "cells": [16, 16]},
+                     {"type": "cylinder", "bottom": [0, 0, 0], "top": [1, 0, 0], "radius": 1}),
+}
+
+
+def write_scenes(directory):
+    import os
+    for field in FIELDS:
+        keys = scene_keys(field)
+        grid, geometry = GEOMETRY[field]
+        scene = {
+            "description": (
+                f"Manufactured solution '{field}' (campaigns/verification/manufactured_solutions.py, "
+                "docs/verification.md#manufactured-solutions; Wallstedt & Guilkey 2008, J. Comput. "
+                "Phys. 227:9628, sec. 4): u = A sin(2 pi X / L) sin(pi c t / L) per axis, held by "
+                "the body force sympy derives for the compressible neo-Hookean solid; every face "
+                "symmetric. Written by `manufactured_solutions.py --scenes`: edit the script, not "
+                "this file. The history's displacement_error_rms/max [m] are the error; "
+                "`mpm study --ladder` refines the grid."),
+            "constants": {k: SOFT[k] for k in ("A", "L", "c", "mu", "lambda_", "rho0")},
+            "materials": {"soft": {"file": "../../materials/neo_hookean_soft.json"}},
+            "objects": {"body": {"material": "soft", "geometry": geometry,
+                                 "velocity": keys["velocity"],
+                                 "body_force": keys["body_force"]}},
+            "grid": grid,
+            "time": {"max_time": SOFT["L"] / (2.0 * SOFT["c"]), "multiplier": 0.4},
+            "solver": {"interpolation": "gimp", "scheme": "musl"},
+            "output": {"snapshots": False, "exact_displacement": keys["exact_displacement"]},
+        }
+        path = os.path.join(directory, f"mms_{field}.json")
+        with open(path, "w") as out:
+            json.dump(scene, out, indent=1)
+            out.write("\n")
+        print(path)
+
+
 if __name__ == "__main__":
     if sys.argv[1:] == ["--check"]:
         sys.exit(check())
+    if len(sys.argv) == 3 and sys.argv[1] == "--scenes":
+        write_scenes(sys.argv[2])
+        sys.exit(0)
     if sys.argv[1:]:
         sys.exit(__doc__)
     print(json.dumps([scene_keys(f) for f in FIELDS], indent=1))
