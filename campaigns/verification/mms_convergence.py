@@ -20,19 +20,23 @@ import csv
 import json
 import math
 import os
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 SCENES = os.path.join(ROOT, "data", "scenes", "verification")
+# impact.results (pure Python; python/ of the source tree) runs mpm and reads its run folders.
+sys.path.insert(0, os.path.join(ROOT, "python"))
+from impact import results  # noqa: E402
 
 
-def run_level(mpm, field, cells, interpolation, scheme, multiplier, threads, work, amplitude):
+def run_level(launcher, field, cells, interpolation, scheme, multiplier, threads, work,
+              amplitude):
     name = f"{field}_{interpolation}_{scheme}_cfl{multiplier}_n{cells}"
     out = os.path.join(work, name)
-    summary = os.path.join(out, "summary.json")
-    if not os.path.exists(summary):  # resumable: a finished level is kept
+    row = {"field": field, "cells": cells, "interpolation": interpolation, "scheme": scheme,
+           "multiplier": multiplier}
+    if not results.completed(out):  # resumable: a finished level is kept
         dims = 3 if field == "axis_aligned" else 2
         scene = {"extends": os.path.join(SCENES, f"mms_{field}.json"),
                  "grid": {"cells": [cells] * dims},
@@ -43,23 +47,18 @@ def run_level(mpm, field, cells, interpolation, scheme, multiplier, threads, wor
         path = os.path.join(work, name + ".json")
         with open(path, "w") as f:
             json.dump(scene, f)
-        r = subprocess.run([mpm, "run", path, "--out", out, "--threads", str(threads)],
-                           capture_output=True, text=True)
-        if r.returncode != 0:
-            return {"field": field, "cells": cells, "interpolation": interpolation,
-                    "scheme": scheme, "multiplier": multiplier, "failed": r.stderr.strip()[-200:]}
-    with open(os.path.join(out, "history.csv")) as f:
-        rows = list(csv.DictReader(f))
-    last = rows[-1]
-    with open(summary) as f:
-        s = json.load(f)
-    return {"field": field, "cells": cells, "interpolation": interpolation, "scheme": scheme,
-            "multiplier": multiplier, "seconds": s.get("wall_time [s]", ""),
-            "rms [m]": float(last["displacement_error_rms [m]"]),
-            "max [m]": float(last["displacement_error_max [m]"]),
-            "rms_over_run [m]": max(float(r["displacement_error_rms [m]"]) for r in rows),
-            "energy_error [-]": float(last["energy_error [-]"]),
-            "particles": s.get("particles", ""), "steps": len(rows) - 1, "failed": ""}
+        try:
+            launcher.run("run", path, out=out, threads=threads, options=["--overwrite"])
+        except results.LaunchError as e:  # a run that stops is a row of the table, not the end
+            return dict(row, failed=str(e).strip().splitlines()[-1][-200:])
+    h = results.history_columns(out)
+    rms, worst = h["displacement_error_rms [m]"], h["displacement_error_max [m]"]
+    s = results.read_summary(out, required=True)
+    return dict(row, **{"seconds": s.get("wall_time [s]", ""), "rms [m]": rms[-1],
+                        "max [m]": worst[-1], "rms_over_run [m]": max(rms),
+                        "energy_error [-]": h["energy_error [-]"][-1],
+                        "particles": s.get("particles", ""), "steps": len(rms) - 1,
+                        "failed": ""})
 
 
 def order(coarse, fine, key):
@@ -72,7 +71,7 @@ def order(coarse, fine, key):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out")
-    ap.add_argument("--mpm", default=os.path.join(ROOT, "build", "bin", "mpm"))
+    ap.add_argument("--mpm", default=None, help="the mpm program (default: build/bin/mpm)")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--fields", default="axis_aligned,plane_strain,axisymmetric")
     ap.add_argument("--cells-2d", default="16,32,64,128")
@@ -85,27 +84,28 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     work = os.path.join(a.out, "runs")
     os.makedirs(work, exist_ok=True)
-    results = []
+    launcher = results.Launcher(a.mpm)
+    rows = []
     for field in a.fields.split(","):
         cells = a.cells_3d if field == "axis_aligned" else a.cells_2d
         for interpolation in a.interpolations.split(","):
             for scheme in a.schemes.split(","):
                 for m in (float(x) for x in a.multipliers.split(",")):
                     for n in (int(x) for x in cells.split(",")):
-                        r = run_level(a.mpm, field, n, interpolation, scheme, m, a.threads, work,
-                                      a.amplitude)
-                        results.append(r)
+                        r = run_level(launcher, field, n, interpolation, scheme, m, a.threads,
+                                      work, a.amplitude)
+                        rows.append(r)
                         print(json.dumps(r), flush=True)
     keys = ["field", "interpolation", "scheme", "multiplier", "cells", "particles", "steps", "seconds",
             "rms [m]", "max [m]", "rms_over_run [m]", "energy_error [-]", "failed"]
     with open(os.path.join(a.out, "mms_convergence.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, keys, extrasaction="ignore")
         w.writeheader()
-        w.writerows(results)
+        w.writerows(rows)
     lines = ["| field | shapes | scheme | CFL | cells | rms [m] | order | max [m] | order |",
              "|---|---|---|---|---|---|---|---|---|"]
-    for i, r in enumerate(results):
-        prev = results[i - 1] if i > 0 else None
+    for i, r in enumerate(rows):
+        prev = rows[i - 1] if i > 0 else None
         same = prev and all(prev[k] == r[k] for k in ("field", "interpolation", "scheme",
                                                        "multiplier"))
         if r.get("failed"):
