@@ -64,11 +64,15 @@ Material read_material(const Json& document, const std::string& file, InputKeyRe
   const double conductivity = root.number_or("thermal_conductivity", 0.0, Range::non_negative(),
                                              "thermal conductivity [W/(m K)]");
   JsonReader cm = root.child("constitutive_model", "the constitutive model and its sub-models");
+  const std::size_t before_type = problems.count();
   const std::string type = cm.choice(
       "type", {"elastic_plastic", "neo_hookean"},
       "constitutive model: the hypoelastic-plastic composition of the report, or the hyperelastic "
       "compressible neo-Hookean solid (docs/models.md)",
       "elastic_plastic");
+  // The type decides what every other key means: an unknown one ends the reading here, before a
+  // list of what an elastic-plastic file would miss buries its name.
+  if (problems.count() > before_type) problems.throw_if_any();
   if (type == "neo_hookean") {
     // Elastic: stress from F with mu and lambda = K - 2 mu / 3, nothing else to read. Every key
     // of the composed model is refused by name (unknown here), temperatures and heat included.
@@ -76,7 +80,8 @@ Material read_material(const Json& document, const std::string& file, InputKeyRe
     // lambda < 0 (nu < 0) makes the volumetric energy -mu ln J + lambda/2 (ln J)^2 non-convex
     // once mu + lambda (1 - ln J) < 0: the pressure falls under moderate compression (nu = -0.5:
     // from J = 0.59) and the mean stress turns tensile. Refused, naming nu.
-    if (p.bulk_modulus < 2.0 / 3.0 * p.shear_modulus) {
+    if (p.bulk_modulus > 0.0 && p.shear_modulus > 0.0 &&
+        p.bulk_modulus < 2.0 / 3.0 * p.shear_modulus) {
       const double nu = (3.0 * p.bulk_modulus - 2.0 * p.shear_modulus) /
                         (2.0 * (3.0 * p.bulk_modulus + p.shear_modulus));
       problems.add("/bulk_modulus",
@@ -89,6 +94,24 @@ Material read_material(const Json& document, const std::string& file, InputKeyRe
     p.heating.enabled = false;
     p.melting.do_melting = false;
     p.tepla.enabled = false;
+    // The composed model's keys, named as what they are here: keys the law would ignore.
+    for (const char* key :
+         {"specific_heat", "room_temperature", "melt_temperature", "fitted_range"})
+      if (root.has(key)) {
+        problems.add(root.key_path(key), "a neo_hookean material has no " + std::string(key) +
+                                             " (it would be ignored): remove the key");
+        root.ignore(key);
+      }
+    if (const auto block = document.find("constitutive_model");
+        block != document.end() && block->is_object())
+      for (const auto& item : block->items())
+        if (item.key() != "type") {
+          problems.add(cm.key_path(item.key()),
+                       "a neo_hookean material has no " + item.key() +
+                           " (its stress is a function of F alone; it would be ignored): remove "
+                           "the key, or set it to null in an override");
+          cm.ignore(item.key());
+        }
     cm.reject_unknown_keys();
     root.reject_unknown_keys();
     problems.throw_if_any();

@@ -152,6 +152,12 @@ void check_planar_scene(InputProblems& problems, Scene& s) {
                                               expected + varying_part_note<Grid>());
       if constexpr (Grid::kMeshAxes < 3) o.particles_per_cell[2] = 1;  // the one cell along z
     }
+    // The exact displacement likewise: its z component is the particles' z motion, 0 on a 2D grid.
+    if constexpr (Grid::kMeshAxes < 3)
+      if (const auto& u = s.output.exact_displacement;
+          u && (!u->text[2].empty() || u->uniform_part(s.constants)(2) != 0.0))
+        problems.add("/output/exact_displacement/2",
+                     "expected 0 on " + grid + " (a 2D grid has no motion along z)");
     if (!Grid::moves_in_model(s.solver.gravity))
       problems.add("/solver/gravity",
                    "gravity " + vec_text(s.solver.gravity) + " on " + grid + ": " + expected);

@@ -147,6 +147,8 @@ Row make_row(double time, int step, int leg, const PointState& s, const Mat3& Q,
   r.Q = Q;
   r.state = s;
   r.stress_path = Q.transpose() * s.stress * Q;
+  // A neo_hookean solid has no melting temperature (and no failure): its indicators stay 0.
+  if (p.type == ConstitutiveType::neo_hookean) return r;
   r.tepla_indicator = tepla_indicator(s.porosity, p.tepla.critical_porosity, s.damage);
   r.melting_indicator =
       s.temperature / melting_temperature(p.melting, p.melt_temperature, 1.0 / s.F.determinant());

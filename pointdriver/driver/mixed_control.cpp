@@ -241,6 +241,18 @@ StepSolution solve_step(const ControlPlan& plan, const StepContext& ctx, const P
     u(m) = ddot(guess, G) / ddot(G, G);
   }
   Trial t = problem.evaluate(u);
+  // The previous step's rate is a close guess under steady loading; after a rate jump (1e3 to
+  // 1e-3 /s) it is a strain of L dt = 120, far outside a stiff law's range (a neo-Hookean solid's
+  // stress at J = 1e-104 made the Newton matrix singular). Start from the unknowns at rest then,
+  // when that is the smaller residual.
+  if (n > 0 && u.squaredNorm() > 0.0) {
+    const Trial rest = problem.evaluate(Vector::Zero(n));
+    if (rest.ok &&
+        (!t.ok || problem.scaled(rest.residual).norm() < problem.scaled(t.residual).norm())) {
+      u.setZero();
+      t = rest;
+    }
+  }
   const auto finish = [&](const Trial& trial, bool converged, std::string message) {
     // The failing step: apply the real (eroding) model once at the converged unknowns.
     const bool erode =

@@ -177,9 +177,10 @@ CheckedMaterial check_material(InputProblems& problems, const std::string& name,
   try {
     const Material material = load_material(resolved, overrides);
     if (material.model.hyperelastic()) {  // no flow stress or damage to fit
-      problems.add("/material", name +
-                                    ": constitutive_model.type is neo_hookean; a fit needs an "
-                                    "elastic_plastic material (its flow_stress and damage)");
+      problems.add("/material",
+                   name +
+                       ": constitutive_model.type is neo_hookean; fitting and checking need an "
+                       "elastic_plastic material (its flow_stress and damage)");
       return {};
     }
     std::vector<std::string> warnings = material.warnings;
