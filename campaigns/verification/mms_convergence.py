@@ -57,7 +57,7 @@ def run_level(launcher, field, cells, interpolation, scheme, multiplier, threads
     return dict(row, **{"seconds": s.get("wall_time [s]", ""), "rms [m]": rms[-1],
                         "max [m]": worst[-1], "rms_over_run [m]": max(rms),
                         "energy_error [-]": h["energy_error [-]"][-1],
-                        "particles": s.get("particles", ""), "steps": len(rms) - 1,
+                        "particles": s.get("particles", ""), "steps": s.get("steps", ""),
                         "failed": ""})
 
 
@@ -96,12 +96,17 @@ def main():
                                       work, a.amplitude)
                         rows.append(r)
                         print(json.dumps(r), flush=True)
-    keys = ["field", "interpolation", "scheme", "multiplier", "cells", "particles", "steps", "seconds",
-            "rms [m]", "max [m]", "rms_over_run [m]", "energy_error [-]", "failed"]
+    header = {"field": "field", "interpolation": "interpolation", "scheme": "scheme",
+              "multiplier": "cfl_multiplier [-]", "cells": "cells_per_axis [-]",
+              "particles": "particles [-]", "steps": "steps [-]", "seconds": "wall_time [s]",
+              "rms [m]": "displacement_error_rms [m]", "max [m]": "displacement_error_max [m]",
+              "rms_over_run [m]": "largest_rms_over_the_run [m]",
+              "energy_error [-]": "energy_error [-]", "failed": "failed"}
     with open(os.path.join(a.out, "mms_convergence.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, keys, extrasaction="ignore")
-        w.writeheader()
-        w.writerows(rows)
+        w = csv.writer(f)
+        w.writerow(header.values())
+        for r in rows:
+            w.writerow([r.get(k, "") for k in header])
     lines = ["| field | shapes | scheme | CFL | cells | rms [m] | order | max [m] | order |",
              "|---|---|---|---|---|---|---|---|---|"]
     for i, r in enumerate(rows):
