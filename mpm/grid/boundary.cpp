@@ -11,10 +11,11 @@
 
 namespace impact::mpm {
 
-void Grid::apply_mirror(std::vector<Vec3>& field_values) const {
+void Grid::apply_mirror(std::vector<Vec3>& field_values, MirrorTime when) const {
   // The writes were listed at construction (face layers of every face, then the ghost layers in
   // face order: a ghost corner node is the reflection in both planes of an interior node) and
   // restricted to the active blocks by activate().
+  const std::array<double, 6>& V = face_velocity_[when == MirrorTime::start ? 0 : 1];
   for (int f = 0; f < fields_; ++f) {
     Vec3* v = field_values.data() + std::size_t(f) * node_count();
     for (const MirrorWrite& w : mirror_active_) {
@@ -23,19 +24,32 @@ void Grid::apply_mirror(std::vector<Vec3>& field_values) const {
         if (w.fixed) {
           x.setZero();
         } else {
-          x(w.axis) = 0.0;
+          x(w.axis) = V[w.face];
         }
       } else {
         Vec3 m = v[w.source];
         if (w.fixed) {
           m = -m;
         } else {
-          m(w.axis) = -m(w.axis);
+          // The image about the plane moving at V; a still plane keeps the plain reflection's
+          // bits (-0 for +0).
+          m(w.axis) = V[w.face] == 0.0 ? -m(w.axis) : 2.0 * V[w.face] - m(w.axis);
         }
         x = m;
       }
     }
   }
+}
+
+double Grid::moving_face_work(int node, const Vec3& impulse) const {
+  const std::array<int, 3> ijk = this->ijk(node);
+  double work = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const int face = ijk[d] <= 0 ? 2 * d : ijk[d] >= spec_.cells[d] ? 2 * d + 1 : -1;
+    if (face < 0 || !spec_.face_velocity[face].set) continue;
+    work += impulse(d) * 0.5 * (face_velocity_[0][face] + face_velocity_[1][face]);
+  }
+  return work;
 }
 
 }  // namespace impact::mpm

@@ -44,7 +44,12 @@ struct MirrorWrite {
   int source;  ///< -1 on the face layer
   int axis;
   bool fixed;
+  int face;  ///< kFaceNames order: its velocity (grid.face_velocity) moves the mirror plane
 };
+
+/// Which of a moving face's velocities a mirror applies: the step's start (the start-of-step grid
+/// velocity) or its end (v*, the gradient velocities).
+enum class MirrorTime { start, end };
 
 /// One `wall` face a face-layer node lies on (grid/wall.cpp): `inward` is +1 on a lower face and
 /// -1 on an upper one (the direction the wall pushes), `mu` its Coulomb coefficient, `bit` the
@@ -276,7 +281,19 @@ class Grid {
   /// The mirror condition on every field of a nodal velocity array (grid/boundary.cpp): on every
   /// constrained face the constrained components on the face layer are zeroed, and the ghost
   /// layer outside is set to the reflection of the first interior layer.
-  void apply_mirror(std::vector<Vec3>& v) const;
+  /// A face moving at V (grid.face_velocity) is a mirror plane moving along its axis: the face
+  /// layer's normal component is V, the ghost's the image 2 V - v_inner (docs/scenes.md#moving-
+  /// faces); `when` picks V at the step's start or end.
+  void apply_mirror(std::vector<Vec3>& v, MirrorTime when = MirrorTime::end) const;
+  /// The moving faces' velocities at the step's start and end [m/s] (kFaceNames order; 0: still).
+  void set_face_velocities(const std::array<double, 6>& start, const std::array<double, 6>& end) {
+    face_velocity_[0] = start;
+    face_velocity_[1] = end;
+  }
+  /// The work of the moving faces on a boundary node given the impulse the faces gave it [J]:
+  /// each component of `impulse` times the mid-step velocity of the face of that axis the node
+  /// lies on (its face or ghost layer), 0 where the node lies on no moving face.
+  double moving_face_work(int node, const Vec3& impulse) const;
   /// The `wall` faces (grid/wall.cpp) on every field of the end velocity `end` (the step's v*, or
   /// MUSL's re-mapped velocity in the projection pass): at a face-layer node whose field touches a
   /// wall this step (wall_touch) and moves into it, the normal component is zeroed; the held
@@ -327,6 +344,7 @@ class Grid {
   std::vector<Vec3> remap_;
   std::vector<int> boundary_nodes_;
   std::vector<int> active_boundary_;
+  std::array<std::array<double, 6>, 2> face_velocity_{};  ///< [start, end] per face [m/s]
   std::vector<MirrorWrite> mirror_all_;     ///< every face node, in the order of the mirror
   std::vector<MirrorWrite> mirror_active_;  ///< those whose target is in an active block
   /// Mirror writes whose source lies on a wall's layers: applied after the walls.

@@ -187,13 +187,15 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
     }
     // The mirror's ghosts whose source is on a wall's layers see the walls' result.
     for (const MirrorWrite& m : mirror_after_walls_active_) {
-      for (Vec3* v : {v_end, v_start}) {
+      for (const int when : {1, 0}) {  // end, start (apply_mirror's images)
+        Vec3* v = when == 1 ? v_end : v_start;
         if (!v) continue;
         Vec3 x = v[m.source];
+        const double V = face_velocity_[when][m.face];
         if (m.fixed) {
           x = -x;
         } else {
-          x(m.axis) = -x(m.axis);
+          x(m.axis) = V == 0.0 ? -x(m.axis) : 2.0 * V - x(m.axis);
         }
         v[m.target] = x;
       }

@@ -65,6 +65,10 @@ void check_field_count(InputProblems& problems, const Scene& s);
 /// value that is not finite is refused, naming the point; sets each object's velocity peak and
 /// initial body-force peak for the estimates, and checks the velocity's units there.
 void check_initial_fields(InputProblems& problems, Scene& s);
+/// grid.face_velocity's expressions: they compile with the scene's constants and read t alone.
+void check_face_velocities(InputProblems& problems, const Scene& s);
+/// A warning in s.warnings for each moving face that travels more than a quarter of its cell.
+void warn_of_face_travel(Scene& s);
 void warn_of_contact_within_one_material(Scene& s);
 
 }  // namespace impact::mpm::scene_input

@@ -104,6 +104,7 @@ void warn_of_idle_expression_names(InputProblems& problems, const Scene& s) {
     bool used = false;
     for (const VectorExpression* f : fields)
       for (const std::string& text : f->text) used = used || names(text, name);
+    for (const FaceMotion& m : s.grid.face_velocity) used = used || names(m.text, name);
     if (!used) problems.warn("/constants/" + name, "not used by any expression");
   }
   for (const SceneObject& o : s.objects)

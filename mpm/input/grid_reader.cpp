@@ -113,9 +113,10 @@ std::string no_face_along_z(const std::string& geometry) {
          "\") has no face along z; expected faces x-, x+, y- and y+ only";
 }
 
-// grid.boundary and grid.wall_friction: the condition of each face the geometry reads (the rest,
-// a 2D grid's z faces, are free), its axis face a mirror, friction only on a wall.
-void read_faces(JsonReader& r, GridSpec& g, const std::string& geometry) {
+// grid.boundary, grid.face_velocity and grid.wall_friction: the condition of each face the geometry
+// reads (the rest, a 2D grid's z faces, are free), its axis face a mirror, a velocity only on a
+// mirror, friction only on a wall.
+void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string& geometry) {
   g.faces.fill(FaceCondition::symmetric);
   // A 2D grid has no faces along z (its one cell of 1 m is not a mesh axis): they are free.
   const int faces = g.geometry_facts().faces_read, axis_face = g.geometry_facts().axis_face;
@@ -142,6 +143,41 @@ void read_faces(JsonReader& r, GridSpec& g, const std::string& geometry) {
                               c + "\"");
     }
     b->reject_unknown_keys();
+  }
+  // grid.face_velocity: a moving mirror plane (a frictionless piston, a load curve); its
+  // expressions are checked with the constants (check_face_velocities).
+  if (auto v = r.optional_child("face_velocity",
+                                "velocity along its axis of a moving symmetric face [m/s]: a "
+                                "number or an expression of t")) {
+    const Json& block = at(grid, "face_velocity");
+    for (int f = 0; f < 6; ++f) {
+      if (!v->has(kFaceNames[f])) continue;
+      const std::string key = v->key_path(kFaceNames[f]);
+      const Json& value = block[kFaceNames[f]];
+      v->read_elsewhere(kFaceNames[f], [] {
+        return KeyDescription{"number or expression of t", "", "",
+                              "velocity of a symmetric face along its axis, positive toward "
+                              "+axis (docs/scenes.md#moving-faces)"};
+      });
+      if (f >= faces) {
+        v->problems().add(key, no_face_along_z(geometry));
+      } else if (f == axis_face) {
+        v->problems().add(key, "the face y- of an axisymmetric grid is the axis: it cannot move");
+      } else if (g.faces[f] != FaceCondition::symmetric) {
+        v->problems().add(key, std::string("face ") + kFaceNames[f] +
+                                   " is not symmetric: a face moves as a mirror plane, so its "
+                                   "grid.boundary." +
+                                   kFaceNames[f] + " must be \"symmetric\"");
+      } else if (value.is_number()) {
+        g.face_velocity[f] = {"", value.get<double>(), true};
+      } else if (value.is_string()) {
+        g.face_velocity[f] = {value.get<std::string>(), 0.0, true};
+      } else {
+        v->problems().add(
+            key, "expected a number or an expression of t (a string) [m/s], got " + value.dump());
+      }
+    }
+    v->reject_unknown_keys();
   }
   if (auto w = r.optional_child("wall_friction", "Coulomb friction coefficient per wall face")) {
     for (int f = 0; f < 6; ++f) {
@@ -208,7 +244,7 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
                      "0, got " +
                          got.str());
   }
-  read_faces(r, g, geometry);
+  read_faces(r, n, g, geometry);
   g.active_blocks = r.boolean_or(
       "active_blocks", true,
       "grid work only where the particles are (false: every node of the box every step)");

@@ -8,6 +8,7 @@
 
 #include "mpm/input/block_readers.hpp"
 #include "mpm/input/scene_keys.hpp"
+#include "mpm/scene/face_motion.hpp"
 #include "mpm/scene/grid_coverage.hpp"
 #include "mpm/scene/grid_geometry.hpp"
 #include "mpm/scene/initial_fields.hpp"
@@ -224,6 +225,42 @@ void warn_of_contact_within_one_material(Scene& s) {
       "\": they share one velocity field and meet as one body, as with \"single_velocity\"; "
       "give each body its own material (the same file under another name) for contact between "
       "them");
+}
+
+void check_face_velocities(InputProblems& problems, const Scene& s) {
+  for (int f = 0; f < 6; ++f) {
+    const FaceMotion& m = s.grid.face_velocity[f];
+    if (m.text.empty()) continue;
+    const std::string key = std::string("/grid/face_velocity/") + kFaceNames[f];
+    if (const auto problem = check_expression(m.text, s.constants)) {
+      const std::string where = problem->position == std::string::npos ? ""
+                                : problem->position >= m.text.size()
+                                    ? " at its end"
+                                    : " at character " + std::to_string(problem->position + 1);
+      problems.add(key, "expression \"" + m.text + "\"" + where + ": " + problem->message);
+      continue;
+    }
+    VectorExpression e;
+    e.text[0] = m.text;
+    for (const char* x : {"X", "Y", "Z"})
+      if (e.uses(x, s.constants))
+        problems.add(key, "expression \"" + m.text + "\" reads " + x +
+                              ": a face moves as a whole, its velocity is a function of t alone");
+  }
+}
+
+void warn_of_face_travel(Scene& s) {
+  const std::array<double, 6> travel = face_travel(s.grid, s.constants, s.time.max_time);
+  const Vec3 h = s.grid.spacing();
+  for (int f = 0; f < 6; ++f) {
+    if (!s.grid.face_velocity[f].set || !(travel[f] > 0.25 * h(f / 2))) continue;
+    std::ostringstream m;
+    m << s.file << ": /grid/face_velocity/" << kFaceNames[f] << ": the face travels up to "
+      << travel[f] << " m by time.max_time, more than a quarter of its cell (" << h(f / 2)
+      << " m): the mirror plane stays at its grid position, so the material it drives leaves "
+         "the face's layer beyond that (docs/scenes.md#moving-faces)";
+    s.warnings.push_back(m.str());
+  }
 }
 
 }  // namespace impact::mpm::scene_input

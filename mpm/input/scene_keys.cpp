@@ -109,6 +109,14 @@ InputKeyRecorder scene_keys(const std::string& material_file) {
     scene["objects"][std::string(kSceneKeyName)]["geometry"] = geometry;
     read_scene(scene, "a.json", &keys);
   }
+  // The moving faces are mirror faces; the sample's faces are walls with friction.
+  Json mirrors = sample;
+  mirrors["grid"].erase("wall_friction");
+  for (const char* face : kFaceNames) {
+    mirrors["grid"]["boundary"][face] = "symmetric";
+    mirrors["grid"]["face_velocity"][face] = 0.0;
+  }
+  read_scene(mirrors, "a.json", &keys);
   // A default that changes with the scene's other values is computed from them, not a constant.
   InputKeyRecorder other;
   read_scene(sample_scene(material_file, 2.0 * kMaxTime), "b.json", &other);

@@ -24,6 +24,7 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   read_solver(root, doc, s.solver);
   read_physics(root, s.physics);
   read_constants(root, doc, s.constants);
+  check_face_velocities(problems, s);
   read_output(root, doc, file, s.time.max_time, s.constants, s.output);
   read_materials(root, doc, s.materials);
   read_objects(root, doc, s.materials, s.constants, s.objects);
@@ -37,6 +38,7 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   root.reject_unknown_keys();
   problems.throw_if_any();
   s.warnings.insert(s.warnings.end(), problems.warnings().begin(), problems.warnings().end());
+  if (s.grid.has_moving_faces()) warn_of_face_travel(s);
   for (std::string& w : fitted_range_warnings(s)) s.warnings.push_back(std::move(w));
   warn_of_contact_within_one_material(s);
   return s;

@@ -31,11 +31,25 @@ enum class Outflow { stop, remove };
 /// Faces in the order x-, x+, y-, y+, z-, z+ (index 2*axis + side).
 inline constexpr std::array<const char*, 6> kFaceNames = {"x-", "x+", "y-", "y+", "z-", "z+"};
 
+/// grid.face_velocity.<face> (docs/scenes.md#moving-faces): a `symmetric` face that moves along
+/// its axis [m/s], a number or an expression of t (text, compiled by the solver).
+struct FaceMotion {
+  std::string text;    ///< empty: the number `value`
+  double value = 0.0;  ///< [m/s], positive toward +axis
+  bool set = false;    ///< the scene gave the face a velocity
+};
+
 struct GridSpec {
-  Vec3 lower, upper;                      ///< [m]
-  std::array<int, 3> cells{};             ///< cells per axis
-  std::array<FaceCondition, 6> faces{};   ///< per face, kFaceNames order
-  std::array<double, 6> wall_friction{};  ///< Coulomb coefficient of each `wall` face [-]
+  Vec3 lower, upper;                          ///< [m]
+  std::array<int, 3> cells{};                 ///< cells per axis
+  std::array<FaceCondition, 6> faces{};       ///< per face, kFaceNames order
+  std::array<double, 6> wall_friction{};      ///< Coulomb coefficient of each `wall` face [-]
+  std::array<FaceMotion, 6> face_velocity{};  ///< per face, kFaceNames order
+  bool has_moving_faces() const {
+    for (const FaceMotion& m : face_velocity)
+      if (m.set) return true;
+    return false;
+  }
   /// A wall face with mu > 0: its Coulomb work is heat (grid heat array, ledger column).
   bool has_wall_friction() const {
     for (const double mu : wall_friction)

@@ -24,7 +24,8 @@ namespace impact::mpm {
 // tests/mpm/verification/resting_contact_test.cpp). An unstable step makes motion, which the check
 // still sees. Nothing is checked while no energy has entered (E_ref = 0: a body at rest). Names the
 // fastest particle: where the instability runs away.
-std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t) {
+std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t,
+                                     const std::string& energy_unit) {
   const double reference = std::max(ledger.initial_energy(), ledger.peak_energy_input());
   const double excess = ledger.growth_excess();
   if (!(reference > 0.0) || !(excess > t.max_energy_growth * reference)) return std::nullopt;
@@ -39,11 +40,13 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   const LedgerRow r = ledger.row();
   std::ostringstream m;
   m.precision(6);
-  m << "kinetic + strain energy " << r.total_energy << " J (kinetic " << r.kinetic_energy
-    << " J, strain " << r.strain_energy << " J) against " << ledger.energy_input()
-    << " J that entered (E0 " << ledger.initial_energy() << " J, external work " << r.external_work
-    << " J): growth " << std::showpos << excess / reference << std::noshowpos << " (energy_error "
-    << std::showpos << r.energy_error << std::noshowpos
+  const std::string& J = energy_unit;  // J, or J/m per metre of thickness (plane strain)
+  m << "kinetic + strain energy " << r.total_energy << " " << J << " (kinetic " << r.kinetic_energy
+    << " " << J << ", strain " << r.strain_energy << " " << J << ") against "
+    << ledger.energy_input() << " " << J << " that entered (E0 " << ledger.initial_energy() << " "
+    << J << ", external work " << r.external_work << " " << J << "; the most that had entered, "
+    << reference << " " << J << ", is the reference): growth " << std::showpos << excess / reference
+    << std::noshowpos << " (energy_error " << std::showpos << r.energy_error << std::noshowpos
     << ") above time.max_energy_growth = " << t.max_energy_growth
     << "; this particle is the fastest, |v| = " << std::sqrt(speed2)
     << " m/s: the explicit step is unstable (time.multiplier " << t.multiplier << "; lower it)";

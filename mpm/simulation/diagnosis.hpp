@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "mpm/ledger/ledger.hpp"
 #include "mpm/particles/particles.hpp"
@@ -14,6 +15,8 @@ namespace impact::mpm {
 
 /// The energy-growth check: the fastest particle with the ledger's figures when kinetic + strain
 /// energy grew beyond time.max_energy_growth times the energy that entered; else nullopt.
-std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t);
+/// `energy_unit`: the ledger's energy unit (J, or J/m on a plane-strain grid).
+std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, const TimeSpec& t,
+                                     const std::string& energy_unit);
 
 }  // namespace impact::mpm

@@ -38,7 +38,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
             ranks_.stored_box(boxes_, scene.grid)),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
-      ledger_(!scene.solver.gravity.isZero(0.0) || scene.has_body_force(),
+      ledger_(!scene.solver.gravity.isZero(0.0) || scene.has_body_force() ||
+                  scene.grid.has_moving_faces(),
               scene.grid.outflow == Outflow::remove,
               Vec3(scene.grid.geometry_facts().momentum_components.data()),
               ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
@@ -66,6 +67,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   if (scene_.needs_reference_positions())
     particles_.X = particles_.x;  // the reference positions: the seed points
   if (scene_.has_body_force()) body_forces_.emplace(scene_, grid_.threads());
+  if (scene_.grid.has_moving_faces()) face_motions_.emplace(scene_.grid, scene_.constants);
   st.mean_spacing = scene_.grid.mean_spacing();
   if (ph.artificial_viscosity.enabled) {
     st.viscosity = &scene_.physics.artificial_viscosity;
@@ -177,6 +179,8 @@ const StepTotals& Simulation::step() {
     max_body_force_ = ranks_.max(body_forces_->peak());
   }
   const double dt = checked_dt();
+  if (face_motions_)
+    grid_.set_face_velocities(face_motions_->at(time_), face_motions_->at(time_ + dt));
   std::optional<Failure> failure;
   last_ = advance_step(dt, failure);
   phase_totals_ += last_.seconds;
@@ -185,7 +189,9 @@ const StepTotals& Simulation::step() {
   ranks_.reduce(last_.particles, last_.stress, last_.grid);
   book(dt);
   // The step is complete (time, ledger and particles at t^{n+1}): the failure names this step.
-  const std::optional<Failure> grown = energy_growth(ledger_, particles_, scene_.time);
+  const std::optional<Failure> grown =
+      energy_growth(ledger_, particles_, scene_.time,
+                    ExtensiveUnits::of(scene_.grid.per_metre_of_thickness()).energy);
   stop_if(
       ranks_.first_failure(grown ? std::optional(describe(*grown, steps_, time_)) : std::nullopt));
   migrated_ = ranks_.migrate(particles_, boxes_, scene_.grid);  // those that left this box

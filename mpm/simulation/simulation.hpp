@@ -17,6 +17,7 @@
 #include "mpm/parallel/halo_exchange.hpp"
 #include "mpm/parallel/ranks.hpp"
 #include "mpm/particles/particles.hpp"
+#include "mpm/scene/face_motion.hpp"
 #include "mpm/scene/scene.hpp"
 #include "mpm/shape/shape.hpp"
 #include "mpm/simulation/fault_injection.hpp"
@@ -165,6 +166,8 @@ class Simulation {
   double max_signal_speed_ = 0.0;
   /// The objects' body forces (SceneObject::body_force), evaluated at the start of each step.
   std::optional<BodyForces> body_forces_;
+  /// grid.face_velocity: the moving faces' V(t), given to the grid at each step's start and end.
+  std::optional<FaceMotions> face_motions_;
   double max_body_force_ = 0.0;  ///< max_p |b_p| of this step, over the ranks [m/s^2]
 };
 

@@ -62,8 +62,8 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
       const int e = f * nn + bn[k];
       G.free_increment[f * nb + k] = G.velocity_new[e] - G.velocity[e];
     }
-  G.apply_mirror(G.velocity);
-  G.apply_mirror(G.velocity_new);
+  G.apply_mirror(G.velocity, MirrorTime::start);
+  G.apply_mirror(G.velocity_new, MirrorTime::end);
   if (G.has_walls())
     out.wall_friction_heat = G.apply_walls(&G.velocity, G.velocity_new, WallPass::step);
   if (!gravity.isZero(0.0)) {
@@ -85,11 +85,16 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
   G.for_active_entries([&](int i) { G.increment[i] = G.velocity_new[i] - G.velocity[i]; });
   // The faces' impulse: what they changed in the increments that move the particles (serial, in
   // node order: deterministic). A stationary wall does no work (docs/mpm.md#ledger).
+  const bool moving_faces = G.spec().has_moving_faces();
   for (int f = 0; f < G.fields(); ++f)
     for (const int k : active_bn) {
       const int e = f * nn + bn[k];
       if (nodes[e].mass <= 0.0 || !G.owns(bn[k])) continue;
-      out.boundary_impulse += nodes[e].mass * (G.increment[e] - G.free_increment[f * nb + k]);
+      const Vec3 J = nodes[e].mass * (G.increment[e] - G.free_increment[f * nb + k]);
+      out.boundary_impulse += J;
+      // A moving face works on what it holds: its impulse times its mid-step velocity (an
+      // external work, docs/mpm.md#ledger); a still face does none.
+      if (moving_faces) out.external_work += G.moving_face_work(bn[k], J);
     }
 
   if (usl_gradient) {

@@ -1,0 +1,46 @@
+#include "mpm/scene/face_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impact::mpm {
+
+FaceMotions::FaceMotions(const GridSpec& grid, const NamedConstants& constants) {
+  for (int f = 0; f < 6; ++f) {
+    const FaceMotion& m = grid.face_velocity[f];
+    if (m.text.empty()) {
+      numbers_[f] = m.value;
+      continue;
+    }
+    VectorExpression e;  // the velocity as the first component of a field of t alone
+    e.text[0] = m.text;
+    fields_[f].emplace(e, constants);
+  }
+}
+
+std::array<double, 6> FaceMotions::at(double t) {
+  std::array<double, 6> v = numbers_;
+  for (int f = 0; f < 6; ++f)
+    if (fields_[f]) v[f] = (*fields_[f])(Vec3::Zero(), t)(0);
+  return v;
+}
+
+std::array<double, 6> face_travel(const GridSpec& grid, const NamedConstants& constants,
+                                  double t_end) {
+  FaceMotions motions(grid, constants);
+  std::array<double, 6> travel{}, position{};
+  constexpr int kIntervals = 1000;
+  const double dt = t_end / kIntervals;
+  std::array<double, 6> v0 = motions.at(0.0);
+  for (int i = 1; i <= kIntervals; ++i) {
+    const std::array<double, 6> v1 = motions.at(i * dt);
+    for (int f = 0; f < 6; ++f) {
+      position[f] += 0.5 * (v0[f] + v1[f]) * dt;
+      travel[f] = std::max(travel[f], std::abs(position[f]));
+    }
+    v0 = v1;
+  }
+  return travel;
+}
+
+}  // namespace impact::mpm
