@@ -156,7 +156,7 @@ void Grid::build_face_writes() {
                                        source};
             continue;
           }
-          const MirrorWrite m{target, pass == 0 ? -1 : source, axis, fixed, face};
+          const MirrorWrite m{target, pass == 0 ? -1 : source, axis, fixed, std::int8_t(face)};
           mirror_all_.push_back(m);
           ijk[axis] = inner;
           if (has_wall && pass == 1 && on_wall_layer(ijk[0], ijk[1], ijk[2]))

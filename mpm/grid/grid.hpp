@@ -44,7 +44,7 @@ struct MirrorWrite {
   int source;  ///< -1 on the face layer
   int axis;
   bool fixed;
-  int face;  ///< kFaceNames order: its velocity (grid.face_velocity) moves the mirror plane
+  std::int8_t face;  ///< kFaceNames order: its velocity (grid.face_velocity) moves the plane
 };
 
 /// Which of a moving face's velocities a mirror applies: the step's start (the start-of-step grid
@@ -279,8 +279,9 @@ class Grid {
   }
 
   /// The mirror condition on every field of a nodal velocity array (grid/boundary.cpp): on every
-  /// constrained face the constrained components on the face layer are zeroed, and the ghost
-  /// layer outside is set to the reflection of the first interior layer.
+  /// constrained face the constrained components on the face layer are zeroed (set to V on a
+  /// moving face), and the ghost layer outside is set to the reflection of the first interior
+  /// layer.
   /// A face moving at V (grid.face_velocity) is a mirror plane moving along its axis: the face
   /// layer's normal component is V, the ghost's the image 2 V - v_inner (docs/scenes.md#moving-
   /// faces); `when` picks V at the step's start or end.

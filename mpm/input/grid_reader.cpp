@@ -168,6 +168,8 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
                                    " is not symmetric: a face moves as a mirror plane, so its "
                                    "grid.boundary." +
                                    kFaceNames[f] + " must be \"symmetric\"");
+      } else if (value.is_string() && value.get<std::string>().empty()) {
+        v->problems().add(key, "expected a number or an expression of t, got an empty string");
       } else if (value.is_number()) {
         g.face_velocity[f] = {"", value.get<double>(), true};
       } else if (value.is_string()) {
@@ -201,6 +203,23 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
       w->amend_description(kFaceNames[f], [](KeyDescription& d) { d.default_value = "0"; });
     }
     w->reject_unknown_keys();
+  }
+  // A moving face beside a no-slip face or a wall with friction: their edge nodes would be held by
+  // both (the fixed face zeroes the velocity the moving one imposes, or the wall's friction slows
+  // it), with work booked at a velocity the nodes do not have. Refused.
+  for (int f = 0; f < 6; ++f) {
+    if (!g.face_velocity[f].set) continue;
+    for (int o = 0; o < 6; ++o) {
+      if (o / 2 == f / 2) continue;
+      const bool fixed = g.faces[o] == FaceCondition::fixed;
+      const bool rough = g.faces[o] == FaceCondition::wall && g.wall_friction[o] > 0.0;
+      if (!fixed && !rough) continue;
+      r.problems().add(r.key_path("face_velocity") + "/" + kFaceNames[f],
+                       std::string("the face ") + kFaceNames[o] + " beside it is " +
+                           (fixed ? "fixed" : "a wall with friction") +
+                           ": their edge nodes would be held by both; expected the faces beside a "
+                           "moving face symmetric, free or a wall without friction");
+    }
   }
 }
 

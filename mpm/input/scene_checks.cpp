@@ -228,6 +228,7 @@ void warn_of_contact_within_one_material(Scene& s) {
 }
 
 void check_face_velocities(InputProblems& problems, const Scene& s) {
+  const std::size_t before = problems.count();
   for (int f = 0; f < 6; ++f) {
     const FaceMotion& m = s.grid.face_velocity[f];
     if (m.text.empty()) continue;
@@ -242,24 +243,65 @@ void check_face_velocities(InputProblems& problems, const Scene& s) {
     }
     VectorExpression e;
     e.text[0] = m.text;
+    bool of_t = true;
     for (const char* x : {"X", "Y", "Z"})
-      if (e.uses(x, s.constants))
+      if (e.uses(x, s.constants)) {
         problems.add(key, "expression \"" + m.text + "\" reads " + x +
                               ": a face moves as a whole, its velocity is a function of t alone");
+        of_t = false;
+      }
+    if (!of_t) continue;
   }
+  if (problems.count() > before) return;
+  // Finite over the run, at the 1001 times the travel is measured at (numbers included: 1e400
+  // reads as inf).
+  const FaceTravel travel = face_travel(s.grid, s.constants, s.time.max_time);
+  for (int f = 0; f < 6; ++f)
+    if (s.grid.face_velocity[f].set && travel.non_finite_at[f]) {
+      std::ostringstream m;
+      m << "not finite at t = " << *travel.non_finite_at[f] << " s";
+      problems.add(std::string("/grid/face_velocity/") + kFaceNames[f], m.str());
+    }
 }
 
 void warn_of_face_travel(Scene& s) {
-  const std::array<double, 6> travel = face_travel(s.grid, s.constants, s.time.max_time);
+  const FaceTravel travel = face_travel(s.grid, s.constants, s.time.max_time);
   const Vec3 h = s.grid.spacing();
   for (int f = 0; f < 6; ++f) {
-    if (!s.grid.face_velocity[f].set || !(travel[f] > 0.25 * h(f / 2))) continue;
+    if (!s.grid.face_velocity[f].set) continue;
+    const int axis = f / 2;
+    const std::string key = s.file + ": /grid/face_velocity/" + kFaceNames[f] + ": ";
     std::ostringstream m;
-    m << s.file << ": /grid/face_velocity/" << kFaceNames[f] << ": the face travels up to "
-      << travel[f] << " m by time.max_time, more than a quarter of its cell (" << h(f / 2)
-      << " m): the mirror plane stays at its grid position, so the material it drives leaves "
-         "the face's layer beyond that (docs/scenes.md#moving-faces)";
-    s.warnings.push_back(m.str());
+    if (travel.largest[f] > 0.25 * h(axis)) {
+      m << key << "the face travels up to " << travel.largest[f]
+        << " m by time.max_time, more than a quarter of its cell (" << 0.25 * h(axis) << " m of "
+        << h(axis)
+        << " m): the mirror plane stays at its grid position, so the material it drives leaves "
+           "the face's layer beyond that (docs/scenes.md#moving-faces)";
+      s.warnings.push_back(m.str());
+      m.str("");
+    }
+    // Pulling: the material follows the face out of the grid once it has moved beyond its first
+    // row of particles, h / (2 ppc) from the face.
+    int ppc = 1;
+    for (const SceneObject& o : s.objects) ppc = std::max(ppc, o.particles_per_cell[axis]);
+    const double first_row = h(axis) / (2.0 * ppc);
+    if (travel.outward[f] > first_row) {
+      m << key << "the face moves outward by up to " << travel.outward[f]
+        << " m by time.max_time, beyond the first row of particles (" << first_row
+        << " m from the face at " << ppc
+        << " particles per cell): the material it pulls leaves the grid there";
+      s.warnings.push_back(m.str());
+      m.str("");
+    }
+    if (travel.initial[f] != 0.0) {
+      m << key << "the face starts at " << travel.initial[f]
+        << " m/s: the particles take that jump through the stress over the first steps (their "
+           "velocities lag the face, and energy_error shows a start-up residual near 1 at the "
+           "second step); a ramp such as min(t/t_r,1)*V from 0 avoids it "
+           "(docs/scenes.md#moving-faces)";
+      s.warnings.push_back(m.str());
+    }
   }
 }
 

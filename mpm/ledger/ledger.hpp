@@ -4,7 +4,8 @@
 //   strain_energy   = sum_steps sum_p 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt   (eq. 14)
 //   total_energy    = kinetic + strain                                  (the report's quantity)
 //   boundary_impulse = what the grid-face conditions exerted (grid/boundary.cpp); stationary faces
-//                     do no work, so they have no energy column
+//                     do no work, so they have no energy column; a moving face's work
+//                     (grid.face_velocity) is external_work
 //   sinks           = one column each, registered by the solver for the physics a scene uses, each
 //                     >= 0 and non-decreasing by construction: viscous_work and friction_heat (in
 //                     the balance: heat), eroded_energy (part of strain_energy: shown, not added)

@@ -25,18 +25,27 @@ std::array<double, 6> FaceMotions::at(double t) {
   return v;
 }
 
-std::array<double, 6> face_travel(const GridSpec& grid, const NamedConstants& constants,
-                                  double t_end) {
+FaceTravel face_travel(const GridSpec& grid, const NamedConstants& constants, double t_end) {
   FaceMotions motions(grid, constants);
-  std::array<double, 6> travel{}, position{};
+  FaceTravel travel;
+  std::array<double, 6> position{};
   constexpr int kIntervals = 1000;
   const double dt = t_end / kIntervals;
   std::array<double, 6> v0 = motions.at(0.0);
-  for (int i = 1; i <= kIntervals; ++i) {
-    const std::array<double, 6> v1 = motions.at(i * dt);
+  travel.initial = v0;
+  for (int i = 0; i <= kIntervals; ++i) {
+    const double t = i * dt;
+    const std::array<double, 6> v1 = i == 0 ? v0 : motions.at(t);
     for (int f = 0; f < 6; ++f) {
+      if (!std::isfinite(v1[f])) {
+        if (!travel.non_finite_at[f]) travel.non_finite_at[f] = t;
+        continue;
+      }
+      if (i == 0 || !std::isfinite(v0[f])) continue;
       position[f] += 0.5 * (v0[f] + v1[f]) * dt;
-      travel[f] = std::max(travel[f], std::abs(position[f]));
+      travel.largest[f] = std::max(travel.largest[f], std::abs(position[f]));
+      const double out = f % 2 == 0 ? -position[f] : position[f];
+      travel.outward[f] = std::max(travel.outward[f], out);
     }
     v0 = v1;
   }

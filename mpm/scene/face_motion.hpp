@@ -24,9 +24,13 @@ class FaceMotions {
   std::array<double, 6> numbers_{};                   ///< the faces given a number
 };
 
-/// The largest |integral of V_f dt| over [0, t_end] of each face [m] (trapezoid over 1000
-/// intervals; exact for a number).
-std::array<double, 6> face_travel(const GridSpec& grid, const NamedConstants& constants,
-                                  double t_end);
+/// How each face moves over [0, t_end], from V_f at 1001 times (trapezoid; exact for a number).
+struct FaceTravel {
+  std::array<double, 6> largest{};  ///< max |integral of V dt| [m]
+  std::array<double, 6> outward{};  ///< max travel out of the grid (-x on x-, +x on x+) [m]
+  std::array<double, 6> initial{};  ///< V_f(0) [m/s]
+  std::array<std::optional<double>, 6> non_finite_at{};  ///< the first time V_f is not finite [s]
+};
+FaceTravel face_travel(const GridSpec& grid, const NamedConstants& constants, double t_end);
 
 }  // namespace impact::mpm

@@ -127,10 +127,49 @@ BOOST_AUTO_TEST_CASE(a_face_that_travels_beyond_a_quarter_cell_is_warned_of) {
     warned =
         warned || w.find("/grid/face_velocity/x-: the face travels up to") != std::string::npos;
   BOOST_TEST(warned);
-  const Scene quiet =
-      test::verification_scene("elastic_wave.json", {{"grid", {{"face_velocity", {{"x-", 1.0}}}}}});
+  // A ramp from rest within a quarter cell: no warning.
+  const Scene quiet = test::verification_scene(
+      "elastic_wave.json", {{"grid", {{"face_velocity", {{"x-", "min(t/1e-6,1)"}}}}}});
   for (const std::string& w : quiet.warnings)
     BOOST_TEST(w.find("face_velocity") == std::string::npos);
+  // A start at full speed, and a face pulling its first particle row off the grid: warned.
+  const Scene sudden = test::verification_scene(
+      "elastic_wave.json",
+      {{"grid", {{"face_velocity", {{"x-", -20.0}}}}}, {"time", {{"max_time", 2e-5}}}});
+  bool starts = false, pulls = false;
+  for (const std::string& w : sudden.warnings) {
+    starts = starts || w.find("the face starts at -20 m/s") != std::string::npos;
+    pulls = pulls || w.find("the face moves outward by up to") != std::string::npos;
+  }
+  BOOST_TEST(starts);
+  BOOST_TEST(pulls);
+}
+
+BOOST_AUTO_TEST_CASE(faces_that_cannot_move_as_asked_are_refused_naming_the_key) {
+  const auto refused = [](const Json& patch, const std::string& expected) {
+    try {
+      test::verification_scene("elastic_wave.json", patch);
+    } catch (const InputError& e) {
+      BOOST_TEST_INFO(e.what());
+      BOOST_TEST(std::string(e.what()).find(expected) != std::string::npos);
+      return;
+    }
+    BOOST_TEST_INFO(patch.dump());
+    BOOST_TEST(false);
+  };
+  // Beside a fixed face or a wall with friction: their edge nodes would be held by both.
+  refused({{"grid", {{"face_velocity", {{"x-", 1.0}}}, {"boundary", {{"y-", "fixed"}}}}}},
+          "/grid/face_velocity/x-: the face y- beside it is fixed");
+  refused({{"grid",
+            {{"face_velocity", {{"x-", 1.0}}},
+             {"boundary", {{"y-", "wall"}}},
+             {"wall_friction", {{"y-", 0.5}}}}}},
+          "/grid/face_velocity/x-: the face y- beside it is a wall with friction");
+  // Not finite during the run, and an empty text.
+  refused({{"grid", {{"face_velocity", {{"x-", "sqrt(1e-5-t)"}}}}}},
+          "/grid/face_velocity/x-: not finite at t = ");
+  refused({{"grid", {{"face_velocity", {{"x-", ""}}}}}},
+          "/grid/face_velocity/x-: expected a number or an expression of t, got an empty string");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
