@@ -156,8 +156,10 @@ void Simulation::restart_ledger() {
 }
 
 double Simulation::next_dt() const {
-  const double waves =
-      stable_time_step(scene_.grid.min_spacing(), max_signal_speed_, scene_.time.multiplier);
+  // A moving face drives its material at |V| before the particles' velocities show it (they take
+  // the face's jumps through the stress): the signal runs at up to c + |v| + |V|.
+  const double waves = stable_time_step(scene_.grid.min_spacing(), max_signal_speed_ + face_speed_,
+                                        scene_.time.multiplier);
   // No signal at all (every particle left the grid, grid.outflow = remove): nothing is left to
   // integrate, and gravity, which limits the step of a body, has none to move.
   if (max_signal_speed_ == 0.0 && std::isinf(std::min(waves, scene_.time.max_dt)))
@@ -177,6 +179,11 @@ const StepTotals& Simulation::step() {
     body_forces_->evaluate(particles_, time_);
     stop_if(ranks_.first_failure(non_finite_body_force()));
     max_body_force_ = ranks_.max(body_forces_->peak());
+  }
+  if (face_motions_) {
+    face_speed_ = 0.0;
+    for (const double v : face_motions_->at(time_))
+      face_speed_ = std::max(face_speed_, std::abs(v));
   }
   const double dt = checked_dt();
   if (face_motions_)

@@ -168,6 +168,7 @@ class Simulation {
   std::optional<BodyForces> body_forces_;
   /// grid.face_velocity: the moving faces' V(t), given to the grid at each step's start and end.
   std::optional<FaceMotions> face_motions_;
+  double face_speed_ = 0.0;      ///< max_f |V_f(t^n)| [m/s]: the material a face drives moves at it
   double max_body_force_ = 0.0;  ///< max_p |b_p| of this step, over the ranks [m/s^2]
 };
 
