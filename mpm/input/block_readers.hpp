@@ -48,6 +48,8 @@ void read_observables(InputProblems& problems, const Json& doc, Scene& s);
 void read_constants(JsonReader& root, const Json& doc, NamedConstants& out);
 /// Warns of a constant no expression names, and of an initial velocity that reads t (always 0).
 void warn_of_idle_expression_names(InputProblems& problems, const Scene& s);
+/// "expression \"TEXT\" at character N: why" (or "at its end"): how a refused expression is named.
+std::string expression_problem_message(const std::string& text, const ExpressionProblem& problem);
 VectorExpression read_vector_expression(JsonReader& r, const Json& node, std::string_view key,
                                         std::string_view meaning, const NamedConstants& constants,
                                         const std::optional<Vec3>& fallback);

@@ -32,6 +32,14 @@ void read_constants(JsonReader& root, const Json& doc, NamedConstants& out) {
   }
 }
 
+std::string expression_problem_message(const std::string& text, const ExpressionProblem& problem) {
+  const std::string where = problem.position == std::string::npos ? ""
+                            : problem.position >= text.size()
+                                ? " at its end"
+                                : " at character " + std::to_string(problem.position + 1);
+  return "expression \"" + text + "\"" + where + ": " + problem.message;
+}
+
 VectorExpression read_vector_expression(JsonReader& r, const Json& node, std::string_view key,
                                         std::string_view meaning, const NamedConstants& constants,
                                         const std::optional<Vec3>& fallback) {
@@ -65,11 +73,7 @@ VectorExpression read_vector_expression(JsonReader& r, const Json& node, std::st
       const std::string text = v[d].get<std::string>();
       e.value(d) = 0.0;
       if (const auto problem = check_expression(text, constants)) {
-        const std::string where = problem->position == std::string::npos ? ""
-                                  : problem->position >= text.size()
-                                      ? " at its end"
-                                      : " at character " + std::to_string(problem->position + 1);
-        r.problems().add(path, "expression \"" + text + "\"" + where + ": " + problem->message);
+        r.problems().add(path, expression_problem_message(text, *problem));
       } else {
         e.text[d] = text;
       }

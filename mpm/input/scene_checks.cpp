@@ -234,11 +234,7 @@ void check_face_velocities(InputProblems& problems, const Scene& s) {
     if (m.text.empty()) continue;
     const std::string key = std::string("/grid/face_velocity/") + kFaceNames[f];
     if (const auto problem = check_expression(m.text, s.constants)) {
-      const std::string where = problem->position == std::string::npos ? ""
-                                : problem->position >= m.text.size()
-                                    ? " at its end"
-                                    : " at character " + std::to_string(problem->position + 1);
-      problems.add(key, "expression \"" + m.text + "\"" + where + ": " + problem->message);
+      problems.add(key, expression_problem_message(m.text, *problem));
       continue;
     }
     VectorExpression e;
