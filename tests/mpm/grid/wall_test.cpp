@@ -141,9 +141,11 @@ BOOST_AUTO_TEST_CASE(a_face_the_body_does_not_touch_holds_nothing) {
   BOOST_TEST(leaving.v == Vec3(1.0, 3.0, 0.0));
 }
 
-BOOST_AUTO_TEST_CASE(the_ghost_outside_a_touched_face_moves_inward_at_the_interior_speed) {
-  // The ghost's inward normal velocity becomes |v_n| of the interior node: the image of an
-  // approaching body, the velocity of a leaving one; its tangential velocity stays its own.
+BOOST_AUTO_TEST_CASE(the_ghost_outside_a_touched_face_follows_the_face_nodes_hold) {
+  // While the step holds the face node, the ghost's normal velocity is the mirror image of the
+  // interior node's; once the face node is free, it moves inward at |v_n| of the interior node:
+  // the image of an approaching body, the velocity of a leaving one. Its tangential velocity
+  // stays its own.
   Grid G = wall_grid({kXm}, 0.0);
   const int face = G.index(0, 2, 2), ghost = G.index(-1, 2, 2), inner = G.index(1, 2, 2);
   const auto run = [&](const Vec3& face_velocity, std::uint8_t touch, double inner_vx,
@@ -154,6 +156,7 @@ BOOST_AUTO_TEST_CASE(the_ghost_outside_a_touched_face_moves_inward_at_the_interi
     G.velocity[ghost] = Vec3(-4.0, 6.0, 8.0);
     G.mass[face] = 1.0;
     G.wall_touch[face] = touch;
+    G.wall_held[face] = 0;  // reset each step by particles-to-grid
     G.velocity_new[face] = face_velocity;
     G.apply_walls(&G.velocity, G.velocity_new, WallPass::step);
   };
@@ -171,6 +174,14 @@ BOOST_AUTO_TEST_CASE(the_ghost_outside_a_touched_face_moves_inward_at_the_interi
   // inward acceleration under a compressed face, which kicked particles through the wall).
   run(Vec3(1.0, 0.0, 0.0), bit(kXm), 2.0, -4.0);
   BOOST_TEST(G.velocity_new[ghost] == Vec3(2.0, 7.0, 8.0));
+  // The face node held (pressed on) while the interior rings away from the wall at 2: the
+  // mirror image -2, start and end. Inward at 2 the image was rectified: the ghost moved inward
+  // whichever way the interior rang, and a block resting on the wall climbed off it
+  // (resting_contact_test).
+  run(Vec3(-1.0, 0.0, 0.0), bit(kXm), 2.0, -4.0);
+  BOOST_TEST(G.velocity_new[face] == Vec3(0.0, 0.0, 0.0));
+  BOOST_TEST(G.velocity_new[ghost] == Vec3(-2.0, 7.0, 8.0));
+  BOOST_TEST(G.velocity[ghost] == Vec3(2.0, 6.0, 8.0));
   // Not touching: the ghost keeps its own velocity, as on a free face.
   run(Vec3(-1.0, 0.0, 0.0), 0, -3.0, -4.0);
   BOOST_TEST(G.velocity_new[face] == Vec3(-1.0, 0.0, 0.0));

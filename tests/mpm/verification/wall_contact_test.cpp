@@ -40,9 +40,13 @@
 // 5. The Taylor rod of taylor_rod.json (shot H8, L0/D0 = 2 at 328 m/s, 6061-T6, failure off) at
 //    6 cells per radius on an x- wall, through its rebound (80 us): no particle crosses the
 //    wall's plane, the rod leaves with a little momentum (a plastic impact) that the wall takes
-//    little of back (final p_x at least 0.6 of its largest), |energy_error| below 4.5 % (measured
-//    4.1 %, 3.0 % before issue 53's re-map rule; p_x 5.0 % of p0 at most, 3.9 % at the end: some
-//    pull remains while the interior node is slower than the particles crossing the plane). With
+//    little of back (final p_x at least 0.55 of its largest), |energy_error| below 4.5 % (measured
+//    4.2 %, 3.0 % before issue 53's re-map rule; p_x 4.9 % of p0 at most, 3.0 % at the end: some
+//    pull remains while the interior node is slower than the particles crossing the plane, and
+//    while a face node is still held its ghost is the interior's mirror image). The ghost's image
+//    while held (grid/wall.cpp) took the final p_x from 3.9 % to 3.0 %; in axisymmetry at 6, 12
+//    and 24 cells per radius 4.2 / 4.6 / 5.0 % before, 3.4 / 4.1 / 4.6 % after: first order, to
+//    the same limit. With
 //    the ghost released whenever its face node was (v*_n >= 0) rather than while the body touches,
 //    the light ghost under the face's GPa compression kicked a face particle through the wall at
 //    step 554 (at 656 m/s; the campaign's fit_all set at 6 cells per radius stopped 15 of 23 shots
@@ -267,10 +271,10 @@ BOOST_AUTO_TEST_CASE(a_taylor_rod_rebounds_from_a_wall_anvil_whole) {
                      << sim.steps() << " steps, worst |energy_error| " << worst << ", final p_x "
                      << px / p0 << " of |p0|, lowest particle x " << lowest
                      << " m, largest rebound momentum " << rebound / p0 << " p0");
-  BOOST_TEST(lowest >= 0.0);       // no particle crossed the wall's plane
-  BOOST_TEST(px > 0.0);            // it rebounds
-  BOOST_TEST(px < 0.1 * p0);       // a plastic impact returns little
-  BOOST_TEST(px > 0.6 * rebound);  // the wall takes little of the rebound back
+  BOOST_TEST(lowest >= 0.0);        // no particle crossed the wall's plane
+  BOOST_TEST(px > 0.0);             // it rebounds
+  BOOST_TEST(px < 0.1 * p0);        // a plastic impact returns little
+  BOOST_TEST(px > 0.55 * rebound);  // the wall takes little of the rebound back
   BOOST_TEST(worst < 0.045);
 }
 
