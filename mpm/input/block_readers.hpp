@@ -72,5 +72,8 @@ void check_face_velocities(InputProblems& problems, const Scene& s);
 /// A warning in s.warnings for each moving face that travels more than a quarter of its cell.
 void warn_of_face_travel(Scene& s);
 void warn_of_contact_within_one_material(Scene& s);
+/// A warning when physics switches erosion, melting or heating and every material is
+/// hyperelastic (the switches act on elastic-plastic models only).
+void warn_of_physics_no_material_uses(Scene& s);
 
 }  // namespace impact::mpm::scene_input

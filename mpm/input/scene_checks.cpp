@@ -227,6 +227,28 @@ void warn_of_contact_within_one_material(Scene& s) {
       "them");
 }
 
+// physics.erosion, do_melting and turn_on_adiabatic_heating switch the elastic-plastic models'
+// damage, melting and heating (apply_physics_overrides); a hyperelastic law has none of them, so
+// on a scene of neo-Hookean solids alone the keys do nothing. Valid (a scene may change its
+// materials and keep its physics block), but a user who set them expects them to act.
+void warn_of_physics_no_material_uses(Scene& s) {
+  const bool set = s.physics.erosion || s.physics.do_melting || s.physics.adiabatic_heating;
+  if (!set || s.materials.empty()) return;
+  for (const SceneMaterial& m : s.materials)
+    if (!m.material.model.hyperelastic()) return;
+  std::string keys;
+  const auto add = [&](bool on, const char* key) {
+    if (on) keys += (keys.empty() ? "/physics/" : ", /physics/") + std::string(key);
+  };
+  add(s.physics.erosion.has_value(), "erosion");
+  add(s.physics.do_melting.has_value(), "do_melting");
+  add(s.physics.adiabatic_heating.has_value(), "turn_on_adiabatic_heating");
+  s.warnings.push_back(s.file + ": " + keys +
+                       ": every material here is hyperelastic (constitutive_model.type "
+                       "\"neo_hookean\"), which has no erosion, melting or heating: the key does "
+                       "nothing (docs/models.md)");
+}
+
 void check_face_velocities(InputProblems& problems, const Scene& s) {
   const std::size_t before = problems.count();
   for (int f = 0; f < 6; ++f) {

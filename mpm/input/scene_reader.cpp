@@ -41,6 +41,7 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   if (s.grid.has_moving_faces()) warn_of_face_travel(s);
   for (std::string& w : fitted_range_warnings(s)) s.warnings.push_back(std::move(w));
   warn_of_contact_within_one_material(s);
+  warn_of_physics_no_material_uses(s);
   return s;
 }
 
