@@ -140,6 +140,9 @@ class ElasticPlastic {
   NeoHookeanModuli neo_hookean_moduli() const {
     return {p_.shear_modulus, p_.bulk_modulus - 2.0 / 3.0 * p_.shear_modulus};
   }
+  /// The stored energy W(F) per unit reference volume [J/m^3] of a hyperelastic law (its strain
+  /// energy is a function of F: the solver books its change, not the stress power's quadrature).
+  double stored_energy(const Mat3& F) const { return neo_hookean_energy(F, neo_hookean_moduli()); }
 
   /// A point at rest in the reference configuration at temperature T.
   PointState initial_state(double temperature) const;

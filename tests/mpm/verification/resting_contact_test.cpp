@@ -225,15 +225,18 @@ BOOST_AUTO_TEST_CASE(a_soft_block_resting_on_a_wall_in_plane_strain_never_climbs
   // rho0 = 1000 kg/m^3, h = 12.5 mm) released at rest on the frictionless y- wall under 1000
   // m/s^2: it settles to a strain of about 1 %, its face layer moving a twentieth of a cell.
   // Scale: U_s = (M g)^2 L / (6 E' W) per metre, E' = E / (1 - nu^2) (plane strain, the sides
-  // free), the settled strain energy and the sudden load's largest kinetic energy. Asserted over
-  // 6000 steps (0.32 s, about 30 periods of the first mode): the run is not stopped; the kinetic
-  // energy stays below 1.2 U_s; the residual in J/m (Ledger::energy_excess) below +0.1 U_s and
-  // above -1.2 U_s (the catch damps at most the ringing). Measured: kinetic at most 0.95 U_s,
-  // residual +0.034 U_s at most, -0.32 U_s at the end. When the ghost outside the wall moved
-  // inward at the interior node's normal speed even while the face node was held, the image was
-  // rectified, the ringing pushed the block off the wall on average, and it climbed: residual
-  // +0.12 U_s by 0.1 s, +0.27 U_s by 0.32 s, +1.2 U_s by 1 s; with a symmetric x- face the
-  // energy check stopped it at 3.2 s (grid/wall.cpp).
+  // free), the settled strain energy and the sudden load's largest kinetic energy. The ledger
+  // books the neo-Hookean solid's stored energy sum V0 W(F) (stress_update.cpp), so the residual
+  // is the energy the discrete body really gained or lost. Asserted over 6000 steps (0.32 s,
+  // about 30 periods of the first mode): the run is not stopped; the kinetic energy stays below
+  // 1.2 U_s; the residual in J/m (Ledger::energy_excess) below +0.2 U_s over the run, below +0.1
+  // U_s over its second half, and above -1.2 U_s (the catch damps at most the ringing).
+  // Measured: kinetic at most 0.98 U_s; residual in [-0.21, +0.11] U_s, +0.033 U_s at most over
+  // the second half, -0.13 U_s at the end. When the ghost outside the wall moved inward at the
+  // interior node's normal speed even while the face node was held, the image was rectified,
+  // the ringing pushed the block off the wall on average, and it climbed: +0.51 U_s by 0.32 s
+  // (with the strain energy booked by the stress power's quadrature, +0.33 U_s, and +1.2 U_s by
+  // 1 s; beside a symmetric x- face the energy check stopped it at 3.2 s; grid/wall.cpp).
   const Scene scene = test::verification_scene("resting_block_plane_strain.json");
   Simulation sim(scene);
   const double E = test::youngs_modulus(scene), nu = test::poissons_ratio(scene);
@@ -261,7 +264,7 @@ BOOST_AUTO_TEST_CASE(a_soft_block_resting_on_a_wall_in_plane_strain_never_climbs
   BOOST_TEST(sim.steps() == 6000);
   BOOST_TEST(worst_kinetic < 1.2 * U_s);
   BOOST_TEST(highest_error < 0.2 * U_s);
-  BOOST_TEST(highest_late < 0.0);
+  BOOST_TEST(highest_late < 0.1 * U_s);
   BOOST_TEST(lowest_error > -1.2 * U_s);
 }
 
