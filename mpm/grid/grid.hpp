@@ -300,10 +300,12 @@ class Grid {
   /// wall this step (wall_touch) and moves into it, the normal component is zeroed; the held
   /// faces of an edge or corner node are projected together, then one Coulomb correction (step
   /// pass) takes up to sum mu_f j_f off what remains tangential. A node that does not touch, or
-  /// moves away, is left free (the wall never pulls). The projection pass holds exactly the
+  /// moves away, is left free (a face node never pulls). The projection pass holds exactly the
   /// faces the step pass held (wall_held), whatever the sign of the re-mapped velocity. The ghost
-  /// node outside a touched face moves inward at the first interior node's normal speed |n . v|, in
-  /// `start` (the step's v_I, step pass) and `end`; elsewhere it keeps its own velocity. Step pass:
+  /// node outside a touched face takes the mirror image of the first interior node's normal
+  /// velocity while its face node is held, and moves inward at its normal speed |n . v| once the
+  /// face node is let go, in `start` (the step's v_I, step pass) and `end`; elsewhere it keeps its
+  /// own velocity. Step pass:
   /// adds the Coulomb heat to `heat` (if allocated) and returns its sum [J].
   double apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallPass pass);
   bool has_walls() const {

@@ -2,8 +2,9 @@
 // worked by hand: a node held by every face it touches and moves into, one Coulomb correction of
 // what remains tangential to the held faces with capacity sum_f mu_f j_f, heat m s (v0 . t) in
 // slip (v0 the start velocity, here equal to the end velocity before the walls; 0 in stick), a
-// ghost outside a touched face that moves inward at the first interior node's normal speed (the
-// image of an approaching body, the velocity of a leaving one), and nothing where no particle
+// ghost outside a touched face that is the interior node's mirror image while its face node is
+// held and moves inward at the interior's normal speed once it is let go (the image of an
+// approaching body, the velocity of a leaving one), and nothing where no particle
 // touches the wall. All numbers are exact in binary
 // (tolerance 0). Before the single projection, an edge node was corrected face by face: the first
 // face's friction took mu j off the second face's normal velocity (which that face then zeroed
