@@ -69,6 +69,13 @@ double Ledger::growth_excess() const {
   return excess;
 }
 
+std::vector<std::pair<std::string, double>> Ledger::checked_sinks() const {
+  std::vector<std::pair<std::string, double>> out;
+  for (std::size_t i = 0; i < s_.sinks.size(); ++i)
+    if (in_balance_[i] && !unchecked_[i]) out.emplace_back(sink_names_[i], s_.sinks[i]);
+  return out;
+}
+
 std::vector<std::string> Ledger::columns() const {
   const auto in = [](const std::string& unit) { return " [" + unit + "]"; };
   const std::string J = in(units_.energy), p = in(units_.momentum), I = in(units_.impulse);

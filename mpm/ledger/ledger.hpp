@@ -24,6 +24,7 @@
 
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "models/core/tensor.hpp"
@@ -106,6 +107,9 @@ class Ledger {
   double energy_excess() const;
   /// energy_excess() without the unchecked sinks: the energy-growth check's excess [J].
   double growth_excess() const;
+  /// The sinks growth_excess() counts (in the balance and checked), by name, with their values
+  /// [J]: what the energy-growth check's message adds to kinetic + strain.
+  std::vector<std::pair<std::string, double>> checked_sinks() const;
   double initial_energy() const { return s_.initial_energy; }
   const Vec3& initial_momentum() const { return s_.p0; }
 

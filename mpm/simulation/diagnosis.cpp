@@ -42,11 +42,18 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   m.precision(6);
   const std::string& J = energy_unit;  // J, or J/m per metre of thickness (plane strain)
   m << "kinetic + strain energy " << r.total_energy << " " << J << " (kinetic " << r.kinetic_energy
-    << " " << J << ", strain " << r.strain_energy << " " << J << ") against "
-    << ledger.energy_input() << " " << J << " that entered (E0 " << ledger.initial_energy() << " "
-    << J << ", external work " << r.external_work << " " << J << "; the most that had entered, "
-    << reference << " " << J << ", is the reference): growth " << std::showpos << excess / reference
-    << std::noshowpos << " (energy_error " << std::showpos << r.energy_error << std::noshowpos
+    << " " << J << ", strain " << r.strain_energy << " " << J << ")";
+  // The sinks the excess counts: energy the motion has given up, which an unstable step cannot
+  // take back (a friction heat that grows is energy made as surely as motion is).
+  for (const auto& [name, value] : ledger.checked_sinks())
+    if (value != 0.0) m << " + " << name << " " << value << " " << J;
+  if (r.outflow_kinetic_energy != 0.0)
+    m << " + outflow_kinetic_energy " << r.outflow_kinetic_energy << " " << J;
+  m << " against " << ledger.energy_input() << " " << J << " that entered (E0 "
+    << ledger.initial_energy() << " " << J << ", external work " << r.external_work << " " << J
+    << "; the most that had entered, " << reference << " " << J << ", is the reference): growth "
+    << std::showpos << excess / reference << std::noshowpos << " (energy_error " << std::showpos
+    << r.energy_error << std::noshowpos
     << ") above time.max_energy_growth = " << t.max_energy_growth
     << "; this particle is the fastest, |v| = " << std::sqrt(speed2)
     << " m/s: the explicit step is unstable (time.multiplier " << t.multiplier << "; lower it)";
