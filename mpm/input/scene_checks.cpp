@@ -237,16 +237,19 @@ void warn_of_physics_no_material_uses(Scene& s) {
   for (const SceneMaterial& m : s.materials)
     if (!m.material.model.hyperelastic()) return;
   std::string keys;
+  int count = 0;
   const auto add = [&](bool on, const char* key) {
-    if (on) keys += (keys.empty() ? "/physics/" : ", /physics/") + std::string(key);
+    if (!on) return;
+    keys += (keys.empty() ? "/physics/" : ", /physics/") + std::string(key);
+    ++count;
   };
   add(s.physics.erosion.has_value(), "erosion");
   add(s.physics.do_melting.has_value(), "do_melting");
   add(s.physics.adiabatic_heating.has_value(), "turn_on_adiabatic_heating");
   s.warnings.push_back(s.file + ": " + keys +
                        ": every material here is hyperelastic (constitutive_model.type "
-                       "\"neo_hookean\"), which has no erosion, melting or heating: the key does "
-                       "nothing (docs/models.md)");
+                       "\"neo_hookean\"), which has no erosion, melting or heating: " +
+                       (count == 1 ? "the key does" : "the keys do") + " nothing (docs/models.md)");
 }
 
 void check_face_velocities(InputProblems& problems, const Scene& s) {
