@@ -15,8 +15,10 @@ namespace {
 
 constexpr int kMaxFields = kMaxContactFields;  // fields sharing one node (materials x 2)
 // Grid::contact_held bits per entry: what the step pass decided for the field's body against the
-// others, and within the body (a material's parent field and its companion).
-constexpr unsigned char kHeldBetweenBodies = 1, kHeldWithinBody = 2;
+// others, and within the body (a material's parent field and its companion); and where that hold
+// stuck the pair (Coulomb took all the slip).
+constexpr unsigned char kHeldBetweenBodies = 1, kHeldWithinBody = 2, kStuckBetweenBodies = 4,
+                        kStuckWithinBody = 8;
 
 // The mass at node n with the body's mirror images: at a `symmetric` face the body continues as
 // its image, which gives the nodes within one of the face (-1, 0, 1, or cells - 1 .. cells + 1)
@@ -133,9 +135,11 @@ Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNorma
 
 // `hold[b]` (the strain pass, null otherwise): body b was held by the step (contact.hpp), so its
 // relative normal velocity is zeroed whatever its sign; Coulomb acts only where it approaches.
-// `approached[b]`: body b passed the approach test (the step's decision).
-bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bool* hold, Vec3* dv,
-             double* heat, bool* approached) {
+// `stick[b]` (the strain pass): the step's friction stuck body b, so all its velocity relative to
+// the centre of mass is removed. `approached[b]`: body b passed the approach test (the step's
+// decision); `stuck[b]`: and Coulomb took all its slip.
+bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bool* hold,
+             const bool* stick, Vec3* dv, double* heat, bool* approached, bool* stuck) {
   double M = 0.0;
   Vec3 P = Vec3::Zero(), P0 = Vec3::Zero(), gradM = Vec3::Zero();
   for (int b = 0; b < B.n; ++b) {
@@ -152,11 +156,18 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bo
     dv[b].setZero();
     heat[b] = 0.0;
     approached[b] = false;
+    stuck[b] = false;
     const Vec3 g = surface_normal(B, gradM, b, rule);
     const double gn = g.norm();
     if (!(gn > 0.0)) continue;  // no surface here: leave the body alone
     const Vec3 n = g / gn;
     const Vec3 u = B.v[b] - vcm;
+    if (stick && stick[b]) {  // the step stuck it: no slip and no gap in its strain either
+      dv[b] = -u;
+      net += B.m[b] * dv[b];
+      any = true;
+      continue;
+    }
     const double un = u.dot(n);
     approached[b] = un > 0.0;
     if (!approached[b] && !(hold && hold[b])) continue;  // touching or separating: left alone
@@ -169,6 +180,7 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bo
       s = std::min(mu * un, ut_norm);
       dv[b] -= s * (ut / ut_norm);
     }
+    stuck[b] = mu > 0.0 && un > 0.0 && !(s < ut_norm);
     // Coulomb work, only in slip (static friction does no work): the friction impulse m s times
     // the relative slip at the start of the step along t (contact.hpp). The normal reaction only
     // keeps u_n = 0 and does no work.
@@ -328,21 +340,25 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       }
       Vec3 dv[kMaxFields];
       double heat[kMaxFields];
-      bool hold[kMaxFields], approached[kMaxFields];
+      bool hold[kMaxFields], stick[kMaxFields], approached[kMaxFields], stuck[kMaxFields];
       if (strain) {
-        for (int b = 0; b < B.n; ++b) hold[b] = false;
-        for (int a = 0; a < na; ++a)
-          if (G.contact_held[active[a] * nn + I] & kHeldBetweenBodies) hold[body_index[a]] = true;
+        for (int b = 0; b < B.n; ++b) hold[b] = stick[b] = false;
+        for (int a = 0; a < na; ++a) {
+          const unsigned char held = G.contact_held[active[a] * nn + I];
+          if (held & kHeldBetweenBodies) hold[body_index[a]] = true;
+          if (held & kStuckBetweenBodies) stick[body_index[a]] = true;
+        }
       }
       bool any = false;
-      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, strain ? hold : nullptr, dv,
-                              heat, approached)) {
+      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, strain ? hold : nullptr,
+                              strain ? stick : nullptr, dv, heat, approached, stuck)) {
         any = true;
         for (int a = 0; a < na; ++a) {
           const int e = active[a] * nn + I;
           const int b = body_index[a];
           v[e] += dv[b];
           if (book && approached[b]) G.contact_held[e] |= kHeldBetweenBodies;
+          if (book && stuck[b]) G.contact_held[e] |= kStuckBetweenBodies;
           if (book && heat[b] > 0.0) {  // shared by the body's fields by mass
             const double h = members[b] == 1 ? heat[b] : heat[b] * G.mass[e] / B.m[b];
             if (owned) sum.friction_heat += h;
@@ -356,11 +372,12 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         if (members[b] < 2) continue;
         Bodies pair;
         int field_of[kMaxFields];
-        bool hold_pair = false;
+        bool hold_pair = false, stick_pair = false;
         for (int a = 0; a < na; ++a) {
           if (body_index[a] != b) continue;
           const int e = active[a] * nn + I;
           if (strain && (G.contact_held[e] & kHeldWithinBody)) hold_pair = true;
+          if (strain && (G.contact_held[e] & kStuckWithinBody)) stick_pair = true;
           field_of[pair.n] = e;
           pair.m[pair.n] = G.mass[e];
           pair.volume[pair.n] = G.mass[e] * inverse_density[active[a]];
@@ -369,14 +386,18 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           pair.v0[pair.n] = as_mirrored(G.velocity[e]);
           ++pair.n;
         }
-        for (int k = 0; k < pair.n; ++k) hold[k] = hold_pair;
-        if (!correct(pair, contact.mu, contact.normal, book, strain ? hold : nullptr, dv, heat,
-                     approached))
+        for (int k = 0; k < pair.n; ++k) {
+          hold[k] = hold_pair;
+          stick[k] = stick_pair;
+        }
+        if (!correct(pair, contact.mu, contact.normal, book, strain ? hold : nullptr,
+                     strain ? stick : nullptr, dv, heat, approached, stuck))
           continue;
         any = true;
         for (int k = 0; k < pair.n; ++k) {
           v[field_of[k]] += dv[k];
           if (book) G.contact_held[field_of[k]] |= kHeldWithinBody;
+          if (book && stuck[k]) G.contact_held[field_of[k]] |= kStuckWithinBody;
           if (book) {
             if (owned) sum.friction_heat += heat[k];
             if (write_heat) G.heat[field_of[k]] += heat[k];

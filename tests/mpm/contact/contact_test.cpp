@@ -90,6 +90,35 @@ BOOST_AUTO_TEST_CASE(a_node_in_stick_moves_with_the_centre_of_mass_and_books_no_
   BOOST_TEST(G.heat[b] == 0.0);
 }
 
+BOOST_AUTO_TEST_CASE(the_strain_pass_keeps_the_steps_stick) {
+  // The step sticks the interface node (as above); MUSL re-maps the particles' FLIP velocities,
+  // which read a slip and a gap: (-0.2, 0.3, 0) against (0.2, -0.1, 0), centre of mass (0, 0.1,
+  // 0). The step's friction stuck the pair, so the strain pass moves both fields to that centre
+  // of mass. Held along the normal only (separating, so no Coulomb), the strain rate sheared an
+  // interface that had not slid, (0, 0.3, 0) against (0, -0.1, 0), and friction pumped a resting
+  // stack of blocks until the energy check stopped it (stack_friction.json).
+  Grid G = flat_interface();
+  const int a = entry(G, 0, 2, 2, 2), b = entry(G, 1, 2, 2, 2);
+  G.velocity_new[a] = G.velocity[a] = Vec3(1.0, 0.1, 0.0);
+  G.velocity_new[b] = G.velocity[b] = Vec3(-1.0, 0.0, 0.0);
+  apply_contact(G, friction(0.3), G.velocity_new, ContactPass::step);
+  G.velocity_L[a] = Vec3(-0.2, 0.3, 0.0);
+  G.velocity_L[b] = Vec3(0.2, -0.1, 0.0);
+  apply_contact(G, friction(0.3), G.velocity_L, ContactPass::strain);
+  BOOST_TEST((G.velocity_L[a] - Vec3(0.0, 0.1, 0.0)).norm() < 1e-15);
+  BOOST_TEST((G.velocity_L[b] - Vec3(0.0, 0.1, 0.0)).norm() < 1e-15);
+  // In slip the strain pass holds the normal only: the re-mapped slip stays.
+  Grid H = flat_interface();
+  H.velocity_new[a] = H.velocity[a] = Vec3(1.0, 2.0, 0.0);
+  H.velocity_new[b] = H.velocity[b] = Vec3(-1.0, 0.0, 0.0);
+  apply_contact(H, friction(0.3), H.velocity_new, ContactPass::step);
+  H.velocity_L[a] = Vec3(-0.2, 0.3, 0.0);
+  H.velocity_L[b] = Vec3(0.2, -0.1, 0.0);
+  apply_contact(H, friction(0.3), H.velocity_L, ContactPass::strain);
+  BOOST_TEST((H.velocity_L[a] - Vec3(0.0, 0.3, 0.0)).norm() < 1e-15);
+  BOOST_TEST((H.velocity_L[b] - Vec3(0.0, -0.1, 0.0)).norm() < 1e-15);
+}
+
 BOOST_AUTO_TEST_CASE(a_slipping_node_books_the_impulse_times_the_slip_that_remains) {
   Grid G = flat_interface();
   const int a = entry(G, 0, 2, 2, 2), b = entry(G, 1, 2, 2, 2);
