@@ -151,7 +151,10 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
                                 "number or an expression of t")) {
     const Json& block = at(grid, "face_velocity");
     for (int f = 0; f < 6; ++f) {
-      if (!v->has(kFaceNames[f])) continue;
+      if (!v->has(kFaceNames[f])) {  // a known name all the same: "X-" gets "did you mean x-?"
+        v->ignore(kFaceNames[f]);
+        continue;
+      }
       const std::string key = v->key_path(kFaceNames[f]);
       const Json& value = block[kFaceNames[f]];
       v->read_elsewhere(kFaceNames[f], [] {
@@ -183,7 +186,10 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
   }
   if (auto w = r.optional_child("wall_friction", "Coulomb friction coefficient per wall face")) {
     for (int f = 0; f < 6; ++f) {
-      if (!w->has(kFaceNames[f])) continue;
+      if (!w->has(kFaceNames[f])) {  // a known name all the same: "X-" gets "did you mean x-?"
+        w->ignore(kFaceNames[f]);
+        continue;
+      }
       if (f >= faces) {  // a 2D grid: the face along z does not exist
         w->problems().add(w->key_path(kFaceNames[f]), no_face_along_z(geometry));
         w->ignore(kFaceNames[f]);

@@ -12,6 +12,7 @@
 #include "mpm/scene/grid_coverage.hpp"
 #include "mpm/scene/grid_geometry.hpp"
 #include "mpm/scene/initial_fields.hpp"
+#include "mpm/scene/object_overlap.hpp"
 #include "mpm/scene/seed_points.hpp"
 
 namespace impact::mpm::scene_input {
@@ -107,6 +108,22 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
         << grid_text << "; " << c.lost << " lies beyond the face(s) " << faces
         << " and is not seeded (" << box_text << "); the part inside is used as given";
       problems.warn(key, m.str());
+    }
+    // A body placed into an earlier one loses the shared part to it (seed_points.hpp): warned as
+    // a clip by the grid is.
+    const ObjectOverlap overlap = object_overlap(s, oi);
+    if (overlap.claimed > kMaxSilentLoss) {
+      std::ostringstream w;
+      w.precision(3);
+      w << "overlaps the earlier object" << (overlap.by.size() > 1 ? "s " : " ");
+      for (std::size_t a = 0; a < overlap.by.size(); ++a)
+        w << (a ? ", " : "") << '"' << s.objects[overlap.by[a]].name << '"';
+      w << ": about " << overlap.claimed << " of its volume lies inside "
+        << (overlap.by.size() > 1 ? "them" : "it")
+        << " and is not seeded (a point inside an earlier object, in alphabetical order of the "
+           "names, belongs to that object); expected bodies that do not overlap, or names "
+           "that put first the body that should keep the shared part";
+      problems.warn(key, w.str());
     }
   }
 }
