@@ -1,0 +1,59 @@
+// A graded (tartan) axis (mpm/scene/graded_axis.hpp, issue 56) against its construction rules,
+// worked by hand for [0, 1] m with 10 base cells (h0 = 0.1 m) refined 4 times on [0.4, 0.6] with
+// growth 1.2: 8 cells of 0.025 m inside; outside, cells of 0.03, 0.036, 0.0432, ... capped at
+// 0.1: seven reach 0.3875 m, eight 0.4875 m, so each side of 0.4 m gets eight cells with a common
+// ratio r < 1.2 for which 0.025 (r + r^2 + ... ) with the cap fills it.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "mpm/scene/graded_axis.hpp"
+
+using namespace impact::mpm;
+
+BOOST_AUTO_TEST_SUITE(graded_axes)
+
+BOOST_AUTO_TEST_CASE(a_span_without_refinement_gives_the_uniform_nodes_exactly) {
+  const GradedAxis axis = graded_axis(0.0, 0.06, 12, RefinedSpan{0.01, 0.02, 1.0, 1.2});
+  BOOST_TEST(axis.cells() == 12);
+  for (int i = 0; i <= 12; ++i) BOOST_TEST(axis.node(i) == 0.0 + i * (0.06 / 12));
+}
+
+BOOST_AUTO_TEST_CASE(refined_cells_fill_the_span_and_grow_outside_it) {
+  const double h0 = 0.1, F = 4.0, g = 1.2;
+  const GradedAxis axis = graded_axis(0.0, 1.0, 10, RefinedSpan{0.4, 0.6, F, g});
+  BOOST_TEST(axis.cells() == 8 + 8 + 8);
+  BOOST_TEST(axis.node(0) == 0.0);
+  BOOST_TEST(axis.node(axis.cells()) == 1.0);
+  BOOST_TEST(axis.node(8) == 0.4);  // the span's edges are nodes, exactly
+  BOOST_TEST(axis.node(16) == 0.6);
+  for (int i = 8; i < 16; ++i) BOOST_TEST(std::abs(axis.size(i) - h0 / F) < 1e-15);
+  const double r = axis.size(16) / (h0 / F);  // the first cell above the span
+  BOOST_TEST(r > 1.0);
+  BOOST_TEST(r < g);
+  double filled = 0.0, h = h0 / F;  // the side above: the cells the ratio r makes
+  for (int k = 0; k < 8; ++k) filled += (h = std::min(h * r, h0));
+  BOOST_TEST(std::abs(filled - 0.4) < 1e-12);
+  BOOST_TEST(std::abs(axis.size(7) - axis.size(16)) < 1e-15);  // the side below mirrors it
+  for (int i = 1; i < axis.cells(); ++i) {  // neighbours differ by the growth ratio at most
+    const double ratio = axis.size(i) / axis.size(i - 1);
+    BOOST_TEST(ratio <= g * (1.0 + 1e-12));
+    BOOST_TEST(ratio >= 1.0 / g / (1.0 + 1e-12));
+  }
+  BOOST_TEST(axis.largest() <= h0);
+  BOOST_TEST(std::abs(axis.smallest() - h0 / F) < 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(the_cell_of_a_coordinate_and_the_ghost_nodes) {
+  const GradedAxis axis = graded_axis(0.0, 1.0, 10, RefinedSpan{0.4, 0.6, 4.0, 1.2});
+  BOOST_TEST(axis.cell_of(0.4) == 8);                 // a node belongs to the cell above it
+  BOOST_TEST(axis.cell_of(0.4125) == 8);              // half-way through the first refined cell
+  BOOST_TEST(axis.cell_of(1.0) == axis.cells() - 1);  // the upper face: the last cell
+  BOOST_TEST(axis.cell_of(-0.01) == 0);               // clamped
+  // The ghost cells repeat the edge cells' sizes.
+  BOOST_TEST(std::abs(axis.size(-1) - axis.size(0)) < 1e-15);
+  BOOST_TEST(std::abs(axis.size(axis.cells()) - axis.size(axis.cells() - 1)) < 1e-15);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
