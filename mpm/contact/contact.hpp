@@ -87,10 +87,14 @@ struct ContactTotals {
 /// happened; the strain rate sheared it and friction pumped a resting stack: three blocks on a
 /// wall, mu 0.3, rattled after 20 000 quiet steps and the energy check stopped them at step
 /// 24 576; now they stay at rest to 1 ms, stack_friction.json. Taking the step's v* itself there
-/// instead took 6.9 % of the sliding contact blocks' energy against 2.7 %: at a light node v* is p
-/// / m of a sliver of mass, and the strain pass must not move the fields' centre of mass.) (Holding
-/// only the step's nodes and leaving the others alone let a block sliding on a block and its half
-/// cut by a symmetric plane differ by 0.016 m/s of a 5 m/s slip, against 5e-6 m/s.)
+/// instead, an experiment not landed, took 6.9 % of the sliding contact blocks' energy against
+/// 2.7 %: at a light node v* is p / m of a sliver of mass, and the strain pass must not move the
+/// fields' centre of mass. Nairn re-decides stick and slip on the re-mapped momenta; carrying the
+/// step's stick over departs from that as the hold does. Exact for a pair; at a node of three or
+/// more bodies the stuck ones are corrected against all the others and the mean removed, as in
+/// the step.) (Holding only the step's nodes and leaving the others alone let a block sliding on a
+/// block and its half cut by a symmetric plane differ by 0.016 m/s of a 5 m/s slip, against
+/// 5e-6 m/s.)
 ///
 /// Why the strain pass follows the step. Summed over a node's fields, a step whose strain is built
 /// from v* books Delta KE + Delta U <= 0: at a held node (frictionless, forces along n)
