@@ -90,7 +90,6 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   // Particles go through the model in blocks of one batch: their radial returns run together on
   // the vector lanes (models/material/update_batch.hpp), with the same bits as one at a time.
   constexpr std::ptrdiff_t kBlock = UpdateBatch::capacity;
-  constexpr int kChunkBlocks = 4;
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
   StressTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
@@ -117,9 +116,13 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
       sum.faulted.push_back(std::move(f));
       sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
     };
-    // Chunks of kChunkBlocks blocks dealt round the threads: the plastic points of an impact are
-    // neighbours in the arrays, and a thread holding all of them would make the others wait.
-#pragma omp for schedule(static, kChunkBlocks)
+    // One contiguous share per thread. Chunks of 4 blocks dealt round the threads (42f7956, for the
+    // plastic points of an impact, which are neighbours in the arrays) cost 10-15 % of the whole
+    // step on 2 threads on the 2-core VM of issue 57: the recommended scene to 10 us, side by side
+    // (campaigns/benchmark/side_by_side.py, 5 repeats), 2.56 -> 2.93 M particle-steps/s median;
+    // the stress update 1.30 -> 1.15 s and the transfers after it 2.62 -> 2.25 s, which read the
+    // particles each thread has just written. One thread runs the same order either way.
+#pragma omp for schedule(static)
     for (std::ptrdiff_t block = 0; block < blocks; ++block) {
       const std::ptrdiff_t p0 = block * kBlock, p1 = std::min(n, p0 + kBlock);
       batch.clear();
