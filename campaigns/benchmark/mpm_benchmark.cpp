@@ -1,5 +1,5 @@
-// mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] [order] [axisymmetric]: what the
-// explicit step costs on the recommended sphere-cylinder scene
+// mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] [order] [axisymmetric] [light]:
+// what the explicit step costs on the recommended sphere-cylinder scene
 // (data/scenes/sphere_cylinder/recommended.json), measured in process over a fixed number of steps
 // after one warm-up step (no output writing):
 //   scaling   particle-steps per second for linear and GIMP at grid levels 1, 1.5, 2, 3 (the
@@ -19,6 +19,9 @@
 //             alternating, one thread, best of 3 by CPU time, with the phase shares and the cost
 //             ratio by wall and by CPU time (issue 40 asks the axisymmetric run to be at least 20x
 //             faster). Not in the default set: ask for it by name.
+//   light     the speed-of-light step (speed_of_light.hpp: uGIMP, USL, one field, a J2 return, no
+//             contact, ledger or checks) on about 30 k and 250 k particles, one thread, best of
+//             3: how far the full step is from the leanest one (issue 57). By name only.
 // Not a test: the figures go to docs/performance.md (`./run.sh bench` draws them from the CSV
 // files written to DIR).
 #include <omp.h>
@@ -38,6 +41,7 @@
 
 #include "mpm/input/scene_reader.hpp"
 #include "mpm/simulation/simulation.hpp"
+#include "speed_of_light.hpp"
 
 using namespace impact;
 using namespace impact::mpm;
@@ -417,6 +421,23 @@ void axisymmetric(bool quick, const std::string& dir) {
   }
 }
 
+// The speed-of-light step at two sizes, one thread, best of 3 (speed_of_light.hpp).
+void light(bool quick) {
+  std::printf("\nspeed of light (uGIMP, USL, one field, J2; 1 thread, best of 3)\n");
+  std::printf("%10s %6s %12s %14s %8s\n", "particles", "steps", "best [s]", "p-steps/s", "plastic");
+  for (const int side : {24, 40}) {
+    const int steps = quick ? 5 : (side < 30 ? 40 : 10);
+    speed_of_light::Result best;
+    best.seconds = std::numeric_limits<double>::infinity();
+    for (int r = 0; r < 3; ++r) {
+      const speed_of_light::Result got = speed_of_light::run(side, steps);
+      if (got.seconds < best.seconds) best = got;
+    }
+    std::printf("%10ld %6d %12.4f %12.3fM %8.3f\n", best.particles, best.steps, best.seconds,
+                best.particle_steps_per_second() / 1e6, best.plastic_share);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -430,11 +451,11 @@ int main(int argc, char** argv) {
     } else if (a == "--out" && i + 1 < argc) {
       dir = argv[++i];
     } else if (a == "scaling" || a == "features" || a == "box" || a == "order" ||
-               a == "axisymmetric") {
+               a == "axisymmetric" || a == "light") {
       sections.push_back(a);
     } else {
       std::cerr << "usage: mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] "
-                   "[order] [axisymmetric]\n";
+                   "[order] [axisymmetric] [light]\n";
       return 1;
     }
   }
@@ -452,6 +473,7 @@ int main(int argc, char** argv) {
       if (s == "box") box(base, file, quick, dir);
       if (s == "order") order(base, file, quick, dir);
       if (s == "axisymmetric") axisymmetric(quick, dir);
+      if (s == "light") light(quick);
     }
   } catch (const std::exception& e) {
     std::cerr << "mpm_benchmark: " << e.what() << '\n';
