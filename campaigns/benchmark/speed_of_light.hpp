@@ -60,6 +60,17 @@ inline Result run(int cells_per_side, int steps) {
   const Vec3 inv = Vec3::Constant(1.0 / h), l = Vec3::Constant(0.25);
   const std::array<int, 3> cells{n, n, n};
   long plastic = 0;
+  // body(I, S_I, grad S_I) over the 27 nodes of a stencil, the weights' products hoisted per row.
+  const auto each_node = [&](const Stencil<3>& s, auto&& body) {
+    for (int c = 0; c < 3; ++c)
+      for (int b = 0; b < 3; ++b) {
+        const double wyz = s.w[1][b] * s.w[2][c];
+        const double dyz = s.dw[1][b] * s.w[2][c], ydz = s.w[1][b] * s.dw[2][c];
+        const int row = node(s.base[0], s.base[1] + b, s.base[2] + c);
+        for (int a = 0; a < 3; ++a)
+          body(row + a, s.w[0][a] * wyz, Vec3(s.dw[0][a] * wyz, s.w[0][a] * dyz, s.w[0][a] * ydz));
+      }
+  };
   const auto step = [&] {
     std::fill(m.begin(), m.end(), 0.0);
     std::fill(p.begin(), p.end(), Vec3::Zero());
@@ -68,19 +79,11 @@ inline Result run(int cells_per_side, int steps) {
       const Stencil<3>& s = S[q] = gimp_stencil(x[q] * (1.0 / h), inv, l, cells);
       const Mat3 Vs = volume[q] * stress[q];
       const Vec3 mv = mass * v[q];
-      for (int c = 0; c < 3; ++c)
-        for (int b = 0; b < 3; ++b) {
-          const double wyz = s.w[1][b] * s.w[2][c];
-          const double dyz = s.dw[1][b] * s.w[2][c], ydz = s.w[1][b] * s.dw[2][c];
-          const int row = node(s.base[0], s.base[1] + b, s.base[2] + c);
-          for (int a = 0; a < 3; ++a) {
-            const double w = s.w[0][a] * wyz;
-            const Vec3 g(s.dw[0][a] * wyz, s.w[0][a] * dyz, s.w[0][a] * ydz);
-            m[row + a] += w * mass;
-            p[row + a] += w * mv;
-            f[row + a] -= Vs * g;
-          }
-        }
+      each_node(s, [&](int I, double w, const Vec3& g) {
+        m[I] += w * mass;
+        p[I] += w * mv;
+        f[I] -= Vs * g;
+      });
     }
     for (int I = 0; I < nn; ++I) {  // the grid update
       if (m[I] <= 0.0) continue;
@@ -91,19 +94,11 @@ inline Result run(int cells_per_side, int steps) {
       const Stencil<3>& s = S[q];
       Vec3 dvq = Vec3::Zero(), vq = Vec3::Zero();
       Mat3 Lq = Mat3::Zero();
-      for (int c = 0; c < 3; ++c)
-        for (int b = 0; b < 3; ++b) {
-          const double wyz = s.w[1][b] * s.w[2][c];
-          const double dyz = s.dw[1][b] * s.w[2][c], ydz = s.w[1][b] * s.dw[2][c];
-          const int row = node(s.base[0], s.base[1] + b, s.base[2] + c);
-          for (int a = 0; a < 3; ++a) {
-            const double w = s.w[0][a] * wyz;
-            const Vec3 g(s.dw[0][a] * wyz, s.w[0][a] * dyz, s.w[0][a] * ydz);
-            dvq += w * dv[row + a];
-            vq += w * vs[row + a];
-            Lq += vs[row + a] * g.transpose();
-          }
-        }
+      each_node(s, [&](int I, double w, const Vec3& g) {
+        dvq += w * dv[I];
+        vq += w * vs[I];
+        Lq += vs[I] * g.transpose();
+      });
       v[q] += dvq;
       x[q] += dt * vq;
       L[q] = Lq;

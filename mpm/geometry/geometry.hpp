@@ -47,6 +47,16 @@ double volume(const Geometry& g);
 /// Axis-aligned bounding box (lower, upper).
 std::pair<Vec3, Vec3> bounds(const Geometry& g);
 
+/// f(x) at the cell centres of an n^3 lattice on the box [lo, hi]: the points the checks that
+/// measure a body's shares sample it at (scene/grid_coverage.cpp, scene/object_overlap.cpp).
+template <class F>
+void for_each_lattice_point(const Vec3& lo, const Vec3& hi, int n, F&& f) {
+  const Vec3 step = (hi - lo) / n;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) f(Vec3(lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5))));
+}
+
 /// Reads {"type": "box"|"sphere"|"cylinder"|"hollow_cylinder"|"union", ...}; problems go to
 /// r.problems() with their key paths.
 Geometry read_geometry(JsonReader& r, const Json& node);

@@ -37,8 +37,8 @@ namespace {
 // The sizes of cells that fill a side of length L outward from a refined cell of size hf, nearest
 // first: the fewest cells m that grow by `growth` per cell (and stop growing at h0) and reach L,
 // their ratio then lowered to the r in [1, growth] that fills L exactly (the sum grows with r).
-// So the first cell is hf r >= hf, no neighbour ratio exceeds the growth and no cell h0. A side
-// shorter than m refined cells gets m equal cells.
+// So the first cell is hf r >= hf, no neighbour ratio exceeds the growth and no cell exceeds h0. A
+// side shorter than m refined cells gets m equal cells.
 std::vector<double> growing_cells(double L, double hf, double h0, double growth) {
   std::vector<double> s;
   if (!(L > 1e-12 * h0)) return s;

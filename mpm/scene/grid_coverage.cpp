@@ -51,35 +51,29 @@ GridCoverage grid_coverage(const Geometry& geometry, const GridSpec& spec) {
   c.inside_bound = std::min(1.0, overlap.cwiseQuotient(extent).prod() / fill);
   // Cell centres of an n^3 lattice on the bounding box: each point of the body is inside, the
   // mirror image of a point inside (beyond symmetric faces only), or lost.
-  constexpr int n = kCoverageLattice;
-  const Vec3 step = (hi - lo) / n;
   std::size_t body = 0, in = 0, lost = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        const Vec3 point = lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5));
-        if (!inside(geometry, point)) continue;
-        ++body;
-        const Vec3 x = on_grid(point);
-        if (in_grid(grid, x)) {
-          ++in;
-          continue;
-        }
-        Vec3 mirror = x;
-        std::array<bool, 6> beyond{};
-        for (int d = 0; d < 3; ++d) {
-          const int face = x(d) < grid.lower(d) ? 2 * d : x(d) > grid.upper(d) ? 2 * d + 1 : -1;
-          if (face < 0) continue;
-          beyond[std::size_t(face)] = true;
-          const double plane = face % 2 == 0 ? grid.lower(d) : grid.upper(d);
-          if (grid.faces[std::size_t(face)] == FaceCondition::symmetric)
-            mirror(d) = 2.0 * plane - x(d);
-        }
-        // modelled by symmetry (a ring's mirror across the axis is itself: never reached)
-        if (in_grid(grid, mirror) && inside(geometry, mirror)) continue;
-        ++lost;
-        for (std::size_t f = 0; f < 6; ++f) c.lost_through[f] = c.lost_through[f] || beyond[f];
-      }
+  for_each_lattice_point(lo, hi, kCoverageLattice, [&](const Vec3& point) {
+    if (!inside(geometry, point)) return;
+    ++body;
+    const Vec3 x = on_grid(point);
+    if (in_grid(grid, x)) {
+      ++in;
+      return;
+    }
+    Vec3 mirror = x;
+    std::array<bool, 6> beyond{};
+    for (int d = 0; d < 3; ++d) {
+      const int face = x(d) < grid.lower(d) ? 2 * d : x(d) > grid.upper(d) ? 2 * d + 1 : -1;
+      if (face < 0) continue;
+      beyond[std::size_t(face)] = true;
+      const double plane = face % 2 == 0 ? grid.lower(d) : grid.upper(d);
+      if (grid.faces[std::size_t(face)] == FaceCondition::symmetric) mirror(d) = 2.0 * plane - x(d);
+    }
+    // modelled by symmetry (a ring's mirror across the axis is itself: never reached)
+    if (in_grid(grid, mirror) && inside(geometry, mirror)) return;
+    ++lost;
+    for (std::size_t f = 0; f < 6; ++f) c.lost_through[f] = c.lost_through[f] || beyond[f];
+  });
   if (body == 0) return c;  // thinner than the lattice: left to the seed count (scene.cpp)
   c.sampled = true;
   c.inside = double(in) / double(body);

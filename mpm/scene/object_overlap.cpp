@@ -1,5 +1,7 @@
 #include "mpm/scene/object_overlap.hpp"
 
+#include "mpm/scene/grid_coverage.hpp"
+
 namespace impact::mpm {
 
 ObjectOverlap object_overlap(const Scene& scene, std::size_t object) {
@@ -14,24 +16,19 @@ ObjectOverlap object_overlap(const Scene& scene, std::size_t object) {
     if ((elo.array() < hi.array()).all() && (ehi.array() > lo.array()).all()) near.push_back(e);
   }
   if (near.empty()) return overlap;
-  constexpr int n = kOverlapLattice;
-  const Vec3 step = (hi - lo) / n;
   std::vector<bool> holds(near.size(), false);
   std::size_t in_body = 0, claimed = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        const Vec3 x = lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5));
-        if (!inside(body, x)) continue;
-        ++in_body;
-        bool any = false;
-        for (std::size_t a = 0; a < near.size(); ++a)
-          if (inside(scene.objects[near[a]].geometry, x)) {
-            holds[a] = true;
-            any = true;
-          }
-        if (any) ++claimed;
+  for_each_lattice_point(lo, hi, kCoverageLattice, [&](const Vec3& x) {
+    if (!inside(body, x)) return;
+    ++in_body;
+    bool any = false;
+    for (std::size_t a = 0; a < near.size(); ++a)
+      if (inside(scene.objects[near[a]].geometry, x)) {
+        holds[a] = true;
+        any = true;
       }
+    if (any) ++claimed;
+  });
   if (in_body == 0) return overlap;  // thinner than the lattice: left to the seed count
   overlap.claimed = double(claimed) / double(in_body);
   for (std::size_t a = 0; a < near.size(); ++a)

@@ -12,15 +12,12 @@
 namespace impact::mpm {
 
 struct ObjectOverlap {
-  /// The fraction of the object's volume inside earlier objects, sampled on a lattice [-]
+  /// The fraction of the object's volume inside earlier objects, sampled on grid_coverage.hpp's
+  /// lattice (kCoverageLattice^3 points over its bounding box, 48^3) [-]
   double claimed = 0.0;
   /// The earlier objects (indices into Scene::objects) that hold part of it, ascending.
   std::vector<std::size_t> by;
 };
-
-/// Lattice points per axis over the object's bounding box (as grid_coverage.hpp's): 48^3 inside()
-/// tests per earlier object whose bounding box meets it.
-inline constexpr int kOverlapLattice = 48;
 
 ObjectOverlap object_overlap(const Scene& scene, std::size_t object);
 
