@@ -1007,6 +1007,13 @@ def read_patched_scene(args):
         print(f"ladder: {args.scene}: cannot read the scene's grid (/grid/cells, /grid/lower, "
               f"/grid/upper) and /time/max_time: {e}", file=sys.stderr)
         return 2
+    if scene["grid"].get("refine") is not None:
+        # A level scales grid.cells; the refined box is widened to each level's own base nodes,
+        # so the levels of a graded grid would not refine it in step (issue 56, open).
+        print(f"ladder: {args.scene}: /grid/refine: a ladder of a graded grid is not supported "
+              "yet (its levels would not refine the box in step); expected a scene without "
+              "grid.refine", file=sys.stderr)
+        return 2
     return scene, sets
 
 

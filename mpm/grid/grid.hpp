@@ -33,7 +33,9 @@ struct alignas(64) NodeData {
   double mass = 0.0;        ///< m_I [kg]
   double momentum[3] = {};  ///< p_I [kg m/s]
   double force[3] = {};     ///< f_I = f_int [N]
-  double pad = 0.0;
+  /// sum_p S_Ip m_p^2 [kg^2] on a graded grid (zero on a uniform one): over `mass`, the nodal
+  /// mean particle mass that USL's light-node rule scales (step/grid_update.cpp).
+  double mass_moment = 0.0;
 };
 
 /// One write of the face mirror (Grid::apply_mirror): `target` is a face-layer node (its
@@ -115,6 +117,9 @@ struct GridSettings {
   /// A heat array for friction contact's Coulomb work (a wall face with friction allocates it too).
   bool friction_heat = false;
   double light_mass = 0.0;  ///< [kg] see kLightNodeMassFraction in step/step.hpp
+  /// A graded grid under USL: the light-node rule takes each node's mean particle mass
+  /// (NodeData::mass_moment, scattered only then).
+  bool node_mean_mass = false;
   /// Axisymmetric: the radius light_mass holds at [m]; a node at r_I > light_radius is light
   /// below light_mass r_I / light_radius (rings weigh in proportion to their radius). 0: off.
   double light_radius = 0.0;
@@ -137,7 +142,12 @@ class Grid {
 
   const GridSpec& spec() const { return spec_; }
   const Vec3& lower() const { return spec_.lower; }
+  /// The cell edges [m]; on a graded grid the base cells' (GridSpec::spacing).
   const Vec3& spacing() const { return dx_; }
+  /// Node i's coordinate along axis d [m], ghost nodes included (graded or uniform).
+  double node_coordinate(int d, int i) const {
+    return spec_.graded() ? spec_.axes[std::size_t(d)].node(i) : spec_.lower(d) + i * dx_(d);
+  }
   const Vec3& inverse_spacing() const { return inv_dx_; }
   const std::array<int, 3>& cells() const { return spec_.cells; }
   /// Storage index of node (i, j, k) within stored(); k runs fastest.

@@ -205,7 +205,7 @@ void read_crater(InputProblems& problems, const Json& out, Scene& s, bool check_
     c.reject_unknown_keys();
     if (object >= 0 && std::isfinite(spec.face)) {
       spec.object = object;
-      const double dx = s.grid.spacing()(0);
+      const double dx = s.grid.cell_size(0, s.grid.cell_along(0, spec.face));
       if (check_seeds && !seeds_a_point(s, static_cast<std::size_t>(object),
                                         Vec3(spec.face - dx, s.grid.lower(1), s.grid.lower(2)),
                                         Vec3(spec.face + dx, s.grid.upper(1), s.grid.upper(2)))) {

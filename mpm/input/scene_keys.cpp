@@ -117,6 +117,12 @@ InputKeyRecorder scene_keys(const std::string& material_file) {
     mirrors["grid"]["face_velocity"][face] = 0.0;
   }
   read_scene(mirrors, "a.json", &keys);
+  // A graded grid (grid.refine), which runs single-velocity contact only.
+  Json graded = sample;
+  graded["physics"]["contact"] = {{"type", "single_velocity"}};
+  graded["grid"]["refine"] = {
+      {"lower", {0.0, 0.0, 0.0}}, {"upper", {5e-3, 5e-3, 5e-3}}, {"factor", 2.0}, {"growth", 1.2}};
+  read_scene(graded, "a.json", &keys);
   // A default that changes with the scene's other values is computed from them, not a constant.
   InputKeyRecorder other;
   read_scene(sample_scene(material_file, 2.0 * kMaxTime), "b.json", &other);

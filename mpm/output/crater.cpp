@@ -180,12 +180,19 @@ CraterMeasure::CraterMeasure(const Scene& scene, const CraterSpec& spec, const P
                              const Communicator& comm)
     : spec_(spec),
       geometry_(scene.objects[std::size_t(spec.object)].geometry),
-      dx_(scene.grid.spacing()(0)),
+      // The cell along x at the face (graded: the one the face lies in).
+      dx_(scene.grid.cell_size(0, scene.grid.cell_along(0, spec.face))),
       grid_upper_x_(scene.grid.upper(0)),
       rings_(scene.grid.geometry_facts().rings),
       comm_(comm) {
-  const Vec3 h = scene.grid.spacing();
-  // The rings' width: the cell edge across the face (the radial one on a 2D grid).
+  // The rings' width: the cell edge across the face (the radial one on a 2D grid); on a graded
+  // grid the cells at the crater's axis when the scene gives it, else the smallest (the refined
+  // cells a crater is meant to lie in).
+  Vec3 h = scene.grid.smallest_cell();
+  if (scene.grid.graded() && spec.axis) {
+    h(1) = scene.grid.cell_size(1, scene.grid.cell_along(1, (*spec.axis)[0]));
+    h(2) = scene.grid.cell_size(2, scene.grid.cell_along(2, (*spec.axis)[1]));
+  }
   ring_width_ = scene.grid.planar() ? h(1) : 0.5 * (h(1) + h(2));
   struct Seed {
     std::uint64_t id;

@@ -32,10 +32,12 @@ const char* condition_name(FaceCondition c) {
 FaceReach::FaceReach(const Scene& scene, const Particles& initial, const Communicator& comm)
     : comm_(comm) {
   const GridSpec& g = scene.grid;
-  const Vec3 h = g.spacing();
   first_time_.fill(kNotReached);
   for (int f = 0; f < 6; ++f) {
     const int axis = f / 2;
+    // The cell at the face (graded grids: the edge cell; uniform: every cell).
+    Vec3 h = Vec3::Zero();
+    h(axis) = g.cell_size(axis, f % 2 == 0 ? 0 : g.cells[axis] - 1);
     condition_[f] = g.faces[f];
     plane_[f] = f % 2 == 0 ? g.lower(axis) : g.upper(axis);
     layer_[f] = h(axis);

@@ -46,6 +46,7 @@ T record(const std::vector<char>& in, std::size_t k) {
 
 void add(NodeData& a, const NodeData& b) {
   a.mass += b.mass;
+  a.mass_moment += b.mass_moment;
   for (int d = 0; d < 3; ++d) {
     a.momentum[d] += b.momentum[d];
     a.force[d] += b.force[d];

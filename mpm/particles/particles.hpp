@@ -45,6 +45,10 @@ struct Particles {
   /// Reference (seed) position X [m], what the body forces' expressions and the exact
   /// displacement read (scene/expression.hpp); empty unless the scene has either.
   std::vector<Vec3> X;
+  /// uGIMP half-width per axis [m] on a graded grid (scene/seed_points.hpp seeded_half_width:
+  /// half the sub-cell of the cell it was seeded in, fixed then); empty on a uniform grid, where
+  /// the object's half-width in cells serves.
+  std::vector<Vec3> half_width;
 
   /// f(array) for every per-particle array of kParticleArrays (below), optional ones (q, fault,
   /// removed, id, X) included even when empty: what moves a particle whole (migration between
@@ -97,7 +101,8 @@ inline constexpr auto kParticleArrays = std::make_tuple(
     ParticleArray<std::uint8_t>{"fault", "-", &Particles::fault, true},
     ParticleArray<std::uint8_t>{"removed", "-", &Particles::removed, true},
     ParticleArray<std::uint64_t>{"id", "-", &Particles::id, true},
-    ParticleArray<Vec3>{"X", "m", &Particles::X, true});
+    ParticleArray<Vec3>{"X", "m", &Particles::X, true},
+    ParticleArray<Vec3>{"half_width", "m", &Particles::half_width, true});
 
 static_assert(aggregate_arity<Particles>() == std::tuple_size_v<decltype(kParticleArrays)>,
               "a Particles array is missing from kParticleArrays");

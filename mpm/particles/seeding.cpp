@@ -42,10 +42,8 @@ void seed_object(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3&
                  Keep&& keep) {
   const SceneObject& o = scene.objects[oi];
   const ElasticPlastic& model = scene.materials[o.material].material.model;
-  const auto& ppc = o.particles_per_cell;
   // A 2D grid's cell is 1 m along z: per metre of thickness (plane strain), or the ring the
   // sub-cell sweeps about the axis, 2 pi r times its area (axisymmetric; scene/grid_geometry.hpp).
-  const double cell_share = scene.grid.spacing().prod() / (ppc[0] * ppc[1] * ppc[2]);
   const auto particle_volume = visit_geometry(
       scene.grid.geometry, [](auto geometry) { return &decltype(geometry)::particle_volume; });
   const PointState s0 = model.initial_state(o.temperature);
@@ -53,7 +51,7 @@ void seed_object(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3&
   InitialVelocity velocity(scene, oi);  // numbers, or expressions at the seed point
   for_each_seed_point(scene, oi, lo, hi, [&](const Vec3& x, int) {
     if (!keep(x)) return;
-    const double v0 = particle_volume(x, cell_share);
+    const double v0 = particle_volume(x, seeded_cell_share(scene, oi, x));
     p.x.push_back(x);
     p.v.push_back(velocity.at(x));
     p.mass.push_back(model.params().density * v0);
@@ -65,6 +63,7 @@ void seed_object(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3&
     p.material.push_back(static_cast<std::uint16_t>(o.material));
     p.object.push_back(static_cast<std::uint16_t>(oi));
     p.field.push_back(static_cast<std::uint16_t>(scene.parent_field(o.material)));
+    if (scene.grid.graded()) p.half_width.push_back(seeded_half_width(scene, oi, x));
   });
 }
 
@@ -76,8 +75,13 @@ void seed_object(const Scene& scene, std::size_t oi, const Vec3& lo, const Vec3&
 // inside so that rounding cannot add a column; empty (lo(0) > hi(0)) when they do not meet.
 std::pair<Vec3, Vec3> columns_of(const Scene& scene, std::size_t oi, int first, int end) {
   const GridSpec& g = scene.grid;
-  const double h = g.spacing()(0);
   auto [lo, hi] = bounds(scene.objects[oi].geometry);
+  if (g.graded()) {  // the middles of cells first and end - 1
+    lo(0) = std::max(lo(0), g.node(0, first) + 0.5 * g.cell_size(0, first));
+    hi(0) = std::min(hi(0), g.node(0, end - 1) + 0.5 * g.cell_size(0, end - 1));
+    return {lo, hi};
+  }
+  const double h = g.spacing()(0);
   lo(0) = std::max(lo(0), g.lower(0) + (first + 0.5) * h);
   hi(0) = std::min(hi(0), g.lower(0) + (end - 0.5) * h);
   return {lo, hi};
@@ -95,6 +99,7 @@ Particles seed_particles(const Scene& scene) {
     for_each_seed_point(scene, oi, lo, hi, [&](const Vec3&, int) { ++count; });
   }
   p.reserve(count);
+  if (scene.grid.graded()) p.half_width.reserve(count);
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const auto [lo, hi] = bounds(scene.objects[oi].geometry);
     seed_object(scene, oi, lo, hi, p);
@@ -167,6 +172,7 @@ Particles seed_box(const Scene& scene, const std::array<int, 3>& first,
   }
   Particles p;
   p.reserve(n);
+  if (scene.grid.graded()) p.half_width.reserve(n);
   p.id.reserve(n);
   std::size_t object_start = 0;  // the seed index of the object's first point
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {

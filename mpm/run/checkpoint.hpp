@@ -36,8 +36,9 @@ class Simulation;
 // internal variable (PointState::flow_internal); 6: the boxes of the domain decomposition (three
 // axes' boundaries, was the slabs along x); 7: the gauges' extrema and the scene file's path;
 // 8: the file's length, the faces material reached; 9: the ledger's peak energy input; 10: the
-// particles' reference positions (Particles::X, for body forces)
-inline constexpr std::uint32_t kCheckpointVersion = 10;
+// particles' reference positions (Particles::X, for body forces); 11: the particles' uGIMP
+// half-widths on a graded grid (Particles::half_width; an empty section on a uniform one)
+inline constexpr std::uint32_t kCheckpointVersion = 11;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 /// Rank r's checkpoint in DIR: checkpoint.bin for rank 0 (and a one-rank run),
 /// checkpoint.rank<r>.bin for the others.

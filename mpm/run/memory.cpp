@@ -19,15 +19,34 @@ namespace {
 constexpr double kProgramBytes = 16e6;
 constexpr double kMB = 1e6;
 
+// The cells of graded axis d across [lo, hi], fractions of the end cells counted.
+double cells_across(const GridSpec& g, int d, double lo, double hi) {
+  if (!(hi > lo)) return 0.0;
+  const int first = g.cell_along(d, lo), last = g.cell_along(d, hi);
+  double n = 0.0;
+  for (int i = first; i <= last; ++i) {
+    const double a = std::max(lo, g.node(d, i)), b = std::min(hi, g.node(d, i + 1));
+    n += std::max(0.0, b - a) / g.cell_size(d, i);
+  }
+  return n;
+}
+
 }  // namespace
 
 double estimated_particle_count(const Scene& scene) {
   const GridSpec& g = scene.grid;
-  const Vec3 h = g.spacing();
   double n = 0.0;
   for (const SceneObject& o : scene.objects) {
     const auto [lo, hi] = bounds(o.geometry);
     const Vec3 extent = (hi.cwiseMin(g.upper) - lo.cwiseMax(g.lower)).cwiseMax(0.0);
+    // On a graded grid, the mean cell over the body's bounding box: the cells it spans per axis.
+    Vec3 h = g.spacing();
+    if (g.graded())
+      for (int d = 0; d < 3; ++d) {
+        const double cells =
+            cells_across(g, d, std::max(lo(d), g.lower(d)), std::min(hi(d), g.upper(d)));
+        if (cells > 0.0) h(d) = extent(d) / cells;
+      }
     const auto& ppc = o.particles_per_cell;
     n += visit_geometry(g.geometry, [&](auto geometry) {
       return decltype(geometry)::estimated_seed_points(o.geometry, extent, h, ppc);
@@ -84,6 +103,7 @@ MemoryEstimate estimate_memory(const Scene& scene, std::optional<std::size_t> pa
   if (scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle) per_particle += 1;
   if (scene.grid.outflow == Outflow::remove) per_particle += 1;
   if (scene.needs_reference_positions()) per_particle += sizeof(Vec3);  // X_p
+  if (scene.grid.graded()) per_particle += sizeof(Vec3);                // half_width_p
   if (scene.has_body_force()) per_particle += sizeof(Vec3);             // b_p (step/body_force.hpp)
   per_particle += stencil_bytes(scene.solver.interpolation);
   per_particle += 2 * sizeof(int);  // scatter order: index and tile (mpm/step/scatter_order.hpp)

@@ -350,6 +350,14 @@ void report_end(const RunContext& run, const Simulation& sim, const Json& summar
               << (mentions_a_unit_slip(scene.warnings) ? ", as the warnings above suggest" : "")
               << '\n';
   }
+  // A graded grid's particle seeded in a coarse cell, among finer ones: its box was narrowed to
+  // the two cells about it (shape/tartan.hpp; docs/scenes.md#graded-grids). Said, never silent.
+  if (run.root && sim.narrowed_particle_steps() > 0)
+    std::cerr << "mpm: warning: " << sim.narrowed_particle_steps()
+              << " particle-steps narrowed a particle's uGIMP box to the finer cells it had "
+                 "entered (grid.refine: coarse-seeded material inside the refined box; "
+                 "summary.json narrowed_particle_steps); widen the refined box to hold the "
+                 "material from the start\n";
   if (!run.options.report || end.status != "completed") return;
   std::ostringstream line;
   line.precision(4);

@@ -60,6 +60,19 @@ Json failure_causes(const Particles& P, const Communicator& comm) {
   return j;
 }
 
+// The grid's cells per axis and their smallest and largest edge; on a graded grid (grid.refine)
+// also the base cells grid.cells gave.
+Json grid_report(const GridSpec& g) {
+  const auto ints = [](const std::array<int, 3>& a) { return Json::array({a[0], a[1], a[2]}); };
+  const auto vec = [](const Vec3& v) { return Json::array({v(0), v(1), v(2)}); };
+  Json j = {{"cells", ints(g.cells)},
+            {"smallest_cell [m]", vec(g.smallest_cell())},
+            {"largest_cell [m]", vec(g.largest_cell())},
+            {"graded", g.graded()}};
+  if (g.graded()) j["base_cells"] = ints(g.base_cells);
+  return j;
+}
+
 // Per object counts, mass and volumes, and the memory estimate with the seeded count: what
 // `mpm check` and summary.json share. P: the particles this rank holds.
 Json particle_report(const Scene& scene, const Particles& P, int threads,
@@ -104,6 +117,7 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
   }
   const MemoryEstimate memory = estimate_memory(scene, total);
   Json report = {{"objects", objects},
+                 {"grid", grid_report(scene.grid)},
                  {"particles", total},
                  {in("mass", u.mass), total_mass},
                  {"memory [MB]", memory.total() / 1e6},
@@ -137,6 +151,8 @@ Json check_report(const Scene& scene, int threads, int ranks) {
   report["scene_fingerprint"] = scene_fingerprint(scene.resolved);
   // The keys without a unit in their name: counts and ratios.
   report["units"] = {{"particles", "-"},
+                     {"cells", "-"},
+                     {"base_cells", "-"},
                      {"volume_ratio", "-"},
                      {"estimated_steps", "-"},
                      {"max_estimated_steps", "-"},
@@ -172,6 +188,7 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
   for (std::size_t i = 0; paths && i < scene.output.particle_paths.size(); ++i)
     summary["particle_paths"][scene.output.particle_paths[i].name] = paths->particle(i);
   summary["converted_particles"] = sim.converted_particles();
+  if (scene.grid.graded()) summary["narrowed_particle_steps"] = sim.narrowed_particle_steps();
   summary["faulted_particles"] = sim.faulted_particles();
   summary["initial_momentum [" + u.momentum + "]"] = vec_json(sim.ledger().initial_momentum());
   summary["final"] = row_json(sim.ledger());
@@ -187,11 +204,14 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
                       {"energy_error", "-"},
                       // counts and ratios, and the one rate without a unit in its name
                       {"particles", "-"},
+                      {"cells", "-"},
+                      {"base_cells", "-"},
                       {"steps", "-"},
                       {"volume_ratio", "-"},
                       {"failed_particles", "-"},
                       {"failed_by_cause", "-"},
                       {"converted_particles", "-"},
+                      {"narrowed_particle_steps", "-"},
                       {"faulted_particles", "-"},
                       {"velocity_fields", "-"},
                       {"threads", "-"},

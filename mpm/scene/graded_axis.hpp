@@ -39,19 +39,21 @@ class GradedAxis {
   /// The cell holding coordinate x, clamped to [0, cells() - 1] (the upper face belongs to the
   /// last cell, as on a uniform grid).
   int cell_of(double x) const;
-  double smallest() const;
-  double largest() const;
+  double smallest() const { return smallest_; }
+  double largest() const { return largest_; }
   const std::vector<double>& nodes() const { return x_; }
 
  private:
   std::vector<double> x_;
+  double smallest_ = 0.0, largest_ = 0.0;  ///< cell sizes, found once
 };
 
 /// The axis [lower, upper] of `base_cells` base cells (size h0 = (upper - lower) / base_cells),
-/// refined inside `span` (clipped to the axis): there round((upper - lower of the span) / (h0 /
-/// F)) equal cells, at least one; outside, on each side, the fewest cells that grow from the
-/// refined size by at most `growth` per cell, stop growing at h0 and fill the side exactly (their
-/// common ratio lowered to fit). A span with factor 1 gives the uniform axis, lower + i h0.
+/// refined inside `span` (clipped to the axis, then widened to the nearest base nodes outside
+/// it): there round((upper - lower of the span) / (h0 / F)) equal cells, at least one; outside, on
+/// each side, the fewest cells that grow from the refined size by at most `growth` per cell, stop
+/// growing at h0 and fill the side exactly (their common ratio lowered to fit). A span with factor
+/// 1 gives the uniform axis, lower + i h0.
 GradedAxis graded_axis(double lower, double upper, int base_cells, const RefinedSpan& span);
 
 }  // namespace impact::mpm

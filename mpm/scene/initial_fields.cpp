@@ -15,8 +15,6 @@ InitialVelocity::InitialVelocity(const Scene& scene, std::size_t object)
 InitialFields initial_fields(const Scene& scene, std::size_t object) {
   const SceneObject& o = scene.objects[object];
   const double rho = scene.materials[std::size_t(o.material)].material.model.params().density;
-  const auto& ppc = o.particles_per_cell;
-  const double cell_share = scene.grid.spacing().prod() / (ppc[0] * ppc[1] * ppc[2]);
   const auto particle_volume = visit_geometry(
       scene.grid.geometry, [](auto geometry) { return &decltype(geometry)::particle_volume; });
   InitialVelocity v0(scene, object);
@@ -29,7 +27,8 @@ InitialFields initial_fields(const Scene& scene, std::size_t object) {
     if (!v.allFinite() && !s.non_finite_velocity) s.non_finite_velocity = x;
     for (int d = 0; d < 3; ++d)
       if (std::abs(v(d)) > std::abs(s.velocity_peak(d))) s.velocity_peak(d) = v(d);
-    s.kinetic_energy += 0.5 * rho * particle_volume(x, cell_share) * v.squaredNorm();
+    s.kinetic_energy +=
+        0.5 * rho * particle_volume(x, seeded_cell_share(scene, object, x)) * v.squaredNorm();
     if (b) {
       const Vec3 f = (*b)(x, 0.0);
       if (!f.allFinite() && !s.non_finite_body_force) s.non_finite_body_force = x;

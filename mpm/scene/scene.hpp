@@ -15,6 +15,7 @@
 #include "models/material/material.hpp"
 #include "mpm/geometry/geometry.hpp"
 #include "mpm/scene/expression.hpp"
+#include "mpm/scene/graded_axis.hpp"
 #include "mpm/scene/grid_geometry.hpp"
 
 namespace impact::mpm {
@@ -39,9 +40,24 @@ struct FaceMotion {
   bool set = false;    ///< the scene gave the face a velocity
 };
 
+/// grid.refine (docs/scenes.md#graded-grids; issue 56): a box of cells `factor` times finer than
+/// the base, the cells outside it growing by at most `growth` per cell back to the base size
+/// (NairnMPM's tartan grids). Each mesh axis is graded on its own (scene/graded_axis.hpp).
+struct GridRefinement {
+  Vec3 lower, upper;    ///< [m]
+  double factor = 1.0;  ///< base cell size / refined cell size [-], >= 1
+  double growth = 1.2;  ///< largest ratio of neighbouring cells outside the box [-], > 1
+};
+
 struct GridSpec {
-  Vec3 lower, upper;                          ///< [m]
-  std::array<int, 3> cells{};                 ///< cells per axis
+  Vec3 lower, upper;  ///< [m]
+  /// Cells per axis; on a graded grid those of the graded axes (base_cells: what grid.cells gave).
+  std::array<int, 3> cells{};
+  /// grid.refine; absent: a uniform grid (the solver's uniform path, bit for bit).
+  std::optional<GridRefinement> refine;
+  std::array<int, 3> base_cells{};  ///< grid.cells (the base size); == cells when uniform
+  /// Each axis's node coordinates on a graded grid (empty when uniform).
+  std::array<GradedAxis, 3> axes;
   std::array<FaceCondition, 6> faces{};       ///< per face, kFaceNames order
   std::array<double, 6> wall_friction{};      ///< Coulomb coefficient of each `wall` face [-]
   std::array<FaceMotion, 6> face_velocity{};  ///< per face, kFaceNames order
@@ -77,26 +93,62 @@ struct GridSpec {
   bool per_metre_of_thickness() const { return geometry_facts().per_metre_of_thickness; }
   /// Face f (kFaceNames order) bounds the modelled domain: read from the scene, not the axis.
   bool is_domain_face(int f) const { return geometry_facts().is_domain_face(f); }
+  /// Cells of unequal size along the mesh's axes (grid.refine).
+  bool graded() const { return refine.has_value(); }
+  /// Grades the axes by `refine` (the reader, once cells are read): base_cells keeps grid.cells,
+  /// cells becomes the graded counts. A 2D grid's z (one cell of 1 m) is not graded.
+  void grade();
   /// The smallest cell edge of the mesh's axes [m] (the time step).
   double min_spacing() const {
-    const Vec3 h = spacing();
+    const Vec3 h = smallest_cell();
     return planar() ? std::min(h(0), h(1)) : h.minCoeff();
   }
-  /// The mean cell edge of the mesh's axes [m] (artificial viscosity's length, report eq. 12).
+  /// The mean cell edge of the mesh's axes [m] (artificial viscosity's length, report eq. 12; on
+  /// a graded grid that of the cell the particle is in, step/stress_update.cpp).
   double mean_spacing() const {
     const Vec3 h = spacing();
     return planar() ? 0.5 * (h(0) + h(1)) : h.sum() / 3.0;
   }
-  Vec3 spacing() const { return (upper - lower).cwiseQuotient(Vec3(cells[0], cells[1], cells[2])); }
+  /// The cell edges [m]; on a graded grid the base cells' (grid.cells): what a site that has no
+  /// graded form yet reads (the scene check refuses those with a graded grid).
+  Vec3 spacing() const {
+    return (upper - lower)
+        .cwiseQuotient(
+            Vec3(base_cells_or_cells(0), base_cells_or_cells(1), base_cells_or_cells(2)));
+  }
+  /// The smallest cell per axis [m].
+  Vec3 smallest_cell() const {
+    if (!graded()) return spacing();
+    return {axes[0].smallest(), axes[1].smallest(), axes[2].smallest()};
+  }
+  /// The largest cell per axis [m].
+  Vec3 largest_cell() const {
+    if (!graded()) return spacing();
+    return {axes[0].largest(), axes[1].largest(), axes[2].largest()};
+  }
+  /// Node i's coordinate along axis d [m] (the ghost nodes -1 and cells_d + 1 included).
+  double node(int d, int i) const {
+    return graded() ? axes[std::size_t(d)].node(i) : lower(d) + i * spacing()(d);
+  }
+  /// The edge along axis d of cell i (between nodes i and i + 1) [m].
+  double cell_size(int d, int i) const {
+    return graded() ? axes[std::size_t(d)].size(i) : spacing()(d);
+  }
   /// The cell along axis d holding coordinate x, clamped into [0, cells_d - 1] (seed points,
   /// migration and the domain decomposition's counts all bin particles by it).
   int cell_along(int d, double x) const {
+    if (graded()) return axes[std::size_t(d)].cell_of(x);
     const double c = std::floor((x - lower(d)) / spacing()(d));
     return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells[std::size_t(d)] - 1)));
   }
   /// The cell (i, j, k) holding position x, clamped into the grid.
   std::array<int, 3> cell_of(const Vec3& x) const {
     return {cell_along(0, x(0)), cell_along(1, x(1)), cell_along(2, x(2))};
+  }
+
+ private:
+  double base_cells_or_cells(int d) const {
+    return graded() ? base_cells[std::size_t(d)] : cells[std::size_t(d)];
   }
 };
 

@@ -36,6 +36,15 @@ inline SeedCells seed_cells(const Scene& scene, std::size_t oi, const Vec3& lo, 
   };
   SeedCells c;
   for (int d = 0; d < 3; ++d) {
+    if (g.graded()) {  // the cells whose span meets [box_lo, box_hi] (NaN: none)
+      if (!(box_lo(d) <= box_hi(d)) || box_hi(d) < g.lower(d) || box_lo(d) > g.upper(d)) {
+        c.begin[d] = c.end[d] = 0;
+        continue;
+      }
+      c.begin[d] = g.cell_along(d, box_lo(d));
+      c.end[d] = g.cell_along(d, box_hi(d)) + 1;
+      continue;
+    }
     c.begin[d] = cell(std::floor((box_lo(d) - g.lower(d)) / h(d)), d);
     c.end[d] = cell(std::ceil((box_hi(d) - g.lower(d)) / h(d)), d);
   }
@@ -55,8 +64,13 @@ inline bool seed_points_of_cell(const Scene& scene, std::size_t oi, int i, int j
   for (int a = 0; a < ppc[0]; ++a)
     for (int b = 0; b < ppc[1]; ++b)
       for (int e = 0; e < ppc[2]; ++e) {
-        const Vec3 x = g.lower + h.cwiseProduct(Vec3(i + (a + 0.5) / ppc[0], j + (b + 0.5) / ppc[1],
-                                                     k + (e + 0.5) / ppc[2]));
+        const Vec3 x =
+            g.graded()
+                ? Vec3(g.node(0, i) + g.cell_size(0, i) * (a + 0.5) / ppc[0],
+                       g.node(1, j) + g.cell_size(1, j) * (b + 0.5) / ppc[1],
+                       g.node(2, k) + g.cell_size(2, k) * (e + 0.5) / ppc[2])
+                : Vec3(g.lower + h.cwiseProduct(Vec3(i + (a + 0.5) / ppc[0], j + (b + 0.5) / ppc[1],
+                                                     k + (e + 0.5) / ppc[2])));
         if (!inside(o.geometry, x)) continue;
         const bool claimed =
             std::any_of(scene.objects.begin(), scene.objects.begin() + oi,
@@ -115,5 +129,26 @@ inline bool in_box(const Vec3& x, const Vec3& lower, const Vec3& upper) {
 
 /// Per object: GIMP half-width l_d = 1/(2 ppc_d) in cells (fixed at creation, as in the report).
 std::vector<Vec3> half_widths(const Scene& scene);
+
+/// The share of its cell a particle of object `oi` seeded at x takes: the cell's volume over
+/// ppc^3 [m^3; a 2D grid's cell is 1 m along z]. On a graded grid, the cell x lies in.
+inline double seeded_cell_share(const Scene& scene, std::size_t oi, const Vec3& x) {
+  const GridSpec& g = scene.grid;
+  const auto& ppc = scene.objects[oi].particles_per_cell;
+  if (!g.graded()) return g.spacing().prod() / (ppc[0] * ppc[1] * ppc[2]);
+  const std::array<int, 3> c = g.cell_of(x);
+  return g.cell_size(0, c[0]) * g.cell_size(1, c[1]) * g.cell_size(2, c[2]) /
+         (ppc[0] * ppc[1] * ppc[2]);
+}
+
+/// On a graded grid, the uGIMP half-width [m] of a particle of object `oi` seeded at x: half its
+/// sub-cell, size_d / (2 ppc_d) of the cell it is seeded in (Nairn's tartan GIMP), fixed then.
+inline Vec3 seeded_half_width(const Scene& scene, std::size_t oi, const Vec3& x) {
+  const GridSpec& g = scene.grid;
+  const auto& ppc = scene.objects[oi].particles_per_cell;
+  const std::array<int, 3> c = g.cell_of(x);
+  return {g.cell_size(0, c[0]) / (2.0 * ppc[0]), g.cell_size(1, c[1]) / (2.0 * ppc[1]),
+          g.cell_size(2, c[2]) / (2.0 * ppc[2])};
+}
 
 }  // namespace impact::mpm

@@ -2,7 +2,8 @@
 // every phase is a template on the shape and is instantiated for each shape of the catalogue.
 // A shape is a struct with
 //   - kName (the scene's solver.interpolation) and kMeaning (for messages),
-//   - N, the nodes per axis of its stencil, and at(x, object) -> Stencil<N>,
+//   - N, the nodes per axis of its stencil, and at(x, object, half_width) -> Stencil<N>
+//     (half_width: the particle's own [m] on a graded grid, Particles::half_width, else null),
 //   - OnGrid<G, N> as a base: the grid geometry it serves (NZ nodes along z, hoop terms),
 //   - make(scene), which builds it for a scene;
 // and its line in WithEveryShape below, which puts it on every grid geometry of the catalogue
@@ -10,6 +11,7 @@
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <string_view>
 #include <tuple>
 #include <utility>
@@ -19,8 +21,17 @@
 #include "mpm/scene/seed_points.hpp"
 #include "mpm/shape/gimp.hpp"
 #include "mpm/shape/linear.hpp"
+#include "mpm/shape/tartan.hpp"
 
 namespace impact::mpm {
+
+/// A graded grid's node coordinates, shared by the copies of a shape (null: a uniform grid, and
+/// the shape's own uniform arithmetic, bit for bit).
+using GradedAxes = std::shared_ptr<const std::array<GradedAxis, 3>>;
+inline GradedAxes graded_axes(const Scene& scene) {
+  if (!scene.grid.graded()) return nullptr;
+  return std::make_shared<const std::array<GradedAxis, 3>>(scene.grid.axes);
+}
 
 /// The stencil's reach along z on a grid of geometry G: 3D, or the single node plane k = 0 of a
 /// 2D grid (weight 1, no gradient along z: no strain out of the plane but the hoop term).
@@ -54,13 +65,20 @@ struct LinearShape : OnGrid<G, 2> {
   static constexpr int N = 2;  ///< nodes per axis: 8 in all (4 on a 2D grid)
   Vec3 lower, inv_dx;
   std::array<int, 3> cells;
-  Stencil<2> at(const Vec3& x, int /*object*/) const {
-    Stencil<2> s = linear_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, cells);
+  GradedAxes graded;  ///< a graded grid's axes (tartan.hpp), null when uniform
+  Stencil<2> at(const Vec3& x, int /*object*/, const Vec3* /*half_width*/ = nullptr,
+                bool* /*narrowed: no box, never*/ = nullptr) const {
+    Stencil<2> s = graded ? tartan_linear_stencil(*graded, x)
+                          : linear_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, cells);
     if constexpr (GeometryOf<G>::kMeshAxes < 3) flatten_z(s);
     return s;
   }
   static LinearShape make(const Scene& scene) {
-    return {{}, scene.grid.lower, scene.grid.spacing().cwiseInverse(), scene.grid.cells};
+    return {{},
+            scene.grid.lower,
+            scene.grid.spacing().cwiseInverse(),
+            scene.grid.cells,
+            graded_axes(scene)};
   }
 };
 
@@ -73,10 +91,17 @@ struct GimpShape : OnGrid<G, 3> {
   static constexpr bool kSlopeVanishesWithWeight = true;  ///< S and dS/dr vanish at |r| = 1 + l
   Vec3 lower, inv_dx;
   std::array<int, 3> cells;
-  std::vector<Vec3> half_width;  ///< per object, in cells
-  Stencil<3> at(const Vec3& x, int object) const {
+  std::vector<Vec3> half_width;  ///< per object, in cells (a uniform grid)
+  GradedAxes graded;             ///< a graded grid's axes (tartan.hpp), null when uniform
+  /// On a graded grid the particle's own half-width [m] (`own`, Particles::half_width, fixed at
+  /// seeding); without it, the object's in cells of the cell x lies in. `narrowed` is set when
+  /// the box had to be narrowed to its cells (tartan.hpp).
+  Stencil<3> at(const Vec3& x, int object, const Vec3* own = nullptr,
+                bool* narrowed = nullptr) const {
     Stencil<3> s =
-        gimp_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, half_width[object], cells);
+        graded ? tartan_gimp_stencil(*graded, x, own ? *own : cell_half_width(x, object), narrowed,
+                                     GeometryOf<G>::kMeshAxes)
+               : gimp_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, half_width[object], cells);
     if constexpr (GeometryOf<G>::kMeshAxes < 3) flatten_z(s);
     return s;
   }
@@ -85,7 +110,18 @@ struct GimpShape : OnGrid<G, 3> {
             scene.grid.lower,
             scene.grid.spacing().cwiseInverse(),
             scene.grid.cells,
-            half_widths(scene)};
+            half_widths(scene),
+            graded_axes(scene)};
+  }
+
+ private:
+  Vec3 cell_half_width(const Vec3& x, int object) const {
+    Vec3 l;
+    for (int d = 0; d < 3; ++d) {
+      const GradedAxis& axis = (*graded)[std::size_t(d)];
+      l(d) = half_width[object](d) * axis.size(axis.cell_of(x(d)));
+    }
+    return l;
   }
 };
 

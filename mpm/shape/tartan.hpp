@@ -10,15 +10,18 @@
 // any nodes, sum_I S_I = 1, sum_I x_I S_I = x and sum_I x_I dS_I/dx = 1 hold on every graded
 // cell, to round-off. On equal cells S_I is gimp.hpp's weight.
 // The stencil keeps three nodes per axis, so the box must span at most two cells: 2 L no larger
-// than the cells it reaches. tartan_box_fits() says whether it does; the caller decides what a
-// particle too large for a fine cell gets (issue 56 asks for a warning naming it, never a silent
-// error).
+// than the cells it reaches. tartan_box_fits() says whether it does; where it does not (a
+// particle seeded in a coarse cell among finer ones) tartan_fitted_half_width() narrows the box
+// to those two cells, still a box, and the solver counts it (summary.json
+// narrowed_particle_steps, a warning from mpm run; docs/scenes.md#graded-grids).
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "mpm/scene/graded_axis.hpp"
+#include "mpm/shape/linear.hpp"
 
 namespace impact::mpm {
 
@@ -81,9 +84,53 @@ inline AxisWeights<3> tartan_gimp(const GradedAxis& axis, double x, double L) {
   for (int k = 0; k < 3; ++k) {
     const int I = s.base + k;
     // Beyond the ghost node the hat has no neighbour: its cell mirrors the edge cell.
-    const double a = axis.node(I) - axis.size(I - 1), c = axis.node(I), b = c + axis.size(I);
+    const double a = axis.node(I - 1), c = axis.node(I), b = axis.node(I + 1);
     s.w[k] = (detail::hat_integral(a, c, b, hi) - detail::hat_integral(a, c, b, lo)) * inv;
     s.dw[k] = (detail::hat(a, c, b, hi) - detail::hat(a, c, b, lo)) * inv;
+  }
+  return s;
+}
+
+/// The half-width that fits: L, narrowed where the box [x - L, x + L] would reach beyond the two
+/// cells of the uGIMP stencil at x (a particle seeded in a coarse cell that has moved into finer
+/// ones). The narrowed box is still a box: partition of unity and sum_I x_I S_I = x hold.
+inline double tartan_fitted_half_width(const GradedAxis& axis, double x, double L) {
+  const int i = axis.cell_of(x);
+  const int base = x - axis.node(i) < axis.node(i + 1) - x ? i - 1 : i;
+  return std::min({L, x - axis.node(base), axis.node(base + 2) - x});
+}
+
+/// The linear stencil at x on three graded axes.
+inline Stencil<2> tartan_linear_stencil(const std::array<GradedAxis, 3>& axes, const Vec3& x) {
+  Stencil<2> s;
+  for (int d = 0; d < 3; ++d) {
+    const AxisWeights<2> a = tartan_linear(axes[std::size_t(d)], x(d));
+    s.base[d] = a.base;
+    for (int k = 0; k < 2; ++k) {
+      s.w[d][k] = a.w[k];
+      s.dw[d][k] = a.dw[k];
+    }
+  }
+  return s;
+}
+
+/// The uGIMP stencil at x with half-widths L [m] on three graded axes, each narrowed to fit
+/// (tartan_fitted_half_width); `narrowed`, when given, is set if one was, along the first
+/// `axes_checked` axes (the mesh's).
+inline Stencil<3> tartan_gimp_stencil(const std::array<GradedAxis, 3>& axes, const Vec3& x,
+                                      const Vec3& L, bool* narrowed = nullptr,
+                                      int axes_checked = 3) {
+  Stencil<3> s;
+  for (int d = 0; d < 3; ++d) {
+    const GradedAxis& axis = axes[std::size_t(d)];
+    const double l = tartan_fitted_half_width(axis, x(d), L(d));
+    if (narrowed && d < axes_checked && l < L(d)) *narrowed = true;
+    const AxisWeights<3> a = tartan_gimp(axis, x(d), l);
+    s.base[d] = a.base;
+    for (int k = 0; k < 3; ++k) {
+      s.w[d][k] = a.w[k];
+      s.dw[d][k] = a.dw[k];
+    }
   }
   return s;
 }

@@ -52,7 +52,7 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   StepTotals t;
   PhaseClock clock(t.seconds);
   const bool usl = run.solver.scheme == Scheme::usl;
-  compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n, once per step
+  t.narrowed = compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n
   order_for_scatter(S, G, order);  // by band and colour: race-free scatters, any thread count
   const Vec3* body = run.body_force ? run.body_force->data() : nullptr;  // b(X_p, t^n)
   particles_to_grid<Shape>(P, G, S, order, dt, run.halo, body);  // m_I, p_I, f_I (eqs. 20-22)

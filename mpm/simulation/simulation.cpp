@@ -69,6 +69,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   if (scene_.has_body_force()) body_forces_.emplace(scene_, grid_.threads());
   if (scene_.grid.has_moving_faces()) face_motions_.emplace(scene_.grid, scene_.constants);
   st.mean_spacing = scene_.grid.mean_spacing();
+  if (scene_.grid.graded()) st.graded_grid = &scene_.grid;
   if (ph.artificial_viscosity.enabled) {
     st.viscosity = &scene_.physics.artificial_viscosity;
     particles_.q.assign(particles_.size(), 0.0);
@@ -116,6 +117,7 @@ GridSettings Simulation::grid_settings(int threads) const {
                                           [&](double v) { return ranks_.min(v); });
   });
   g.light_radius = light.radius;
+  g.node_mean_mass = scene_.grid.graded() && scene_.solver.scheme == Scheme::usl;
   if (std::isfinite(light.lightest)) g.light_mass = kLightNodeMassFraction * light.lightest;
   // Walls hold only where a particle's domain reaches them (grid/wall.cpp). Every rank scatters
   // the touch bits of its particles (the sums carry them to the rank holding the wall's nodes),
@@ -140,6 +142,7 @@ void Simulation::resize_particles(std::size_t n) {
   if (!removed) P.removed.clear();
   if (!id) P.id.clear();
   if (!reference) P.X.clear();
+  if (!scene_.grid.graded()) P.half_width.clear();
 }
 
 void Simulation::restart_ledger() {
@@ -250,6 +253,7 @@ void Simulation::book(double dt) {
   failed_ += last_.stress.failed;
   converted_ += last_.stress.converted;
   faulted_ += ranks_.sum(static_cast<long>(last_.stress.faulted.size()));
+  if (scene_.grid.graded()) narrowed_ += ranks_.sum(last_.narrowed);
 }
 
 void Simulation::stop_if(const std::optional<std::string>& message) const {

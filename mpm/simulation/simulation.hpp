@@ -86,6 +86,8 @@ class Simulation {
   const PhaseTimes& phase_totals() const { return phase_totals_; }
   long failed_particles() const { return failed_; }        ///< failures so far
   long converted_particles() const { return converted_; }  ///< moved to a companion field
+  /// Particle-steps whose uGIMP box was narrowed to its cells (a graded grid; shape/tartan.hpp).
+  long narrowed_particle_steps() const { return narrowed_; }
   /// Particles flagged by physics.on_numerical_fault = fail_particle so far.
   long faulted_particles() const { return faulted_; }
   /// Particles that left the grid and were removed so far (grid.outflow = remove).
@@ -125,7 +127,7 @@ class Simulation {
   struct SinkColumns {
     int viscous = -1, friction = -1, wall_friction = -1, eroded = -1, plastic = -1;
   } sinks_;
-  long failed_ = 0, converted_ = 0, faulted_ = 0, removed_ = 0;
+  long failed_ = 0, converted_ = 0, faulted_ = 0, removed_ = 0, narrowed_ = 0;
   std::vector<FaultInjection> injections_;
   std::optional<HaloExchange> halo_;
   std::size_t migrated_ = 0;

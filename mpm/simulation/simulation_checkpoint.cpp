@@ -81,7 +81,7 @@ void Simulation::save(CheckpointWriter& out) const {
   });
   for (int d = 0; d < 3; ++d) out.array(kBoxTags[d], boxes_.axis(d).first_cells());
   out.value(static_cast<std::int64_t>(rebalances_));
-  out.section("simulation", 1, 3 * sizeof(double) + 4 * sizeof(std::int64_t));
+  out.section("simulation", 1, 3 * sizeof(double) + 5 * sizeof(std::int64_t));
   out.value(time_);
   out.value(static_cast<std::int64_t>(steps_));
   out.value(max_signal_speed_);
@@ -89,6 +89,7 @@ void Simulation::save(CheckpointWriter& out) const {
   out.value(static_cast<std::int64_t>(converted_));
   out.value(static_cast<std::int64_t>(faulted_));
   out.value(static_cast<std::int64_t>(removed_));
+  out.value(static_cast<std::int64_t>(narrowed_));
   const Ledger::State& l = ledger_.state();
   const std::vector<double> record = all_fields(l);  // Ledger::State::kFields order
   out.section("ledger", 1, std::uint32_t(record.size() * sizeof(double)));
@@ -123,7 +124,7 @@ void Simulation::load(CheckpointReader& in) {
         P.field[p] >= static_cast<std::size_t>(grid_.fields()))
       in.fail("particle " + std::to_string(p) + ": material, object or field out of range");
   }
-  in.section("simulation", 3 * sizeof(double) + 4 * sizeof(std::int64_t), 1);
+  in.section("simulation", 3 * sizeof(double) + 5 * sizeof(std::int64_t), 1);
   time_ = in.value<double>();
   steps_ = static_cast<long>(in.value<std::int64_t>());
   max_signal_speed_ = in.value<double>();
@@ -131,6 +132,7 @@ void Simulation::load(CheckpointReader& in) {
   converted_ = static_cast<long>(in.value<std::int64_t>());
   faulted_ = static_cast<long>(in.value<std::int64_t>());
   removed_ = static_cast<long>(in.value<std::int64_t>());
+  narrowed_ = static_cast<long>(in.value<std::int64_t>());
   Ledger::State l;
   std::vector<double> record(field_count<Ledger::State>());
   in.section("ledger", std::uint32_t(record.size() * sizeof(double)), 1);

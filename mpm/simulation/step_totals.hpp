@@ -30,6 +30,9 @@ struct StepTotals {
   ParticleTotals particles;
   StressTotals stress;
   PhaseTimes seconds;
+  /// Particles whose uGIMP box was narrowed to the cells about them this step (a graded grid's
+  /// particle seeded in a coarse cell, among finer ones: shape/tartan.hpp); this rank's.
+  long narrowed = 0;
 };
 
 }  // namespace impact::mpm

@@ -39,7 +39,7 @@ void onto_face_within_round_off(const Grid& G, Vec3& x) {
 template <int N>
 double stencil_radius(const Grid& G, const Stencil<N>& s) {
   double r = 0.0;
-  for (int j = 0; j < N; ++j) r += s.w[1][j] * (G.lower()(1) + (s.base[1] + j) * G.spacing()(1));
+  for (int j = 0; j < N; ++j) r += s.w[1][j] * G.node_coordinate(1, s.base[1] + j);
   return r;
 }
 

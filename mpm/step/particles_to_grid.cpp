@@ -12,11 +12,24 @@
 namespace impact::mpm {
 
 template <class Shape>
-void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S, int threads) {
+long compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S, int threads) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   if (S.size() != P.size()) S.resize(P.size());  // once (the particle count is fixed)
+  // A graded grid's particles carry their own uGIMP half-width (Particles::half_width).
+  const Vec3* const own = P.half_width.empty() ? nullptr : P.half_width.data();
+  if (!own) {
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::ptrdiff_t p = 0; p < n; ++p) S[p] = shape.at(P.x[p], P.object[p]);
+    for (std::ptrdiff_t p = 0; p < n; ++p) S[p] = shape.at(P.x[p], P.object[p]);
+    return 0;
+  }
+  long narrowed = 0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : narrowed)
+  for (std::ptrdiff_t p = 0; p < n; ++p) {
+    bool n = false;
+    S[p] = shape.at(P.x[p], P.object[p], own + p, &n);
+    narrowed += n;
+  }
+  return narrowed;
 }
 
 template <class Shape>
@@ -32,6 +45,9 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
   const int sx = G.stride_x(), sy = G.stride_y();
   // Wall faces: which walls each particle's domain reaches this step (grid/wall.cpp).
   std::uint8_t* const touch = G.wall_touch.empty() ? nullptr : G.wall_touch.data();
+  // A graded grid's particles reach a wall by their own half-width (Particles::half_width).
+  const Vec3* const own = P.half_width.empty() ? nullptr : P.half_width.data();
+  const bool graded = G.settings().node_mean_mass;
   scatter_by_colour(
       order, G.threads(),
       [&](int p) {
@@ -77,9 +93,17 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
             }
           }
         }
+        if (graded) {  // the light-node rule's mean particle mass (NodeData::mass_moment)
+          const double mm = m * m;
+          for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j)
+              for (int k = 0; k < NZ; ++k)
+                field[base_index + i * sx + j * sy + k].mass_moment +=
+                    s.w[0][i] * s.w[1][j] * s.w[2][k] * mm;
+        }
         if (touch && m > 0.0) {  // the nodes this particle weighs, where it reaches a wall
-          const std::uint8_t bits =
-              G.touched_walls(P.x[p], P.v[p], G.settings().particle_half_width[P.object[p]], dt);
+          const std::uint8_t bits = G.touched_walls(
+              P.x[p], P.v[p], own ? own[p] : G.settings().particle_half_width[P.object[p]], dt);
           if (bits == 0) return;
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)

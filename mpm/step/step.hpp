@@ -66,8 +66,9 @@ template <class... Shapes>
 using StencilsOf = typename detail::DistinctVariant<std::tuple<>, Stencils<Shapes>...>::type;
 /// The stencils of the run's shape.
 using AnyStencils = WithEveryShape<StencilsOf>;
+/// Returns the particles whose box was narrowed to fit (a graded grid; 0 on a uniform one).
 template <class Shape>
-void compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S, int threads);
+long compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S, int threads);
 
 /// Particles to grid (Sulsky et al. 1994 eqs. 20-22):
 ///   m_I = sum_p S_Ip m_p,  p_I = sum_p S_Ip m_p v_p,
@@ -193,6 +194,8 @@ struct StressUpdateSettings {
   FIntegration f_integration = FIntegration::forward_euler;
   const ArtificialViscositySpec* viscosity = nullptr;  ///< null: off
   double mean_spacing = 0.0;  ///< l = (dx + dy + dz)/3, (dx + dy)/2 in 2D [m] (eq. 12)
+  /// A graded grid (null: uniform): l is then the mean edge of the cell the particle is in.
+  const GridSpec* graded_grid = nullptr;
   /// Per material: the field a failed particle moves to (create_new_particles); empty: off.
   std::vector<std::uint16_t> companion_field;
   /// physics.on_numerical_fault = fail_particle: a particle whose update fails (non-finite F or

@@ -74,6 +74,14 @@ bool checked(PointState& s1, StepReport& r, bool inject_nan) {
   return r.status == UpdateStatus::ok;
 }
 
+// The mean edge of the cell holding x on a graded grid, over the mesh's axes (eq. 12's l where the
+// cells differ: the resolution the shock is spread over there).
+double local_mean_spacing(const GridSpec& g, const Vec3& x) {
+  const std::array<int, 3> c = g.cell_of(x);
+  return g.planar() ? 0.5 * (g.cell_size(0, c[0]) + g.cell_size(1, c[1]))
+                    : (g.cell_size(0, c[0]) + g.cell_size(1, c[1]) + g.cell_size(2, c[2])) / 3.0;
+}
+
 }  // namespace
 
 // Long on purpose (about 140 lines): one parallel region whose threads share the chunk counter,
@@ -84,6 +92,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   const int nt = std::min(omp_get_max_threads(), kMaxThreads);
   const ArtificialViscositySpec* av = settings.viscosity;
   const double l = settings.mean_spacing;
+  const GridSpec* const graded = settings.graded_grid;
   const bool convert = !settings.companion_field.empty();
   const bool fail_particle = settings.fail_particle && P.fault.size() == P.size();
   const bool outflow = P.removed.size() == P.size() && !P.removed.empty();
@@ -182,7 +191,8 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
           const double trD = L.trace();
           const double rho = P.mass[p] / V1;
           const double K = model.params().bulk_modulus;
-          const double q1 = bulk_viscosity(*av, rho, K, trD, l);
+          const double lp = graded ? local_mean_spacing(*graded, P.x[p]) : l;
+          const double q1 = bulk_viscosity(*av, rho, K, trD, lp);
           // The viscous dissipation of this step's compression: q(D) (-tr D) V dt >= 0, q > 0
           // only where tr D < 0 (the force applies q one step later; the lag is part of the
           // residual).
@@ -195,7 +205,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
           retain_heat(s1, work / P.mass[p], model.params().heating.enabled,
                       model.params().specific_heat);
           if (trD < 0.0) {
-            const double Q = av->linear * std::sqrt(K / rho) + av->quadratic * l * std::abs(trD);
+            const double Q = av->linear * std::sqrt(K / rho) + av->quadratic * lp * std::abs(trD);
             signal = Q + std::sqrt(Q * Q + r.wave_speed * r.wave_speed);
           }
         }

@@ -101,13 +101,13 @@ static_assert(GimpShape<kAxisymmetric>::kHoop && !GimpShape<>::kHoop &&
 BOOST_AUTO_TEST_SUITE(mpm_shape)
 
 BOOST_AUTO_TEST_CASE(linear_weights_are_a_partition_of_unity_with_consistent_gradients) {
-  check_consistency(LinearShape<>{{}, kLower, kSpacing.cwiseInverse(), kCells});
+  check_consistency(LinearShape<>{{}, kLower, kSpacing.cwiseInverse(), kCells, nullptr});
 }
 
 BOOST_AUTO_TEST_CASE(gimp_weights_are_a_partition_of_unity_with_consistent_gradients) {
   for (double l : {0.25, 1.0 / 6.0, 0.5, 0.125}) {
     check_consistency(
-        GimpShape<>{{}, kLower, kSpacing.cwiseInverse(), kCells, {Vec3::Constant(l)}});
+        GimpShape<>{{}, kLower, kSpacing.cwiseInverse(), kCells, {Vec3::Constant(l)}, nullptr});
   }
 }
 

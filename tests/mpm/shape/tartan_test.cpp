@@ -3,7 +3,7 @@
 // times with growth 1.2 (graded_axis_test's) they keep the partition of unity sum_I S_I = 1, the
 // linear completeness sum_I x_I S_I = x, sum_I dS_I/dx = 0 and sum_I x_I dS_I/dx = 1 to
 // round-off, their gradient is the derivative of their weight, and a box too large for the
-// cells it reaches is told apart.
+// cells it reaches is told apart and narrowed to them (exact still).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -118,6 +118,42 @@ BOOST_AUTO_TEST_CASE(a_box_from_a_coarse_cell_does_not_fit_a_fine_one) {
   BOOST_TEST(tartan_box_fits(axis, 0.05, 0.025));    // in the coarse cells
   BOOST_TEST(!tartan_box_fits(axis, 0.51, 0.025));   // inside the span
   BOOST_TEST(tartan_box_fits(axis, 0.51, 0.00625));  // seeded there: a quarter of its cells
+}
+
+BOOST_AUTO_TEST_CASE(a_box_too_wide_is_narrowed_to_its_cells_and_stays_exact) {
+  // Every point of the axis with the coarse cells' box (L = 0.025 m, four times what the span's
+  // cells take): the fitted half-width is positive, fits, is L wherever L fits, and the stencil
+  // keeps partition of unity and linear completeness (3D: the same per axis).
+  const GradedAxis axis = refined();
+  const double L = 0.025;
+  double unity = 0.0, position = 0.0;
+  int narrowed = 0;
+  across(axis, [&](int, double x) {
+    const double l = tartan_fitted_half_width(axis, x, L);
+    BOOST_TEST(l > 0.0);
+    BOOST_TEST(tartan_box_fits(axis, x, l));
+    if (tartan_box_fits(axis, x, L)) BOOST_TEST(l == L);
+    narrowed += l < L;
+  });
+  const std::array<GradedAxis, 3> axes{axis, axis, axis};
+  across(axis, [&](int i, double x) {
+    const Vec3 at(x, 1.0 - x, axis.node(i) + 0.5 * axis.size(i));
+    const Stencil<3> s = tartan_gimp_stencil(axes, at, Vec3::Constant(L));
+    for (int d = 0; d < 3; ++d) {
+      double w = 0.0, xw = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        w += s.w[d][a];
+        xw += axis.node(s.base[d] + a) * s.w[d][a];
+      }
+      unity = std::max(unity, std::abs(w - 1.0));
+      position = std::max(position, std::abs(xw - at(d)));
+    }
+  });
+  BOOST_TEST_MESSAGE("narrowed at " << narrowed << " points; |sum S - 1| " << unity
+                                    << ", |sum x_I S - x| " << position << " m");
+  BOOST_TEST(narrowed > 0);
+  BOOST_TEST(unity < 1e-14);
+  BOOST_TEST(position < 1e-14);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
