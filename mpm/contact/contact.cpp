@@ -51,6 +51,19 @@ double mass_with_images(const Grid& G, const double* m, const std::array<int, 3>
   return total;
 }
 
+// A graded grid's node I holds the mass of its dual cell, prod_d (h_{i-1} + h_i) / 2 over the mesh
+// axes: a body of one density has more mass at a node among larger cells. The gradients below
+// difference the mass over that volume there (a density, as Uintah's and Nairn's normals are),
+// else a flat interface's normal would tilt toward the coarse cells at a grading step. 1 on a
+// uniform grid (not used there: its arithmetic is unchanged).
+double dual_volume(const GridSpec& s, int i, int j, int k) {
+  double v = 1.0;
+  const int n[3] = {i, j, k};
+  for (int d = 0; d < s.dimensions(); ++d)
+    v *= 0.5 * (s.cell_size(d, n[d] - 1) + s.cell_size(d, n[d]));
+  return v;
+}
+
 // Axisymmetric: the gradient of the mass per unit radius m_I / r_I. A ring's mass grows with its
 // radius, so the mass gradient of a uniform body points outward by m / r: one and two cells from
 // the axis it tilted a flat interface's normal by 14-24 degrees, 52 on it (issue 53). Dividing by
@@ -60,27 +73,35 @@ double mass_with_images(const Grid& G, const double* m, const std::array<int, 3>
 // same 1 / r, so the normal's direction is that of grad (m / r).
 Vec3 axisymmetric_mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk) {
   const NodeBox stored = G.stored();
+  const GridSpec& s = G.spec();
+  const bool graded = s.graded();
   const double h = G.spacing()(1);
-  const auto radius = [&](int j) { return G.lower()(1) + j * h; };
+  const auto radius = [&](int j) { return graded ? s.node(1, j) : G.lower()(1) + j * h; };
   // Images along the axis only: the radial faces are the axis itself and the outer radius.
-  const auto mass = [&](int i, int j) { return mass_with_images(G, m, {i, j, ijk[2]}, 1); };
+  const auto mass = [&](int i, int j) {
+    const double mi = mass_with_images(G, m, {i, j, ijk[2]}, 1);
+    return graded ? mi / dual_volume(s, i, j, 0) : mi;
+  };
   const auto per_radius = [&](int i, int j) { return mass(i, j) / radius(j); };
+  // The distance from node lo to node hi along axis d.
+  const auto span = [&](int d, int lo, int hi) {
+    return graded ? s.node(d, hi) - s.node(d, lo) : (hi - lo) * G.spacing()(d);
+  };
   const double r = radius(ijk[1]);
   Vec3 g = Vec3::Zero();
   const int i_lo = std::max(ijk[0] - 1, stored.first[0]);
   const int i_hi = std::min(ijk[0] + 1, stored.last[0]);
   if (r <= 1e-9 * h) {  // on the axis: the axial difference of the mass, no radial component
-    if (i_hi > i_lo)
-      g(0) = (mass(i_hi, ijk[1]) - mass(i_lo, ijk[1])) / ((i_hi - i_lo) * G.spacing()(0));
+    if (i_hi > i_lo) g(0) = (mass(i_hi, ijk[1]) - mass(i_lo, ijk[1])) / span(0, i_lo, i_hi);
     return g;
   }
   if (i_hi > i_lo)
-    g(0) = (per_radius(i_hi, ijk[1]) - per_radius(i_lo, ijk[1])) / ((i_hi - i_lo) * G.spacing()(0));
+    g(0) = (per_radius(i_hi, ijk[1]) - per_radius(i_lo, ijk[1])) / span(0, i_lo, i_hi);
   int j_lo = std::max(ijk[1] - 1, stored.first[1]);
   const int j_hi = std::min(ijk[1] + 1, stored.last[1]);
   if (radius(j_lo) <= 1e-9 * h) j_lo = ijk[1];  // the axis or the ghost beyond it
   if (j_hi > j_lo)
-    g(1) = (per_radius(ijk[0], j_hi) - per_radius(ijk[0], j_lo)) / ((j_hi - j_lo) * h);
+    g(1) = (per_radius(ijk[0], j_hi) - per_radius(ijk[0], j_lo)) / span(1, j_lo, j_hi);
   return g;
 }
 
@@ -91,13 +112,20 @@ Vec3 mass_gradient(const Grid& G, const double* m, const std::array<int, 3>& ijk
   if (G.spec().geometry_facts().rings) return axisymmetric_mass_gradient(G, m, ijk);
   Vec3 g;
   const NodeBox stored = G.stored();
-  const int axes = G.spec().planar() ? 0b011 : 0b111;  // a 2D grid has no images along z
+  const GridSpec& s = G.spec();
+  const int axes = s.planar() ? 0b011 : 0b111;  // a 2D grid has no images along z
   for (int d = 0; d < 3; ++d) {
     std::array<int, 3> lo = ijk, hi = ijk;
     lo[d] = std::max(ijk[d] - 1, stored.first[d]);
     hi[d] = std::min(ijk[d] + 1, stored.last[d]);
     if (hi[d] == lo[d]) {
       g(d) = 0.0;
+      continue;
+    }
+    if (s.graded()) {  // the nodal density, over the nodes' distance
+      const double a = mass_with_images(G, m, lo, axes) / dual_volume(s, lo[0], lo[1], lo[2]);
+      const double b = mass_with_images(G, m, hi, axes) / dual_volume(s, hi[0], hi[1], hi[2]);
+      g(d) = (b - a) / (s.node(d, hi[d]) - s.node(d, lo[d]));
       continue;
     }
     const double span = (hi[d] - lo[d]) * G.spacing()(d);
