@@ -10,7 +10,9 @@
 1. Writes OUT/scenes/<run>.json for every level: a scene that `extends` SCENE with the grid's cells
    times the level on every axis (rounded; the domain stays as it is, so cells and particle spacing
    shrink together: particles per cell are kept), snapshots off (the first and last only when a
-   Taylor rod is measured), checkpoints every --checkpoint-steps steps. --particles-per-cell 1,2,3
+   Taylor rod is measured), checkpoints every --checkpoint-steps steps. On a graded grid
+   (grid.refine) a level keeps the base cells and multiplies refine.factor by the level instead:
+   only the refined box refines, and h is its cell. --particles-per-cell 1,2,3
    adds, at each of --ppc-levels, runs with that many particles per cell per axis on every object
    (quadrature error apart from grid error).
 2. Runs them one after another, coarsest first, `mpm run` with --threads (or under
@@ -128,18 +130,59 @@ def refined_axes(scene):
     return axes or list(range(len(cells)))
 
 
-def representative_h(scene, cells):
+def graded(scene):
+    """True for a scene whose grid has a refined box (grid.refine, docs/scenes.md#graded-grids)."""
+    return scene["grid"].get("refine") is not None
+
+
+def level_factor(scene, level):
+    """A graded scene's refine.factor at LEVEL: the box's cells refine with the level, the base
+    cells stay (so the coarse cells, their particles and the box's nodes are the same at every
+    level); None for a uniform grid."""
+    return scene["grid"]["refine"]["factor"] * level if graded(scene) else None
+
+
+def fine_cells(scene, factor):
+    """The box's cell size [m] per axis at FACTOR, as the reader makes it
+    (mpm/scene/graded_axis.cpp): the box widened to the base nodes, then round(span / (h0 / F))
+    equal cells, at least one."""
+    g, box = scene["grid"], scene["grid"]["refine"]
+    sizes = []
+    for d, n in enumerate(g["cells"]):
+        lo, up = g["lower"][d], g["upper"][d]
+        h0 = (up - lo) / n
+
+        def base_node(x, upward):
+            c = (min(max(x, lo), up) - lo) / h0
+            if abs(c - round(c)) <= 1e-9:
+                return lo + min(max(round(c), 0), n) * h0
+            return min(max(lo + (math.ceil(c) if upward else math.floor(c)) * h0, lo), up)
+        a, b = base_node(box["lower"][d], False), base_node(box["upper"][d], True)
+        if not (factor > 1.0 and b > a):
+            sizes.append(h0)
+            continue
+        sizes.append((b - a) / max(1, int(math.floor((b - a) / (h0 / factor) + 0.5))))
+    return sizes
+
+
+def representative_h(scene, cells, factor=None):
     """(cell volume)^(1/D) [m] over the refined axes (Celik et al. 2008, eq. 1; cells of one
-    size): a thin axis that keeps its cells does not enter the refinement."""
+    size): a thin axis that keeps its cells does not enter the refinement. On a graded grid
+    (FACTOR given) the cells are those of the refined box, where the ladder refines."""
     lo, up = scene["grid"]["lower"], scene["grid"]["upper"]
     axes = refined_axes(scene)
+    sizes = (fine_cells(scene, factor) if factor is not None
+             else [(up[i] - lo[i]) / cells[i] for i in range(len(cells))])
     vol = 1.0
     for i in axes:
-        vol *= (up[i] - lo[i]) / cells[i]
+        vol *= sizes[i]
     return vol ** (1.0 / len(axes))
 
 
 def level_cells(scene, level):
+    """grid.cells at LEVEL: scaled on a uniform grid; a graded grid's base cells as they are."""
+    if graded(scene):
+        return list(scene["grid"]["cells"])
     axes = refined_axes(scene)
     return [max(1, int(math.floor(c * level + 0.5))) if i in axes else c
             for i, c in enumerate(scene["grid"]["cells"])]
@@ -164,7 +207,7 @@ def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod
     file itself, and the level's own keys over them (so a --set cannot change a level's cells,
     snapshots or particles per cell, and the file, which is the resume marker, records the
     patches). Returns its text."""
-    cells = level_cells(scene, level)
+    cells, factor = level_cells(scene, level), level_factor(scene, level)
     output = {"snapshots": False, "checkpoint_interval_steps": checkpoint_steps,
               "directory": None}
     if rod is not None:  # Lf and Dm come from the first and last snapshots (at the scene's
@@ -173,11 +216,14 @@ def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod
     # text, the marker its run is matched by, is then the same in every clone of the repository.
     patch = {"extends": os.path.relpath(os.path.abspath(scene_file),
                                         os.path.dirname(os.path.abspath(path))),
-             "description": f"{os.path.basename(scene_file)} at {level:g} x the cells per axis "
-             f"({' x '.join(map(str, cells))})" + (f", {ppc} particles per cell per axis"
-                                                   if ppc is not None else "")
-             + " (campaigns/study/ladder.py)",
+             "description": (f"{os.path.basename(scene_file)} at {level:g} x the cells per axis "
+                             + (f"of the refined box (factor {factor:g})" if factor is not None
+                                else f"({' x '.join(map(str, cells))})")
+                             + (f", {ppc} particles per cell per axis" if ppc is not None else "")
+                             + " (campaigns/study/ladder.py)"),
              "grid": {"cells": cells}, "output": output}
+    if factor is not None:
+        patch["grid"]["refine"] = {"factor": factor}
     if ppc is not None:
         patch["objects"] = {n: {"particles_per_cell": [ppc] * dimension(scene)}
                             for n in scene["objects"]}
@@ -604,9 +650,11 @@ def ladder_table(args, scene_file, runs, result, commit):
         "definitions": "docs/accuracy.md#grid-convergence-ladders",
         "safety_factor": gci.SAFETY_FACTOR,
         # The keys without a unit in their name: counts and ratios.
-        "units": {k: "-" for k in ("safety_factor", "level", "cells", "particles", "steps",
-                                   "particle_steps", "threads", "ranks")},
-        "levels": [{"level": r["level"], "cells": r["cells"], "h [m]": r["h"],
+        "units": {k: "-" for k in ("safety_factor", "level", "cells", "refine_factor", "particles",
+                                   "steps", "particle_steps", "threads", "ranks")},
+        "levels": [{"level": r["level"], "cells": r["cells"],
+                    **({"refine_factor": r["refine_factor"]} if r.get("refine_factor") else {}),
+                    "h [m]": r["h"],
                     "fingerprint": r["data"]["fingerprint"], "particles": r["data"]["particles"],
                     "steps": r["data"]["steps"],
                     "particle_steps": (r["data"]["particles"] or 0) * (r["data"]["steps"] or 0),
@@ -1007,13 +1055,6 @@ def read_patched_scene(args):
         print(f"ladder: {args.scene}: cannot read the scene's grid (/grid/cells, /grid/lower, "
               f"/grid/upper) and /time/max_time: {e}", file=sys.stderr)
         return 2
-    if scene["grid"].get("refine") is not None:
-        # A level scales grid.cells; the refined box is widened to each level's own base nodes,
-        # so the levels of a graded grid would not refine it in step (issue 56, open).
-        print(f"ladder: {args.scene}: /grid/refine: a ladder of a graded grid is not supported "
-              "yet (its levels would not refine the box in step); expected a scene without "
-              "grid.refine", file=sys.stderr)
-        return 2
     return scene, sets
 
 
@@ -1063,11 +1104,21 @@ def plan_levels(ap, args, scene):
     whole cells refine the axes unevenly is a warning."""
     seen = {}
     for lv in sorted(args.levels):
-        cells = tuple(level_cells(scene, lv))
-        if cells in seen:
-            ap.error(f"--levels: {seen[cells]:g} and {lv:g} give the same cells {list(cells)}")
-        seen[cells] = lv
-        ratios = [c / c0 for c, c0 in zip(cells, scene["grid"]["cells"])]
+        cells, factor = tuple(level_cells(scene, lv)), level_factor(scene, lv)
+        if factor is not None and not 1.0 <= factor <= 64.0:
+            ap.error(f"--levels: {lv:g} gives /grid/refine/factor {factor:g} "
+                     f"({scene['grid']['refine']['factor']:g} x {lv:g}); expected levels that "
+                     "keep it within [1, 64]")
+        key = (cells, tuple(fine_cells(scene, factor)) if factor is not None else None)
+        if key in seen:
+            ap.error(f"--levels: {seen[key]:g} and {lv:g} give the same cells {list(cells)}"
+                     + (" and the same refined box" if factor is not None else ""))
+        seen[key] = lv
+        if factor is None:
+            ratios = [c / c0 for c, c0 in zip(cells, scene["grid"]["cells"])]
+        else:
+            ratios = [a / b for a, b in zip(fine_cells(scene, scene["grid"]["refine"]["factor"]),
+                                            fine_cells(scene, factor))]
         if any(abs(r / lv - 1.0) > 0.02 for r in ratios):
             print(f"ladder: warning: level {lv:g} refines the axes by "
                   f"{', '.join(f'{r:.3f}' for r in ratios)} (whole cells): the representative h "
@@ -1117,10 +1168,10 @@ def run_plan(args, scene, plan, rod, sets, observables, runs_root):
             if code != 0:
                 failed.append(f"{name} (exit {code}; {run_dir}/ladder.log)")
                 print(f"ladder: {name} failed with exit {code}", file=sys.stderr)
-        cells = level_cells(scene, level)
+        cells, factor = level_cells(scene, level), level_factor(scene, level)
         runs.append({"name": name, "level": level, "ppc": ppc, "cells": cells,
-                     "scene_path": scene_path,
-                     "h": representative_h(scene, cells),
+                     "refine_factor": factor, "scene_path": scene_path,
+                     "h": representative_h(scene, cells, factor),
                      "data": read_run(run_dir, text, scene, rod, observables)})
     return runs, failed
 
