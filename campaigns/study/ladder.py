@@ -12,7 +12,8 @@
    shrink together: particles per cell are kept), snapshots off (the first and last only when a
    Taylor rod is measured), checkpoints every --checkpoint-steps steps. On a graded grid
    (grid.refine) a level keeps the base cells and multiplies refine.factor by the level instead:
-   only the refined box refines, and h is its cell. --particles-per-cell 1,2,3
+   the box refines (with its strips and their grading), the base cells elsewhere stay, and h is
+   the box's cell (a local h: the GCI is the error of the box's cells only). --particles-per-cell 1,2,3
    adds, at each of --ppc-levels, runs with that many particles per cell per axis on every object
    (quadrature error apart from grid error).
 2. Runs them one after another, coarsest first, `mpm run` with --threads (or under
@@ -152,10 +153,11 @@ def fine_cells(scene, factor):
         lo, up = g["lower"][d], g["upper"][d]
         h0 = (up - lo) / n
 
-        def base_node(x, upward):
-            c = (min(max(x, lo), up) - lo) / h0
-            if abs(c - round(c)) <= 1e-9:
-                return lo + min(max(round(c), 0), n) * h0
+        def base_node(x, upward):  # graded_axis.cpp's, step for step
+            x = min(max(x, lo), up)
+            c = (x - lo) / h0
+            if abs(c - round(c)) <= 1e-9:  # on a node already: as given, or the face
+                return lo if round(c) <= 0 else up if round(c) >= n else x
             return min(max(lo + (math.ceil(c) if upward else math.floor(c)) * h0, lo), up)
         a, b = base_node(box["lower"][d], False), base_node(box["upper"][d], True)
         if not (factor > 1.0 and b > a):
@@ -479,7 +481,11 @@ def read_run(run_dir, scene_text, scene, rod, observables):
             "steps": s.get("steps"),
             "wall": s.get("wall_time [s]"), "threads": s.get("threads"), "ranks": s.get("ranks"),
             "fingerprint": s.get("scene_fingerprint"),
-            "energy_error": s.get("final", {}).get("energy_error [-]")}
+            "energy_error": s.get("final", {}).get("energy_error [-]"),
+            # A graded grid's cells (the base cells are the level's grid.cells) and the
+            # particle-steps whose uGIMP box was narrowed (docs/scenes.md#graded-grids).
+            "graded_cells": s.get("grid", {}).get("cells") if s.get("grid", {}).get("graded")
+            else None, "narrowed": s.get("narrowed_particle_steps")}
 
 
 # --- analysis ------------------------------------------------------------------------------------
@@ -650,10 +656,14 @@ def ladder_table(args, scene_file, runs, result, commit):
         "definitions": "docs/accuracy.md#grid-convergence-ladders",
         "safety_factor": gci.SAFETY_FACTOR,
         # The keys without a unit in their name: counts and ratios.
-        "units": {k: "-" for k in ("safety_factor", "level", "cells", "refine_factor", "particles",
+        "units": {k: "-" for k in ("safety_factor", "level", "cells", "refine_factor",
+                                   "graded_cells", "narrowed_particle_steps", "particles",
                                    "steps", "particle_steps", "threads", "ranks")},
         "levels": [{"level": r["level"], "cells": r["cells"],
-                    **({"refine_factor": r["refine_factor"]} if r.get("refine_factor") else {}),
+                    **({"refine_factor": r["refine_factor"],
+                        "graded_cells": r["data"].get("graded_cells"),
+                        "narrowed_particle_steps": r["data"].get("narrowed")}
+                       if r.get("refine_factor") else {}),
                     "h [m]": r["h"],
                     "fingerprint": r["data"]["fingerprint"], "particles": r["data"]["particles"],
                     "steps": r["data"]["steps"],
@@ -1051,6 +1061,14 @@ def read_patched_scene(args):
             raise ValueError("expected /grid/cells whole numbers >= 1, /grid/lower and /grid/upper "
                              "numbers (upper > lower) of the same length 2 or 3, and a number "
                              "/time/max_time")
+        box = g.get("refine")
+        if box is not None and not (
+                isinstance(box, dict) and isinstance(box.get("factor"), (int, float))
+                and all(isinstance(box.get(k), list) and len(box[k]) == len(g["cells"])
+                        and all(isinstance(x, (int, float)) for x in box[k])
+                        for k in ("lower", "upper"))):
+            raise ValueError("expected /grid/refine an object with a number factor and lower and "
+                             "upper of as many numbers as /grid/cells (docs/scenes.md#graded-grids)")
     except (OSError, ValueError, KeyError, TypeError, AttributeError, IndexError) as e:
         print(f"ladder: {args.scene}: cannot read the scene's grid (/grid/cells, /grid/lower, "
               f"/grid/upper) and /time/max_time: {e}", file=sys.stderr)
@@ -1140,6 +1158,13 @@ def check_level_scenes(args, scene, plan, rod, sets):
         if done.returncode != 0:
             problems.append(f"level {run_name(level, ppc)} (exit {done.returncode}): "
                             + (done.stderr.strip() or done.stdout.strip()))
+            continue
+        try:  # what mpm check warns of (elongated graded cells, ...) is said before the runs
+            warnings = json.loads(done.stdout).get("warnings", [])
+        except ValueError:
+            warnings = []
+        for w in warnings:
+            print(f"ladder: warning: level {run_name(level, ppc)}: {w}", file=sys.stderr)
     if problems:
         print("ladder: a level's scene is refused; nothing was run:\n" + "\n".join(problems),
               file=sys.stderr)
