@@ -136,6 +136,11 @@ def graded(scene):
     return scene["grid"].get("refine") is not None
 
 
+GRADED_SCOPE = ("the refined box of a graded grid (grid.refine): the levels multiply its factor "
+                "and keep the base cells, so the GCI is the error of the box's cells alone, not "
+                "of the cells that do not refine (docs/accuracy.md#grid-convergence-ladders)")
+
+
 def level_factor(scene, level):
     """A graded scene's refine.factor at LEVEL: the box's cells refine with the level, the base
     cells stay (so the coarse cells, their particles and the box's nodes are the same at every
@@ -676,6 +681,8 @@ def ladder_table(args, scene_file, runs, result, commit):
     }
     for o in table["observables"]:
         o["triples"] = [{k: v for k, v in t.items()} for t in o["triples"]]
+    if any(r.get("refine_factor") for r in ladder_runs):  # said again by mpm run's error bar
+        table["scope"] = GRADED_SCOPE
     return table
 
 

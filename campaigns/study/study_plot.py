@@ -311,7 +311,8 @@ def discretization_error_lines(case):
         "uncertainty band of the finest level's value (Celik et al. 2008, safety factor 1.25; "
         "not this run's) and p the observed order. Elsewhere no single converged value can be "
         "quoted: the verdict and the range of converged values that the levels and the "
-        "plausible orders bound (docs/accuracy.md#grid-convergence-ladders).",
+        "plausible orders bound (docs/accuracy.md#grid-convergence-ladders)."
+        + (f" The ladder refined {d['scope']}." if isinstance(d.get("scope"), str) else ""),
         "",
         "| observable [unit] | this run | extrapolated | error [%] | GCI_fine of the finest level "
         "[%] | order p [-] | verdict and range of converged values |",

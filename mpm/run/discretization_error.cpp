@@ -212,10 +212,14 @@ Json from_table(const std::string& table, const Json& doc, const std::string& fi
     if (auto entry = observable(observables[i], path, summary, match_index, levels.size()))
       entries[name] = std::move(*entry);
   }
-  return {{"table", table},
-          {"level", (*match)["level"]},
-          {"ladder_commit", commit},
-          {"observables", entries}};
+  Json out = {{"table", table},
+              {"level", (*match)["level"]},
+              {"ladder_commit", commit},
+              {"observables", entries}};
+  // What the ladder refined, when not the whole grid (a graded grid's box: its GCI is the error
+  // of the box's cells alone; campaigns/study/ladder.py writes it).
+  if (doc.contains("scope")) out["scope"] = string_at(doc, "scope", "");
+  return out;
 }
 
 }  // namespace

@@ -124,6 +124,17 @@ BOOST_AUTO_TEST_CASE(a_matching_level_gives_each_observables_error) {
   BOOST_TEST(o.at("bad pointer").at("status") == "path not found in this run's summary");
   BOOST_TEST(!o.at("bad pointer").contains("value"));
   BOOST_TEST(o.size() == 4u);
+  BOOST_TEST(!e.contains("scope"));  // a uniform ladder: no scope
+}
+
+// A graded grid's ladder refines its box alone; the table says so ("scope") and the error bar
+// carries it to the run's summary, so that the GCI is not read as the whole grid's.
+BOOST_AUTO_TEST_CASE(a_ladders_scope_is_carried_to_the_run) {
+  Json t = table();
+  t["scope"] = "the refined box of a graded grid";
+  BOOST_TEST(of(t).at("scope") == "the refined box of a graded grid");
+  t["scope"] = 3;
+  starts(status_of(t.dump()), "/scope: expected a string, got 3");
 }
 
 // Issue 52: where the ladder is not in the asymptotic range or its order is implausible, no
