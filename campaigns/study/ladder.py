@@ -145,7 +145,12 @@ def level_factor(scene, level):
     """A graded scene's refine.factor at LEVEL: the box's cells refine with the level, the base
     cells stay (so the coarse cells, their particles and the box's nodes are the same at every
     level); None for a uniform grid."""
-    return scene["grid"]["refine"]["factor"] * level if graded(scene) else None
+    if not graded(scene):
+        return None
+    base = scene["grid"]["refine"]["factor"]
+    # Level 1 writes the scene's own number: the scene fingerprint reads 2 and 2.0 as different
+    # texts, and level 1 must match the scene itself (mpm run's error bar).
+    return base if level == 1 else base * level
 
 
 def fine_cells(scene, factor):

@@ -5,7 +5,8 @@ level and only the box refines. Checked against the reader itself: for each leve
 whose box ends off the base nodes, at factors that are and are not whole (2 x 1, 1.5, 2.2), the
 level scene the ladder writes gets from `mpm check` the base cells as given and a smallest cell
 per axis equal (to 1e-12, relative) to the box's cell size the ladder computes (ladder.fine_cells),
-and the ladder's representative h is the geometric mean of those. A level that would take the
+and the ladder's representative h is the geometric mean of those; level 1 has the scene's own
+fingerprint (mpm run of the scene finds its error bar). A level that would take the
 factor past 64 is a usage error before anything runs.
 
   ladder_graded_test.py MPM"""
@@ -22,7 +23,7 @@ sys.path.insert(0, os.path.join(ROOT, "campaigns", "study"))
 import ladder  # noqa: E402
 
 ROD = os.path.join(ROOT, "data", "scenes", "verification", "taylor_rod.json")
-BOX = {"lower": [0.0, 0.0, 0.0], "upper": [0.0041, 0.0052, 0.0052], "factor": 2.0,
+BOX = {"lower": [0.0, 0.0, 0.0], "upper": [0.0041, 0.0052, 0.0052], "factor": 2,
        "growth": 1.3}
 
 
@@ -60,6 +61,14 @@ def main():
             mean = (expected[0] * expected[1] * expected[2]) ** (1.0 / 3.0)
             if abs(h - mean) > 1e-12 * mean:
                 failures.append(f"level {level:g}: representative h {h!r} m, expected {mean!r} m")
+        # Level 1 is the scene itself: the same fingerprint, so mpm run of the scene finds its
+        # level in the ladder table (the scene writes 2, and 2 x 1.0 would write 2.0).
+        prints = [subprocess.run([mpm, "check", "--fingerprint", p], capture_output=True,
+                                 text=True, timeout=300).stdout.strip()
+                  for p in (scene_file, os.path.join(tmp, "x1.json"))]
+        print(f"fingerprints: scene {prints[0]}, level 1 {prints[1]}")
+        if prints[0] != prints[1] or len(prints[0]) != 16:
+            failures.append(f"level 1's fingerprint {prints[1]!r}, the scene's {prints[0]!r}")
         done = subprocess.run([sys.executable, os.path.join(ROOT, "campaigns", "study",
                                                             "ladder.py"),
                                scene_file, "--levels", "1,40", "--out", os.path.join(tmp, "out"),
