@@ -240,8 +240,8 @@ def write_level_scene(path, scene_file, scene, level, ppc, checkpoint_steps, rod
         patch["objects"] = {n: {"particles_per_cell": [ppc] * dimension(scene)}
                             for n in scene["objects"]}
     combined = {}
-    for one in sets:
-        combined = merge_patch(combined, one)
+    for one in sets:  # composed, not applied: a null (a deletion) must reach the level file
+        combined = overlay(combined, one)
     combined.pop("extends", None)
     if combined:
         patch = overlay(combined, patch)
@@ -495,7 +495,9 @@ def read_run(run_dir, scene_text, scene, rod, observables):
             # A graded grid's cells (the base cells are the level's grid.cells) and the
             # particle-steps whose uGIMP box was narrowed (docs/scenes.md#graded-grids).
             "graded_cells": s.get("grid", {}).get("cells") if s.get("grid", {}).get("graded")
-            else None, "narrowed": s.get("narrowed_particle_steps")}
+            else None, "narrowed": s.get("narrowed_particle_steps"),
+            "volume_ratio": {n: o.get("volume_ratio") for n, o in s.get("objects", {}).items()
+                             if isinstance(o, dict)}}
 
 
 # --- analysis ------------------------------------------------------------------------------------
@@ -724,7 +726,13 @@ def summary_lines(args, table, result):
              "| wall [s] | threads x ranks [-] | energy_error [-] |",
              "|---|---|---|---|---|---|---|---|---|"]
     for lv in table["levels"]:
-        lines.append(f"| x{lv['level']:g} | {' x '.join(map(str, lv['cells']))} | "
+        cells = " x ".join(map(str, lv["cells"]))
+        if lv.get("refine_factor"):  # graded: the base cells, the box's factor, the graded cells
+            cells += (f" refined {lv['refine_factor']:g} x: "
+                      f"{' x '.join(map(str, lv.get('graded_cells') or []))}"
+                      + (f", {lv['narrowed_particle_steps']} narrowed particle-steps"
+                         if lv.get("narrowed_particle_steps") else ""))
+        lines.append(f"| x{lv['level']:g} | {cells} | "
                      f"{fmt(1e3 * lv['h [m]'])} | {lv['particles']} | {lv['steps']} | "
                      f"{fmt(float(lv['particle_steps']), 3)} | {fmt(lv['wall_time [s]'], 4)} | "
                      f"{lv['threads']} x {lv['ranks']} | {fmt(lv['energy_error [-]'], 3)} |")
@@ -1230,10 +1238,39 @@ def fill_fingerprints(args, runs):
                 r["data"]["fingerprint"] = today
 
 
+SEEDING_SPREAD = 0.01  # a body's seeded volume that differs more between levels is said
+
+
+def seeding_warnings(runs):
+    """Warnings on stderr for what the levels' differences hold besides the cells: uGIMP boxes
+    narrowed on a graded grid (docs/scenes.md#graded-grids), and a body whose seeded volume
+    (volume_ratio: particle volume over the geometry's) differs between levels by more than 1 %
+    (its mass then differs as much, and the GCI counts it as discretization error)."""
+    ladder_runs = [r for r in runs if r["ppc"] is None and r["data"]]
+    for r in ladder_runs:
+        if r["data"].get("narrowed"):
+            print(f"ladder: warning: level {r['name']}: {r['data']['narrowed']} particle-steps had "
+                  "their uGIMP box narrowed (coarse particles among fine cells; "
+                  "docs/scenes.md#graded-grids)", file=sys.stderr)
+    names = sorted({n for r in ladder_runs for n in (r["data"].get("volume_ratio") or {})})
+    for n in names:
+        ratios = [(r["name"], r["data"]["volume_ratio"].get(n)) for r in ladder_runs
+                  if isinstance(r["data"].get("volume_ratio", {}).get(n), (int, float))]
+        if len(ratios) >= 2:
+            lo, hi = min(v for _, v in ratios), max(v for _, v in ratios)
+            if hi - lo > SEEDING_SPREAD * lo:
+                print(f"ladder: warning: the seeded volume of {n} differs by "
+                      f"{100 * (hi / lo - 1):.2g} % between levels (volume_ratio "
+                      + ", ".join(f"{name} {v:.4f}" for name, v in ratios)
+                      + "): its mass differs as much, and the GCI counts that as discretization "
+                      "error; put its faces on the nodes of every level", file=sys.stderr)
+
+
 def report(args, scene, runs, observables):
     """Analyses the runs and writes ladder.md, the table and the figure; the measures that could
     not be taken are warnings, Lf and Dm sharing one line."""
     result = analyse(runs, observables)
+    seeding_warnings(runs)
     said = {}
     for res in result.values():
         for note in res["notes"]:

@@ -53,7 +53,8 @@ void declare_study(CommandLine& c) {
   c.study
       ->add_option("--ladder", c.ladder_levels,
                    "a grid-convergence ladder of the scene SCENE_DIR names: its cells times each "
-                   "level per axis, observed order, Richardson value and GCI per observable "
+                   "level per axis (a graded grid: its refined box's factor times the level), "
+                   "observed order, Richardson value and GCI per observable "
                    "(campaigns/study/ladder.py; docs/accuracy.md#grid-convergence-ladders)")
       ->type_name("L1,L2,...");
   c.study->add_option("--ranks", c.ladder_ranks, "with --ladder: every level under mpirun -np N")

@@ -36,7 +36,7 @@ const char* const kStudyFooter =
     "study SCENE_DIR runs every case*.json (and recommended.json) into OUT/<case>/ and writes\n"
     "OUT/study.json, OUT/summary.csv, OUT/summary.md and the figures (docs/sphere_cylinder.md);\n"
     "study --ladder L1,L2,... SCENE.json runs the scene at each level of its cells per axis\n"
-    "(docs/accuracy.md#grid-convergence-ladders).\n"
+    "(a graded grid: of its refined box's factor; docs/accuracy.md#grid-convergence-ladders).\n"
     "Exit codes: 0 every case completed, 1 usage, 2 input error, 3 a case failed, 130 SIGINT.\n";
 const char* const kPlotFooter =
     "Draws RUN's energy books, energy error, momentum and observables into RUN/run.png (or\n"

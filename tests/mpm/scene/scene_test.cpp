@@ -2,6 +2,7 @@
 // input errors that name the file and the JSON key path.
 #include "mpm/scene/scene.hpp"
 
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
 #include <fstream>
@@ -163,6 +164,29 @@ BOOST_AUTO_TEST_CASE(a_multiplier_above_one_is_read_with_a_warning) {
   doc["time"]["max_energy_growth"] = 0.0;
   BOOST_TEST(scene_error_of(doc).find("/time/max_energy_growth: expected a number in (0, inf)") !=
              std::string::npos);
+}
+
+// A graded grid's cells where the box's strips cross coarse cells are up to factor:1; the
+// warning starts above 4 times the base cells' shape. At factor 4 exactly the smallest cell is a
+// round-off under h0 / 4, which used to warn (the trial: every factor-2 ladder's level 2).
+BOOST_AUTO_TEST_CASE(elongated_graded_cells_are_warned_of_above_four_to_one) {
+  // The Taylor verification rod's grid (cells of 1.2658 mm), its impact end refined.
+  Json doc = load_scene_document(kScenes + "verification/taylor_rod.json");
+  doc["grid"]["refine"] = {{"lower", {0.0, 0.0, 0.0}},
+                           {"upper", {0.0038, 0.0038, 0.0038}},
+                           {"factor", 4},
+                           {"growth", 1.5}};
+  const auto elongated = [](const Scene& s) {
+    return std::count_if(s.warnings.begin(), s.warnings.end(), [](const std::string& w) {
+      return w.find("/grid/refine/factor: where the refined box's strips cross") !=
+             std::string::npos;
+    });
+  };
+  BOOST_TEST(elongated(read_scene(doc, "test.json")) == 0);
+  doc["grid"]["refine"]["factor"] = 4.5;
+  const Scene s = read_scene(doc, "test.json");
+  BOOST_TEST(elongated(s) == 1);
+  for (const auto& w : s.warnings) BOOST_TEST_MESSAGE(w);
 }
 
 BOOST_AUTO_TEST_CASE(an_unknown_material_reference_lists_the_known_ones) {

@@ -6,11 +6,15 @@ whose box ends off the base nodes, at factors that are and are not whole (2 x 1,
 level scene the ladder writes gets from `mpm check` the base cells as given and a smallest cell
 per axis equal (to 1e-12, relative) to the box's cell size the ladder computes (ladder.fine_cells),
 and the ladder's representative h is the geometric mean of those; level 1 has the scene's own
-fingerprint (mpm run of the scene finds its error bar). A level that would take the
+fingerprint (mpm run of the scene finds its error bar); a --set that deletes grid.refine reaches
+the level file (the level runs uniform); the levels' narrowed uGIMP boxes and a body's seeded
+volume that differs by more than 1 % between levels are warned of. A level that would take the
 factor past 64 is a usage error before anything runs.
 
   ladder_graded_test.py MPM"""
 
+import contextlib
+import io
 import json
 import os
 import subprocess
@@ -69,6 +73,36 @@ def main():
         print(f"fingerprints: scene {prints[0]}, level 1 {prints[1]}")
         if prints[0] != prints[1] or len(prints[0]) != 16:
             failures.append(f"level 1's fingerprint {prints[1]!r}, the scene's {prints[0]!r}")
+        # A --set that deletes the box reaches the level file as a null (composed, not applied
+        # to {}, which dropped it: every level of such a "uniform" ladder ran graded).
+        path = os.path.join(tmp, "deleted.json")
+        sets = [{"grid": {"refine": None}}, {"time": {"max_time": 1e-6}}]
+        patched = scene
+        for one in sets:  # as read_patched_scene resolves it
+            patched = ladder.merge_patch(patched, one)
+        ladder.write_level_scene(path, scene_file, patched, 1.5, None, 200, None, sets)
+        level = json.load(open(path))
+        done = subprocess.run([mpm, "check", path, "--threads", "1"], capture_output=True,
+                              text=True, timeout=300)
+        graded_run = (json.loads(done.stdout)["report"]["grid"].get("graded")
+                      if done.returncode == 0 else None)
+        print(f"--set refine null: level file grid {level.get('grid')}, graded {graded_run}")
+        if level["grid"].get("refine", "absent") is not None or graded_run:
+            failures.append(f"--set '{{\"grid\": {{\"refine\": null}}}}': level file grid "
+                            f"{level.get('grid')}, mpm check graded {graded_run}")
+        if level.get("time", {}).get("max_time") != 1e-6:
+            failures.append(f"a second --set lost: {level.get('time')}")
+        # The levels' seeding and narrowing are said on stderr.
+        runs = [{"name": f"x{lv}", "ppc": None,
+                 "data": {"narrowed": n, "volume_ratio": {"block": v}}}
+                for lv, n, v in ((1, 0, 1.0), (1.5, 0, 0.934), (2, 112863, 0.962))]
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err):
+            ladder.seeding_warnings(runs)
+        print(err.getvalue().strip())
+        if ("x2: 112863 particle-steps had their uGIMP box narrowed" not in err.getvalue()
+                or "seeded volume of block differs by 7.1 %" not in err.getvalue()):
+            failures.append(f"seeding warnings: {err.getvalue()!r}")
         done = subprocess.run([sys.executable, os.path.join(ROOT, "campaigns", "study",
                                                             "ladder.py"),
                                scene_file, "--levels", "1,40", "--out", os.path.join(tmp, "out"),
