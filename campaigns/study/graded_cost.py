@@ -10,7 +10,8 @@ Writes OUT/graded_cost.csv, one row per run: case, grid (uniform or graded), lev
 size h [m] (the box's on a graded grid), particle_steps [-], the observable's value (SI) and its
 difference from the reference [-]. The references: for the flagship, the uniform ladder's level
 with the same cells as the graded level (so the difference is the error of the cells outside the
-box), and the range of converged values of the uniform ladder; for the Taylor rod H8
+box; the uniform level whose cells are within 1 % of the box's, as whole cells make them), and
+the range of converged values of the uniform ladder; for the Taylor rod H8
 (campaigns/taylor/graded_taylor.py), the uniform fine grid. With matplotlib it also draws
 OUT/graded_cost.png: the flagship's value against particle-steps (log) for both grids with the
 uniform ladder's range shaded, and the Taylor rod's |Lf| and |Dm| differences from the fine grid
@@ -72,11 +73,14 @@ def main(argv):
         print(f"graded_cost: cannot read the ladder tables ({type(e).__name__}: {e})",
               file=sys.stderr)
         return 2
-    by_h = {round(h, 9): v for _, h, _, v in uniform}
+    def same_cells(h):  # the uniform level whose cells are the box's, to 1 % (whole cells)
+        near = [v for _, hu, _, v in uniform if abs(hu / h - 1.0) < 0.01]
+        return near[0] if near else None
+
     rows = []
     for grid, points in (("uniform", uniform), ("graded", graded)):
         for level, h, steps, value in points:
-            same = by_h.get(round(h, 9))
+            same = same_cells(h)
             rows.append({"case": "sphere-cylinder " + a.observable, "grid": grid, "level": level,
                          "h [m]": h, "particle_steps [-]": steps, "value": value,
                          "vs uniform at the same h [-]": (value / same - 1.0
@@ -131,11 +135,17 @@ def main(argv):
                           fillstyle="full" if r["grid"] == "graded" else "none")
                 bx.annotate(f"{r['grid']} {case}", (r["particle_steps"], max(abs(r[key]), 1e-6)),
                             textcoords="offset points", xytext=(4, 2), fontsize=7)
+    for r in taylor:  # the reference's own cost
+        if r["grid"] == "fine":
+            bx.axvline(r["particle_steps"], color="0.6", ls=":", lw=1)
+            bx.annotate(f"fine {r['case'].split()[-1]}", (r["particle_steps"], 1.2e-5),
+                        rotation=90, fontsize=7, color="0.4")
     bx.plot([], [], "o", color="C0", label="|Lf - Lf(fine)| / Lf(fine)")
     bx.plot([], [], "o", color="C1", label="|Dm - Dm(fine)| / Dm(fine)")
     bx.set_xlabel("particle-steps [-]")
     bx.set_ylabel("difference from the uniform fine grid [-]")
-    bx.set_title("Taylor rod H8: base (open), graded (filled)", fontsize=9)
+    bx.set_title("Taylor rod H8: base (open), graded (filled); dotted: the fine grid's cost",
+                 fontsize=9)
     bx.legend(fontsize=8)
     fig.tight_layout()
     try:
