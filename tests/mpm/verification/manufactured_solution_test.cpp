@@ -26,11 +26,14 @@ using namespace impact::mpm;
 namespace {
 
 // {rms, max} displacement error [m] at the end of the scene with `cells` per axis.
-std::vector<double> final_error(const std::string& file, int cells, double amplitude) {
+// With `refine`, grid.refine is that box (a graded grid, issue 56).
+std::vector<double> final_error(const std::string& file, int cells, double amplitude,
+                                const Json& refine = Json()) {
   const bool three_d = file == "mms_axis_aligned.json";
   Json cells_json = three_d ? Json{cells, cells, cells} : Json{cells, cells};
-  const Scene scene = test::verification_scene(
-      file, {{"grid", {{"cells", cells_json}}}, {"constants", {{"A", amplitude}}}});
+  Json patch = {{"grid", {{"cells", cells_json}}}, {"constants", {{"A", amplitude}}}};
+  if (!refine.is_null()) patch["grid"]["refine"] = refine;
+  const Scene scene = test::verification_scene(file, patch);
   Simulation sim(scene);
   while (!sim.finished()) sim.step();
   DisplacementError error(scene, Communicator::one_rank());
@@ -61,6 +64,31 @@ BOOST_AUTO_TEST_CASE(each_geometry_reaches_second_order_in_the_small_strain_limi
     BOOST_TEST(order >= 1.5);
     BOOST_TEST(fine[0] < 0.02 * A);  // and small: 1.2 % of the amplitude in 3D at 16 cells
   }
+}
+
+// On a graded grid (grid.refine, issue 56): the middle of the square refined twice, on base grids
+// of 16 and 32 cells (fine cells 1/32 and 1/64 of L), growth 2 (the box's cells meet the base
+// cells directly), so the pair is a similar refinement. The order is the uniform grid's (2.20
+// against 2.22; asserted at least 1.5 as there), and the error lies between the uniform grid's at
+// the base cells and at the box's. (With growth 1.2 the growing cells are fitted to the base nodes
+// differently on the two grids, 5 cells over 4 base cells and 4 over 8: not a similar pair, and
+// the order measured 1.57.)
+BOOST_AUTO_TEST_CASE(a_graded_grid_keeps_the_order_in_the_small_strain_limit) {
+  const double A = 1e-3;
+  const Json box = {
+      {"lower", {0.25, 0.25}}, {"upper", {0.75, 0.75}}, {"factor", 2}, {"growth", 2.0}};
+  const std::vector<double> coarse = final_error("mms_plane_strain.json", 16, A, box);
+  const std::vector<double> fine = final_error("mms_plane_strain.json", 32, A, box);
+  const double order = std::log(coarse[0] / fine[0]) / std::log(2.0);
+  const double uniform_base = final_error("mms_plane_strain.json", 32, A)[0];
+  const double uniform_fine = final_error("mms_plane_strain.json", 64, A)[0];
+  BOOST_TEST_MESSAGE("plane strain, graded: rms error "
+                     << coarse[0] << " m on base 16, " << fine[0] << " m on base 32, order "
+                     << order << "; uniform 32 / 64 cells: " << uniform_base << " / "
+                     << uniform_fine << " m");
+  BOOST_TEST(order >= 1.5);
+  BOOST_TEST(fine[0] < uniform_base);
+  BOOST_TEST(fine[0] > uniform_fine);
 }
 
 BOOST_AUTO_TEST_CASE(at_large_deformation_the_shipped_scene_stays_within_a_few_percent) {
