@@ -1,7 +1,9 @@
 #include "models/core/input.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -38,6 +40,14 @@ std::string format_number(double v) {
   std::ostringstream os;
   os << v;
   return os.str();
+}
+
+// A value as it was written, to every digit that tells it apart (the shortest text that reads
+// back as the same double): 2.0000001 outside [1.05, 2] is not "got 2".
+std::string exact_number(double v) {
+  std::array<char, 32> text{};
+  const auto end = std::to_chars(text.data(), text.data() + text.size(), v).ptr;
+  return std::string(text.data(), end);
 }
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
@@ -268,7 +278,7 @@ double JsonReader::read_number(std::string_view key, Range range, std::string_vi
   const double x = v->get<double>();
   if (!range.contains(x)) {
     std::string message = with_meaning(
-        "expected a number in " + range.describe() + ", got " + format_number(x), meaning);
+        "expected a number in " + range.describe() + ", got " + exact_number(x), meaning);
     if (q) {
       if (auto hint = unit_hint(*q, x)) message += ": " + *hint;
     }

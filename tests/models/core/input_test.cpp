@@ -59,6 +59,20 @@ BOOST_AUTO_TEST_CASE(every_problem_is_reported_with_file_and_key_path) {
   BOOST_TEST(contains(text, "model.json: /sub/extra: unknown key"));
 }
 
+// A value just outside its range is shown to every digit that tells it from the bound (the trial:
+// growth 2.0000001 refused as "got 2", beside "[1.05, 2]").
+BOOST_AUTO_TEST_CASE(a_value_just_outside_its_range_is_shown_as_written) {
+  const Json j = Json::parse(R"({"growth": 2.0000001, "small": 1e-7})");
+  InputProblems problems("s.json");
+  JsonReader r(j, "", problems);
+  r.number("growth", Range::closed(1.05, 2.0), "");
+  r.number("small", Range::closed(1.0, 2.0), "");
+  const std::string text = problems_text(problems);
+  BOOST_TEST_MESSAGE(text);
+  BOOST_TEST(contains(text, "s.json: /growth: expected a number in [1.05, 2], got 2.0000001"));
+  BOOST_TEST(contains(text, "s.json: /small: expected a number in [1, 2], got 1e-07"));
+}
+
 BOOST_AUTO_TEST_CASE(unknown_key_suggests_the_nearest_known_key) {
   const Json j = Json::parse(R"({"densty": 2700})");
   InputProblems problems("m.json");
