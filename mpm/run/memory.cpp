@@ -156,8 +156,9 @@ std::string memory_refusal(const Scene& scene) {
     << " MB, program " << e.program_bytes / 1e6 << " MB) exceeds the available memory "
     << *available / 1e6
     << " MB (MemAvailable in /proc/meminfo, or less under the cgroup's memory.max or ulimit -v); "
-       "coarsen grid.cells or "
-       "objects.*.particles_per_cell";
+       "coarsen grid.cells"
+    << (scene.grid.graded() ? ", lower grid.refine.factor or narrow the refined box," : "")
+    << " or objects.*.particles_per_cell";
   return m.str();
 }
 
