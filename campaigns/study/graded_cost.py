@@ -16,6 +16,9 @@ the range of converged values of the uniform ladder; for the Taylor rod H8
 OUT/graded_cost.png: the flagship's value against particle-steps (log) for both grids with the
 uniform ladder's range shaded, and the Taylor rod's |Lf| and |Dm| differences from the fine grid
 against particle-steps for the base, graded and fine grids.
+With the axisymmetric Taylor rod's two ladders in --taylor-ladders (taylor_h8_axisymmetric/ and
+taylor_h8_axisymmetric_refined/ladder.json), a third panel: their Lf and Dm against
+particle-steps, as the difference from the uniform ladder's finest level.
 Exit codes: 0 done, 1 usage error, 2 a table unreadable, 3 an output not written.
 """
 import argparse
@@ -65,6 +68,9 @@ def main(argv):
         REPO, "data", "scenes", "sphere_cylinder", "recommended_refined.ladder.json"))
     ap.add_argument("--taylor", default=os.path.join(REPO, "docs", "figures", "taylor_graded"))
     ap.add_argument("--observable", default="crater depth")
+    ap.add_argument("--taylor-ladders", default=os.path.join(REPO, "docs", "figures", "ladder"),
+                    help="folder of the Taylor rod's uniform and graded ladders "
+                         "(taylor_h8_axisymmetric/ and taylor_h8_axisymmetric_refined/)")
     a = ap.parse_args(argv)
     try:
         uniform, u_entry = ladder_points(a.uniform, a.observable)
@@ -93,6 +99,23 @@ def main(argv):
         rows.append({"case": r["case"] + " Dm", "grid": r["grid"], "level": None, "h [m]": None,
                      "particle_steps [-]": r["particle_steps"], "value": r["Dm"],
                      "vs uniform at the same h [-]": r["dDm"]})
+    # The axisymmetric Taylor rod's ladders, uniform and graded, against the uniform ladder's
+    # finest level (the reference: its error is the smallest measured).
+    ladders = {}
+    for grid, folder in (("uniform", "taylor_h8_axisymmetric"),
+                         ("graded", "taylor_h8_axisymmetric_refined")):
+        path = os.path.join(a.taylor_ladders, folder, "ladder.json")
+        if os.path.exists(path):
+            ladders[grid] = {q: ladder_points(path, q)[0] for q in ("Lf", "Dm")}
+    reference = ({q: min(ladders["uniform"][q], key=lambda p: p[1])[3] for q in ("Lf", "Dm")}
+                 if "uniform" in ladders else {})
+    for grid, per in ladders.items():
+        for q, points in per.items():
+            for level, h, steps, value in points:
+                rows.append({"case": f"Taylor H8 axisymmetric ladder {q}", "grid": grid,
+                             "level": level, "h [m]": h, "particle_steps [-]": steps,
+                             "value": value,
+                             "vs uniform at the same h [-]": value / reference[q] - 1.0})
     try:
         os.makedirs(a.out, exist_ok=True)
         with open(os.path.join(a.out, "graded_cost.csv"), "w", newline="") as f:
@@ -110,7 +133,8 @@ def main(argv):
     except ImportError:
         print("graded_cost: no matplotlib: the table only", file=sys.stderr)
         return 0
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, axes = plt.subplots(1, 3 if ladders else 2, figsize=(16 if ladders else 11, 4.2))
+    ax, bx = axes[0], axes[1]
     for grid, points, style in (("uniform", uniform, "o-"), ("graded", graded, "s-")):
         pts = sorted((s, v) for _, _, s, v in points if v is not None)
         ax.plot([s for s, _ in pts], [v * 1e3 for _, v in pts], style, label=f"{grid} grid")
@@ -147,6 +171,21 @@ def main(argv):
     bx.set_title("Taylor rod H8: base (open), graded (filled); dotted: the fine grid's cost",
                  fontsize=9)
     bx.legend(fontsize=8)
+    if ladders:
+        cx = axes[2]
+        for grid, marker in (("uniform", "o-"), ("graded", "s-")):
+            for q, colour in (("Lf", "C0"), ("Dm", "C1")):
+                pts = sorted((s_, abs(v / reference[q] - 1.0))
+                             for _, h, s_, v in ladders.get(grid, {}).get(q, [])
+                             if v is not None and abs(v / reference[q] - 1.0) > 0)
+                cx.loglog([p[0] for p in pts], [p[1] for p in pts], marker, color=colour,
+                          fillstyle="full" if grid == "graded" else "none",
+                          label=f"{q}, {grid} ladder")
+        cx.set_xlabel("particle-steps [-]")
+        cx.set_ylabel("difference from the finest uniform level [-]")
+        cx.set_title("Taylor rod H8, axisymmetric ladders (finest uniform: 24 cells per radius)",
+                     fontsize=9)
+        cx.legend(fontsize=8)
     fig.tight_layout()
     try:
         fig.savefig(os.path.join(a.out, "graded_cost.png"), dpi=110)
