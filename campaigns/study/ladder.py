@@ -729,7 +729,7 @@ def summary_lines(args, table, result):
         cells = " x ".join(map(str, lv["cells"]))
         if lv.get("refine_factor"):  # graded: the base cells, the box's factor, the graded cells
             cells += (f" refined {lv['refine_factor']:g} x: "
-                      f"{' x '.join(map(str, lv.get('graded_cells') or []))}"
+                      f"{' x '.join(map(str, (lv.get('graded_cells') or [])[:len(lv['cells'])]))}"
                       + (f", {lv['narrowed_particle_steps']} narrowed particle-steps"
                          if lv.get("narrowed_particle_steps") else ""))
         lines.append(f"| x{lv['level']:g} | {cells} | "
