@@ -330,26 +330,19 @@ BOOST_AUTO_TEST_CASE(the_slabs_are_rebalanced_as_the_block_moves) {
 // refined, the two contact blocks meeting inside a refined box, and the rigid block crossing
 // the grading (factor 2, linear/USL: the light-node rule at work; to the end of its run, so it
 // migrates across the boxes), the others for their first 60 steps, book as on one rank to 1e-9.
+namespace {
+// The merge patch that refines the box [lower, upper] twice, the cells growing back by `growth`.
+Json refined_twice(const Json& lower, const Json& upper, double growth) {
+  return {{"grid",
+           {{"refine", {{"lower", lower}, {"upper", upper}, {"factor", 2}, {"growth", growth}}}}}};
+}
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(graded_grids_book_as_on_one_rank) {
-  const Json rod = {{"grid",
-                     {{"refine",
-                       {{"lower", {0.0, 0.0, 0.0}},
-                        {"upper", {0.0041, 0.0052, 0.0052}},
-                        {"factor", 2},
-                        {"growth", 1.3}}}}}};
-  const Json blocks = {{"grid",
-                        {{"refine",
-                          {{"lower", {0.008, 0.0, 0.0}},
-                           {"upper", {0.012, 0.012, 0.008}},
-                           {"factor", 2},
-                           {"growth", 1.3}}}}}};
-  const Json block = {{"grid",
-                       {{"refine",
-                         {{"lower", {0.037, 0.033, 0.033}},
-                          {"upper", {0.043, 0.039, 0.039}},
-                          {"factor", 2},
-                          {"growth", 1.5}}}}},
-                      {"solver", {{"interpolation", "linear"}, {"scheme", "usl"}}}};
+  const Json rod = refined_twice({0.0, 0.0, 0.0}, {0.0041, 0.0052, 0.0052}, 1.3);
+  const Json blocks = refined_twice({0.008, 0.0, 0.0}, {0.012, 0.012, 0.008}, 1.3);
+  Json block = refined_twice({0.037, 0.033, 0.033}, {0.043, 0.039, 0.039}, 1.5);
+  block["solver"] = {{"interpolation", "linear"}, {"scheme", "usl"}};
   for (const auto& [name, patch] :
        std::vector<std::pair<const char*, Json>>{{"taylor_rod.json", rod},
                                                  {"contact_blocks.json", blocks},
