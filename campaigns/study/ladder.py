@@ -1082,6 +1082,10 @@ def read_patched_scene(args):
                              "numbers (upper > lower) of the same length 2 or 3, and a number "
                              "/time/max_time")
         box = g.get("refine")
+        if isinstance(box, list):  # several boxes: no one box whose cells the levels refine
+            raise ValueError("/grid/refine is a list of boxes: a ladder refines one box (its "
+                             "cells are the level's h); give one box that holds them all "
+                             "(docs/scenes.md#graded-grids)")
         if box is not None and not (
                 isinstance(box, dict) and isinstance(box.get("factor"), (int, float))
                 and all(isinstance(box.get(k), list) and len(box[k]) == len(g["cells"])

@@ -79,6 +79,12 @@ Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
     complete(grid["refine"], "/grid/refine", "lower", -0.5);
     complete(grid["refine"], "/grid/refine", "upper", 0.5);
   }
+  if (grid.contains("refine") && grid["refine"].is_array())
+    for (std::size_t i = 0; i < grid["refine"].size(); ++i) {
+      const std::string path = "/grid/refine/" + std::to_string(i);
+      complete(grid["refine"][i], path, "lower", -0.5);
+      complete(grid["refine"][i], path, "upper", 0.5);
+    }
   if (out.contains("solver") && out["solver"].is_object()) {
     // [0, 0] is the automatic split ([0, 0, 0]); any other [px, py] has one box along z.
     const Json& p =
@@ -233,65 +239,102 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
   }
 }
 
-// grid.refine: one box of finer cells (docs/scenes.md#graded-grids), inside the grid on every
-// mesh axis; the graded axes are made here (GridSpec::grade).
-void read_refinement(JsonReader& r, const Json& grid, GridSpec& g) {
-  if (grid.contains("refine") && grid["refine"].is_array()) {
-    r.problems().add(r.key_path("refine"),
-                     "expected one region (an object with lower, upper, factor, growth); a list of "
-                     "regions is not supported yet: give the box that holds them all");
-    r.ignore("refine");
-    return;
-  }
-  auto f = r.optional_child("refine", "a box of finer cells: a graded (tartan) grid");
-  if (!f) return;
-  const Json& n = at(grid, "refine");
+// One box of grid.refine (docs/scenes.md#graded-grids), inside the grid on every mesh axis; none
+// when it is invalid (reported) or refines nothing (factor 1, warned).
+std::optional<GridRefinement> read_refined_box(JsonReader& f, const Json& n, const GridSpec& g) {
   GridRefinement refine;
   refine.lower =
-      read_vec3(*f, n, "lower", "lower corner of the refined box [m] ([x, y] on a 2D grid)");
+      read_vec3(f, n, "lower", "lower corner of the refined box [m] ([x, y] on a 2D grid)");
   refine.upper =
-      read_vec3(*f, n, "upper", "upper corner of the refined box [m] ([x, y] on a 2D grid)");
-  refine.factor = f->number("factor", Range::closed(1.0, 64.0),
-                            "base cell size over the refined cell size [-]");
-  refine.growth = f->number_or("growth", 1.2, Range::closed(1.05, 2.0),
-                               "largest ratio of neighbouring cells outside the box [-]");
-  f->reject_unknown_keys();
+      read_vec3(f, n, "upper", "upper corner of the refined box [m] ([x, y] on a 2D grid)");
+  refine.factor =
+      f.number("factor", Range::closed(1.0, 64.0), "base cell size over the refined cell size [-]");
+  refine.growth = f.number_or("growth", 1.2, Range::closed(1.05, 2.0),
+                              "largest ratio of neighbouring cells outside the box [-]");
+  f.reject_unknown_keys();
   const int axes = g.dimensions();
+  bool valid = true;
   for (int d = 0; d < axes; ++d) {
     const double lo = refine.lower(d), hi = refine.upper(d);
     std::ostringstream m;
-    if (std::isnan(lo) || std::isnan(hi)) return;  // reported by read_vec3
+    if (std::isnan(lo) || std::isnan(hi)) return std::nullopt;  // reported by read_vec3
     if (!(lo < hi)) {
       m << "expected upper > lower on every axis of the grid; axis " << d << " has lower " << lo
         << " m and upper " << hi << " m";
-      f->problems().add(f->key_path("upper") + "/" + std::to_string(d), m.str());
+      f.problems().add(f.key_path("upper") + "/" + std::to_string(d), m.str());
+      valid = false;
     } else if (lo < g.lower(d) || hi > g.upper(d)) {
       m << "expected the refined box inside the grid [" << g.lower(d) << ", " << g.upper(d)
         << "] m along axis " << d << ", got [" << lo << ", " << hi << "] m";
-      f->problems().add(f->key_path(lo < g.lower(d) ? "lower" : "upper") + "/" + std::to_string(d),
-                        m.str());
+      f.problems().add(f.key_path(lo < g.lower(d) ? "lower" : "upper") + "/" + std::to_string(d),
+                       m.str());
+      valid = false;
     } else if (const double inside =
                    (hi - lo) / (g.upper(d) - g.lower(d)) * g.cells[std::size_t(d)] * refine.factor;
                inside > 100000.0) {
       m << "the refined box would get " << inside << " cells along axis " << d
         << ": expected at most 100000 (lower factor or narrow the box)";
-      f->problems().add(f->key_path("factor"), m.str());
+      f.problems().add(f.key_path("factor"), m.str());
+      valid = false;
     }
   }
-  if (!std::isfinite(refine.factor) || !std::isfinite(refine.growth)) return;
+  if (!valid || !std::isfinite(refine.factor) || !std::isfinite(refine.growth)) return std::nullopt;
   if (refine.factor == 1.0) {  // the base cells everywhere: the uniform grid, its own path
-    f->problems().warn(f->key_path("factor"),
-                       "factor 1 refines nothing: the grid is the uniform one of grid.cells");
+    f.problems().warn(f.key_path("factor"),
+                      "factor 1 refines nothing: the grid is the uniform one of grid.cells");
+    return std::nullopt;
+  }
+  return refine;
+}
+
+// A list of boxes longer than this is more likely a generated mistake than a grid: each box
+// refines whole strips of the grid along every axis.
+constexpr std::size_t kMaxRefinedBoxes = 16;
+
+// grid.refine: one box of finer cells, or a list of them; the graded axes are made from them
+// (GridSpec::grade).
+void read_refinement(JsonReader& r, const Json& grid, GridSpec& g) {
+  if (grid.contains("refine") && grid["refine"].is_array()) {
+    const Json& list = grid["refine"];
+    r.ignore("refine");  // read element by element below
+    if (list.empty() || list.size() > kMaxRefinedBoxes) {
+      r.problems().add(r.key_path("refine"),
+                       "expected one box (an object with lower, upper, factor, growth) or a list "
+                       "of 1 to " +
+                           std::to_string(kMaxRefinedBoxes) + " of them, got a list of " +
+                           std::to_string(list.size()));
+      return;
+    }
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string path = r.key_path("refine") + "/" + std::to_string(i);
+      if (!list[i].is_object()) {
+        r.problems().add(
+            path,
+            "expected a box (an object with lower, upper, factor, growth), got " + list[i].dump());
+        continue;
+      }
+      JsonReader f(list[i], path, r.problems());
+      if (auto box = read_refined_box(f, list[i], g)) g.refine.push_back(*box);
+    }
     return;
   }
-  g.refine = refine;
+  auto f = r.optional_child("refine",
+                            "a box of finer cells (or a list of boxes): a graded "
+                            "(tartan) grid");
+  if (!f) return;
+  if (auto box = read_refined_box(*f, at(grid, "refine"), g)) g.refine.push_back(*box);
 }
 
 // What a graded grid turned out to be, where a user would not expect it: a factor so close to 1
 // that no axis got finer cells (then the uniform grid, its own path), or a growth so slow that
 // the cells never grow back to the base size (the axis is fine everywhere: the cost of the fine
 // grid, not of a box).
-void warn_of_grading(JsonReader& r, GridSpec& g) {
+void warn_of_grading(JsonReader& r, GridSpec& g, bool listed) {
+  // A list of boxes is graded as one (along each axis the spans of all of them): its warnings
+  // name the list.
+  const auto refine_key = [&](const char* key) {
+    return r.key_path("refine") + (listed ? std::string() : "/" + std::string(key));
+  };
   const Vec3 h0 = g.spacing();
   bool finer = false;
   for (int d = 0; d < g.dimensions(); ++d) {
@@ -302,7 +345,7 @@ void warn_of_grading(JsonReader& r, GridSpec& g) {
       m << "along axis " << d << " the cells grow only to " << a.largest() << " m of the base "
         << h0(d) << " m: the axis is fine everywhere (" << a.cells() << " cells for "
         << g.base_cells[std::size_t(d)] << "); raise growth or narrow the box";
-      r.problems().warn(r.key_path("refine") + "/growth", m.str());
+      r.problems().warn(refine_key("growth"), m.str());
     }
   }
   // A tartan grid refines whole strips: where the box's strip along one axis crosses the coarse
@@ -322,13 +365,13 @@ void warn_of_grading(JsonReader& r, GridSpec& g) {
       << graded_aspect << ":1 in shape (the base cells " << base_aspect
       << ":1); cells that long gain energy at an impact: keep factor at most 4, or refine the "
          "base grid";
-    r.problems().warn(r.key_path("refine") + "/factor", m.str());
+    r.problems().warn(refine_key("factor"), m.str());
   }
   if (!finer) {
-    r.problems().warn(r.key_path("refine") + "/factor",
+    r.problems().warn(refine_key("factor"),
                       "no axis gets cells finer than grid.cells' with this factor: the grid is "
                       "the uniform one of grid.cells");
-    g.refine.reset();
+    g.refine.clear();
     g.axes = {};
     g.cells = g.base_cells;
     g.grade();
@@ -367,9 +410,9 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   }
   read_faces(r, n, g, geometry);
   read_refinement(r, n, g);
-  if (!r.problems().empty()) g.refine.reset();  // graded only from valid bounds and cells
+  if (!r.problems().empty()) g.refine.clear();  // graded only from valid bounds and cells
   g.grade();
-  if (g.graded()) warn_of_grading(r, g);
+  if (g.graded()) warn_of_grading(r, g, n.contains("refine") && n["refine"].is_array());
   // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int; a 2D
   // grid one node plane along z.
   const double stored_nodes =

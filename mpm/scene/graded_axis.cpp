@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -63,11 +64,19 @@ std::vector<double> growing_cells(double L, double hf, double h0, double growth)
 
 }  // namespace
 
-GradedAxis graded_axis(double lower, double upper, int base_cells, const RefinedSpan& span) {
+namespace {
+
+// A span widened to the base grid's nodes: its cells are then exactly h0 / F for a whole F, and no
+// side is left shorter than a cell (a sliver there set the time step: an axisymmetric Taylor
+// rod's box ending 0.06 mm short of the grid's 8.86 mm took 5 times the steps).
+struct Widened {
+  double a = 0.0, b = 0.0;
+  double factor = 1.0, growth = 1.2;
+};
+
+std::optional<Widened> widened(double lower, double upper, int base_cells,
+                               const RefinedSpan& span) {
   const double h0 = (upper - lower) / base_cells;
-  // The span widened to the base grid's nodes: its cells are then exactly h0 / F for a whole F,
-  // and no side is left shorter than a cell (a sliver there set the time step: an axisymmetric
-  // Taylor rod's box ending 0.06 mm short of the grid's 8.86 mm took 5 times the steps).
   const auto base_node = [&](double x, bool up) {
     const double c = (x - lower) / h0;
     if (std::abs(c - std::round(c)) <= 1e-9) {  // on a node already: as given, or the face
@@ -80,16 +89,79 @@ GradedAxis graded_axis(double lower, double upper, int base_cells, const Refined
   };
   const double a = base_node(std::clamp(span.lower, lower, upper), false);
   const double b = base_node(std::clamp(span.upper, lower, upper), true);
-  std::vector<double> x;
-  if (!(span.factor > 1.0) || !(b > a)) {  // uniform: the solver's own nodes lower + i h
-    for (int i = 0; i <= base_cells; ++i) x.push_back(lower + i * h0);
-    return GradedAxis(std::move(x));
+  if (!(span.factor > 1.0) || !(b > a)) return std::nullopt;
+  return Widened{a, b, span.factor, span.growth};
+}
+
+GradedAxis uniform_axis(double lower, double upper, int base_cells) {
+  const double h0 = (upper - lower) / base_cells;
+  std::vector<double> x;  // the solver's own nodes lower + i h
+  for (int i = 0; i <= base_cells; ++i) x.push_back(lower + i * h0);
+  return GradedAxis(std::move(x));
+}
+
+// The refined cells of a span: round((b - a) / (h0 / F)) equal cells, at least one.
+int refined_cells(const Widened& w, double h0) {
+  return std::max(1, static_cast<int>(std::lround((w.b - w.a) / (h0 / w.factor))));
+}
+
+// The cells of a gap of length L between two refined spans (cells hl below, hr above), nearest
+// first on each side: the fewest that grow by at most gl and gr per cell from the two ends, the
+// smaller next cell added first (so the two cells that meet differ by at most a growth), none
+// above h0; their ratios then lowered together, 1 + t (g - 1) for one t in [0, 1], to fill L
+// exactly. A gap shorter than those cells at ratio 1 gets them all equal.
+std::pair<std::vector<double>, std::vector<double>> gap_cells(double L, double hl, double gl,
+                                                              double hr, double gr, double h0) {
+  int ml = 0, mr = 0;
+  for (double xl = hl, xr = hr, t = 0.0; t < L;) {
+    const double nl = std::min(xl * gl, h0), nr = std::min(xr * gr, h0);
+    if (nl <= nr) {
+      t += (xl = nl);
+      ++ml;
+    } else {
+      t += (xr = nr);
+      ++mr;
+    }
   }
-  const int inner = std::max(1, static_cast<int>(std::lround((b - a) / (h0 / span.factor))));
+  const auto side = [&](double h, double g, double t, int m) {
+    std::vector<double> c;
+    for (int k = 0; k < m; ++k) c.push_back(h = std::min(h * (1.0 + t * (g - 1.0)), h0));
+    return c;
+  };
+  const auto sum = [](const std::vector<double>& c) {
+    double t = 0.0;
+    for (const double x : c) t += x;
+    return t;
+  };
+  const auto total = [&](double t) { return sum(side(hl, gl, t, ml)) + sum(side(hr, gr, t, mr)); };
+  if (total(0.0) >= L) {
+    const double each = L / (ml + mr);
+    return {std::vector<double>(std::size_t(ml), each), std::vector<double>(std::size_t(mr), each)};
+  }
+  double lo = 0.0, hi = 1.0;
+  for (int it = 0; it < 100; ++it) {
+    const double t = 0.5 * (lo + hi);
+    (total(t) < L ? lo : hi) = t;
+  }
+  std::vector<double> left = side(hl, gl, hi, ml), right = side(hr, gr, hi, mr);
+  // The bisection's last bits onto the last cell added, the largest of its side.
+  (ml > 0 ? left.back() : right.back()) += L - sum(left) - sum(right);
+  return {std::move(left), std::move(right)};
+}
+
+}  // namespace
+
+GradedAxis graded_axis(double lower, double upper, int base_cells, const RefinedSpan& span) {
+  const double h0 = (upper - lower) / base_cells;
+  const std::optional<Widened> w = widened(lower, upper, base_cells, span);
+  if (!w) return uniform_axis(lower, upper, base_cells);
+  const double a = w->a, b = w->b;
+  const int inner = refined_cells(*w, h0);
   const double hf = (b - a) / inner;
   const std::vector<double> below = growing_cells(a - lower, hf, h0, span.growth);
   const std::vector<double> above = growing_cells(upper - b, hf, h0, span.growth);
   // Nodes from the lower end: the side below outermost cell first.
+  std::vector<double> x;
   x.push_back(lower);
   double at = lower;
   for (auto c = below.rbegin(); c != below.rend(); ++c) x.push_back(at += *c);
@@ -98,6 +170,57 @@ GradedAxis graded_axis(double lower, double upper, int base_cells, const Refined
   at = b;
   for (const double c : above) x.push_back(at += c);
   x.back() = upper;
+  return GradedAxis(std::move(x));
+}
+
+GradedAxis graded_axis(double lower, double upper, int base_cells,
+                       const std::vector<RefinedSpan>& spans) {
+  std::vector<Widened> ws;
+  for (const RefinedSpan& s : spans)
+    if (const std::optional<Widened> w = widened(lower, upper, base_cells, s)) ws.push_back(*w);
+  std::sort(ws.begin(), ws.end(), [](const Widened& p, const Widened& q) { return p.a < q.a; });
+  // Overlapping or touching spans merge: the finest factor, the slowest growth.
+  std::vector<Widened> merged;
+  for (const Widened& w : ws) {
+    if (!merged.empty() && w.a <= merged.back().b) {
+      Widened& m = merged.back();
+      m.b = std::max(m.b, w.b);
+      m.factor = std::max(m.factor, w.factor);
+      m.growth = std::min(m.growth, w.growth);
+      continue;
+    }
+    merged.push_back(w);
+  }
+  if (merged.empty()) return uniform_axis(lower, upper, base_cells);
+  if (merged.size() == 1) {  // the one-span axis, node for node
+    const Widened& m = merged.front();
+    return graded_axis(lower, upper, base_cells, RefinedSpan{m.a, m.b, m.factor, m.growth});
+  }
+  const double h0 = (upper - lower) / base_cells;
+  std::vector<double> x{lower};
+  double at = lower;
+  for (std::size_t k = 0; k < merged.size(); ++k) {
+    const Widened& m = merged[k];
+    const int inner = refined_cells(m, h0);
+    const double hf = (m.b - m.a) / inner;
+    if (k == 0) {  // the side below the first span, outermost cell first
+      const std::vector<double> below = growing_cells(m.a - lower, hf, h0, m.growth);
+      for (auto c = below.rbegin(); c != below.rend(); ++c) x.push_back(at += *c);
+    }
+    x.back() = m.a;  // the span's edge exactly, not a sum's round-off
+    for (int i = 1; i <= inner; ++i) x.push_back(m.a + (m.b - m.a) * i / inner);
+    at = m.b;
+    if (k + 1 < merged.size()) {  // the gap to the next span, growing from both ends
+      const Widened& n = merged[k + 1];
+      const double hn = (n.b - n.a) / refined_cells(n, h0);
+      const auto [left, right] = gap_cells(n.a - m.b, hf, m.growth, hn, n.growth, h0);
+      for (const double c : left) x.push_back(at += c);
+      for (auto c = right.rbegin(); c != right.rend(); ++c) x.push_back(at += *c);
+    } else {
+      for (const double c : growing_cells(upper - m.b, hf, h0, m.growth)) x.push_back(at += c);
+      x.back() = upper;
+    }
+  }
   return GradedAxis(std::move(x));
 }
 

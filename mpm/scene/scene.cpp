@@ -4,13 +4,15 @@ namespace impact::mpm {
 
 void GridSpec::grade() {
   base_cells = cells;
-  if (!refine) return;
+  if (refine.empty()) return;
   for (int d = 0; d < 3; ++d) {
     const std::size_t a = std::size_t(d);
-    // A 2D grid's one cell along z is not a mesh axis: it stays one cell of 1 m.
-    const RefinedSpan span{refine->lower(d), refine->upper(d),
-                           planar() && d == 2 ? 1.0 : refine->factor, refine->growth};
-    axes[a] = graded_axis(lower(d), upper(d), base_cells[a], span);
+    std::vector<RefinedSpan> spans;
+    for (const GridRefinement& box : refine)  // a 2D grid's one cell of 1 m along z stays one
+      spans.push_back(
+          {box.lower(d), box.upper(d), planar() && d == 2 ? 1.0 : box.factor, box.growth});
+    axes[a] = spans.size() == 1 ? graded_axis(lower(d), upper(d), base_cells[a], spans.front())
+                                : graded_axis(lower(d), upper(d), base_cells[a], spans);
     cells[a] = axes[a].cells();
   }
 }

@@ -42,7 +42,8 @@ struct FaceMotion {
 
 /// grid.refine (docs/scenes.md#graded-grids; issue 56): a box of cells `factor` times finer than
 /// the base, the cells outside it growing by at most `growth` per cell back to the base size
-/// (NairnMPM's tartan grids). Each mesh axis is graded on its own (scene/graded_axis.hpp).
+/// (NairnMPM's tartan grids). Each mesh axis is graded on its own (scene/graded_axis.hpp): a list
+/// of boxes refines, along each axis, the spans of all of them.
 struct GridRefinement {
   Vec3 lower, upper;    ///< [m]
   double factor = 1.0;  ///< base cell size / refined cell size [-], >= 1
@@ -53,8 +54,9 @@ struct GridSpec {
   Vec3 lower, upper;  ///< [m]
   /// Cells per axis; on a graded grid those of the graded axes (base_cells: what grid.cells gave).
   std::array<int, 3> cells{};
-  /// grid.refine; absent: a uniform grid (the solver's uniform path, bit for bit).
-  std::optional<GridRefinement> refine;
+  /// grid.refine, one box or several; none: a uniform grid (the solver's uniform path, bit for
+  /// bit).
+  std::vector<GridRefinement> refine;
   std::array<int, 3> base_cells{};  ///< grid.cells (the base size); == cells when uniform
   /// Each axis's node coordinates on a graded grid (empty when uniform).
   std::array<GradedAxis, 3> axes;
@@ -94,7 +96,7 @@ struct GridSpec {
   /// Face f (kFaceNames order) bounds the modelled domain: read from the scene, not the axis.
   bool is_domain_face(int f) const { return geometry_facts().is_domain_face(f); }
   /// Cells of unequal size along the mesh's axes (grid.refine).
-  bool graded() const { return refine.has_value(); }
+  bool graded() const { return !refine.empty(); }
   /// Grades the axes by `refine` (the reader, once cells are read): base_cells keeps grid.cells,
   /// cells becomes the graded counts. A 2D grid's z (one cell of 1 m) is not graded.
   void grade();

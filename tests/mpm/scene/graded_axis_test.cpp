@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "mpm/scene/graded_axis.hpp"
 
@@ -54,6 +55,55 @@ BOOST_AUTO_TEST_CASE(the_cell_of_a_coordinate_and_the_ghost_nodes) {
   // The ghost cells repeat the edge cells' sizes.
   BOOST_TEST(std::abs(axis.size(-1) - axis.size(0)) < 1e-15);
   BOOST_TEST(std::abs(axis.size(axis.cells()) - axis.size(axis.cells() - 1)) < 1e-15);
+}
+
+// A list of boxes (grid.refine as a list) refines, along each axis, the spans of all of them.
+// Worked by hand for [0, 1] m, 10 base cells (h0 = 0.1 m), spans [0.1, 0.2] refined 4 times
+// (growth 1.2) and [0.7, 0.8] refined twice (growth 1.5): 4 cells of 0.025 m and 2 of 0.05 m.
+// Below the first span 0.1 m: 0.03, 0.036, 0.0432 reach it, 3 cells. Above the second 0.2 m:
+// 0.075, 0.1, 0.1 reach it, 3 cells. The gap of 0.5 m between them, the smaller next cell first:
+// 0.03, 0.036, 0.0432, 0.05184, 0.062208, 0.0746496 from below (each under the 0.075 from above),
+// then 0.075 from above, then 0.0896 and 0.1 from below: 9 cells reach 0.562 m. So 21 cells, the
+// spans' edges at nodes 3, 7, 16 and 18.
+BOOST_AUTO_TEST_CASE(two_spans_are_refined_with_the_gap_graded_from_both_ends) {
+  const double h0 = 0.1;
+  const GradedAxis axis = graded_axis(
+      0.0, 1.0, 10, std::vector<RefinedSpan>{{0.7, 0.8, 2.0, 1.5}, {0.1, 0.2, 4.0, 1.2}});
+  BOOST_TEST(axis.cells() == 21);
+  BOOST_TEST(axis.node(0) == 0.0);
+  BOOST_TEST(axis.node(3) == 0.1);  // the spans' edges are nodes, exactly
+  BOOST_TEST(axis.node(7) == 0.2);
+  BOOST_TEST(axis.node(16) == 0.7);
+  BOOST_TEST(axis.node(18) == 0.8);
+  BOOST_TEST(axis.node(21) == 1.0);
+  for (int i = 3; i < 7; ++i) BOOST_TEST(std::abs(axis.size(i) - 0.025) < 1e-15);
+  for (int i = 16; i < 18; ++i) BOOST_TEST(std::abs(axis.size(i) - 0.05) < 1e-15);
+  for (int i = 1; i < axis.cells(); ++i) {  // no neighbour ratio beyond the larger growth
+    const double ratio = axis.size(i) / axis.size(i - 1);
+    BOOST_TEST(ratio <= 1.5 * (1.0 + 1e-12));
+    BOOST_TEST(ratio >= 1.0 / 1.5 / (1.0 + 1e-12));
+  }
+  for (int i = 8; i < 15; ++i)  // the gap's cells from the first span grow by its 1.2 at most
+    BOOST_TEST(axis.size(i) / axis.size(i - 1) <= 1.2 * (1.0 + 1e-12));
+  BOOST_TEST(axis.largest() <= h0 * (1.0 + 1e-12));
+  BOOST_TEST(std::abs(axis.smallest() - 0.025) < 1e-15);
+}
+
+// Spans that overlap (or touch) once widened to the base nodes merge into one with the finest
+// factor and the slowest growth; one span given as a list is the one-span axis node for node.
+BOOST_AUTO_TEST_CASE(overlapping_spans_merge_and_one_span_in_a_list_is_the_same_axis) {
+  const GradedAxis merged = graded_axis(
+      0.0, 1.0, 10, std::vector<RefinedSpan>{{0.4, 0.55, 2.0, 1.5}, {0.5, 0.6, 4.0, 1.2}});
+  // (0.55 widens to the node 6 h0, as the one span's 0.55 does; 0.6 as given is a round-off away.)
+  const GradedAxis one = graded_axis(0.0, 1.0, 10, RefinedSpan{0.4, 0.55, 4.0, 1.2});
+  BOOST_TEST(merged.nodes() == one.nodes());
+  const RefinedSpan off_node{0.43, 0.571, 3.0, 1.3};
+  BOOST_TEST(graded_axis(0.0, 1.0, 10, std::vector<RefinedSpan>{off_node}).nodes() ==
+             graded_axis(0.0, 1.0, 10, off_node).nodes());
+  const GradedAxis touching = graded_axis(
+      0.0, 1.0, 10, std::vector<RefinedSpan>{{0.2, 0.4, 2.0, 1.2}, {0.4, 0.6, 2.0, 1.2}});
+  BOOST_TEST(touching.nodes() ==
+             graded_axis(0.0, 1.0, 10, RefinedSpan{0.2, 0.6, 2.0, 1.2}).nodes());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -87,4 +87,16 @@ BOOST_AUTO_TEST_CASE(linear_usl_translates_exactly_across_a_graded_grid) {
   check_rigid_translation("linear", "usl", graded(2.0), kShort);
 }
 
+// Two boxes (grid.refine as a list): the leading corner's box above and one at the trailing
+// corner refined 3 times; along each axis the 10 mm between their strips grade from both ends.
+BOOST_AUTO_TEST_CASE(gimp_musl_translates_exactly_across_two_refined_boxes) {
+  Json grid = graded(5.0);
+  grid["refine"] = Json::array({grid["refine"],
+                                {{"lower", {0.017, 0.021, 0.017}},
+                                 {"upper", {0.023, 0.027, 0.023}},
+                                 {"factor", 3.0},
+                                 {"growth", 1.5}}});
+  check_rigid_translation("gimp", "musl", grid, kShort);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
