@@ -29,7 +29,7 @@
 //              test contact again in each pass; decided on the re-mapped data, the hold was
 //              lost). The cost: a body that leaves is released one re-map late (the bouncing
 //              rod's residual -0.25 -> -0.33, wall_contact_test). Where the step's friction
-//              acted (stick or slip), the re-map takes the step's v* for the tangential
+//              stuck the node, the re-map takes the step's v* for the tangential
 //              components as well, for the same reason: re-mapped from the particles, a stuck
 //              face node read their FLIP velocities, the strain rate sheared a face that had not
 //              moved, and friction pumped a resting block (mu 1: kinetic + strain - gravity's
@@ -42,7 +42,12 @@
 //              the wall) was released when its ringing re-map pointed outward, and the strain rate
 //              stretched a face that had not moved: a block at rest on the wall under gravity
 //              gained energy until the energy check stopped it at 204 us; a block spanning two
-//              walls at 8 us (tests/mpm/verification/resting_contact_test.cpp).
+//              walls at 8 us (tests/mpm/verification/resting_contact_test.cpp). Only where the
+//              step stuck: in slip the re-map keeps its own tangential velocity, for a light
+//              node's v* is a force over a sliver of mass whose gradient is not small (nodes of
+//              5e-21 kg at a mu = 1 wall slipped at up to 1500 m/s on a graded ramp and turned a
+//              particle's det F to -2025 at step 538; contact_friction_test), and every case
+//              above that the copy cured sticks.
 //   friction   one Coulomb correction of what remains tangential to the held faces, u_t: the slip
 //              removed is s = min(sum_f mu_f j_f, |u_t|): stick (u_t = 0) when |u_t| <= sum mu_f
 //              j_f, slip otherwise.
@@ -111,9 +116,9 @@
 namespace impact::mpm {
 
 namespace {
-// Grid::wall_held's bit for "the step's friction corrected this node" (the face bits are 1 << face,
+// Grid::wall_held's bit for "the step's friction stuck this node" (the face bits are 1 << face,
 // faces 0-5).
-constexpr std::uint8_t kFrictionActed = 0x40;
+constexpr std::uint8_t kStuck = 0x40;
 }  // namespace
 
 double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallPass pass) {
@@ -133,9 +138,9 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
       if (!step) {  // the re-map: the step's decision, whatever the re-mapped velocity's sign
         for (int i = 0; i < w.count; ++i)
           if (wall_held[e] & w.face[i].bit) v(w.face[i].axis) = 0.0;
-        // Where the step's friction acted, the tangential components it decided too: the
-        // particles moved with that v*.
-        if (wall_held[e] & kFrictionActed) {
+        // Where the step's friction stuck the node, the tangential components it decided too:
+        // the particles moved with that v*.
+        if (wall_held[e] & kStuck) {
           bool decided[3] = {false, false, false};
           for (int i = 0; i < w.images; ++i)
             if (wall_touch[offset + w.image[i].face_node] & w.image[i].bit)
@@ -168,7 +173,7 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
       const double s = std::min(capacity, slip);
       const Vec3 t = ut / slip;
       v -= s * t;
-      wall_held[e] |= kFrictionActed;
+      if (!(s < slip)) wall_held[e] |= kStuck;
       // Heat only where the material slides (header comment): its start slip along t exceeds
       // what friction takes off in one step (static friction does no work).
       if (!(s < slip) || !start) continue;

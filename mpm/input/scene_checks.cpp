@@ -226,20 +226,6 @@ void check_field_count(InputProblems& problems, const Scene& s) {
   problems.add("/materials", m.str());
 }
 
-// A graded grid (grid.refine) runs what has a graded form so far: everything but the
-// logistic-regression contact normal, whose fit weighs particles by a tent of uniform cells and
-// scales their offsets by the uniform spacing (step/contact_planes.cpp): refused until it takes
-// the local cells (issue 56).
-void check_graded_grid(InputProblems& problems, const Scene& s) {
-  if (!s.grid.graded() || s.field_count() == 1 ||
-      s.physics.contact.normal != ContactNormal::logistic_regression)
-    return;
-  problems.add("/grid/refine",
-               "a graded grid does not run the contact normal \"logistic_regression\" yet "
-               "(physics.contact.normal): expected \"mass_gradients\" or \"larger_volume\", "
-               "or no grid.refine");
-}
-
 // Contact separates materials, not objects (a material's particles share one velocity field): two
 // objects of one material meet as one body, as with single_velocity. Valid, and what a scene of
 // one body cut into objects wants, but a user who set friction between them gets no contact.

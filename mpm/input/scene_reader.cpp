@@ -35,7 +35,6 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   warn_of_idle_expression_names(problems, s);
   read_observables(problems, doc, s);
   check_field_count(problems, s);
-  check_graded_grid(problems, s);
   root.reject_unknown_keys();
   problems.throw_if_any();
   s.warnings.insert(s.warnings.end(), problems.warnings().begin(), problems.warnings().end());

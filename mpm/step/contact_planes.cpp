@@ -244,8 +244,9 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
     if (compact[q] < 0) compact[q] = listed++;
   // 3. The fit per node: w in cells^-1, the normal w / h (w . (x - x_I) / h is the plane),
   //    pointing from the lower body into the higher.
-  const Vec3 h = G.spacing();
-  const int dims = G.spec().dimensions();
+  const GridSpec& spec = G.spec();
+  const Vec3 base = G.spacing();
+  const int dims = spec.dimensions();
 #pragma omp parallel num_threads(threads)
   {
     std::vector<PlanePoint> points;
@@ -258,7 +259,16 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
       const int I = pair_node[k];
       const std::array<int, 3> n = G.ijk(I);
       if (!within(n, 0)) continue;  // listed only: no particle of this rank weighs on it
-      const Vec3 node = G.lower() + Vec3(n[0] * h(0), n[1] * h(1), n[2] * h(2));
+      // The node and the cell the tent counts in: on a graded grid the node's own coordinates
+      // and its dual cell (the mean of the two cells beside it along each mesh axis), so that
+      // the tent reaches 2.25 of the cells around it whatever their size (issue 56).
+      Vec3 node = G.lower() + Vec3(n[0] * base(0), n[1] * base(1), n[2] * base(2));
+      Vec3 h = base;
+      if (spec.graded())
+        for (int d = 0; d < dims; ++d) {
+          node(d) = spec.node(d, n[d]);
+          h(d) = 0.5 * (spec.cell_size(d, n[d] - 1) + spec.cell_size(d, n[d]));
+        }
       // The cloud: the two bodies' particles in the lists of this node and of its neighbours
       // that are two-body nodes too, weighted by a tent of kPlaneReach cells about this node.
       cloud.clear();
