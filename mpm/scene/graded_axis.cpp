@@ -71,26 +71,30 @@ namespace {
 // rod's box ending 0.06 mm short of the grid's 8.86 mm took 5 times the steps).
 struct Widened {
   double a = 0.0, b = 0.0;
+  long ia = 0, ib = 0;  ///< the base nodes a and b are (spans merge by these, not by a and b)
   double factor = 1.0, growth = 1.2;
 };
 
 std::optional<Widened> widened(double lower, double upper, int base_cells,
                                const RefinedSpan& span) {
   const double h0 = (upper - lower) / base_cells;
-  const auto base_node = [&](double x, bool up) {
+  // The node's coordinate and its index.
+  const auto base_node = [&](double x, bool up) -> std::pair<double, long> {
     const double c = (x - lower) / h0;
     if (std::abs(c - std::round(c)) <= 1e-9) {  // on a node already: as given, or the face
-      if (std::round(c) <= 0.0) return lower;   // (1e-12 off the face: no 1e-12 m cell)
-      if (std::round(c) >= base_cells) return upper;
-      return x;
+      const long i = std::lround(c);            // (1e-12 off the face: no 1e-12 m cell)
+      if (i <= 0) return {lower, 0};
+      if (i >= base_cells) return {upper, base_cells};
+      return {x, i};
     }
-    const double i = up ? std::ceil(c) : std::floor(c);
-    return std::clamp(lower + i * h0, lower, upper);
+    const long i = std::clamp(static_cast<long>(up ? std::ceil(c) : std::floor(c)), 0L,
+                              static_cast<long>(base_cells));
+    return {std::clamp(lower + static_cast<double>(i) * h0, lower, upper), i};
   };
-  const double a = base_node(std::clamp(span.lower, lower, upper), false);
-  const double b = base_node(std::clamp(span.upper, lower, upper), true);
+  const auto [a, ia] = base_node(std::clamp(span.lower, lower, upper), false);
+  const auto [b, ib] = base_node(std::clamp(span.upper, lower, upper), true);
   if (!(span.factor > 1.0) || !(b > a)) return std::nullopt;
-  return Widened{a, b, span.factor, span.growth};
+  return Widened{a, b, ia, ib, span.factor, span.growth};
 }
 
 GradedAxis uniform_axis(double lower, double upper, int base_cells) {
@@ -105,48 +109,63 @@ int refined_cells(const Widened& w, double h0) {
   return std::max(1, static_cast<int>(std::lround((w.b - w.a) / (h0 / w.factor))));
 }
 
-// The cells of a gap of length L between two refined spans (cells hl below, hr above), nearest
-// first on each side: the fewest that grow by at most gl and gr per cell from the two ends, the
-// smaller next cell added first (so the two cells that meet differ by at most a growth), none
-// above h0; their ratios then lowered together, 1 + t (g - 1) for one t in [0, 1], to fill L
-// exactly. A gap shorter than those cells at ratio 1 gets them all equal.
-std::pair<std::vector<double>, std::vector<double>> gap_cells(double L, double hl, double gl,
-                                                              double hr, double gr, double h0) {
-  int ml = 0, mr = 0;
-  for (double xl = hl, xr = hr, t = 0.0; t < L;) {
-    const double nl = std::min(xl * gl, h0), nr = std::min(xr * gr, h0);
-    if (nl <= nr) {
-      t += (xl = nl);
-      ++ml;
+// The m smallest of the sizes two sides offer, each growing from its span's cell (hl, hr) by its
+// growth and capped at c, nearest first on each side: the smaller next cell is taken first, so
+// the two cells that meet differ by at most a growth (each side's next cell is no smaller than
+// the other's last). `last_left`: the last cell taken, the largest, is the left side's.
+struct GapCells {
+  std::vector<double> left, right;
+  bool last_left = true;
+};
+GapCells smallest_cells(int m, double hl, double gl, double hr, double gr, double c) {
+  GapCells f;
+  double xl = hl, xr = hr;
+  for (int k = 0; k < m; ++k) {
+    const double nl = std::min(xl * gl, c), nr = std::min(xr * gr, c);
+    f.last_left = nl <= nr;
+    if (f.last_left) {
+      f.left.push_back(xl = nl);
     } else {
-      t += (xr = nr);
-      ++mr;
+      f.right.push_back(xr = nr);
     }
   }
-  const auto side = [&](double h, double g, double t, int m) {
-    std::vector<double> c;
-    for (int k = 0; k < m; ++k) c.push_back(h = std::min(h * (1.0 + t * (g - 1.0)), h0));
-    return c;
-  };
-  const auto sum = [](const std::vector<double>& c) {
+  return f;
+}
+
+// The cells of a gap of length L between two refined spans (cells hl below, hr above): the fewest
+// m that reach L growing from both ends, at most h0 each (smallest_cells with c = h0); then the
+// cap c lowered, by bisection, until those m cells fill L exactly (their sum grows with c). The
+// ratios stay within the growths everywhere, where the sides meet too, and no cell is smaller
+// than the two spans' cells. A gap too short to grade at all (m cells capped at the larger span
+// cell already overfill it) gets m equal cells.
+GapCells gap_cells(double L, double hl, double gl, double hr, double gr, double h0) {
+  int m = 0;
+  for (double xl = hl, xr = hr, t = 0.0; t < L; ++m) {
+    const double nl = std::min(xl * gl, h0), nr = std::min(xr * gr, h0);
+    t += nl <= nr ? (xl = nl) : (xr = nr);
+  }
+  const auto total = [](const GapCells& f) {
     double t = 0.0;
-    for (const double x : c) t += x;
+    for (const double x : f.left) t += x;
+    for (const double x : f.right) t += x;
     return t;
   };
-  const auto total = [&](double t) { return sum(side(hl, gl, t, ml)) + sum(side(hr, gr, t, mr)); };
-  if (total(0.0) >= L) {
-    const double each = L / (ml + mr);
-    return {std::vector<double>(std::size_t(ml), each), std::vector<double>(std::size_t(mr), each)};
+  double lo = std::max(hl, hr), hi = h0;
+  if (total(smallest_cells(m, hl, gl, hr, gr, lo)) >= L) {
+    GapCells f = smallest_cells(m, hl, gl, hr, gr, lo);
+    const double each = L / m;
+    for (double& x : f.left) x = each;
+    for (double& x : f.right) x = each;
+    return f;
   }
-  double lo = 0.0, hi = 1.0;
   for (int it = 0; it < 100; ++it) {
-    const double t = 0.5 * (lo + hi);
-    (total(t) < L ? lo : hi) = t;
+    const double c = 0.5 * (lo + hi);
+    (total(smallest_cells(m, hl, gl, hr, gr, c)) < L ? lo : hi) = c;
   }
-  std::vector<double> left = side(hl, gl, hi, ml), right = side(hr, gr, hi, mr);
-  // The bisection's last bits onto the last cell added, the largest of its side.
-  (ml > 0 ? left.back() : right.back()) += L - sum(left) - sum(right);
-  return {std::move(left), std::move(right)};
+  GapCells f = smallest_cells(m, hl, gl, hr, gr, hi);
+  // The bisection's last bits onto the last cell taken, the largest.
+  (f.last_left ? f.left.back() : f.right.back()) += L - total(f);
+  return f;
 }
 
 }  // namespace
@@ -178,13 +197,16 @@ GradedAxis graded_axis(double lower, double upper, int base_cells,
   std::vector<Widened> ws;
   for (const RefinedSpan& s : spans)
     if (const std::optional<Widened> w = widened(lower, upper, base_cells, s)) ws.push_back(*w);
-  std::sort(ws.begin(), ws.end(), [](const Widened& p, const Widened& q) { return p.a < q.a; });
+  std::sort(ws.begin(), ws.end(), [](const Widened& p, const Widened& q) { return p.ia < q.ia; });
   // Overlapping or touching spans merge: the finest factor, the slowest growth.
   std::vector<Widened> merged;
   for (const Widened& w : ws) {
-    if (!merged.empty() && w.a <= merged.back().b) {
+    if (!merged.empty() && w.ia <= merged.back().ib) {  // by node index: no ulp-wide gap
       Widened& m = merged.back();
-      m.b = std::max(m.b, w.b);
+      if (w.ib > m.ib) {
+        m.b = w.b;
+        m.ib = w.ib;
+      }
       m.factor = std::max(m.factor, w.factor);
       m.growth = std::min(m.growth, w.growth);
       continue;
@@ -213,9 +235,9 @@ GradedAxis graded_axis(double lower, double upper, int base_cells,
     if (k + 1 < merged.size()) {  // the gap to the next span, growing from both ends
       const Widened& n = merged[k + 1];
       const double hn = (n.b - n.a) / refined_cells(n, h0);
-      const auto [left, right] = gap_cells(n.a - m.b, hf, m.growth, hn, n.growth, h0);
-      for (const double c : left) x.push_back(at += c);
-      for (auto c = right.rbegin(); c != right.rend(); ++c) x.push_back(at += *c);
+      const GapCells gap = gap_cells(n.a - m.b, hf, m.growth, hn, n.growth, h0);
+      for (const double c : gap.left) x.push_back(at += c);
+      for (auto c = gap.right.rbegin(); c != gap.right.rend(); ++c) x.push_back(at += *c);
     } else {
       for (const double c : growing_cells(upper - m.b, hf, h0, m.growth)) x.push_back(at += c);
       x.back() = upper;

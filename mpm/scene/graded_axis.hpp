@@ -57,11 +57,11 @@ class GradedAxis {
 GradedAxis graded_axis(double lower, double upper, int base_cells, const RefinedSpan& span);
 
 /// The axis refined in several spans (grid.refine as a list of boxes). Each span is widened to
-/// the base nodes as above; spans that then overlap or touch merge into one, with the finest
-/// factor and the slowest growth of them. One span left: the axis above, node for node. Between
-/// two spans the cells grow from both, the smaller next cell first, so that no neighbour ratio
-/// exceeds a growth and no cell exceeds h0; their ratios are then lowered together to fill the
-/// gap exactly.
+/// the base nodes as above; spans that then overlap or touch (by node index) merge into one, with
+/// the finest factor and the slowest growth of them. One span left: the axis above, node for
+/// node. Between two spans the cells grow from both, the smaller next cell first, so that no
+/// neighbour ratio exceeds a growth and no cell exceeds h0; the fewest that reach across are then
+/// capped together to fill the gap exactly.
 GradedAxis graded_axis(double lower, double upper, int base_cells,
                        const std::vector<RefinedSpan>& spans);
 

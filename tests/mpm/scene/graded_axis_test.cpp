@@ -63,8 +63,8 @@ BOOST_AUTO_TEST_CASE(the_cell_of_a_coordinate_and_the_ghost_nodes) {
 // Below the first span 0.1 m: 0.03, 0.036, 0.0432 reach it, 3 cells. Above the second 0.2 m:
 // 0.075, 0.1, 0.1 reach it, 3 cells. The gap of 0.5 m between them, the smaller next cell first:
 // 0.03, 0.036, 0.0432, 0.05184, 0.062208, 0.0746496 from below (each under the 0.075 from above),
-// then 0.075 from above, then 0.0896 and 0.1 from below: 9 cells reach 0.562 m. So 21 cells, the
-// spans' edges at nodes 3, 7, 16 and 18.
+// then 0.075 from above, then 0.0896 and 0.1 from below: 9 cells reach 0.562 m (their cap then
+// lowered to fill 0.5 m). So 21 cells, the spans' edges at nodes 3, 7, 16 and 18.
 BOOST_AUTO_TEST_CASE(two_spans_are_refined_with_the_gap_graded_from_both_ends) {
   const double h0 = 0.1;
   const GradedAxis axis = graded_axis(
@@ -104,6 +104,47 @@ BOOST_AUTO_TEST_CASE(overlapping_spans_merge_and_one_span_in_a_list_is_the_same_
       0.0, 1.0, 10, std::vector<RefinedSpan>{{0.2, 0.4, 2.0, 1.2}, {0.4, 0.6, 2.0, 1.2}});
   BOOST_TEST(touching.nodes() ==
              graded_axis(0.0, 1.0, 10, RefinedSpan{0.2, 0.6, 2.0, 1.2}).nodes());
+}
+
+// Two boxes whose edges meet within round-off of the same base node merge (by node index): the
+// second box's 0.005 is the node 7 h0 as given, the first box's edge 0.005 widened is -0.03 + 7 h0,
+// an ulp away; compared as coordinates they left a cell of 5e-18 m between them (the audit's).
+BOOST_AUTO_TEST_CASE(boxes_meeting_at_a_node_within_round_off_merge_without_a_sliver) {
+  const GradedAxis axis =
+      graded_axis(-0.03, 0.03, 12,
+                  std::vector<RefinedSpan>{{-0.01, 0.0049, 2.0, 1.2}, {0.005, 0.02, 2.0, 1.2}});
+  BOOST_TEST(axis.smallest() > 0.0025 * (1.0 - 1e-9));
+  const GradedAxis edges = graded_axis(
+      -0.03, 0.03, 12, std::vector<RefinedSpan>{{-0.01, 0.005, 2.0, 1.2}, {0.006, 0.02, 2.0, 1.2}});
+  BOOST_TEST(edges.smallest() > 0.0025 * (1.0 - 1e-9));
+}
+
+// Where the two sides of a gap meet, the cells differ by a growth at most, whatever the gap's
+// length and the spans' factors (the sides are capped together, not scaled together: scaled by one
+// common ratio, a side of many uncapped cells shrank much more than the other, and h0 met 0.79 h0
+// at growth 1.2 on [0, 1] with 40 base cells and boxes [0.125, 0.2] and [0.5, 0.575] refined
+// twice, the audit's). Scanned over factors 2 to 16 on either side and gaps of 4 to 12 base cells;
+// no gap cell is smaller than the finer span's cell, none larger than h0.
+BOOST_AUTO_TEST_CASE(the_cells_of_a_gap_grow_by_the_growth_at_most_where_its_sides_meet) {
+  const double h0 = 1.0 / 40;
+  for (const double fa : {2.0, 4.0, 8.0, 16.0})
+    for (const double fb : {2.0, 4.0, 8.0, 16.0})
+      for (int gap = 4; gap <= 12; ++gap)
+        for (const double g : {1.2, 1.5}) {
+          const double b0 = 0.125 + 3 * h0 + gap * h0;
+          const GradedAxis axis =
+              graded_axis(0.0, 1.0, 40,
+                          std::vector<RefinedSpan>{{0.125, 0.2, fa, g}, {b0, b0 + 3 * h0, fb, g}});
+          double worst = 0.0;
+          for (int i = 1; i < axis.cells(); ++i)
+            worst =
+                std::max({worst, axis.size(i) / axis.size(i - 1), axis.size(i - 1) / axis.size(i)});
+          BOOST_TEST(worst <= g * (1.0 + 1e-9), "factors " << fa << ", " << fb << ", gap " << gap
+                                                           << " h0, growth " << g << ": ratio "
+                                                           << worst);
+          BOOST_TEST(axis.largest() <= h0 * (1.0 + 1e-9));
+          BOOST_TEST(axis.smallest() >= h0 / std::max(fa, fb) * (1.0 - 1e-9));
+        }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
