@@ -36,6 +36,9 @@ namespace impact::mpm {
 // Another rank's particle, as a cloud needs it (named: a member of the fit's lambdas).
 struct PlaneGhost {
   Vec3 x;
+  /// Its uGIMP half-widths on a graded grid [m] (Particles::half_width, fixed at seeding): the
+  /// owner's stencil, not that of the cell the ghost is in now (zero on a uniform grid).
+  Vec3 half_width;
   std::uint64_t id;
   std::uint16_t object;
   std::uint16_t field;
@@ -80,6 +83,7 @@ std::vector<PlaneGhost> exchange_ghosts(const Particles& P, const Grid& G,
     PlaneGhost g;
     std::memset(static_cast<void*>(&g), 0, sizeof g);  // no stray padding bytes on the wire
     g.x = P.x[p];
+    g.half_width = P.half_width.empty() ? Vec3::Zero() : P.half_width[p];
     g.id = seed_index(P, std::size_t(p));
     g.object = P.object[p];
     g.field = P.field[p];
@@ -181,7 +185,8 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
   const std::ptrdiff_t nq = np + static_cast<std::ptrdiff_t>(ghosts.size());
   Stencils<Shape> ghost_stencils(ghosts.size());
   for (std::size_t g = 0; g < ghosts.size(); ++g)
-    ghost_stencils[g] = shape.at(ghosts[g].x, ghosts[g].object);
+    ghost_stencils[g] = shape.at(ghosts[g].x, ghosts[g].object,
+                                 P.half_width.empty() ? nullptr : &ghosts[g].half_width);
   const auto field_of = [&](std::ptrdiff_t q) {
     return q < np ? int(P.field[q]) : int(ghosts[std::size_t(q - np)].field);
   };

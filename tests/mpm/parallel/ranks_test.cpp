@@ -341,11 +341,15 @@ Json refined_twice(const Json& lower, const Json& upper, double growth) {
 BOOST_AUTO_TEST_CASE(graded_grids_book_as_on_one_rank) {
   const Json rod = refined_twice({0.0, 0.0, 0.0}, {0.0041, 0.0052, 0.0052}, 1.3);
   const Json blocks = refined_twice({0.008, 0.0, 0.0}, {0.012, 0.012, 0.008}, 1.3);
+  // The separating plane too: its ghosts carry their own half-widths (step/contact_planes.cpp).
+  Json plane = blocks;
+  plane["physics"]["contact"] = {{"type", "friction"}, {"normal", "logistic_regression"}};
   Json block = refined_twice({0.037, 0.033, 0.033}, {0.043, 0.039, 0.039}, 1.5);
   block["solver"] = {{"interpolation", "linear"}, {"scheme", "usl"}};
   for (const auto& [name, patch] :
        std::vector<std::pair<const char*, Json>>{{"taylor_rod.json", rod},
                                                  {"contact_blocks.json", blocks},
+                                                 {"contact_blocks.json", plane},
                                                  {"rigid_translation.json", block}}) {
     const Scene scene = scene_from(std::string("verification/") + name, patch);
     BOOST_TEST_REQUIRE(scene.grid.graded());
