@@ -241,7 +241,8 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
 
 // One box of grid.refine (docs/scenes.md#graded-grids), inside the grid on every mesh axis; none
 // when it is invalid (reported) or refines nothing (factor 1, warned).
-std::optional<GridRefinement> read_refined_box(JsonReader& f, const Json& n, const GridSpec& g) {
+std::optional<GridRefinement> read_refined_box(JsonReader& f, const Json& n, const GridSpec& g,
+                                               bool listed) {
   GridRefinement refine;
   refine.lower =
       read_vec3(f, n, "lower", "lower corner of the refined box [m] ([x, y] on a 2D grid)");
@@ -281,7 +282,9 @@ std::optional<GridRefinement> read_refined_box(JsonReader& f, const Json& n, con
   if (!valid || !std::isfinite(refine.factor) || !std::isfinite(refine.growth)) return std::nullopt;
   if (refine.factor == 1.0) {  // the base cells everywhere: the uniform grid, its own path
     f.problems().warn(f.key_path("factor"),
-                      "factor 1 refines nothing: the grid is the uniform one of grid.cells");
+                      listed
+                          ? "factor 1 refines nothing: this box is left out of the list"
+                          : "factor 1 refines nothing: the grid is the uniform one of grid.cells");
     return std::nullopt;
   }
   return refine;
@@ -314,7 +317,7 @@ void read_refinement(JsonReader& r, const Json& grid, GridSpec& g) {
         continue;
       }
       JsonReader f(list[i], path, r.problems());
-      if (auto box = read_refined_box(f, list[i], g)) g.refine.push_back(*box);
+      if (auto box = read_refined_box(f, list[i], g, true)) g.refine.push_back(*box);
     }
     return;
   }
@@ -322,7 +325,7 @@ void read_refinement(JsonReader& r, const Json& grid, GridSpec& g) {
                             "a box of finer cells (or a list of boxes): a graded "
                             "(tartan) grid");
   if (!f) return;
-  if (auto box = read_refined_box(*f, at(grid, "refine"), g)) g.refine.push_back(*box);
+  if (auto box = read_refined_box(*f, at(grid, "refine"), g, false)) g.refine.push_back(*box);
 }
 
 // What a graded grid turned out to be, where a user would not expect it: a factor so close to 1
@@ -345,6 +348,27 @@ void warn_of_grading(JsonReader& r, GridSpec& g, bool listed) {
       m << "along axis " << d << " the cells grow only to " << a.largest() << " m of the base "
         << h0(d) << " m: the axis is fine everywhere (" << a.cells() << " cells for "
         << g.base_cells[std::size_t(d)] << "); raise growth or narrow the box";
+      r.problems().warn(refine_key("growth"), m.str());
+    }
+  }
+  // Neighbouring cells that differ by more than the growth asked for: a gap between two boxes
+  // (or a side between a box and a face) too short to grade gets equal cells beside the finer
+  // ones (graded_axis.cpp). Waves reflect more at such a step (docs/scenes.md, graded_wave_test).
+  double growth = 1.0;
+  for (const GridRefinement& box : g.refine) growth = std::max(growth, box.growth);
+  for (int d = 0; d < g.dimensions(); ++d) {
+    const GradedAxis& a = g.axes[std::size_t(d)];
+    double worst = 1.0, at = 0.0;
+    for (int i = 1; i < a.cells(); ++i) {
+      const double ratio = std::max(a.size(i) / a.size(i - 1), a.size(i - 1) / a.size(i));
+      if (ratio > worst) worst = ratio, at = a.node(i);
+    }
+    if (worst > growth * (1.0 + 1e-9)) {
+      std::ostringstream m;
+      m << "along axis " << d << " neighbouring cells differ by " << worst << " at " << at
+        << " m, more than the growth " << growth
+        << ": the gap between boxes (or between a box and a face) is too short to grade; "
+           "move the boxes apart, merge them, or lower the finer factor";
       r.problems().warn(refine_key("growth"), m.str());
     }
   }

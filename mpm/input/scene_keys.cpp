@@ -117,7 +117,7 @@ InputKeyRecorder scene_keys(const std::string& material_file) {
     mirrors["grid"]["face_velocity"][face] = 0.0;
   }
   read_scene(mirrors, "a.json", &keys);
-  // A graded grid (grid.refine), which runs single-velocity contact only.
+  // A graded grid (grid.refine: its keys as one box).
   Json graded = sample;
   graded["physics"]["contact"] = {{"type", "single_velocity"}};
   graded["grid"]["refine"] = {

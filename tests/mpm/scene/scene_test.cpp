@@ -189,6 +189,35 @@ BOOST_AUTO_TEST_CASE(elongated_graded_cells_are_warned_of_above_four_to_one) {
   for (const auto& w : s.warnings) BOOST_TEST_MESSAGE(w);
 }
 
+// Two boxes one base cell apart, refined 8 and 2 times (the trial's): the gap is too short to
+// grade at 1.2, so its equal cells meet the finer ones at a steeper ratio, warned with its value.
+// Five base cells apart the gap grades within 1.2, no warning.
+BOOST_AUTO_TEST_CASE(a_gap_between_boxes_too_short_to_grade_is_warned_of) {
+  Json doc = load_scene_document(kScenes + "verification/rigid_translation.json");
+  const auto boxes = [](double second_lower) {
+    return Json::array(
+        {{{"lower", {0.01, 0.01, 0.01}},
+          {"upper", {0.015, 0.015, 0.015}},
+          {"factor", 8},
+          {"growth", 1.2}},
+         {{"lower", {second_lower, second_lower, second_lower}},
+          {"upper", {second_lower + 0.005, second_lower + 0.005, second_lower + 0.005}},
+          {"factor", 2},
+          {"growth", 1.2}}});
+  };
+  const auto steep = [](const Scene& s) {
+    return std::count_if(s.warnings.begin(), s.warnings.end(), [](const std::string& w) {
+      return w.find("/grid/refine: along axis 0 neighbouring cells differ by") != std::string::npos;
+    });
+  };
+  doc["grid"]["refine"] = boxes(0.02);
+  const Scene s = read_scene(doc, "test.json");
+  for (const auto& w : s.warnings) BOOST_TEST_MESSAGE(w);
+  BOOST_TEST(steep(s) == 1);
+  doc["grid"]["refine"] = boxes(0.04);
+  BOOST_TEST(steep(read_scene(doc, "test.json")) == 0);
+}
+
 BOOST_AUTO_TEST_CASE(an_unknown_material_reference_lists_the_known_ones) {
   Json doc = base();
   doc["objects"]["block"]["material"] = "steel";

@@ -17,10 +17,11 @@
 // - roll (mu 0.5): acceleration -43 / -11 % over the second half, omega R / v 1.05 / 0.89, the
 //   wall's impulse growing in 30 / 33 % of the steps. (Before the wall's re-map kept the step's
 //   v* in stick only, grid/wall.cpp: -30 / -11 %, omega R / v 0.79 / 0.88; at h the disk now
-//   grips more and spins a little faster than it rolls, at h/2 nothing moved.) The disk does not roll cleanly: released stress-free under a sudden load, it rings
-//   on its line contact, hops (off the wall for spells up to 16 us) and slips forward between the
-//   touches; the wall's catch of the nodes that arrive under it is inelastic (grid/wall.cpp):
-//   energy_error -13 / -4.0 % of gravity's work. The acceleration's error falls with h.
+//   grips more and spins a little faster than it rolls, at h/2 nothing moved.) The disk does not
+//   roll cleanly: released stress-free under a sudden load, it rings on its line contact, hops (off
+//   the wall for spells up to 16 us) and slips forward between the touches; the wall's catch of the
+//   nodes that arrive under it is inelastic (grid/wall.cpp): energy_error -13 / -4.0 % of gravity's
+//   work. The acceleration's error falls with h.
 // Asserted: the slides within 0.5 %; the roll's acceleration within 45 % at h and 20 % at h/2,
 // falling with h (0.7-fold or less); omega R / v in (0.7, 1.1) at h and (0.8, 1.05) at h/2.
 #include <boost/test/unit_test.hpp>
