@@ -324,7 +324,8 @@ void read_refinement(JsonReader& r, const Json& grid, GridSpec& g) {
   auto f = r.optional_child("refine",
                             "a box of finer cells (or a list of boxes): a graded "
                             "(tartan) grid");
-  if (!f) return;
+  // A present non-object is reported by optional_child: its keys are not read as missing.
+  if (!f || !at(grid, "refine").is_object()) return;
   if (auto box = read_refined_box(*f, at(grid, "refine"), g, false)) g.refine.push_back(*box);
 }
 

@@ -218,6 +218,17 @@ BOOST_AUTO_TEST_CASE(a_gap_between_boxes_too_short_to_grade_is_warned_of) {
   BOOST_TEST(steep(read_scene(doc, "test.json")) == 0);
 }
 
+// grid.refine neither a box nor a list (the trial's "abc"): one problem, at /grid/refine, not
+// three more for the keys of a box that is not there.
+BOOST_AUTO_TEST_CASE(a_refine_that_is_neither_a_box_nor_a_list_is_one_problem) {
+  Json doc = base();
+  doc["grid"]["refine"] = "abc";
+  const std::string e = scene_error_of(doc);
+  BOOST_TEST_MESSAGE(e);
+  BOOST_TEST(e.find("/grid/refine") != std::string::npos);
+  BOOST_TEST(e.find("missing") == std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(an_unknown_material_reference_lists_the_known_ones) {
   Json doc = base();
   doc["objects"]["block"]["material"] = "steel";
