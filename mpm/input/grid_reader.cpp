@@ -287,6 +287,45 @@ std::optional<GridRefinement> read_refined_box(JsonReader& f, const Json& n, con
                           : "factor 1 refines nothing: the grid is the uniform one of grid.cells");
     return std::nullopt;
   }
+  // A factor that does not divide the box's base cells into whole cells is rounded (the
+  // refined cells are equal and end on the box's base nodes): where that moves the factor by more
+  // than 5 %, say what it became, axes that came out alike together. (A ladder's levels round
+  // by a few per cent: 1.5 on 17 base cells is 1.53; its h is the cells' own.)
+  struct Rounded {
+    std::string axes;
+    double h0;
+    SpanCells cells;
+  };
+  std::vector<Rounded> rounded;
+  for (int d = 0; d < axes; ++d) {
+    const auto c = span_cells(g.lower(d), g.upper(d), g.cells[std::size_t(d)],
+                              RefinedSpan{refine.lower(d), refine.upper(d), refine.factor, 1.2});
+    const double asked = c ? double(c->base) * refine.factor : 0.0;
+    if (!c || std::abs(double(c->refined) - asked) <= 0.05 * asked) continue;
+    const double h0 = (g.upper(d) - g.lower(d)) / g.cells[std::size_t(d)];
+    const auto same = std::find_if(rounded.begin(), rounded.end(), [&](const Rounded& r) {
+      return r.cells.base == c->base && r.cells.refined == c->refined && r.h0 == h0;
+    });
+    if (same != rounded.end()) {
+      same->axes += ", " + std::to_string(d);
+    } else {
+      rounded.push_back({std::to_string(d), h0, *c});
+    }
+  }
+  if (!rounded.empty()) {
+    std::ostringstream m;
+    m << "factor " << refine.factor << " does not divide the box into whole cells:";
+    for (std::size_t i = 0; i < rounded.size(); ++i) {
+      const auto& [along, h0, c] = rounded[i];
+      m << (i ? ";" : "") << (along.size() > 1 ? " along axes " : " along axis ") << along
+        << " the box covers " << c.base << " base cell" << (c.base == 1 ? "" : "s")
+        << " (widened to the base nodes), " << double(c.base) * refine.factor
+        << " cells rounded to " << c.refined << " of " << h0 * double(c.base) / c.refined
+        << " m (a factor of " << double(c.refined) / double(c.base) << ")";
+    }
+    m << "; choose a factor that makes the box's base cells times it whole";
+    f.problems().warn(f.key_path("factor"), m.str());
+  }
   return refine;
 }
 
@@ -437,6 +476,23 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   read_refinement(r, n, g);
   if (!r.problems().empty()) g.refine.clear();  // graded only from valid bounds and cells
   g.grade();
+  // Each box's cells are bounded above; boxes whose spans merge along an axis can still exceed
+  // the bound together.
+  bool too_many = false;
+  for (int d = 0; g.graded() && d < g.dimensions(); ++d)
+    if (const int c = g.axes[std::size_t(d)].cells(); c > 100000) {
+      r.problems().add(r.key_path("refine"),
+                       "along axis " + std::to_string(d) +
+                           " the boxes' refined spans together get " + std::to_string(c) +
+                           " cells: expected at most 100000 (lower a factor or narrow the boxes)");
+      too_many = true;
+    }
+  if (too_many) {  // the base grid from here on, as after any other problem
+    g.refine.clear();
+    g.axes = {};
+    g.cells = g.base_cells;
+    g.grade();
+  }
   if (g.graded()) warn_of_grading(r, g, n.contains("refine") && n["refine"].is_array());
   // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int; a 2D
   // grid one node plane along z.

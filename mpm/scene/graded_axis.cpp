@@ -246,4 +246,11 @@ GradedAxis graded_axis(double lower, double upper, int base_cells,
   return GradedAxis(std::move(x));
 }
 
+std::optional<SpanCells> span_cells(double lower, double upper, int base_cells,
+                                    const RefinedSpan& span) {
+  const std::optional<Widened> w = widened(lower, upper, base_cells, span);
+  if (!w) return std::nullopt;
+  return SpanCells{w->ib - w->ia, refined_cells(*w, (upper - lower) / base_cells)};
+}
+
 }  // namespace impact::mpm

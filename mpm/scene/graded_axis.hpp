@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace impact::mpm {
@@ -64,5 +65,16 @@ GradedAxis graded_axis(double lower, double upper, int base_cells, const Refined
 /// capped together to fill the gap exactly.
 GradedAxis graded_axis(double lower, double upper, int base_cells,
                        const std::vector<RefinedSpan>& spans);
+
+/// What a span's refined cells come to on the axis above: the base cells it covers once widened
+/// to the base nodes, and the equal cells it gets there, round(base x factor), at least one (a
+/// factor that does not divide the base cells into whole cells is rounded: 2.5 on one base cell
+/// gives 3 cells of h0 / 3). None when the span refines nothing.
+struct SpanCells {
+  long base = 0;
+  int refined = 0;
+};
+std::optional<SpanCells> span_cells(double lower, double upper, int base_cells,
+                                    const RefinedSpan& span);
 
 }  // namespace impact::mpm

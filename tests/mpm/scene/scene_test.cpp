@@ -218,6 +218,55 @@ BOOST_AUTO_TEST_CASE(a_gap_between_boxes_too_short_to_grade_is_warned_of) {
   BOOST_TEST(steep(read_scene(doc, "test.json")) == 0);
 }
 
+// A factor that does not divide a box's base cells into whole cells is rounded (the trial's 2.5
+// on one base cell of 5 mm gave cells of h0 / 3 without a word): warned where the factor moves by
+// more than 5 %, with what it became. 2.5 on two base cells is 5 whole cells; 1.5 on 17 (a ladder
+// level's 1.53) is within 5 %. The axes that round alike are named together.
+BOOST_AUTO_TEST_CASE(a_factor_rounded_to_whole_cells_is_warned_of) {
+  Json doc = load_scene_document(kScenes + "verification/rigid_translation.json");  // h0 5 mm
+  const auto rounded = [&](double upper, double factor) {
+    doc["grid"]["refine"] = {
+        {"lower", {0.02, 0.02, 0.02}}, {"upper", {upper, 0.025, 0.025}}, {"factor", factor}};
+    const Scene s = read_scene(doc, "test.json");
+    std::string found;
+    for (const auto& w : s.warnings)
+      if (w.find("/grid/refine/factor: factor") != std::string::npos) found += w;
+    BOOST_TEST_MESSAGE(found);
+    return found;
+  };
+  const std::string one = rounded(0.025, 2.5);
+  BOOST_TEST(one.find("along axes 0, 1, 2 the box covers 1 base cell") != std::string::npos);
+  BOOST_TEST(one.find("2.5 cells rounded to 3 of 0.00166667 m (a factor of 3)") !=
+             std::string::npos);
+  const std::string two = rounded(0.03, 2.5);  // 5 whole cells along x, 2.5 -> 3 along y, z
+  BOOST_TEST(two.find("along axes 1, 2 the box covers 1 base cell") != std::string::npos);
+  BOOST_TEST(two.find("axis 0") == std::string::npos);
+  BOOST_TEST(rounded(0.025, 2.0).empty());
+  doc["grid"]["cells"] = {17, 17, 17};  // 1.5 on the whole x axis's 17 cells: 26, a factor 1.53
+  doc["grid"]["refine"] = {{"lower", {0.0, 0.02, 0.02}}, {"upper", {0.06, 0.03, 0.03}}};
+  doc["grid"]["refine"]["factor"] = 1.5;
+  const Scene s = read_scene(doc, "test.json");
+  BOOST_TEST(s.grid.cells[0] == 26);
+  for (const auto& w : s.warnings) BOOST_TEST(w.find("whole cells") == std::string::npos);
+}
+
+// Each box's cells along an axis are bounded (100000); two boxes whose spans merge along x at
+// factor 64 get 128000 cells together, refused at /grid/refine (each alone passes).
+BOOST_AUTO_TEST_CASE(merged_boxes_are_held_to_the_cells_per_axis_bound) {
+  Json doc = load_scene_document(kScenes + "verification/rigid_translation.json");
+  doc["grid"]["cells"] = {2000, 12, 12};
+  const auto box = [](double lo, double hi) {
+    return Json{{"lower", {lo, 0.02, 0.02}}, {"upper", {hi, 0.025, 0.025}}, {"factor", 64}};
+  };
+  doc["grid"]["refine"] = Json::array({box(0.0, 0.03)});
+  BOOST_TEST(read_scene(doc, "test.json").grid.cells[0] > 64000);
+  doc["grid"]["refine"] = Json::array({box(0.0, 0.03), box(0.03, 0.06)});
+  const std::string e = scene_error_of(doc);
+  BOOST_TEST_MESSAGE(e);
+  BOOST_TEST(e.find("/grid/refine: along axis 0 the boxes' refined spans together get 128000 "
+                    "cells: expected at most 100000") != std::string::npos);
+}
+
 // grid.refine neither a box nor a list (the trial's "abc"): one problem, at /grid/refine, not
 // three more for the keys of a box that is not there.
 BOOST_AUTO_TEST_CASE(a_refine_that_is_neither_a_box_nor_a_list_is_one_problem) {
