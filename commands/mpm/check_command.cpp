@@ -19,7 +19,12 @@ int check_scene(const Scene& scene, const std::vector<std::string>& warnings, in
   const std::string refusal = memory.empty() ? step_refusal(scene) : memory;
   out["refusal"] = refusal;
   if (memory.empty()) {
-    out["report"] = check_report(scene, run_threads(threads), plan_ranks);
+    std::vector<std::string> seeding;
+    out["report"] = check_report(scene, run_threads(threads), plan_ranks, &seeding);
+    for (const std::string& w : seeding) {
+      std::cerr << "mpm: warning: " << w << '\n';
+      out["warnings"].push_back(w);
+    }
   }
   std::cout << out.dump(2) << '\n';
   if (refusal.empty()) return 0;

@@ -71,12 +71,49 @@ double volume(const Geometry& g) {
           const double ri = s.radius - s.thickness;
           return pi * (s.radius * s.radius - ri * ri) * h + pi * ri * ri * s.cap_thickness;
         } else {
+          const std::vector<double> shared = union_overlap_shares(s);
           double v = 0.0;
-          for (const Geometry& p : s.parts) v += volume(p);
+          for (std::size_t k = 0; k < s.parts.size(); ++k)
+            v += volume(s.parts[k]) * (1.0 - shared[k]);
           return v;
         }
       },
       g.shape);
+}
+
+std::vector<double> union_overlap_shares(const Union& u, bool plane) {
+  std::vector<double> shares(u.parts.size(), 0.0);
+  for (std::size_t k = 1; k < u.parts.size(); ++k) {
+    const auto [lo, hi] = bounds(u.parts[k]);
+    bool meets = false;  // an earlier part's bounding box meets this one's
+    for (std::size_t j = 0; j < k && !meets; ++j) {
+      const auto [a, b] = bounds(u.parts[j]);
+      meets = (a.array() <= hi.array()).all() && (lo.array() <= b.array()).all();
+    }
+    if (!meets) continue;
+    std::size_t in_part = 0, in_earlier = 0;
+    const auto count = [&](const Vec3& x) {
+      if (!inside(u.parts[k], x)) return;
+      ++in_part;
+      for (std::size_t j = 0; j < k; ++j)
+        if (inside(u.parts[j], x)) {
+          ++in_earlier;
+          return;
+        }
+    };
+    if (plane) {
+      constexpr int n = 512;
+      const double z = 0.5 * (lo(2) + hi(2));
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+          count(Vec3(lo(0) + (hi(0) - lo(0)) * (i + 0.5) / n,
+                     lo(1) + (hi(1) - lo(1)) * (j + 0.5) / n, z));
+    } else {
+      for_each_lattice_point(lo, hi, 64, count);
+    }
+    if (in_part > 0) shares[k] = double(in_earlier) / double(in_part);
+  }
+  return shares;
 }
 
 std::pair<Vec3, Vec3> bounds(const Geometry& g) {

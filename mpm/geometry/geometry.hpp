@@ -32,8 +32,8 @@ struct HollowCylinder {
   double radius, thickness, cap_thickness;
 };
 struct Geometry;
-/// Union of parts; volume() is the sum of the parts' volumes, exact only if they do not overlap
-/// (seeding counts a shared point once, so `mpm check` then shows particle volume < geometry).
+/// Union of parts; a point shared by several parts is seeded once, and volume() counts it once
+/// (union_overlap_shares below).
 struct Union {
   std::vector<Geometry> parts;
 };
@@ -42,7 +42,8 @@ struct Geometry {
 };
 
 bool inside(const Geometry& g, const Vec3& x);
-/// Exact volume [m^3] (a union: the sum of its parts).
+/// Volume [m^3]: exact, and for a union the sum of its parts' volumes less what they share,
+/// exact where the parts' bounding boxes do not meet and sampled where they do.
 double volume(const Geometry& g);
 /// Axis-aligned bounding box (lower, upper).
 std::pair<Vec3, Vec3> bounds(const Geometry& g);
@@ -56,6 +57,14 @@ void for_each_lattice_point(const Vec3& lo, const Vec3& hi, int n, F&& f) {
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) f(Vec3(lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5))));
 }
+
+/// Per part of a union, the share of it that lies in an earlier part: sampled at the cell
+/// centres of a lattice over the part's bounding box (64^3 points; in the plane z = the box's
+/// middle, 512^2, with `plane`: the section of prisms along z), and 0 exactly where no earlier
+/// part's bounding box meets it. A union's measure counts a shared part once: sum over the parts
+/// of m_k (1 - share_k). (Summed, the ramp scene's union of a box and a tilted cylinder read 11 %
+/// more volume than it has, and its volume_ratio 0.897 showed a loss that was not there.)
+std::vector<double> union_overlap_shares(const Union& u, bool plane = false);
 
 /// Reads {"type": "box"|"sphere"|"cylinder"|"hollow_cylinder"|"union", ...}; problems go to
 /// r.problems() with their key paths.

@@ -20,6 +20,7 @@
 #include "mpm/run/run_outputs.hpp"
 #include "mpm/run/run_status.hpp"
 #include "mpm/run/scene_fingerprint.hpp"
+#include "mpm/run/seeding_check.hpp"
 #include "mpm/run/step_estimate.hpp"
 #include "mpm/run/summary.hpp"
 #include "mpm/threads/threads.hpp"
@@ -399,6 +400,9 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
     throw InputError({(dir / kCheckpointFile).string() + ": needs " + std::to_string(run.threads) +
                       " threads, this process gets " + std::to_string(sim.threads())});
   }
+  if (!resume)  // collective: every rank's particles summed
+    for (const std::string& w : seeding_warnings(scene, sim.particles(), comm))
+      if (run.root) std::cerr << "mpm: warning: " << w << '\n';
   if (const int code = inject_faults(run, sim)) return code;
   // Every rank keeps its outputs: on several ranks the gauges, observables and snapshots read the
   // particles each rank holds (collective calls), rank 0 writes history.csv and the .pvd.

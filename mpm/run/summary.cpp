@@ -10,6 +10,7 @@
 #include "mpm/parallel/decomposition_plan.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/scene_fingerprint.hpp"
+#include "mpm/run/seeding_check.hpp"
 #include "mpm/run/step_estimate.hpp"
 #include "mpm/scene/initial_fields.hpp"
 #include "mpm/scene/seed_points.hpp"
@@ -144,8 +145,9 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
 
 }  // namespace
 
-Json check_report(const Scene& scene, int threads, int ranks) {
+Json check_report(const Scene& scene, int threads, int ranks, std::vector<std::string>* seeding) {
   const Particles P = seed_particles(scene);
+  if (seeding) *seeding = seeding_warnings(scene, P, Communicator());
   Json report = particle_report(scene, P, threads, Communicator());  // every particle seeded here
   report.update(estimate_steps(scene).json(scene));
   report["scene_fingerprint"] = scene_fingerprint(scene.resolved);

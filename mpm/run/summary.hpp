@@ -14,8 +14,10 @@ namespace impact::mpm {
 /// What `mpm check` prints after the resolved scene: per-object counts, mass, particle volume
 /// against the exact geometric volume, estimated steps and memory, the scene fingerprint
 /// (mpm/run/scene_fingerprint.hpp); with `ranks` > 1 also the split over that many MPI ranks
-/// ("decomposition": plan_decomposition).
-Json check_report(const Scene& scene, int threads, int ranks = 0);
+/// ("decomposition": plan_decomposition). `seeding`: where the seeded bodies' warnings go
+/// (run/seeding_check.hpp), if given.
+Json check_report(const Scene& scene, int threads, int ranks = 0,
+                  std::vector<std::string>* seeding = nullptr);
 
 /// summary.json at the end of a run of sim, whose particles are P (on several ranks, those this
 /// rank holds: a collective call, every rank gets the whole summary): `status` (completed, failed,

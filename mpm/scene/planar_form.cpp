@@ -121,9 +121,11 @@ double section_area(const Geometry& g) {
         } else if constexpr (std::is_same_v<T, HollowCylinder>) {
           const double ri = s.radius - s.thickness;
           return pi * (s.radius * s.radius - ri * ri);
-        } else {
+        } else {  // a shared part once (geometry.hpp)
+          const std::vector<double> shared = union_overlap_shares(s, true);
           double a = 0.0;
-          for (const Geometry& p : s.parts) a += section_area(p);
+          for (std::size_t k = 0; k < s.parts.size(); ++k)
+            a += section_area(s.parts[k]) * (1.0 - shared[k]);
           return a;
         }
       },
@@ -147,7 +149,7 @@ double meridian_area(const Geometry& g) {
           return (s.top - s.bottom).norm() * s.thickness +
                  s.cap_thickness * (s.radius - s.thickness);
         } else {
-          double a = 0.0;
+          double a = 0.0;  // an estimate of the seed count: a shared part counts twice
           for (const Geometry& p : s.parts) a += meridian_area(p);
           return a;
         }
