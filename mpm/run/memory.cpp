@@ -157,8 +157,7 @@ std::string memory_refusal(const Scene& scene) {
     << *available / 1e6
     << " MB (MemAvailable in /proc/meminfo, or less under the cgroup's memory.max or ulimit -v); "
        "coarsen grid.cells"
-    << (scene.grid.graded() ? ", lower grid.refine.factor or narrow the refined box," : "")
-    << " or objects.*.particles_per_cell";
+    << scene.grid.refinement_advice() << " or objects.*.particles_per_cell";
   return m.str();
 }
 

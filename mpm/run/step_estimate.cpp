@@ -143,8 +143,7 @@ std::string particle_step_refusal(const Scene& scene, const StepEstimate& e) {
     << kOneCoreParticleStepsPerSecond << " particle-steps/s, one core's speed "
     << "(docs/performance.md), about " << e.particle_steps / kOneCoreParticleStepsPerSecond
     << " s) exceed time.max_estimated_particle_steps = " << t.max_estimated_particle_steps
-    << "; coarsen grid.cells"
-    << (g.graded() ? ", lower grid.refine.factor or narrow the refined box," : "")
+    << "; coarsen grid.cells" << g.refinement_advice()
     << " or lower particles_per_cell, or raise time.max_estimated_particle_steps to run the "
        "scene anyway";
   return m.str();

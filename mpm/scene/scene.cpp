@@ -17,6 +17,31 @@ void GridSpec::grade() {
   }
 }
 
+std::string GridSpec::refinement_advice() const {
+  if (!graded()) return "";
+  if (refine.size() == 1) return ", lower grid.refine.factor or narrow the refined box,";
+  const auto cell_count = [&](const GridSpec& g) {
+    return double(g.cells[0]) * double(g.cells[1]) * double(g.cells[2]);
+  };
+  std::size_t costliest = 0;
+  double most = -1.0;
+  for (std::size_t i = 0; i < refine.size(); ++i) {
+    GridSpec without = *this;
+    without.refine.erase(without.refine.begin() + static_cast<std::ptrdiff_t>(i));
+    without.cells = base_cells;
+    without.axes = {};
+    without.grade();
+    if (const double saved = cell_count(*this) - cell_count(without); saved > most) {
+      most = saved;
+      costliest = i;
+    }
+  }
+  return ", lower a factor of grid.refine or narrow its boxes (/grid/refine/" +
+         std::to_string(costliest) +
+         " adds the most cells: " + std::to_string(static_cast<long long>(most)) + " of " +
+         std::to_string(static_cast<long long>(cell_count(*this))) + "),";
+}
+
 int Scene::field_count() const {
   if (physics.contact.type == ContactType::single_velocity) return 1;
   const int n = static_cast<int>(materials.size());

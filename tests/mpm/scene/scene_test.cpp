@@ -267,6 +267,29 @@ BOOST_AUTO_TEST_CASE(merged_boxes_are_held_to_the_cells_per_axis_bound) {
                     "cells: expected at most 100000") != std::string::npos);
 }
 
+// A refusal of a graded grid's size advises on its refinement: one box, its factor and extent;
+// in a list, the box whose removal takes away the most cells (the trial: a tiny factor-8 box
+// inside a wide factor-2 box's y and z spans refines them 8 times; the memory refusal did not say
+// which box did it).
+BOOST_AUTO_TEST_CASE(a_refusal_names_the_box_that_adds_the_most_cells) {
+  Json doc = load_scene_document(kScenes + "verification/rigid_translation.json");
+  BOOST_TEST(read_scene(doc, "test.json").grid.refinement_advice().empty());
+  const Json wide = {{"lower", {0.01, 0.01, 0.01}}, {"upper", {0.05, 0.05, 0.05}}, {"factor", 2}};
+  const Json tiny = {
+      {"lower", {0.03, 0.03, 0.03}}, {"upper", {0.035, 0.035, 0.035}}, {"factor", 8}};
+  doc["grid"]["refine"] = wide;
+  BOOST_TEST(read_scene(doc, "test.json").grid.refinement_advice() ==
+             ", lower grid.refine.factor or narrow the refined box,");
+  for (const auto& [list, costliest] :
+       {std::pair{Json::array({wide, tiny}), 1}, std::pair{Json::array({tiny, wide}), 0}}) {
+    doc["grid"]["refine"] = list;
+    const std::string advice = read_scene(doc, "test.json").grid.refinement_advice();
+    BOOST_TEST_MESSAGE(advice);
+    BOOST_TEST(advice.find("(/grid/refine/" + std::to_string(costliest) + " adds the most cells") !=
+               std::string::npos);
+  }
+}
+
 // grid.refine neither a box nor a list (the trial's "abc"): one problem, at /grid/refine, not
 // three more for the keys of a box that is not there.
 BOOST_AUTO_TEST_CASE(a_refine_that_is_neither_a_box_nor_a_list_is_one_problem) {
