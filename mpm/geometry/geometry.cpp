@@ -103,7 +103,7 @@ std::vector<double> union_overlap_shares(const Union& u, bool plane) {
     };
     if (plane) {
       constexpr int n = 512;
-      const double z = 0.5 * (lo(2) + hi(2));
+      const double z = 0.0;  // a 2D grid's seed points lie in the section z = 0
       for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j)
           count(Vec3(lo(0) + (hi(0) - lo(0)) * (i + 0.5) / n,

@@ -17,10 +17,11 @@ namespace impact::mpm {
 inline constexpr double kSeedingVolumeTolerance = 0.05;
 
 /// One warning per body whose particles hold a volume more than kSeedingVolumeTolerance off the
-/// part of its geometry they should fill: inside the grid (scene/grid_coverage.hpp) and not in an
-/// earlier object (scene/object_overlap.hpp). The seeding's staircase: a particle at a sub-cell
-/// centre inside the body takes the whole sub-cell, so faces that cut coarse cells gain or lose
-/// up to half a sub-cell each. P: the particles this rank holds (the sums are over the ranks).
+/// part of its geometry they should fill: inside the grid and not in an earlier object, in the
+/// particles' own measure (revolved on rings about x, per metre of thickness in plane strain;
+/// seeding_check.cpp fill_volume). The seeding's staircase: a particle at a sub-cell centre inside
+/// the body takes the whole sub-cell, so faces that cut coarse cells gain or lose up to half a
+/// sub-cell each. P: the particles this rank holds (the sums are over the ranks).
 std::vector<std::string> seeding_warnings(const Scene& scene, const Particles& P,
                                           const Communicator& comm);
 
