@@ -59,8 +59,7 @@ double mass_with_images(const Grid& G, const double* m, const std::array<int, 3>
 double dual_volume(const GridSpec& s, int i, int j, int k) {
   double v = 1.0;
   const int n[3] = {i, j, k};
-  for (int d = 0; d < s.dimensions(); ++d)
-    v *= 0.5 * (s.cell_size(d, n[d] - 1) + s.cell_size(d, n[d]));
+  for (int d = 0; d < s.dimensions(); ++d) v *= s.dual_size(d, n[d]);
   return v;
 }
 

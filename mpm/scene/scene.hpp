@@ -140,6 +140,9 @@ struct GridSpec {
   double cell_size(int d, int i) const {
     return graded() ? axes[std::size_t(d)].size(i) : spacing()(d);
   }
+  /// The dual cell of node i along axis d, the mean of the two cells beside it [m]: what a node
+  /// holds on a graded grid (the contact normals' densities, the separating plane's reach).
+  double dual_size(int d, int i) const { return 0.5 * (cell_size(d, i - 1) + cell_size(d, i)); }
   /// The cell along axis d holding coordinate x, clamped into [0, cells_d - 1] (seed points,
   /// migration and the domain decomposition's counts all bin particles by it).
   int cell_along(int d, double x) const {

@@ -272,7 +272,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
       if (spec.graded())
         for (int d = 0; d < dims; ++d) {
           node(d) = spec.node(d, n[d]);
-          h(d) = 0.5 * (spec.cell_size(d, n[d] - 1) + spec.cell_size(d, n[d]));
+          h(d) = spec.dual_size(d, n[d]);
         }
       // The cloud: the two bodies' particles in the lists of this node and of its neighbours
       // that are two-body nodes too, weighted by a tent of kPlaneReach cells about this node.
