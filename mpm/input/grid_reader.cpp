@@ -391,6 +391,31 @@ void warn_of_grading(JsonReader& r, GridSpec& g, bool listed) {
       r.problems().warn(refine_key("growth"), m.str());
     }
   }
+  // A list's boxes whose spans merge get round(base cells x finest factor) cells together; each
+  // box alone was checked for rounding (read_refined_box), the merged span was not (the trial: 2.5
+  // on two boxes merging into 3 base cells gave 8 cells, a factor of 2.67, without a word).
+  if (listed) {
+    double finest = 1.0;
+    for (const GridRefinement& box : g.refine) finest = std::max(finest, box.factor);
+    for (int d = 0; d < g.dimensions(); ++d) {
+      const double got = h0(d) / g.axes[std::size_t(d)].smallest();
+      if (std::abs(got / finest - 1.0) <= 0.05) continue;
+      bool warned = false;  // a box of the finest factor rounds so alone: said at its key already
+      for (const GridRefinement& box : g.refine) {
+        const auto c = span_cells(g.lower(d), g.upper(d), g.base_cells[std::size_t(d)],
+                                  RefinedSpan{box.lower(d), box.upper(d), box.factor, box.growth});
+        warned = warned || (box.factor == finest && c &&
+                            std::abs(double(c->refined) / double(c->base) / finest - 1.0) > 0.05);
+      }
+      if (warned) continue;
+      std::ostringstream m;
+      m << "along axis " << d << " the boxes' spans merge into one whose cells are "
+        << g.axes[std::size_t(d)].smallest() << " m, a factor of " << got << " against the finest "
+        << finest << ": the merged span's base cells times " << finest
+        << " are rounded to whole cells; choose factors that make them whole";
+      r.problems().warn(refine_key("factor"), m.str());
+    }
+  }
   // Neighbouring cells that differ by more than the growth asked for: a gap between two boxes
   // (or a side between a box and a face) too short to grade gets equal cells beside the finer
   // ones (graded_axis.cpp). Waves reflect more at such a step (docs/scenes.md, graded_wave_test).

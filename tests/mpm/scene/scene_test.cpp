@@ -250,6 +250,34 @@ BOOST_AUTO_TEST_CASE(a_factor_rounded_to_whole_cells_is_warned_of) {
   for (const auto& w : s.warnings) BOOST_TEST(w.find("whole cells") == std::string::npos);
 }
 
+// Two boxes of factor 2.5 whose spans merge into 3 base cells get 8 cells (7.5 rounded), a
+// factor of 2.67: each box alone gives whole cells (2 base cells, 5 cells), so only the merged
+// check can say it (the trial's c46). Merging into 4 base cells (10 cells) is whole: no warning.
+BOOST_AUTO_TEST_CASE(merged_spans_rounded_to_whole_cells_are_warned_of) {
+  Json doc = load_scene_document(kScenes + "verification/rigid_translation.json");  // h0 5 mm
+  const auto merged = [&](double second_lower) {
+    const auto box = [](double lo) {
+      return Json{
+          {"lower", {lo, lo, lo}}, {"upper", {lo + 0.01, lo + 0.01, lo + 0.01}}, {"factor", 2.5}};
+    };
+    doc["grid"]["refine"] = Json::array({box(0.02), box(second_lower)});
+    const Scene s = read_scene(doc, "test.json");
+    std::string found;
+    for (const auto& w : s.warnings)
+      if (w.find("spans merge into one") != std::string::npos ||
+          w.find("whole cells") != std::string::npos)
+        found += w + "\n";
+    BOOST_TEST_MESSAGE(found);
+    return found;
+  };
+  const std::string three = merged(0.025);
+  BOOST_TEST(three.find("/grid/refine: along axis 0 the boxes' spans merge into one whose cells "
+                        "are 0.001875 m, a factor of 2.66667 against the finest 2.5") !=
+             std::string::npos);
+  BOOST_TEST(three.find("does not divide") == std::string::npos);  // no box rounds alone
+  BOOST_TEST(merged(0.03).empty());
+}
+
 // Each box's cells along an axis are bounded (100000); two boxes whose spans merge along x at
 // factor 64 get 128000 cells together, refused at /grid/refine (each alone passes).
 BOOST_AUTO_TEST_CASE(merged_boxes_are_held_to_the_cells_per_axis_bound) {
