@@ -52,11 +52,10 @@ double fill_volume(const Scene& scene, std::size_t o) {
       return decltype(geometry)::modelled_volume(object.geometry);
     });
   const int axes = planar ? 2 : 3;
-  if (planar) lo(2) = hi(2) = 0.0;  // the seed points' section
-  if (rings) lo(1) = 0.0;           // the meridian half-plane, r = y
+  if (rings) lo(1) = 0.0;  // the meridian half-plane, r = y
   lo = lo.cwiseMax(g.lower);
   hi = hi.cwiseMin(g.upper);
-  if (planar) lo(2) = hi(2) = 0.0;
+  if (planar) lo(2) = hi(2) = 0.0;  // the seed points' section
   if (!((hi - lo).head(axes).array() > 0.0).all()) return 0.0;
   const Vec3 seed_spacing = g.smallest_cell().cwiseQuotient(Vec3(
       object.particles_per_cell[0], object.particles_per_cell[1], object.particles_per_cell[2]));
