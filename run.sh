@@ -38,8 +38,11 @@ cd "$(dirname "$0")"
 # libmuparser-dev compiles the expressions of scenes (mpm/scene/expression.hpp).
 PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-dev libcli11-dev
   libmuparser-dev python3-matplotlib python3-dev pybind11-dev)
-# clang-14 + libclang-rt-14-dev (libFuzzer, sanitizer runtimes) build the fuzz targets (test, fuzz).
+# clang-14 + libclang-rt-14-dev (libFuzzer, sanitizer runtimes) build the fuzz targets (test, fuzz)
+# and the ASan + UBSan build (test); libomp-14-dev is clang's OpenMP, which the ASan build's
+# solver and tests link.
 FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
+SANITIZER_PACKAGES=(clang-14 libclang-rt-14-dev libomp-14-dev)
 # clang-format-14 checks every C++ file against .clang-format (test `clang_format`); pytest runs
 # the Python module's tests (python_pytest); python3-venv makes the virtual environment that
 # `pip install .` installs into (python_pip_install; it brings pip's wheel for the venv).
@@ -86,7 +89,7 @@ case "${1:-}" in
     /usr/bin/python3 campaigns/study/study_plot.py out/recommended
     ;;
   test)
-    install_missing_packages "${FUZZ_PACKAGES[@]}" "${TEST_TOOL_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
+    install_missing_packages "${SANITIZER_PACKAGES[@]}" "${TEST_TOOL_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
     # The test job treats every compiler warning as an error (-Wall -Wextra -Wpedantic are on).
     build release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
     # JUnit XML of each run for CI servers, in its build directory (build/junit.xml, ...). Tests run

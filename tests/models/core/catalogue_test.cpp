@@ -22,13 +22,19 @@
 
 using namespace impact;
 
-namespace {
-
 // ---- Member count of an aggregate (the struct's data members), by brace initialisation.
+// Outside the anonymous namespace: a conversion declared there and never defined is an error to
+// clang (-Wundefined-internal), though it is named only in unevaluated contexts.
+namespace catalogue_test {
 struct AnyMember {
   template <class T>
   operator T&() const&& noexcept;  // never defined: used in unevaluated context only
 };
+}  // namespace catalogue_test
+
+namespace {
+
+using catalogue_test::AnyMember;
 template <class T, class... Members>
 constexpr std::size_t member_count() {
   if constexpr (requires { T{Members{}..., AnyMember{}}; })

@@ -102,9 +102,12 @@ BOOST_AUTO_TEST_CASE(values_match_the_papers_equations) {
 
 BOOST_AUTO_TEST_CASE(derivatives_match_central_differences) {
   const auto p = illustrative();
-  for (const auto& [ep, rate, T, ep_n, se] :
+  // Named variables, not a structured binding: the lambdas below capture them (clang 14, the
+  // sanitizer build's compiler, cannot capture a binding).
+  for (const std::array<double, 5>& point :
        {std::array{0.12, 1000.0, 400.0, 0.1, 100e6}, std::array{0.31, 5000.0, 600.0, 0.3, 250e6},
         std::array{0.05, 0.01, 294.0, 0.04, 30e6}}) {
+    const double ep = point[0], rate = point[1], T = point[2], ep_n = point[3], se = point[4];
     const FlowStress f = flow_stress(p, ep, rate, at(T, ep_n, se));
     const double d_ep = testing::central_difference(
         [&](double x) { return flow_stress(p, x, rate, at(T, ep_n, se)).value; }, ep);
@@ -306,8 +309,9 @@ BOOST_AUTO_TEST_CASE(stage_iv_hardening_matches_its_closed_form) {
   BOOST_TEST(theta_of(p, 0.0, rate, c) == theta0, boost::test_tools::tolerance(1e-14));
   BOOST_TEST(theta_of(p, m.sigma_es, rate, c) == theta_iv, boost::test_tools::tolerance(1e-6));
   // Its derivatives, with the structure stress mid-way to saturation.
-  for (const auto& [ep, r, temperature] :
+  for (const std::array<double, 3>& point :
        {std::array{0.12, 1000.0, 400.0}, std::array{0.31, 5e-3, 650.0}}) {
+    const double ep = point[0], r = point[1], temperature = point[2];  // captured: no binding
     const FlowConditions cc = at(temperature, ep - 0.02, 0.5 * m.sigma_es);
     const FlowStress f = flow_stress(p, ep, r, cc);
     const double d_rate =
