@@ -42,7 +42,7 @@ PACKAGES=(cmake g++ libeigen3-dev libgsl-dev libboost-test-dev nlohmann-json3-de
 # and the ASan + UBSan build (test); libomp-14-dev is clang's OpenMP, which the ASan build's
 # solver and tests link.
 FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
-SANITIZER_PACKAGES=(clang-14 libclang-rt-14-dev libomp-14-dev)
+SANITIZER_PACKAGES=("${FUZZ_PACKAGES[@]}" libomp-14-dev)
 # clang-format-14 checks every C++ file against .clang-format (test `clang_format`); pytest runs
 # the Python module's tests (python_pytest); python3-venv makes the virtual environment that
 # `pip install .` installs into (python_pip_install; it brings pip's wheel for the venv).

@@ -94,6 +94,23 @@ struct Differences {
   std::string first;  ///< the first: step, point and member
 };
 
+// One step of points 0..n-1 in as few batches as the lanes allow (one batch of 8 in GCC's builds,
+// batches of 2 in clang's: models/core/lane_math.hpp); add(k) adds point k, writing into next[k].
+template <class Add>
+std::vector<StepReport> step_in_batches(int n, double dt, std::vector<PointState>& next,
+                                        const Add& add) {
+  UpdateBatch batch;
+  std::vector<StepReport> reports(static_cast<std::size_t>(n));
+  for (int k0 = 0; k0 < n; k0 += UpdateBatch::capacity) {
+    const int k1 = std::min(n, k0 + UpdateBatch::capacity);
+    batch.clear();
+    for (int k = k0; k < k1; ++k) add(batch, k);
+    batch.run(dt);
+    for (int k = k0; k < k1; ++k) reports[k] = batch.finish(k - k0, dt, next[k]);
+  }
+  return reports;
+}
+
 // Advances every point `steps` steps both ways, in batches of `batch_size` (1..8) points, and
 // counts the points whose state or report differ in any bit. Every step's velocity gradient is
 // random: compression, tension and shear at 1e2..1e6 /s with spin.
@@ -204,17 +221,10 @@ BOOST_AUTO_TEST_CASE(a_lane_rotating_beyond_151_degrees_in_one_step_gets_the_one
     const Mat3 Q = Eigen::AngleAxisd(angle, Vec3(1, 2, 3).normalized()).toRotationMatrix();
     F1[k] = Q * (Mat3::Identity() + sym(L[k]) * dt);
   }
-  // One batch of 8 lanes (GCC's builds), or batches of 2 (clang's: models/core/lane_math.hpp).
-  UpdateBatch batch;
   std::vector<PointState> batched(8), alone(8);
-  std::vector<StepReport> reports(8);
-  for (int k0 = 0; k0 < 8; k0 += UpdateBatch::capacity) {
-    const int k1 = std::min(8, k0 + UpdateBatch::capacity);
-    batch.clear();
-    for (int k = k0; k < k1; ++k) batch.add(al.model, s0[k], L[k], F1[k], batched[k]);
-    batch.run(dt);
-    for (int k = k0; k < k1; ++k) reports[k] = batch.finish(k - k0, dt, batched[k]);
-  }
+  const std::vector<StepReport> reports = step_in_batches(
+      8, dt, batched,
+      [&](UpdateBatch& batch, int k) { batch.add(al.model, s0[k], L[k], F1[k], batched[k]); });
   for (int k = 0; k < 8; ++k) {
     const StepReport& r = reports[k];
     const StepReport r_alone = al.model.update(s0[k], L[k], F1[k], dt, alone[k]);
@@ -307,7 +317,6 @@ BOOST_AUTO_TEST_CASE(neo_hookean_points_in_a_batch_get_the_one_point_bits_and_th
   BOOST_TEST(differing.points == 0);
   BOOST_TEST(plastic > 0);  // the aluminium points yielded beside them
   // One batch step from a strained state, F1 = (I + L dt) F0 at 30 % strain: sigma(F1) exactly.
-  UpdateBatch batch;
   Mat3 F0 = Mat3::Identity(), L = Mat3::Zero();
   F0(0, 1) = 0.3;
   F0(2, 2) = 1.2;
@@ -316,18 +325,12 @@ BOOST_AUTO_TEST_CASE(neo_hookean_points_in_a_batch_get_the_one_point_bits_and_th
   const double dt = 1e-7;
   const Mat3 F1 = (Mat3::Identity() + L * dt) * F0;
   std::vector<PointState> s0(5), s1(5);
-  std::vector<StepReport> reports(5);
   for (int k = 0; k < 5; ++k) {
     s0[k] = models[k]->initial_state(294.0);
     s0[k].F = F0;
   }
-  for (int k0 = 0; k0 < 5; k0 += UpdateBatch::capacity) {  // one batch, or batches of 2 (clang)
-    const int k1 = std::min(5, k0 + UpdateBatch::capacity);
-    batch.clear();
-    for (int k = k0; k < k1; ++k) batch.add(*models[k], s0[k], L, F1, s1[k]);
-    batch.run(dt);
-    for (int k = k0; k < k1; ++k) reports[k] = batch.finish(k - k0, dt, s1[k]);
-  }
+  const std::vector<StepReport> reports = step_in_batches(
+      5, dt, s1, [&](UpdateBatch& batch, int k) { batch.add(*models[k], s0[k], L, F1, s1[k]); });
   for (int k = 0; k < 5; ++k) {
     const StepReport& r = reports[k];
     if (models[k] != &soft.model) continue;

@@ -349,7 +349,6 @@ BOOST_AUTO_TEST_CASE(graded_grids_book_as_on_one_rank) {
   plane["physics"]["contact"] = {{"type", "friction"}, {"normal", "logistic_regression"}};
   Json block = refined_twice({0.037, 0.033, 0.033}, {0.043, 0.039, 0.039}, 1.5);
   block["solver"] = {{"interpolation", "linear"}, {"scheme", "usl"}};
-  // The block to the end of its run: it crosses box boundaries (migrations) and the grading.
   struct Case {
     const char* name;
     Json patch;
@@ -359,6 +358,7 @@ BOOST_AUTO_TEST_CASE(graded_grids_book_as_on_one_rank) {
        std::vector<Case>{{"taylor_rod.json", rod, 60},
                          {"contact_blocks.json", blocks, 60},
                          {"contact_blocks.json", plane, 20},
+                         // To the end of its run: it crosses the boxes and the grading.
                          {"rigid_translation.json", block, 1L << 40}}) {
     const Scene scene = scene_from(std::string("verification/") + name, patch);
     BOOST_TEST_REQUIRE(scene.grid.graded());
