@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "models/core/lane_math.hpp"
@@ -24,13 +23,7 @@ double side(const PlanePoint& p, double z) {
   return p.second ? z : -z;
 }
 
-// L(theta) with its gradient and Hessian, in one pass over the points: one exponential and one
-// logarithm per point. The loss of a point is -ln sigma(s) = softplus(-s), softplus(x) = max(x, 0)
-// + ln(1 + exp(-|x|)), written with s = +-z of the point's own side (positive where the plane
-// puts it on its own body's side) so that neither 1 - sigma nor softplus(z) - z loses digits
-// where sigma saturates. The line search evaluates its trial points with this too: an accepted
-// trial's derivatives are the next Newton step's, and only a rejected one (rare) spends its
-// derivatives.
+// The loss, its gradient and Hessian at one theta (evaluate_blocks).
 struct Fit {
   double L = 0.0;
   Vec4 gradient = Vec4::Zero();
@@ -54,6 +47,13 @@ struct FitSums {
   double hessian[10] = {};
 };
 
+// L(theta) with its gradient and Hessian, in one pass over the points: one exponential and one
+// logarithm per point. The loss of a point is -ln sigma(s) = softplus(-s), softplus(x) = max(x, 0)
+// + ln(1 + exp(-|x|)), written with s = +-z of the point's own side (positive where the plane
+// puts it on its own body's side) so that neither 1 - sigma nor softplus(z) - z loses digits
+// where sigma saturates. The line search evaluates its trial points with this too: an accepted
+// trial's derivatives are the next Newton step's, and only a rejected one (rare) spends its
+// derivatives.
 IMPACT_LANE_CLONES void evaluate_blocks(const PointBlock* blocks, std::size_t count,
                                         const double* theta, FitSums& out) {
   using lane::Vec;
