@@ -1,4 +1,5 @@
-// mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] [order] [axisymmetric] [light]:
+// mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] [order] [axisymmetric] [light]
+//               [decay]:
 // what the explicit step costs on the recommended sphere-cylinder scene
 // (data/scenes/sphere_cylinder/recommended.json), measured in process over a fixed number of steps
 // after one warm-up step (no output writing):
@@ -19,6 +20,12 @@
 //             alternating, one thread, best of 3 by CPU time, with the phase shares and the cost
 //             ratio by wall and by CPU time (issue 40 asks the axisymmetric run to be at least 20x
 //             faster). Not in the default set: ask for it by name.
+//   decay     how the seeded order decays over a whole run (issue 57): the recommended scene at
+//             level 1.5 (--quick: 1), two copies stepped side by side on one thread; at ten
+//             points of the run the share of neighbouring particles in the arrays whose host cells
+//             are not neighbours, and the rate of 20 steps of the copy left in seed order against
+//             the copy sorted by host cell just before (what a periodic sort would buy there), with
+//             the sort's own time. By name only.
 //   light     the speed-of-light step (speed_of_light.hpp: uGIMP, USL, one field, a J2 return, no
 //             contact, ledger or checks) on about 30 k and 250 k particles, one thread, best of
 //             3: how far the full step is from the leanest one (issue 57). By name only.
@@ -35,11 +42,11 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "mpm/input/scene_reader.hpp"
+#include "mpm/particles/particle_order.hpp"
 #include "mpm/simulation/simulation.hpp"
 #include "speed_of_light.hpp"
 
@@ -72,26 +79,12 @@ double particle_bytes(const Particles& P) {
 
 enum class Order { seeded, by_cell, shuffled };
 
-// Permutes every per-particle array (particle i takes particle order[i]'s data); the Simulation
-// keeps no other per-particle data between steps (its stencils are recomputed every step).
-void permute(Particles& P, const std::vector<std::size_t>& order) {
-  const auto apply = [&](auto& v) {
-    if (v.empty()) return;
-    const auto old = v;
-    for (std::size_t i = 0; i < order.size(); ++i) v[i] = old[order[i]];
-  };
-  apply(P.x), apply(P.v), apply(P.mass), apply(P.volume0), apply(P.volume), apply(P.L);
-  apply(P.state), apply(P.wave_speed), apply(P.material), apply(P.object), apply(P.field);
-  apply(P.q), apply(P.fault), apply(P.removed);
-}
-
 void reorder(Simulation& sim, Order how) {
   Particles& P = sim.particles();
   std::vector<std::size_t> order(P.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   if (how == Order::shuffled) {
-    std::mt19937_64 gen(7);
-    std::shuffle(order.begin(), order.end(), gen);
+    order = shuffled_order(P.size(), 7);
   } else if (how == Order::by_cell) {
     const Grid& G = sim.grid();
     std::vector<long> key(P.size());
@@ -102,7 +95,7 @@ void reorder(Simulation& sim, Order how) {
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
   }
-  if (how != Order::seeded) permute(P, order);
+  if (how != Order::seeded) P.permute(order);
 }
 
 Measured measure(const Json& doc, const std::string& file, int threads, int steps,
@@ -370,6 +363,70 @@ void order(const Json& base, const std::string& file, bool quick, const std::str
   }
 }
 
+// The share of neighbouring particles in the arrays whose host cells are more than one cell apart
+// along some axis: 0 for a sort by cell (but for the jumps between cell columns), about 1 at
+// random.
+double disorder(Simulation& sim) {
+  const Particles& P = sim.particles();
+  const Grid& G = sim.grid();
+  std::size_t apart = 0;
+  Eigen::Vector3i last = Eigen::Vector3i::Zero();
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const Vec3 c = (P.x[p] - G.lower()).cwiseProduct(G.inverse_spacing());
+    const Eigen::Vector3i cell(int(std::floor(c(0))), int(std::floor(c(1))), int(std::floor(c(2))));
+    if (p > 0 && (cell - last).cwiseAbs().maxCoeff() > 1) ++apart;
+    last = cell;
+  }
+  return P.size() > 1 ? double(apart) / double(P.size() - 1) : 0.0;
+}
+
+// How the seeded order decays over a run, and what a sort by cell buys along it (the header).
+void decay(const Json& base, const std::string& file, bool quick, const std::string& dir) {
+  const double level = quick ? 1.0 : 1.5;
+  std::printf(
+      "\n== decay: recommended.json, GIMP/MUSL, level %g, 1 thread, windows of 20 steps "
+      "==\n",
+      level);
+  std::printf(
+      "   t [us]  step | apart: seeded  sorted | M p-steps/s: seeded  sorted  ratio | "
+      "sort [s] (steps)\n");
+  std::ofstream csv = open_csv(dir, "decay.csv",
+                               "time [s],step [-],particles [-],apart_seeded [-],"
+                               "particle_steps_per_second_seeded [1/s],"
+                               "particle_steps_per_second_sorted [1/s],sort_seconds [s]");
+  const Json doc = with_level(base, level);
+  const Scene scene = read_scene(doc, file);
+  Simulation seeded(scene, 1), sorted(scene, 1);
+  const int points = quick ? 3 : 10, window = 20;
+  for (int k = 0; k < points; ++k) {
+    const double until = scene.time.max_time * k / points;
+    while (seeded.time() < until && !seeded.finished()) {
+      seeded.step();
+      sorted.step();
+    }
+    if (seeded.finished()) break;
+    const double apart = disorder(seeded);
+    const double t0 = omp_get_wtime();
+    reorder(sorted, Order::by_cell);
+    const double sort_seconds = omp_get_wtime() - t0;
+    const auto rate = [&](Simulation& sim) {
+      const double start = omp_get_wtime();
+      int n = 0;
+      for (; n < window && !sim.finished(); ++n) sim.step();
+      return double(n) * double(sim.particles().size()) / (omp_get_wtime() - start);
+    };
+    const double r_seeded = rate(seeded), r_sorted = rate(sorted);
+    const double step_seconds = double(sorted.particles().size()) / r_sorted;
+    std::printf("%9.3f %5ld |       %6.4f  %6.4f |          %7.3f %7.3f %6.3f | %7.4f (%4.2f)\n",
+                until * 1e6, seeded.steps(), apart, disorder(sorted), r_seeded / 1e6,
+                r_sorted / 1e6, r_sorted / r_seeded, sort_seconds, sort_seconds / step_seconds);
+    std::fflush(stdout);
+    if (csv)
+      csv << until << ',' << seeded.steps() << ',' << seeded.particles().size() << ',' << apart
+          << ',' << r_seeded << ',' << r_sorted << ',' << sort_seconds << '\n';
+  }
+}
+
 // The same rod in axisymmetry and as the 3D quarter model (see the header).
 void axisymmetric(bool quick, const std::string& dir) {
   std::printf(
@@ -451,11 +508,11 @@ int main(int argc, char** argv) {
     } else if (a == "--out" && i + 1 < argc) {
       dir = argv[++i];
     } else if (a == "scaling" || a == "features" || a == "box" || a == "order" ||
-               a == "axisymmetric" || a == "light") {
+               a == "axisymmetric" || a == "light" || a == "decay") {
       sections.push_back(a);
     } else {
       std::cerr << "usage: mpm_benchmark [--quick] [--out DIR] [scaling] [features] [box] "
-                   "[order] [axisymmetric] [light]\n";
+                   "[order] [axisymmetric] [light] [decay]\n";
       return 1;
     }
   }
@@ -474,6 +531,7 @@ int main(int argc, char** argv) {
       if (s == "order") order(base, file, quick, dir);
       if (s == "axisymmetric") axisymmetric(quick, dir);
       if (s == "light") light(quick);
+      if (s == "decay") decay(base, file, quick, dir);
     }
   } catch (const std::exception& e) {
     std::cerr << "mpm_benchmark: " << e.what() << '\n';

@@ -14,6 +14,8 @@ namespace impact::mpm::scene_input {
 // The explicit step is stable up to about multiplier 1 (CFL); larger values are allowed so that a
 // user can test where it fails (docs/accuracy.md#stability-map), but never silently.
 constexpr double kMaxMultiplier = 1.5;
+// solver.shuffle_particles: a seed that a double and a JSON number hold exactly.
+constexpr double kLargestSeed = 1e15;
 
 void read_time(JsonReader& root, TimeSpec& t, std::vector<std::string>& warnings) {
   JsonReader r = root.child("time", "time stepping (the report's <Time> block)");
@@ -89,6 +91,15 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
     r.problems().add(r.key_path("ranks_per_axis"),
                      "expected three integers >= 1 ([px, py] on a 2D grid), [0, 0, 0] for the "
                      "automatic split ([0, 0] on a 2D grid), or \"least_loaded\"");
+  const double shuffle = r.number_or(
+      "shuffle_particles", 0.0, Range::closed(0.0, kLargestSeed),
+      "0: the particles stored in seed order; k >= 1: in a permutation drawn with seed k, for "
+      "measuring how round-off in the order of the sums moves the results [-]");
+  if (shuffle != std::floor(shuffle))
+    r.problems().add(r.key_path("shuffle_particles"),
+                     "expected a whole number (0: seed order; k >= 1: the shuffle's seed)");
+  else if (shuffle >= 0.0)  // NaN after a refused read
+    s.shuffle_particles = static_cast<std::uint64_t>(shuffle);
   r.reject_unknown_keys();
 }
 

@@ -41,8 +41,11 @@ ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial, const
     Candidate c{std::numeric_limits<double>::infinity(), 0, PointState{}};
     for (std::size_t p = 0; p < initial.size(); ++p) {
       if (initial.object[p] != spec.object) continue;
+      // Ties go to the lowest seed index, whatever the storage order (solver.shuffle_particles)
+      // or the rank count.
       const double d = (initial.x[p] - spec.position).squaredNorm();
-      if (d < c.distance) c = {d, initial.id.empty() ? p : initial.id[p], initial.state[p]};
+      const std::uint64_t id = seed_index(initial, p);
+      if (d < c.distance || (d == c.distance && id < c.id)) c = {d, id, initial.state[p]};
     }
     best.push_back(c);
   }

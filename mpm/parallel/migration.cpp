@@ -109,13 +109,7 @@ Particles gather_particles(const Particles& local, const Communicator& comm) {
   for (std::size_t p = 0; p < order.size(); ++p) order[p] = p;
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
-  const std::size_t m = all.size();
-  all.for_each_array([&](auto& a) {
-    if (a.size() != m) return;
-    auto sorted = a;
-    for (std::size_t p = 0; p < m; ++p) sorted[p] = a[order[p]];
-    a = std::move(sorted);
-  });
+  all.permute(order);
   all.id.clear();  // the index is the id again
   return all;
 }

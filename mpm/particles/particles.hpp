@@ -40,7 +40,8 @@ struct Particles {
   /// 0: in play. Empty unless grid.outflow = remove.
   std::vector<std::uint8_t> removed;
   /// The particle's seed index, the same on any number of ranks (mpm/parallel/migration.hpp: a
-  /// rank holds some particles, in any order); empty on one rank, where it is the array index.
+  /// rank holds some particles, in any order) and in a shuffled store (solver.shuffle_particles);
+  /// empty on one rank in seed order, where it is the array index.
   std::vector<std::uint64_t> id;
   /// Reference (seed) position X [m], what the body forces' expressions and the exact
   /// displacement read (scene/expression.hpp); empty unless the scene has either.
@@ -65,6 +66,9 @@ struct Particles {
   void reserve(std::size_t n);
   /// Keeps the particles p with keep[p] != 0, in order, in every array in use.
   void keep_only(const std::vector<char>& keep);
+  /// Reorders every array in use: particle i takes particle order[i]'s data (order a permutation
+  /// of 0 .. size() - 1).
+  void permute(const std::vector<std::size_t>& order);
   /// Storage per particle [bytes] of the arrays that are not optional (for `mpm check` and the
   /// benchmark; mpm/run/memory.cpp adds the optional ones a scene uses).
   static std::size_t bytes_per_particle();

@@ -25,6 +25,15 @@ void Particles::keep_only(const std::vector<char>& keep) {
   });
 }
 
+void Particles::permute(const std::vector<std::size_t>& order) {
+  const std::size_t n = size();
+  for_each_array([&](auto& a) {
+    if (a.size() != n) return;  // an optional array not in use
+    auto old = a;
+    for (std::size_t p = 0; p < n; ++p) a[p] = old[order[p]];
+  });
+}
+
 std::size_t Particles::bytes_per_particle() {
   std::size_t bytes = 0;
   for_each_particle_array([&](const auto& a) {

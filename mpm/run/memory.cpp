@@ -102,9 +102,10 @@ MemoryEstimate estimate_memory(const Scene& scene, std::optional<std::size_t> pa
   if (scene.physics.artificial_viscosity.enabled) per_particle += sizeof(double);
   if (scene.physics.on_numerical_fault == NumericalFaultAction::fail_particle) per_particle += 1;
   if (scene.grid.outflow == Outflow::remove) per_particle += 1;
-  if (scene.needs_reference_positions()) per_particle += sizeof(Vec3);  // X_p
-  if (scene.grid.graded()) per_particle += sizeof(Vec3);                // half_width_p
-  if (scene.has_body_force()) per_particle += sizeof(Vec3);             // b_p (step/body_force.hpp)
+  if (scene.needs_reference_positions()) per_particle += sizeof(Vec3);             // X_p
+  if (scene.grid.graded()) per_particle += sizeof(Vec3);                           // half_width_p
+  if (scene.solver.shuffle_particles != 0) per_particle += sizeof(std::uint64_t);  // id_p
+  if (scene.has_body_force()) per_particle += sizeof(Vec3);  // b_p (step/body_force.hpp)
   per_particle += stencil_bytes(scene.solver.interpolation);
   per_particle += 2 * sizeof(int);  // scatter order: index and tile (mpm/step/scatter_order.hpp)
   e.particle_bytes = e.particles * per_particle;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -197,6 +198,12 @@ struct SolverSpec {
   /// (BoxDecomposition::ranks_per_axis), or the least loaded boxes (least_loaded_split, JSON
   /// "least_loaded": refined boundaries, also when re-balancing).
   SplitRule split = SplitRule::fewest_cut_faces;
+  /// 0: the particles are stored in seed order (a cell sort: the fastest transfers); k in [1,
+  /// 1e15]: in the permutation shuffled_order draws with seed k (mpm/particles/particle_order.hpp),
+  /// each rank's own particles on several ranks. The physics is the same; the sums over particles
+  /// run in another order, so an ensemble of seeds measures how far round-off moves a scene's
+  /// results (campaigns/benchmark/result_bounds.py --ensemble).
+  std::uint64_t shuffle_particles = 0;
 };
 
 /// How the velocity fields of different materials interact at shared nodes (Bardenhagen et al.

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
+#include "mpm/particles/particle_order.hpp"
 #include "mpm/simulation/advance.hpp"
 #include "mpm/simulation/diagnosis.hpp"
 #include "mpm/threads/threads.hpp"
@@ -44,6 +46,15 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
               Vec3(scene.grid.geometry_facts().momentum_components.data()),
               ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
   census_ = {};  // needed for seeding only
+  if (const std::uint64_t seed = scene_.solver.shuffle_particles) {
+    // Another storage order (scene.hpp SolverSpec): the id keeps each particle's seed index,
+    // which the outputs name particles by.
+    if (particles_.id.empty()) {
+      particles_.id.resize(particles_.size());
+      std::iota(particles_.id.begin(), particles_.id.end(), std::uint64_t(0));
+    }
+    particles_.permute(shuffled_order(particles_.size(), seed));
+  }
   if (ranks_.several()) {
     grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
     halo_.emplace(ranks_.communicator(), boxes_);
@@ -134,7 +145,7 @@ void Simulation::resize_particles(std::size_t n) {
   const bool q = stress_settings_.viscosity != nullptr;
   const bool fault = stress_settings_.fail_particle;
   const bool removed = scene_.grid.outflow == Outflow::remove;
-  const bool id = ranks_.several();
+  const bool id = ranks_.several() || scene_.solver.shuffle_particles != 0;
   const bool reference = scene_.needs_reference_positions();
   P.for_each_array([&](auto& a) { a.resize(n); });
   if (!q) P.q.clear();

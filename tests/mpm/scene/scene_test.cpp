@@ -147,6 +147,22 @@ BOOST_AUTO_TEST_CASE(ranks_per_axis_is_all_positive_or_all_zero_or_a_rule) {
              std::string::npos);
 }
 
+// solver.shuffle_particles: 0 (seed order, the default) or a whole seed k in [1, 1e15].
+BOOST_AUTO_TEST_CASE(shuffle_particles_is_zero_or_a_whole_seed) {
+  Json doc = base();
+  BOOST_TEST(read_scene(doc, "test.json").solver.shuffle_particles == 0u);
+  doc["solver"]["shuffle_particles"] = 12;
+  BOOST_TEST(read_scene(doc, "test.json").solver.shuffle_particles == 12u);
+  doc["solver"]["shuffle_particles"] = 2.5;
+  BOOST_TEST(scene_error_of(doc).find("/solver/shuffle_particles: expected a whole number (0: "
+                                      "seed order; k >= 1: the shuffle's seed)") !=
+             std::string::npos);
+  doc["solver"]["shuffle_particles"] = -1;
+  BOOST_TEST(scene_error_of(doc).find("/solver/shuffle_particles") != std::string::npos);
+  doc["solver"]["shuffle_particles"] = 1e16;
+  BOOST_TEST(scene_error_of(doc).find("/solver/shuffle_particles") != std::string::npos);
+}
+
 // Multipliers in (1, 1.5] are admissible (to test where the CFL limit fails) but warned about;
 // time.max_energy_growth defaults to 1 (+100 %) and must be positive.
 BOOST_AUTO_TEST_CASE(a_multiplier_above_one_is_read_with_a_warning) {
