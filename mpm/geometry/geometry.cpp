@@ -84,12 +84,10 @@ double volume(const Geometry& g) {
 std::vector<double> union_overlap_shares(const Union& u, bool plane) {
   std::vector<double> shares(u.parts.size(), 0.0);
   for (std::size_t k = 1; k < u.parts.size(); ++k) {
-    const auto [lo, hi] = bounds(u.parts[k]);
+    const auto box = bounds(u.parts[k]);
+    const auto& [lo, hi] = box;
     bool meets = false;  // an earlier part's bounding box meets this one's
-    for (std::size_t j = 0; j < k && !meets; ++j) {
-      const auto [a, b] = bounds(u.parts[j]);
-      meets = (a.array() <= hi.array()).all() && (lo.array() <= b.array()).all();
-    }
+    for (std::size_t j = 0; j < k && !meets; ++j) meets = boxes_meet(bounds(u.parts[j]), box);
     if (!meets) continue;
     std::size_t in_part = 0, in_earlier = 0;
     const auto count = [&](const Vec3& x) {

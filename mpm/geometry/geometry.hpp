@@ -2,6 +2,7 @@
 // volume that `mpm check` compares the seeded particle volume with. Lengths in metres.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -47,15 +48,26 @@ bool inside(const Geometry& g, const Vec3& x);
 double volume(const Geometry& g);
 /// Axis-aligned bounding box (lower, upper).
 std::pair<Vec3, Vec3> bounds(const Geometry& g);
+/// Whether two such boxes meet (touching counts).
+inline bool boxes_meet(const std::pair<Vec3, Vec3>& a, const std::pair<Vec3, Vec3>& b) {
+  return (a.first.array() <= b.second.array()).all() && (b.first.array() <= a.second.array()).all();
+}
 
-/// f(x) at the cell centres of an n^3 lattice on the box [lo, hi]: the points the checks that
-/// measure a body's shares sample it at (scene/grid_coverage.cpp, scene/object_overlap.cpp).
+/// f(x) at the cell centres of an n[0] x n[1] x n[2] lattice on the box [lo, hi] (a flat box,
+/// lo(2) = hi(2), with n[2] = 1: its plane): the points the checks that measure a body's shares
+/// sample it at (scene/grid_coverage.cpp, scene/object_overlap.cpp, run/seeding_check.cpp).
+template <class F>
+void for_each_lattice_point(const Vec3& lo, const Vec3& hi, const std::array<long, 3>& n, F&& f) {
+  const Vec3 step = (hi - lo).cwiseQuotient(Vec3(double(n[0]), double(n[1]), double(n[2])));
+  for (long i = 0; i < n[0]; ++i)
+    for (long j = 0; j < n[1]; ++j)
+      for (long k = 0; k < n[2]; ++k)
+        f(Vec3(lo + step.cwiseProduct(Vec3(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5))));
+}
+/// The same on an n^3 lattice.
 template <class F>
 void for_each_lattice_point(const Vec3& lo, const Vec3& hi, int n, F&& f) {
-  const Vec3 step = (hi - lo) / n;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) f(Vec3(lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5))));
+  for_each_lattice_point(lo, hi, std::array<long, 3>{n, n, n}, f);
 }
 
 /// Per part of a union, the share of it that lies in an earlier part: sampled at the cell

@@ -394,11 +394,18 @@ void warn_of_grading(JsonReader& r, GridSpec& g, bool listed) {
   // A list's boxes whose spans merge get round(base cells x finest factor) cells together; each
   // box alone was checked for rounding (read_refined_box), the merged span was not (the trial: 2.5
   // on two boxes merging into 3 base cells gave 8 cells, a factor of 2.67, without a word).
+  // Axes that came out alike are named together, as a box's own rounding is.
   if (listed) {
     double finest = 1.0;
     for (const GridRefinement& box : g.refine) finest = std::max(finest, box.factor);
+    struct Merged {
+      std::string axes;
+      double h0, h;  // the base cell and the merged span's cell [m]
+    };
+    std::vector<Merged> merged;
     for (int d = 0; d < g.dimensions(); ++d) {
-      const double got = h0(d) / g.axes[std::size_t(d)].smallest();
+      const double h = g.axes[std::size_t(d)].smallest();
+      const double got = h0(d) / h;
       if (std::abs(got / finest - 1.0) <= 0.05) continue;
       bool warned = false;  // a box of the finest factor rounds so alone: said at its key already
       for (const GridRefinement& box : g.refine) {
@@ -408,11 +415,20 @@ void warn_of_grading(JsonReader& r, GridSpec& g, bool listed) {
                             std::abs(double(c->refined) / double(c->base) / finest - 1.0) > 0.05);
       }
       if (warned) continue;
+      const auto same = std::find_if(merged.begin(), merged.end(),
+                                     [&](const Merged& m) { return m.h0 == h0(d) && m.h == h; });
+      if (same != merged.end()) {
+        same->axes += ", " + std::to_string(d);
+      } else {
+        merged.push_back({std::to_string(d), h0(d), h});
+      }
+    }
+    for (const Merged& a : merged) {
       std::ostringstream m;
-      m << "along axis " << d << " the boxes' spans merge into one whose cells are "
-        << g.axes[std::size_t(d)].smallest() << " m, a factor of " << got << " against the finest "
-        << finest << ": the merged span's base cells times " << finest
-        << " are rounded to whole cells; choose factors that make them whole";
+      m << (a.axes.size() > 1 ? "along axes " : "along axis ") << a.axes
+        << " the boxes' spans merge into one whose cells are " << a.h << " m, a factor of "
+        << a.h0 / a.h << " against the finest " << finest << ": the merged span's base cells times "
+        << finest << " are rounded to whole cells; choose factors that make them whole";
       r.problems().warn(refine_key("factor"), m.str());
     }
   }
@@ -460,10 +476,7 @@ void warn_of_grading(JsonReader& r, GridSpec& g, bool listed) {
     r.problems().warn(refine_key("factor"),
                       "no axis gets cells finer than grid.cells' with this factor: the grid is "
                       "the uniform one of grid.cells");
-    g.refine.clear();
-    g.axes = {};
-    g.cells = g.base_cells;
-    g.grade();
+    g.ungrade();
   }
 }
 
@@ -512,12 +525,7 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
                            " cells: expected at most 100000 (lower a factor or narrow the boxes)");
       too_many = true;
     }
-  if (too_many) {  // the base grid from here on, as after any other problem
-    g.refine.clear();
-    g.axes = {};
-    g.cells = g.base_cells;
-    g.grade();
-  }
+  if (too_many) g.ungrade();  // the base grid from here on, as after any other problem
   if (g.graded()) warn_of_grading(r, g, n.contains("refine") && n["refine"].is_array());
   // The grid stores (cells + 3) nodes per axis (ghost layers) and indexes them with int; a 2D
   // grid one node plane along z.

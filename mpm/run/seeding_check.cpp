@@ -14,10 +14,6 @@ namespace impact::mpm {
 
 namespace {
 
-bool boxes_meet(const Vec3& a_lo, const Vec3& a_hi, const Vec3& b_lo, const Vec3& b_hi) {
-  return (a_lo.array() <= b_hi.array()).all() && (b_lo.array() <= a_hi.array()).all();
-}
-
 // The volume object `o`'s particles should fill, in their own measure: the part of the body inside
 // the grid and outside every earlier object (a point there is seeded once, by the earlier one).
 // Exact (the modelled volume) when the body lies wholly inside the grid and no earlier body's
@@ -34,10 +30,8 @@ double fill_volume(const Scene& scene, std::size_t o) {
   const bool planar = g.planar(), rings = g.geometry_facts().rings;
   auto [lo, hi] = bounds(object.geometry);
   std::vector<std::size_t> earlier;
-  for (std::size_t e = 0; e < o; ++e) {
-    const auto [a, b] = bounds(scene.objects[e].geometry);
-    if (boxes_meet(lo, hi, a, b)) earlier.push_back(e);
-  }
+  for (std::size_t e = 0; e < o; ++e)
+    if (boxes_meet(bounds(scene.objects[e].geometry), {lo, hi})) earlier.push_back(e);
   // The grid's region in the body's coordinates: rings reach -r_max..r_max in y and z.
   Vec3 grid_lo = g.lower, grid_hi = g.upper;
   if (planar) {
@@ -71,20 +65,14 @@ double fill_volume(const Scene& scene, std::size_t o) {
     for (int d = 0; d < axes; ++d)
       n[std::size_t(d)] =
           std::max(1L, static_cast<long>(n[std::size_t(d)] * std::pow(cap / total, 1.0 / axes)));
-  Vec3 step = Vec3::Ones();
-  for (int d = 0; d < axes; ++d) step(d) = (hi(d) - lo(d)) / double(n[std::size_t(d)]);
   double sum = 0.0;
-  for (long i = 0; i < n[0]; ++i)
-    for (long j = 0; j < n[1]; ++j)
-      for (long k = 0; k < n[2]; ++k) {
-        Vec3 x = lo + step.cwiseProduct(Vec3(i + 0.5, j + 0.5, k + 0.5));
-        if (planar) x(2) = 0.0;
-        if (!inside(object.geometry, x)) continue;
-        if (std::any_of(earlier.begin(), earlier.end(),
-                        [&](std::size_t e) { return inside(scene.objects[e].geometry, x); }))
-          continue;
-        sum += rings ? 2.0 * std::numbers::pi * x(1) : 1.0;
-      }
+  for_each_lattice_point(lo, hi, n, [&](const Vec3& x) {
+    if (!inside(object.geometry, x)) return;
+    for (const std::size_t e : earlier)
+      if (inside(scene.objects[e].geometry, x)) return;
+    sum += rings ? 2.0 * std::numbers::pi * x(1) : 1.0;
+  });
+  const Vec3 step = (hi - lo).cwiseQuotient(Vec3(double(n[0]), double(n[1]), double(n[2])));
   return sum * step.head(axes).prod();
 }
 

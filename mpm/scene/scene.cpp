@@ -17,6 +17,12 @@ void GridSpec::grade() {
   }
 }
 
+void GridSpec::ungrade() {
+  refine.clear();
+  axes = {};
+  cells = base_cells;
+}
+
 std::string GridSpec::refinement_advice() const {
   if (!graded()) return "";
   if (refine.size() == 1) return ", lower grid.refine.factor or narrow the refined box,";

@@ -101,6 +101,9 @@ struct GridSpec {
   /// Grades the axes by `refine` (the reader, once cells are read): base_cells keeps grid.cells,
   /// cells becomes the graded counts. A 2D grid's z (one cell of 1 m) is not graded.
   void grade();
+  /// The uniform grid of grid.cells again (refine dropped): what the reader falls back to after
+  /// a problem with the refinement.
+  void ungrade();
   /// What a refusal of the grid's size advises about its refinement, as a clause after "coarsen
   /// grid.cells": nothing on a uniform grid; the box's factor and extent; in a list, the box
   /// whose removal takes away the most cells, by its key path.
