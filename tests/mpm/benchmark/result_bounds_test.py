@@ -10,7 +10,9 @@ scatter |REF_half - REF| of a time-step halving, else fails; a momentum passes w
 momentum closure momentum - p0 - boundary_impulse (+ outflow, - external) against 1e-12 of |p0|,
 or, where p0 is round-off, of one body's sqrt(2 m KE0) (head-on) or the largest |p| (from rest); energy_error's end and max |.| within 1e-4 of REF where judged,
 reported elsewhere. summary.json is read recursively without timing, memory, thread keys and
-the energy error; a missing observable or a different status fails. A run directory is reused
+the energy error; a missing observable or a different status fails. With an ensemble of REF's
+particle orders, an observable or the energy error also passes within the members' range widened
+by three of its widths on each side, and a status a member had. A run directory is reused
 when its stamp matches (scene and binary; --reuse-ref: the REF runs' scene alone).
 """
 import json
@@ -158,6 +160,48 @@ def main():
     rows = rb.books(ref, far, scale, False)
     check(all(r["ok"] for r in rows[1:]) and rows[1]["criterion"] == "reported",
           f"energy reported, not judged, outside Table 2 and recommended: {rows}")
+
+    # --- the ensemble of particle orders (issue 57): within the members' range widened by three
+    # of its widths on each side; REF is a member.
+    check(rb.ENSEMBLE_WIDTHS == 3.0, "three widths (docs/performance.md)")
+    members = [10.0, 10.4, 9.8, 10.1, 10.2]                      # range [9.8, 10.4], width 0.6
+    e = rb.judge("failed_particles", 10.0, 12.1, members=members)
+    check(e["ok"] and e["criterion"] == "ensemble" and abs(e["spread"] - 0.06) < 1e-12,
+          f"within [8.0, 12.2]: passes by the ensemble: {e}")
+    e = rb.judge("failed_particles", 10.0, 7.75, members=[10.0, 10.5, 9.75, 10.25, 10.0])
+    check(e["ok"] and e["criterion"] == "ensemble", f"the widened range's edge passes: {e}")
+    e = rb.judge("failed_particles", 10.0, 12.25, members=members)
+    check(not e["ok"], f"beyond the widened range fails: {e}")
+    e = rb.judge("failed_particles", 10.0, 10.0 + 5e-5, members=[10.0] * 5)
+    check(not e["ok"], f"an ensemble without spread admits nothing beyond 1e-6: {e}")
+    e = rb.judge("failed_particles", 10.0, 10.15, members=[10.0, 10.1, float("nan"), 10.2, 10.0])
+    check(not e["ok"], f"a member without a finite value admits nothing: {e}")
+    e = rb.judge("status", "completed", "failed", members=["completed", "failed", "completed"])
+    check(e["ok"] and e["criterion"] == "ensemble", f"a status a member had: {e}")
+    e = rb.judge("status", "completed", "failed", members=["completed"] * 5)
+    check(not e["ok"], f"a status no member had: {e}")
+    rows = {r["observable"]: r for r in rb.compare_observables(
+        {"x": 1.0, "y": 2.0}, {"x": 1.5, "y": 2.5},
+        ensemble=[{"x": 1.2, "y": 2.0}, {"x": 0.9, "y": 2.0}, {"x": 1.1}, {"x": 1.0}])}
+    check(rows["x"]["ok"] and rows["x"]["criterion"] == "ensemble",
+          f"x within [0.0, 2.1]: {rows['x']}")
+    check(not rows["y"]["ok"], f"y: a member lacks it, judged without the ensemble: {rows['y']}")
+    # The energy error: within 1e-4 of REF, or within the ensemble's widened range.
+    others = [history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, 2e-3, 1e-3 + d])
+              for d in (1e-4, -0.5e-4, 0.5e-4, 0.0)]       # end in [0.95e-3, 1.1e-3], w 1.5e-4
+    rows = {r["observable"]: r for r in rb.books(ref, far, scale, True, others)}
+    check(rows["books/energy_error_end [-]"]["ok"] and
+          rows["books/energy_error_end [-]"]["criterion"] == "ensemble",
+          f"end 2e-4 off, within the ensemble: {rows}")
+    beyond = history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, 2e-3, 1e-3 + 6e-4])
+    rows = {r["observable"]: r for r in rb.books(ref, beyond, scale, True, others)}
+    check(not rows["books/energy_error_end [-]"]["ok"],
+          f"end 6e-4 off, beyond [0.5e-3, 1.55e-3]: fails: {rows}")
+    doc = rb.extending_scene("/a/case01.json", "table2", shuffle=3)
+    check(doc["solver"] == {"shuffle_particles": 3} and doc["output"] == {"snapshots": False},
+          f"a member's scene: {doc}")
+    check("solver" not in rb.extending_scene("/a/case01.json", "table2"),
+          "the seeded REF's scene sets no order")
 
     # Gauges: max, min and last of each gauge column.
     g = rb.gauge_observables(history([p0] * 3, [0.0] * 3, [0.0] * 3, gauge=[0.0, -3.0, -1.0]))
