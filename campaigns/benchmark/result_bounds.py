@@ -41,7 +41,7 @@ scatter of one time-step halving, where that is smaller: say which)"):
                 REF was also run at half its time.multiplier (--halving SETS) and |NEW - REF| <=
                 |REF_half - REF|; a momentum or impulse within 1e-12 |p0| of REF passes by
                 `round-off` (the momentum bound: a component that is zero up to round-off).
-                A string (the status) must be equal.
+                A string (the status) must be equal, or with --ensemble one a member had.
 The ensemble (issue 57: "a change of summation order is allowed where its results stay within
 the method's own round-off sensitivity"): with --ensemble N (N >= 5), REF also runs the scenes of
 --ensemble-set (default table2: erosion and failure, whose answer round-off can change) N - 1
@@ -62,7 +62,7 @@ Writes OUT_DIR/bounds.md (a table per scene: observable, REF, NEW, relative diff
 scatter, criterion, pass) and OUT_DIR/bounds.csv, prints one verdict line per scene and exits 1
 if any bound fails (2 if a run could not be made).
 
-Resumable: the runs go to OUT_DIR/runs/<scene>/{ref,new,ref_half}; a run directory whose
+Resumable: the runs go to OUT_DIR/runs/<scene>/{ref,new,ref_half,ref_order1..}; a run directory whose
 summary.json exists and whose stamp (bounds_stamp.json: the extending scene and the binary's
 SHA-256) matches is not run again. --reuse-ref relaxes the stamp of the REF runs (ref, ref_half)
 to the scene alone, so that the REF results of one call serve later calls with other NEW binaries
@@ -179,6 +179,8 @@ def energy_errors(cols):
     e = cols.get("energy_error [-]", [])
     if not e:
         return float("nan"), float("nan")
+    if any(math.isnan(v) for v in e):  # max() would skip a NaN or not, by where it lies
+        return e[-1], float("nan")
     return e[-1], max(abs(v) for v in e)
 
 
@@ -218,8 +220,9 @@ def within_ensemble(new, members):
 
 
 def ensemble_width(ref, members):
-    """The members' relative width (max - min) / |REF|; None without members."""
-    if not members or any(isinstance(m, str) for m in members):
+    """The members' relative width (max - min) / |REF|; None without members or with a member
+    that has no finite value."""
+    if not members or any(isinstance(m, str) or not math.isfinite(m) for m in members):
         return None
     return relative(ref, ref + (max(members) - min(members)))
 
@@ -236,8 +239,11 @@ def judge(name, ref, new, half=None, p0=None, bound=OBSERVABLE_BOUND, members=No
         row["ok"] = ref == new or (members is not None and new in members)
         row["criterion"] = "equal" if ref == new else ("ensemble" if row["ok"] else "")
         return row
+    if math.isnan(new) and math.isnan(ref):  # NaN in both (a gauge with no member left): same
+        row["rel"], row["criterion"], row["ok"] = 0.0, "equal", True
+        return row
     diff = abs(new - ref) if math.isfinite(new) and math.isfinite(ref) else math.inf
-    if new == ref or (math.isnan(new) and math.isnan(ref)):
+    if new == ref:
         diff = 0.0
     row["rel"] = relative(ref, new) if diff > 0.0 else 0.0
     scatter = None  # |REF_half - REF|
@@ -503,7 +509,7 @@ def write_reports(out, results, args):
         f.write("Criteria: books (momentum closure <= 1e-12 of the scale, energy_error NEW - REF "
                 "<= 1e-4 on Table 2 and recommended); observables |NEW - REF| <= 1e-6 |REF| "
                 "(`1e-6`), else <= |REF_half - REF| (`halving`); momenta within 1e-12 |p0| "
-                "(`round-off`); with --ensemble, within the members' range widened by its width "
+                "(`round-off`); with --ensemble, within the members' range widened by three of its widths "
                 "(`ensemble`; spread: the width, relative for observables, absolute for the "
                 "energy error). `min bound`: within the smaller of 1e-6 and the halving scatter "
                 "(needs --halving).\n\n")
@@ -554,8 +560,9 @@ def main():
     if args.ensemble != 0 and args.ensemble < MIN_ENSEMBLE:
         sys.exit(f"result_bounds.py: --ensemble: expected 0 (none) or at least {MIN_ENSEMBLE} "
                  f"members, got {args.ensemble}")
-    if args.new_shuffle < 0:
-        sys.exit("result_bounds.py: --new-shuffle: expected a seed >= 0 (0: seed order)")
+    if args.new_shuffle < 0 or 0 < args.new_shuffle < args.ensemble:
+        sys.exit(f"result_bounds.py: --new-shuffle: expected 0 (seed order) or a seed that is no "
+                 f"member's (>= {max(1, args.ensemble)}), got {args.new_shuffle}")
     sets = [s for s in args.set.split(",") if s]
     for s in sets:
         if s not in SETS:
@@ -638,8 +645,7 @@ def main():
         bodies = [(o.get("mass [kg]", 0.0), o.get("kinetic_energy [J]", 0.0))
                   for o in ref_summary.get("objects", {}).values()]
         scale, how = momentum_scale(ref_cols, bodies)
-        rows = books(ref_cols, new_cols, scale, kind in ENERGY_SETS or bool(members),
-                     [m[1] for m in members])
+        rows = books(ref_cols, new_cols, scale, kind in ENERGY_SETS, [m[1] for m in members])
         rows += compare_observables(ref_obs, new_obs, half_obs, scale, [m[2] for m in members])
         line = verdict(name, rows, how)
         any_failed |= any(not r["ok"] for r in rows)

@@ -95,11 +95,14 @@ void read_solver(JsonReader& root, const Json& doc, SolverSpec& s) {
       "shuffle_particles", 0.0, Range::closed(0.0, kLargestSeed),
       "0: the particles stored in seed order; k >= 1: in a permutation drawn with seed k, for "
       "measuring how round-off in the order of the sums moves the results [-]");
-  if (shuffle != std::floor(shuffle))
-    r.problems().add(r.key_path("shuffle_particles"),
-                     "expected a whole number (0: seed order; k >= 1: the shuffle's seed)");
-  else if (shuffle >= 0.0)  // NaN after a refused read
-    s.shuffle_particles = static_cast<std::uint64_t>(shuffle);
+  // A refused read (not a number, out of range) has its problem already.
+  if (shuffle >= 0.0 && shuffle <= kLargestSeed) {
+    if (shuffle != std::floor(shuffle))
+      r.problems().add(r.key_path("shuffle_particles"),
+                       "expected a whole number (0: seed order; k >= 1: the shuffle's seed)");
+    else
+      s.shuffle_particles = static_cast<std::uint64_t>(shuffle);
+  }
   r.reject_unknown_keys();
 }
 

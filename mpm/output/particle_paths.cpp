@@ -69,7 +69,7 @@ ParticlePaths::ParticlePaths(const Scene& scene, const Particles& initial, const
 }
 
 std::size_t ParticlePaths::find(Track& t, const Particles& P) const {
-  if (P.id.empty()) return t.id < P.size() ? t.id : P.size();  // one rank: the seed index
+  if (P.id.empty()) return t.id < P.size() ? t.id : P.size();  // seed order: the seed index
   if (t.held < P.size() && P.id[t.held] == t.id) return t.held;
   for (std::size_t p = 0; p < P.size(); ++p) {
     if (P.id[p] == t.id) return t.held = p;

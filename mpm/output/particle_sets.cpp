@@ -29,7 +29,7 @@ std::size_t ParticleSets::add(std::vector<std::uint64_t> ids) {
 
 std::vector<std::vector<ParticleSets::Member>> ParticleSets::find(const Particles& P) const {
   std::vector<std::vector<Member>> found(sets_.size());
-  if (P.id.empty()) {  // one rank: the seed index is the array index
+  if (P.id.empty()) {  // one rank in seed order: the seed index is the array index
     for (std::size_t s = 0; s < sets_.size(); ++s) {
       found[s].reserve(sets_[s].size());
       for (std::size_t i = 0; i < sets_[s].size(); ++i)

@@ -1,6 +1,7 @@
 // Fixed sets of particles named by seed index (a gauge's members, a crater's face layer), found
-// among the particles a rank holds: on one rank the seed index is the array index; on several,
-// particles migrate and each rank finds its members by Particles::id once per output row, with
+// among the particles a rank holds: on one rank in seed order the seed index is the array index;
+// on several (and in a shuffled store, solver.shuffle_particles) each rank finds its members by
+// Particles::id once per output row, with
 // one binary search per particle it holds into the sets' union (small: a few layers of cells).
 #pragma once
 
@@ -25,7 +26,7 @@ class ParticleSets {
   std::size_t add(std::vector<std::uint64_t> ids);
   /// The seed indices of set s, ascending.
   const std::vector<std::uint64_t>& ids(std::size_t s) const { return sets_[s]; }
-  /// Per set, the members P holds, in P's order (on one rank: ascending seed index).
+  /// Per set, the members P holds, in P's order (in seed order: ascending seed index).
   std::vector<std::vector<Member>> find(const Particles& P) const;
 
  private:

@@ -111,7 +111,8 @@ inline constexpr auto kParticleArrays = std::make_tuple(
 static_assert(aggregate_arity<Particles>() == std::tuple_size_v<decltype(kParticleArrays)>,
               "a Particles array is missing from kParticleArrays");
 
-/// The seed index of particle p: Particles::id on several ranks, the array index on one.
+/// The seed index of particle p: Particles::id where it is kept (several ranks, a shuffled store),
+/// else the array index (one rank in seed order).
 inline std::uint64_t seed_index(const Particles& P, std::size_t p) {
   return P.id.empty() ? p : P.id[p];
 }

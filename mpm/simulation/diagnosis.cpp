@@ -31,9 +31,10 @@ std::optional<Failure> energy_growth(const Ledger& ledger, const Particles& P, c
   if (!(reference > 0.0) || !(excess > t.max_energy_growth * reference)) return std::nullopt;
   std::size_t fastest = 0;
   double speed2 = -1.0;
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    if (P.v[p].squaredNorm() > speed2) {
-      speed2 = P.v[p].squaredNorm();
+  for (std::size_t p = 0; p < P.size(); ++p) {  // ties: the lowest seed index
+    const double s2 = P.v[p].squaredNorm();
+    if (s2 > speed2 || (s2 == speed2 && seed_index(P, p) < seed_index(P, fastest))) {
+      speed2 = s2;
       fastest = p;
     }
   }
@@ -101,9 +102,10 @@ double Simulation::checked_dt() const {
     // The step collapses when one particle's signal speed c + |v| runs away: name it.
     std::size_t fastest = 0;
     double signal = -1.0;
-    for (std::size_t p = 0; p < particles_.size(); ++p) {
+    for (std::size_t p = 0; p < particles_.size(); ++p) {  // ties: the lowest seed index
       const double c = particles_.wave_speed[p] + particles_.v[p].norm();
-      if (c > signal || std::isnan(c)) {
+      if (c > signal || std::isnan(c) ||
+          (c == signal && seed_index(particles_, p) < seed_index(particles_, fastest))) {
         signal = c;
         fastest = p;
         if (std::isnan(c)) break;
@@ -158,17 +160,18 @@ std::optional<std::string> Simulation::particle_outside_or_not_finite() const {
 #pragma omp parallel for schedule(static) reduction(|| : any) num_threads(grid_.threads())
   for (std::ptrdiff_t p = 0; p < n; ++p) any = any || bad(p);
   if (!any) return std::nullopt;
+  std::optional<Failure> first;  // the lowest seed index (step/step.hpp fails_first)
   for (std::ptrdiff_t p = 0; p < n; ++p) {
-    if (!bad(p)) continue;
+    if (!bad(p) || !fails_first(P, std::size_t(p), first)) continue;
     const bool inside =
         (P.x[p].array() >= lower.array()).all() && (P.x[p].array() <= upper.array()).all();
-    const Failure f = inside ? Failure{std::size_t(p), "velocity",
-                                       "not finite at the start of the step", std::nullopt}
-                             : Failure{std::size_t(p), "position",
-                                       "outside the grid at the start of the step", std::nullopt};
-    return describe(f, steps_ + 1, time_);
+    first = inside ? Failure{std::size_t(p), "velocity", "not finite at the start of the step",
+                             std::nullopt}
+                   : Failure{std::size_t(p), "position",
+                             "outside the grid at the start of the step", std::nullopt};
   }
-  return std::nullopt;
+  if (!first) return std::nullopt;
+  return describe(*first, steps_ + 1, time_);
 }
 
 }  // namespace impact::mpm

@@ -48,7 +48,7 @@ std::ptrdiff_t apply_faults(const std::vector<FaultInjection>& faults, long step
   std::ptrdiff_t nan_stress = -1;
   for (const FaultInjection& f : faults) {
     if (f.step != step) continue;
-    // Its index here: the seed index itself on one rank; on several, the rank holding it.
+    // Its index here: the seed index itself in seed order; else by P.id, on the rank holding it.
     std::size_t p = f.particle;
     if (!P.id.empty()) {
       const auto it = std::find(P.id.begin(), P.id.end(), f.particle);

@@ -35,7 +35,8 @@ struct FaultInjection {
 std::optional<FaultInjection> parse_fault_injection(const std::string& text);
 
 /// Applies the faults of step `step` to this rank's particles (a fault's particle is its seed
-/// index: P.id on several ranks, the index itself on one; a rank without it does nothing).
+/// index: P.id where it is kept, several ranks or a shuffled store, else the index itself; a rank
+/// without it does nothing).
 /// Returns the index whose stress update is to return NaN in this step, or -1.
 std::ptrdiff_t apply_faults(const std::vector<FaultInjection>& faults, long step, Particles& P,
                             const GridSpec& grid);

@@ -139,7 +139,8 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
       P.x[p] += dt * v_new;
       onto_face_within_round_off(G, P.x[p]);
       const Vec3& v = P.v[p];
-      if (!fail && !v.allFinite()) fail = Failure{std::size_t(p), "velocity", "not finite"};
+      if (!v.allFinite() && fails_first(P, std::size_t(p), fail))
+        fail = Failure{std::size_t(p), "velocity", "not finite"};
       if (!(P.x[p].allFinite() && !outside(G, P.x[p]))) {
         if (outflow && v.allFinite()) {
           // Leaves the simulation: its mass, momentum and kinetic energy go to the outflow
@@ -155,7 +156,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
           P.x[p] = x_old;
           continue;
         }
-        if (!fail) {
+        if (fails_first(P, std::size_t(p), fail)) {
           fail = Failure{std::size_t(p), "position",
                          "left the grid (grid.outflow = \"remove\" lets it leave the simulation, "
                          "booked as outflow)"};
@@ -171,7 +172,8 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
   ParticleTotals total;
   for (int t = 0; t < nt; ++t) {  // thread order: deterministic
     merge_into(total, partial[t]);
-    merge_failure(failure, failures[t]);
+    merge_failure(failure, failures[t],
+                  [&](const Failure& a, const Failure& b) { return fails_first(P, a, b); });
   }
   return total;
 }

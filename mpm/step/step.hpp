@@ -22,7 +22,7 @@ namespace impact::mpm {
 
 class HaloExchange;  // mpm/parallel/halo_exchange.hpp: the node sums shared with other ranks
 
-/// The first particle (lowest index) whose update failed, and why.
+/// The first particle (lowest seed index) whose update failed, and why.
 struct Failure {
   Failure() = default;
   Failure(std::size_t particle_, std::string field_, std::string message_,
@@ -39,6 +39,16 @@ struct Failure {
   /// shows it (fail_particle zeroes the stress).
   std::optional<PointState> state;
 };
+
+/// Whether particle p's failure comes before `kept` (none kept, or p's seed index is the lower):
+/// the particle a failure names is then the same whatever the storage order
+/// (solver.shuffle_particles) and whichever thread saw it.
+inline bool fails_first(const Particles& P, std::size_t p, const std::optional<Failure>& kept) {
+  return !kept || seed_index(P, p) < seed_index(P, kept->particle);
+}
+inline bool fails_first(const Particles& P, const Failure& a, const Failure& b) {
+  return seed_index(P, a.particle) < seed_index(P, b.particle);
+}
 
 /// The stencils (1-D weights and derivatives, base node) of every particle at its start-of-step
 /// position: computed once per step and reused by P2G, G2P and the MUSL re-map.

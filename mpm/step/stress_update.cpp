@@ -114,7 +114,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
     const auto fault = [&](std::ptrdiff_t p, std::string why) {
       Failure f{std::size_t(p), "stress", std::move(why), std::nullopt};
       if (!fail_particle) {
-        if (!fail) fail = std::move(f);
+        if (fails_first(P, f.particle, fail)) fail = std::move(f);
         return;
       }
       f.state = P.state[p];
@@ -232,11 +232,12 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   for (int t = 0; t < nt; ++t) {  // thread order: deterministic
     merge_into(total, partial[t]);
     for (Failure& f : partial[t].faulted) total.faulted.push_back(std::move(f));
-    merge_failure(failure, failures[t]);
+    merge_failure(failure, failures[t],
+                  [&](const Failure& a, const Failure& b) { return fails_first(P, a, b); });
   }
-  // Ascending particle indices, whichever thread updated which chunk.
+  // Ascending seed indices, whichever thread updated which chunk and whatever the storage order.
   std::stable_sort(total.faulted.begin(), total.faulted.end(),
-                   [](const Failure& a, const Failure& b) { return a.particle < b.particle; });
+                   [&](const Failure& a, const Failure& b) { return fails_first(P, a, b); });
   return total;
 }
 

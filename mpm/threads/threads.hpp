@@ -13,10 +13,12 @@ namespace impact::mpm {
 /// Simulation caps its thread count at it.
 inline constexpr int kMaxThreads = 256;
 
-/// Keeps the failure with the lowest particle index (deterministic whichever thread saw it).
-template <class Failure>
-inline void merge_failure(std::optional<Failure>& into, const std::optional<Failure>& f) {
-  if (f && (!into || f->particle < into->particle)) into = f;
+/// Keeps the failure that comes first by `before` (the lower seed index: deterministic whichever
+/// thread saw it and whatever the storage order).
+template <class Failure, class Before>
+inline void merge_failure(std::optional<Failure>& into, const std::optional<Failure>& f,
+                          Before&& before) {
+  if (f && (!into || before(*f, *into))) into = f;
 }
 
 }  // namespace impact::mpm

@@ -30,8 +30,9 @@ class Snapshot:
     """One particle snapshot of a run: ``time`` [s], ``step`` and ``file``; ``positions`` (N, 3)
     [m] and ``fields`` (a Table: ``velocity`` (N, 3) [m/s], ``stress``, ``F`` and ``R``
     (N, 3, 3), the scalar fields (N,), ``id`` the particle's seed index, ...) are read from the
-    file on first use. On several ranks the pieces are joined in rank order (``pieces`` of them):
-    sort by ``id`` to compare with a one-rank run. In plane strain ``mass`` and ``volume`` are per metre of
+    file on first use. On several ranks the pieces are joined in rank order (``pieces`` of them),
+    and a shuffled store (``solver.shuffle_particles``) is in its own order: sort by ``id`` to
+    compare with a one-rank run in seed order. In plane strain ``mass`` and ``volume`` are per metre of
     thickness (``fields.units``: kg/m, m^3/m)."""
 
     def __init__(self, time, file, plane_strain=False):

@@ -168,8 +168,16 @@ def main():
     e = rb.judge("failed_particles", 10.0, 12.1, members=members)
     check(e["ok"] and e["criterion"] == "ensemble" and abs(e["spread"] - 0.06) < 1e-12,
           f"within [8.0, 12.2]: passes by the ensemble: {e}")
-    e = rb.judge("failed_particles", 10.0, 7.75, members=[10.0, 10.5, 9.75, 10.25, 10.0])
+    edge = [10.0, 10.5, 9.75, 10.25, 10.0]                        # 9.75 - 3 x 0.75 = 7.5
+    e = rb.judge("failed_particles", 10.0, 7.5, members=edge)
     check(e["ok"] and e["criterion"] == "ensemble", f"the widened range's edge passes: {e}")
+    e = rb.judge("failed_particles", 10.0, 7.49, members=edge)
+    check(not e["ok"], f"just beyond the edge fails: {e}")
+    nan = float("nan")
+    e = rb.judge("history/gauge_probe [m/s]/min", nan, nan)
+    check(e["ok"] and e["criterion"] == "equal", f"NaN in REF and NEW is the same: {e}")
+    check(math.isnan(rb.energy_errors({"energy_error [-]": [0.0, nan, 1e-3]})[1]),
+          "a NaN energy error is no maximum")
     e = rb.judge("failed_particles", 10.0, 12.25, members=members)
     check(not e["ok"], f"beyond the widened range fails: {e}")
     e = rb.judge("failed_particles", 10.0, 10.0 + 5e-5, members=[10.0] * 5)

@@ -155,4 +155,42 @@ BOOST_AUTO_TEST_CASE(the_crater_of_a_shuffled_store_is_the_seeded_one) {
              boost::test_tools::tolerance(1e-12));
 }
 
+// A failure names the same particle whatever the storage order: two particles' stress updates
+// fail in the same step (an injected negative Jacobian), and the run stops naming the lower seed
+// index, in seed order and shuffled, where the higher one is stored first (on 1 and 2 threads);
+// and so does the start-of-step check of two velocities made NaN.
+BOOST_AUTO_TEST_CASE(a_failure_names_the_lowest_seed_index_in_any_order) {
+  const Json patch = {{"solver", {{"shuffle_particles", 5}}}};
+  const Scene seeded = test::verification_scene("contact_blocks.json");
+  const Scene shuffled = test::verification_scene("contact_blocks.json", patch);
+  // Where each seed index is stored in the shuffled store: b > a stored before a.
+  const std::vector<std::size_t> order =
+      shuffled_order(Simulation(seeded, 1).particles().size(), 5);
+  std::vector<std::size_t> where(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) where[order[i]] = i;
+  const std::size_t a = 100;
+  std::size_t b = a + 1;
+  while (where[b] > where[a]) ++b;
+  const auto named = [&](const Scene& scene, int threads, FaultInjection::Kind kind) {
+    Simulation sim(scene, threads);
+    sim.inject({kind, 2, b});
+    sim.inject({kind, 2, a});
+    try {
+      for (int s = 0; s < 3; ++s) sim.step();
+    } catch (const SolverFailure& e) {
+      return std::string(e.what());
+    }
+    return std::string("no failure");
+  };
+  const std::string expected = "particle " + std::to_string(a) + " (";
+  for (const auto kind : {FaultInjection::Kind::jacobian, FaultInjection::Kind::nan_velocity})
+    for (const int threads : {1, 2})
+      for (const Scene* scene : {&seeded, &shuffled}) {
+        const std::string message = named(*scene, threads, kind);
+        BOOST_TEST_INFO("threads " << threads << (scene == &seeded ? ", seeded: " : ", shuffled: ")
+                                   << message);
+        BOOST_TEST(message.find(expected) != std::string::npos);
+      }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
