@@ -95,7 +95,12 @@ void reorder(Simulation& sim, Order how) {
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
   }
-  if (how != Order::seeded) P.permute(order);
+  if (how == Order::seeded) return;
+  if (P.id.empty()) {  // keep each particle's seed index, as a shuffled store does
+    P.id.resize(P.size());
+    for (std::size_t i = 0; i < P.size(); ++i) P.id[i] = i;
+  }
+  P.permute(order);
 }
 
 Measured measure(const Json& doc, const std::string& file, int threads, int steps,
@@ -391,7 +396,7 @@ void decay(const Json& base, const std::string& file, bool quick, const std::str
       "   t [us]  step | apart: seeded  sorted | M p-steps/s: seeded  sorted  ratio | "
       "sort [s] (steps)\n");
   std::ofstream csv = open_csv(dir, "decay.csv",
-                               "time [s],step [-],particles [-],apart_seeded [-],"
+                               "time [s],step [-],particles [-],apart_seeded [-],apart_sorted [-],"
                                "particle_steps_per_second_seeded [1/s],"
                                "particle_steps_per_second_sorted [1/s],sort_seconds [s]");
   const Json doc = with_level(base, level);
@@ -405,10 +410,12 @@ void decay(const Json& base, const std::string& file, bool quick, const std::str
       sorted.step();
     }
     if (seeded.finished()) break;
+    const long step = seeded.steps();
     const double apart = disorder(seeded);
     const double t0 = omp_get_wtime();
     reorder(sorted, Order::by_cell);
     const double sort_seconds = omp_get_wtime() - t0;
+    const double apart_sorted = disorder(sorted);
     const auto rate = [&](Simulation& sim) {
       const double start = omp_get_wtime();
       int n = 0;
@@ -418,12 +425,12 @@ void decay(const Json& base, const std::string& file, bool quick, const std::str
     const double r_seeded = rate(seeded), r_sorted = rate(sorted);
     const double step_seconds = double(sorted.particles().size()) / r_sorted;
     std::printf("%9.3f %5ld |       %6.4f  %6.4f |          %7.3f %7.3f %6.3f | %7.4f (%4.2f)\n",
-                until * 1e6, seeded.steps(), apart, disorder(sorted), r_seeded / 1e6,
-                r_sorted / 1e6, r_sorted / r_seeded, sort_seconds, sort_seconds / step_seconds);
+                until * 1e6, step, apart, apart_sorted, r_seeded / 1e6, r_sorted / 1e6,
+                r_sorted / r_seeded, sort_seconds, sort_seconds / step_seconds);
     std::fflush(stdout);
     if (csv)
-      csv << until << ',' << seeded.steps() << ',' << seeded.particles().size() << ',' << apart
-          << ',' << r_seeded << ',' << r_sorted << ',' << sort_seconds << '\n';
+      csv << until << ',' << step << ',' << seeded.particles().size() << ',' << apart << ','
+          << apart_sorted << ',' << r_seeded << ',' << r_sorted << ',' << sort_seconds << '\n';
   }
 }
 
