@@ -40,7 +40,9 @@ scatter of one time-step halving, where that is smaller: say which)"):
                 and Dm. Passes by `1e-6` when |NEW - REF| <= 1e-6 |REF|; else by `halving` when
                 REF was also run at half its time.multiplier (--halving SETS) and |NEW - REF| <=
                 |REF_half - REF|; a momentum or impulse within 1e-12 |p0| of REF passes by
-                `round-off` (the momentum bound: a component that is zero up to round-off).
+                `round-off` (the momentum bound: a component that is zero up to round-off), and
+                so does a velocity, energy or stress within 1e-12 of the scene's scale for its
+                unit (round_off_scales), and a peak's time where its peak did.
                 A string (the status) must be equal, or with --ensemble one a member had.
 The ensemble (issue 57: "a change of summation order is allowed where its results stay within
 the method's own round-off sensitivity"): with --ensemble N (N >= 5), REF also runs the scenes of
@@ -134,12 +136,26 @@ def flatten(node, prefix=""):
     return out
 
 
+def per_body_units(cols):
+    """The history's momentum and impulse columns under their 3D names: in plane strain they are
+    per metre of thickness, "momentum_x [(kg m/s)/m]", and the books read them alike."""
+    out = dict(cols)
+    for k, v in cols.items():
+        for plane, body in (("[(kg m/s)/m]", "[kg m/s]"), ("[(N s)/m]", "[N s]")):
+            if k.endswith(plane):
+                out.setdefault(k[: -len(plane)] + body, v)
+    return out
+
+
 def momentum_scale(cols, bodies=()):
     """(scale, how): what the momentum closure is measured against. |p0|, the first row's
     momentum, unless it is zero up to round-off (below 1e-9 of the largest body's): bodies meeting
     head-on are measured against one body's initial momentum sqrt(2 m KE) (bodies = [(m, KE0)]),
-    as the verification tests measure them; bodies starting at rest (set moving by a face) against
-    the largest momentum over the rows."""
+    as the verification tests measure them; bodies starting at rest against the largest term of
+    the balance over the rows: momentum, boundary or external impulse (a body set moving by a
+    face, or resting on a wall under gravity, whose momentum stays round-off while gravity's
+    impulse and the wall's grow and cancel)."""
+    cols = per_body_units(cols)
     # A header-only history (a run stopped before its first row) has empty columns.
     p0 = math.sqrt(sum((cols.get(f"momentum_{c} [kg m/s]") or [0.0])[0] ** 2 for c in "xyz"))
     body = max((math.sqrt(2.0 * m * ke) for m, ke in bodies if m > 0.0 and ke > 0.0), default=0.0)
@@ -148,16 +164,20 @@ def momentum_scale(cols, bodies=()):
     if body > 0.0:
         return body, "one body's initial momentum (p0 = 0)"
     rows = len(cols.get("time [s]", []))
-    largest = max((math.sqrt(sum(cols.get(f"momentum_{c} [kg m/s]", [0.0] * rows)[i] ** 2
-                                 for c in "xyz")) for i in range(rows)), default=0.0)
+    largest = max((math.sqrt(sum(cols.get(f"{term}_{c} [{unit}]", [0.0] * rows)[i] ** 2
+                                 for c in "xyz"))
+                   for term, unit in (("momentum", "kg m/s"), ("boundary_impulse", "N s"),
+                                      ("external_impulse", "N s"))
+                   for i in range(rows)), default=0.0)
     if largest > 0.0:
-        return largest, "the largest momentum over the run (a start at rest)"
+        return largest, "the largest momentum or impulse over the run (a start at rest)"
     return 1.0, "1 kg m/s (nothing moves)"
 
 
 def momentum_closure(cols, scale):
     """max over rows of |momentum + outflow_momentum - p0 - boundary_impulse - external_impulse|
     / scale (docs/mpm.md, "Momentum closure")."""
+    cols = per_body_units(cols)
     n = len(cols.get("time [s]", []))
     worst = 0.0
     for i in range(n):
@@ -205,7 +225,25 @@ def relative(ref, new):
 
 
 def is_momentum(name):
-    return "[kg m/s]" in name or "[N s]" in name
+    """A momentum or impulse, per metre of thickness in plane strain too."""
+    return any(u in name for u in ("[kg m/s]", "[N s]", "[(kg m/s)/m]", "[(N s)/m]"))
+
+
+def round_off_scale(name, p0, scales):
+    """The scale a quantity of this name's unit is round-off against, or None: a momentum or
+    impulse |p0|; with `scales` ({"velocity": V, "energy": E, "pressure": P}: the momentum scale
+    over the total mass, the initial energy, that energy over the bodies' volume), a velocity V,
+    an energy E and a stress P (a body in rigid translation has peak pressures of 1e-6 Pa). A body at rest in a symmetric scene
+    has mean velocity components of 1e-15 m/s that any change of summation order moves."""
+    if p0 is not None and is_momentum(name):
+        return p0
+    if scales and "[m/s]" in name:
+        return scales.get("velocity")
+    if scales and ("[J]" in name or "[J/m]" in name):
+        return scales.get("energy")
+    if scales and "[Pa]" in name:
+        return scales.get("pressure")
+    return None
 
 
 def within_ensemble(new, members):
@@ -227,7 +265,8 @@ def ensemble_width(ref, members):
     return relative(ref, ref + (max(members) - min(members)))
 
 
-def judge(name, ref, new, half=None, p0=None, bound=OBSERVABLE_BOUND, members=None):
+def judge(name, ref, new, half=None, p0=None, bound=OBSERVABLE_BOUND, members=None,
+          scales=None):
     """One observable: a dict with rel, scatter (relative |REF_half - REF| / |REF|, None without a
     halving run), spread (the ensemble's relative width, None without one), criterion ('1e-6',
     'round-off', 'halving', 'ensemble', 'equal', or '' when it fails), ok, and strict (passes the
@@ -252,7 +291,7 @@ def judge(name, ref, new, half=None, p0=None, bound=OBSERVABLE_BOUND, members=No
         row["scatter"] = relative(ref, half)
     if diff <= bound * abs(ref):
         row["criterion"], row["ok"] = "1e-6", True
-    elif p0 is not None and is_momentum(name) and diff <= MOMENTUM_BOUND * p0:
+    elif (scale := round_off_scale(name, p0, scales)) is not None and diff <= MOMENTUM_BOUND * scale:
         row["criterion"], row["ok"] = "round-off", True
     elif scatter is not None and diff <= scatter:
         row["criterion"], row["ok"] = "halving", True
@@ -266,7 +305,24 @@ def judge(name, ref, new, half=None, p0=None, bound=OBSERVABLE_BOUND, members=No
     return row
 
 
-def compare_observables(ref, new, half=None, p0=None, ensemble=None):
+def round_off_scales(summary, p_scale):
+    """{"velocity": the momentum scale over the total mass, "energy": the initial energy (else
+    that speed's kinetic energy), "pressure": that energy over the bodies' particle volume} from
+    REF's summary.json (per metre of thickness in plane strain, as its momenta)."""
+    def top(name):
+        return next((v for k, v in summary.items() if bare(k) == name and
+                     isinstance(v, (int, float))), 0.0)
+    mass, energy = top("mass"), top("initial_energy")
+    if not mass > 0.0:
+        return None
+    v = p_scale / mass
+    e = energy if energy > 0.0 else 0.5 * mass * v * v
+    volume = sum(next((x for k, x in o.items() if bare(k) == "particle_volume"), 0.0)
+                 for o in summary.get("objects", {}).values())
+    return {"velocity": v, "energy": e, "pressure": e / volume if volume > 0.0 else None}
+
+
+def compare_observables(ref, new, half=None, p0=None, ensemble=None, scales=None):
     """judge() for every observable of REF and NEW ({name: value}, e.g. flatten(summary)).
     `ensemble`: the other members' observables (a list of such dicts). One present in only one of
     REF and NEW fails (criterion 'missing'); one a member lacks is judged without the ensemble."""
@@ -281,7 +337,17 @@ def compare_observables(ref, new, half=None, p0=None, ensemble=None):
         if ensemble and all(name in m for m in ensemble):
             members = [ref[name]] + [m[name] for m in ensemble]
         rows.append(judge(name, ref[name], new[name], None if half is None else half.get(name),
-                          p0, members=members))
+                          p0, members=members, scales=scales))
+    # A peak's time is the time of a round-off value where the peak itself passed as round-off.
+    by_name = {r["observable"]: r for r in rows}
+    for r in rows:
+        name = r["observable"]
+        if r["ok"] or not name.endswith("_time [s]"):
+            continue
+        head = name[: -len("_time [s]")] + " ["  # peak_time -> peak [, max_pressure_time -> ...
+        peak = next((p for n, p in by_name.items() if n.startswith(head)), None)
+        if peak is not None and peak["criterion"] == "round-off":
+            r["criterion"], r["ok"] = "round-off", True
     return rows
 
 
@@ -642,11 +708,13 @@ def main():
             half_obs = observables(base + "/ref_half", kind)[2]
         members = [observables(f"{base}/ref_order{k}", kind) for k in shuffles
                    if kind in ensemble_sets]
-        bodies = [(o.get("mass [kg]", 0.0), o.get("kinetic_energy [J]", 0.0))
+        bodies = [(o.get("mass [kg]", o.get("mass [kg/m]", 0.0)),
+                   o.get("kinetic_energy [J]", o.get("kinetic_energy [J/m]", 0.0)))
                   for o in ref_summary.get("objects", {}).values()]
         scale, how = momentum_scale(ref_cols, bodies)
         rows = books(ref_cols, new_cols, scale, kind in ENERGY_SETS, [m[1] for m in members])
-        rows += compare_observables(ref_obs, new_obs, half_obs, scale, [m[2] for m in members])
+        rows += compare_observables(ref_obs, new_obs, half_obs, scale, [m[2] for m in members],
+                                    round_off_scales(ref_summary, scale))
         line = verdict(name, rows, how)
         any_failed |= any(not r["ok"] for r in rows)
         print(line, flush=True)

@@ -143,6 +143,42 @@ def main():
     at_rest = history([0.0, 0.3, -0.5], [0.0, 0.3, -0.5], [0.0, 0.0, 0.0])
     scale1, how1 = rb.momentum_scale(at_rest, [(2.0, 0.0)])
     check(scale1 == 0.5 and "rest" in how1, f"a start at rest: the largest |p|: {scale1} {how1}")
+    # A body resting on a wall under gravity: its momentum stays round-off, gravity's impulse
+    # and the wall's grow and cancel; the scale is the largest term of the balance.
+    resting = history([0.0, 1e-17, -2e-17], [0.0, 0.4, 0.8], [0.0, 0.0, 0.0])
+    resting["external_impulse_x [N s]"] = [0.0, -0.4, -0.8]
+    scale2, _ = rb.momentum_scale(resting, [(2.0, 0.0)])
+    check(scale2 == 0.8, f"resting: the largest impulse: {scale2}")
+    # Plane strain: the columns per metre of thickness are read alike.
+    plane = {k.replace("[kg m/s]", "[(kg m/s)/m]").replace("[N s]", "[(N s)/m]"): v
+             for k, v in leak.items()}
+    check(abs(rb.momentum_closure(plane, scale) - 1e-11) < 1e-14,
+          f"plane strain's leak is seen: {rb.momentum_closure(plane, scale)}")
+    check(rb.judge("final/momentum_y [(kg m/s)/m]", 1e-17, 4e-17, p0=0.6)["criterion"] ==
+          "round-off", "a plane-strain momentum is a momentum")
+    v = rb.judge("observables/objects/b/mean_velocity [m/s]/2", 1.7e-15, 1.5e-15,
+                 scales={"velocity": 10.0, "energy": 1.0})
+    check(v["ok"] and v["criterion"] == "round-off", f"a round-off velocity of a 10 m/s body: {v}")
+    v = rb.judge("observables/objects/b/mean_velocity [m/s]/2", 1.7e-15, 2e-10,
+                 scales={"velocity": 10.0, "energy": 1.0})
+    check(not v["ok"], f"2e-10 m/s is beyond round-off of 10 m/s: {v}")
+    rows = {r["observable"]: r for r in rb.compare_observables(
+        {"gauges/g/peak [m/s]": 3e-14, "gauges/g/peak_time [s]": 0.5},
+        {"gauges/g/peak [m/s]": -3e-14, "gauges/g/peak_time [s]": 0.9},
+        scales={"velocity": 1.0, "energy": 1.0})}
+    check(rows["gauges/g/peak_time [s]"]["ok"] and
+          rows["gauges/g/peak_time [s]"]["criterion"] == "round-off",
+          f"a round-off peak's time: {rows}")
+    rows = {r["observable"]: r for r in rb.compare_observables(
+        {"o/b/max_pressure [Pa]": 4.8e-6, "o/b/max_pressure_time [s]": 1.7e-4},
+        {"o/b/max_pressure [Pa]": 4.3e-6, "o/b/max_pressure_time [s]": 1.8e-4},
+        scales={"velocity": 1.0, "energy": 1.0, "pressure": 1e6})}
+    check(all(r["ok"] and r["criterion"] == "round-off" for r in rows.values()),
+          f"a round-off pressure of a body in rigid translation, and its time: {rows}")
+    scales = rb.round_off_scales({"mass [kg]": 2.0, "initial_energy [J]": 4.0, "objects": {
+        "a": {"particle_volume [m^3]": 1e-3}, "b": {"particle_volume [m^3]": 3e-3}}}, 6.0)
+    check(scales == {"velocity": 3.0, "energy": 4.0, "pressure": 1000.0},
+          f"scales from a summary: {scales}")
 
     # Energy error: end and max |.| within 1e-4 where judged (Table 2, recommended).
     near = history([p0, -0.5, -0.25], [0.0, 0.1, 0.35], [0.0, 2e-3 + 9e-5, 1e-3 - 9e-5])
