@@ -102,13 +102,15 @@ double Simulation::checked_dt() const {
     // The step collapses when one particle's signal speed c + |v| runs away: name it.
     std::size_t fastest = 0;
     double signal = -1.0;
-    for (std::size_t p = 0; p < particles_.size(); ++p) {  // ties: the lowest seed index
+    // A NaN wins over any speed; ties (and NaNs) go to the lowest seed index.
+    for (std::size_t p = 0; p < particles_.size(); ++p) {
       const double c = particles_.wave_speed[p] + particles_.v[p].norm();
-      if (c > signal || std::isnan(c) ||
-          (c == signal && seed_index(particles_, p) < seed_index(particles_, fastest))) {
+      const bool lower = seed_index(particles_, p) < seed_index(particles_, fastest);
+      const bool take = std::isnan(signal) ? std::isnan(c) && lower
+                                           : std::isnan(c) || c > signal || (c == signal && lower);
+      if (take) {
         signal = c;
         fastest = p;
-        if (std::isnan(c)) break;
       }
     }
     std::ostringstream m;

@@ -28,7 +28,8 @@ void BodyForces::evaluate(const Particles& P, double t) {
   b_.resize(P.size());  // the particle count changes only when particles migrate between ranks
   const bool outflow = !P.removed.empty();
   const int nt = static_cast<int>(fields_.size());
-  // Per thread: the largest |b_p| (a NaN wins) and its particle, the lowest index on a tie.
+  // Per thread: the largest |b_p| (a NaN wins) and its particle, the lowest seed index on a tie
+  // (the particle named is the same whatever the storage order and the thread count).
   double largest[kMaxThreads] = {};
   std::ptrdiff_t where[kMaxThreads] = {};
 #pragma omp parallel num_threads(nt)
@@ -41,7 +42,9 @@ void BodyForces::evaluate(const Particles& P, double t) {
       std::optional<VectorField>& f = field[P.object[p]];
       b_[p] = f && !(outflow && P.removed[p]) ? (*f)(P.X[p], t) : Vec3::Zero();
       const double size = b_[p].allFinite() ? b_[p].norm() : kInfinity;
-      if (size > peak && !std::isinf(peak)) {
+      if (!std::isinf(peak) &&
+          (size > peak || (size == peak && at >= 0 &&
+                           seed_index(P, std::size_t(p)) < seed_index(P, std::size_t(at))))) {
         peak = size;
         at = p;
       }
@@ -49,7 +52,13 @@ void BodyForces::evaluate(const Particles& P, double t) {
     largest[omp_get_thread_num()] = peak;
     where[omp_get_thread_num()] = at;
   }
-  const int top = int(std::max_element(largest, largest + nt) - largest);  // the first of equals
+  int top = 0;  // the largest; of equals, the lowest seed index
+  for (int k = 1; k < nt; ++k)
+    if (largest[k] > largest[top] ||
+        (largest[k] == largest[top] && where[k] >= 0 &&
+         (where[top] < 0 ||
+          seed_index(P, std::size_t(where[k])) < seed_index(P, std::size_t(where[top])))))
+      top = k;
   peak_ = largest[top];
   strongest_ = where[top] < 0 ? 0 : std::size_t(where[top]);
   finite_ = !std::isinf(peak_) || b_.empty() || b_[strongest_].allFinite();
