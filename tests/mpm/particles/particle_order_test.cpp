@@ -13,6 +13,7 @@
 #include "../verification_helpers.hpp"
 #include "mpm/output/crater.hpp"
 #include "mpm/particles/particle_order.hpp"
+#include "mpm/step/body_force.hpp"
 
 using namespace impact::mpm;
 using impact::Json;
@@ -196,6 +197,22 @@ BOOST_AUTO_TEST_CASE(a_failure_names_the_lowest_seed_index_in_any_order) {
                                    << message);
         BOOST_TEST(message.find(expected) != std::string::npos);
       }
+}
+
+// The body force's strongest particle, which the body-force messages name: under a uniform body
+// force (the soft stack's -1000 t / 0.02 m/s^2 on every block) every particle ties, and the
+// lowest seed index, 0, is named in seed order and shuffled, on 1 and 2 threads.
+BOOST_AUTO_TEST_CASE(the_strongest_body_force_names_the_lowest_seed_index) {
+  for (const std::uint64_t shuffle : {std::uint64_t(0), std::uint64_t(5)})
+    for (const int threads : {1, 2}) {
+      const Scene scene = test::verification_scene("stack_soft.json",
+                                                   {{"solver", {{"shuffle_particles", shuffle}}}});
+      const Simulation sim(scene, 1);
+      BodyForces forces(scene, threads);
+      forces.evaluate(sim.particles(), 0.01);
+      BOOST_TEST_INFO("shuffle " << shuffle << ", threads " << threads);
+      BOOST_TEST(seed_index(sim.particles(), forces.strongest()) == 0u);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
