@@ -79,6 +79,12 @@ double particle_bytes(const Particles& P) {
 
 enum class Order { seeded, by_cell, shuffled };
 
+// The cell a position lies in, per axis (uniform grid).
+Eigen::Vector3i host_cell(const Grid& G, const Vec3& x) {
+  const Vec3 c = (x - G.lower()).cwiseProduct(G.inverse_spacing());
+  return {int(std::floor(c(0))), int(std::floor(c(1))), int(std::floor(c(2)))};
+}
+
 void reorder(Simulation& sim, Order how) {
   Particles& P = sim.particles();
   std::vector<std::size_t> order(P.size());
@@ -89,18 +95,13 @@ void reorder(Simulation& sim, Order how) {
     const Grid& G = sim.grid();
     std::vector<long> key(P.size());
     for (std::size_t p = 0; p < P.size(); ++p) {
-      const Vec3 c = (P.x[p] - G.lower()).cwiseProduct(G.inverse_spacing());
-      key[p] = G.index(int(std::floor(c(0))), int(std::floor(c(1))), int(std::floor(c(2))));
+      const Eigen::Vector3i c = host_cell(G, P.x[p]);
+      key[p] = G.index(c(0), c(1), c(2));
     }
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
   }
-  if (how == Order::seeded) return;
-  if (P.id.empty()) {  // keep each particle's seed index, as a shuffled store does
-    P.id.resize(P.size());
-    for (std::size_t i = 0; i < P.size(); ++i) P.id[i] = i;
-  }
-  P.permute(order);
+  if (how != Order::seeded) store_in_order(P, order);
 }
 
 Measured measure(const Json& doc, const std::string& file, int threads, int steps,
@@ -377,8 +378,7 @@ double disorder(Simulation& sim) {
   std::size_t apart = 0;
   Eigen::Vector3i last = Eigen::Vector3i::Zero();
   for (std::size_t p = 0; p < P.size(); ++p) {
-    const Vec3 c = (P.x[p] - G.lower()).cwiseProduct(G.inverse_spacing());
-    const Eigen::Vector3i cell(int(std::floor(c(0))), int(std::floor(c(1))), int(std::floor(c(2))));
+    const Eigen::Vector3i cell = host_cell(G, P.x[p]);
     if (p > 0 && (cell - last).cwiseAbs().maxCoeff() > 1) ++apart;
     last = cell;
   }

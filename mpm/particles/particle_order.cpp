@@ -4,6 +4,8 @@
 #include <random>
 #include <utility>
 
+#include "mpm/particles/particles.hpp"
+
 namespace impact::mpm {
 
 namespace {
@@ -29,6 +31,14 @@ std::vector<std::size_t> shuffled_order(std::size_t n, std::uint64_t seed) {
   for (std::size_t i = n; i > 1; --i)
     std::swap(order[i - 1], order[std::size_t(uniform_at_most(random, i - 1))]);
   return order;
+}
+
+void store_in_order(Particles& P, const std::vector<std::size_t>& order) {
+  if (P.id.empty()) {
+    P.id.resize(P.size());
+    std::iota(P.id.begin(), P.id.end(), std::uint64_t(0));
+  }
+  P.permute(order);
 }
 
 }  // namespace impact::mpm

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "mpm/particles/particle_order.hpp"
 #include "mpm/simulation/advance.hpp"
@@ -46,15 +45,9 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
               Vec3(scene.grid.geometry_facts().momentum_components.data()),
               ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
   census_ = {};  // needed for seeding only
-  if (const std::uint64_t seed = scene_.solver.shuffle_particles) {
-    // Another storage order (scene.hpp SolverSpec): the id keeps each particle's seed index,
-    // which the outputs name particles by.
-    if (particles_.id.empty()) {
-      particles_.id.resize(particles_.size());
-      std::iota(particles_.id.begin(), particles_.id.end(), std::uint64_t(0));
-    }
-    particles_.permute(shuffled_order(particles_.size(), seed));
-  }
+  // Another storage order (scene.hpp SolverSpec), each particle keeping its seed index.
+  if (const std::uint64_t seed = scene_.solver.shuffle_particles)
+    store_in_order(particles_, shuffled_order(particles_.size(), seed));
   if (ranks_.several()) {
     grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
     halo_.emplace(ranks_.communicator(), boxes_);
