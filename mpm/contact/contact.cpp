@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/grid/mirror_view.hpp"
 #include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
@@ -221,36 +222,6 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bo
   return any;
 }
 
-// What the face mirror (grid/boundary.cpp) leaves of a node's velocity, which it applies after
-// contact: `skip` for a node it overwrites whole (a ghost beyond a symmetric or fixed face, a
-// node on a fixed face), else the axes it zeroes (bit d: the node lies on a symmetric face
-// normal to d). Contact must see the face layer as the mirror leaves it: the particles of one
-// side give a symmetric face node a normal velocity the mirror then zeroes, and counted in the
-// slip it turned part of the friction onto that component. A block sliding on a block, cut in
-// half by a symmetric plane along the slip, slid 1.1 % faster than the whole one
-// (tests/mpm/verification/contact_friction_test.cpp); a node the mirror overwrites booked heat
-// that no particle felt.
-struct MirrorView {
-  bool skip = false;
-  int zeroed = 0;
-};
-
-MirrorView mirror_view(const Grid& G, const std::array<int, 3>& n) {
-  const GridSpec& s = G.spec();
-  MirrorView view;
-  for (int d = 0; d < 3; ++d) {
-    if (s.planar() && d == 2) continue;  // one node plane along z, no faces there
-    for (const bool upper : {false, true}) {
-      const FaceCondition c = s.faces[2 * d + (upper ? 1 : 0)];
-      if (c != FaceCondition::symmetric && c != FaceCondition::fixed) continue;
-      const int beyond = upper ? n[d] - s.cells[d] : -n[d];  // > 0: in the ghost layer
-      if (beyond > 0 || (beyond == 0 && c == FaceCondition::fixed)) view.skip = true;
-      if (beyond == 0) view.zeroed |= 1 << d;
-    }
-  }
-  return view;
-}
-
 }  // namespace
 
 // Long on purpose (about 170 lines): one pass over the contact nodes, each node's fields read,
@@ -304,11 +275,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       const std::array<int, 3> ijk = G.ijk(I);
       const MirrorView mirror = mirror_view(G, ijk);
       if (mirror.skip) continue;
-      const auto as_mirrored = [&](Vec3 x) {
-        for (int d = 0; d < 3; ++d)
-          if (mirror.zeroed & (1 << d)) x(d) = 0.0;
-        return x;
-      };
+      const auto as_mirrored = [&](const Vec3& x) { return mirror.applied_to(x); };
       Vec3 grad[kMaxFields];
       for (int a = 0; a < na; ++a)
         grad[a] = mass_gradient(G, G.mass.data() + std::size_t(active[a]) * nn, ijk);
@@ -376,9 +343,15 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           if (held & kStuckBetweenBodies) stick[body_index[a]] = true;
         }
       }
+      // `separation`: bodies whose particles have not met (along the fitted plane, or pair by
+      // pair at a node of three or more) are apart, approaching or not, in every pass of the
+      // step; where no gap was measured it is NaN and approach decides.
+      const bool apart = contact.detection == ContactDetection::separation &&
+                         !G.contact_gap.empty() && G.contact_gap[I] > 0.0;
       bool any = false;
-      if (B.n >= 2 && correct(B, contact.mu, contact.normal, book, strain ? hold : nullptr,
-                              strain ? stick : nullptr, dv, heat, approached, stuck)) {
+      if (B.n >= 2 && !apart &&
+          correct(B, contact.mu, contact.normal, book, strain ? hold : nullptr,
+                  strain ? stick : nullptr, dv, heat, approached, stuck)) {
         any = true;
         for (int a = 0; a < na; ++a) {
           const int e = active[a] * nn + I;

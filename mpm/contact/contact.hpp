@@ -29,7 +29,14 @@
 //               ContactPass below): the report's friction also glued separating
 //               surfaces in compression, which fed energy in; the rule that replaced it, touching
 //               (u_n = 0) in compression, corrected nothing (u_n = 0 gives no correction) and has
-//               been removed with its nodal-stress scatter.
+//               been removed with its nodal-stress scatter. Approach alone starts contact where
+//               the bodies' stencils first share a node, up to two cells before their particles
+//               meet. `separation` (with the fitted plane): also the gap between the two bodies'
+//               particle domains along the plane's normal (Grid::contact_gap, measured by
+//               step/contact_planes.cpp) must be closed; a pair with a gap > 0 is apart in every
+//               pass of the step (Nairn, Hammerquist & Smith 2020's displacement check). At a
+//               node of three or more bodies the gap is measured pair by pair; where none could
+//               be measured (mixed particles: no plane), approach alone.
 //   correction  Dv = -u_n n - s t, s = min(mu u_n, |u_t|), u = v_f - v_cm, t = u_t / |u_t|:
 //               Coulomb slip, or stick when s = |u_t|.
 //   heat        only in slip (s < |u_t|; static friction does no work): m_f s (u0_f . t) >= 0

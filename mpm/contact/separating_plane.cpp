@@ -1,7 +1,9 @@
 #include "mpm/contact/separating_plane.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "models/core/lane_math.hpp"
@@ -182,6 +184,17 @@ Vec3 separating_plane(std::span<const PlanePoint> points, int dims) {
     if (side(p, theta.dot(features(p, dims))) < 0.0) wrong += weight(p);
   if (wrong > kPlaneMixedShare) return Vec3::Zero();
   return theta.head<3>();
+}
+
+double deformed_radius(const Mat3& F, const Vec3& l, const Vec3& n, int dims) {
+  double r;
+  if (dims == 2) {
+    const Eigen::Matrix2d A = F.topLeftCorner<2, 2>() * l.head<2>().asDiagonal();
+    r = 1.0 / (A.inverse() * n.head<2>()).norm();
+  } else {
+    r = 1.0 / ((F * l.asDiagonal()).inverse() * n).norm();
+  }
+  return std::isfinite(r) ? r : 0.0;
 }
 
 }  // namespace impact::mpm

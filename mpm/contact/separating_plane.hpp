@@ -23,8 +23,8 @@
 // linear regression and stop after 15 iterations; here the cross-entropy (the logistic
 // likelihood) with tent weights over a wider cloud, class balance and lambda = 1e-3, Newton from
 // zero (its first step is the least-squares plane) to convergence. Their fit also gives the bodies'
-// separation along n for a displacement contact check, not built here: contact is still detected by
-// approach (contact/contact.hpp).
+// separation along n for a displacement contact check: `contact.detection = "separation"`
+// (step/contact_planes.cpp measures it on the node's own particles; contact/contact.hpp).
 #pragma once
 
 #include <span>
@@ -50,5 +50,16 @@ inline constexpr double kPlaneMixedShare = 0.1;
 /// The fitted w (cells^-1; zero when no plane is found: one body only, or no weight). `dims` = 2
 /// fits in the (x, y) plane only (a 2D grid: xi_z is ignored and w_z = 0).
 Vec3 separating_plane(std::span<const PlanePoint> points, int dims);
+
+/// A particle's radius along the unit vector n [m], for the bodies' gap of `contact.detection =
+/// "separation"`: the distance from x_p along n to the edge of the ellipse (ellipsoid) inscribed in
+/// its box domain of half-widths l [m] carried by its deformation gradient F, 1 / |(F L)^{-1} n|
+/// with L = diag(l) (Nairn, Hammerquist & Smith 2020 measure the separation with the particles'
+/// deformed radii; NairnMPM's default is this ellipse). `dims` = 2: in the (x, y) plane (n_z = 0;
+/// a 2D grid's hoop or out-of-plane stretch does not widen it). The box's own reach along n,
+/// sum_d l_d abs((F^T n)_d), exceeds it by up to 41 % off the box's axes, and a plane tilted 3.8
+/// degrees at a rod's edge started that rod's contact 0.22 us early against 0.09 us
+/// (tests/mpm/verification/contact_detection_test.cpp). Zero for a degenerate F.
+double deformed_radius(const Mat3& F, const Vec3& l, const Vec3& n, int dims);
 
 }  // namespace impact::mpm

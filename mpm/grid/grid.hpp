@@ -129,7 +129,8 @@ struct GridSettings {
   /// Reference density of each velocity field's material [kg/m^3] (contact's nodal volumes).
   std::vector<double> field_density;
   /// Per scene object: the particles' half-widths [m] (uGIMP's l times the spacing), the extent
-  /// of a particle's domain for the touch test of the wall faces; empty without walls.
+  /// of a particle's domain for the touch test of the wall faces and for the bodies' separation
+  /// (`contact.detection = "separation"`); empty without either.
   std::vector<Vec3> particle_half_width;
 };
 
@@ -270,6 +271,10 @@ class Grid {
   /// normal of the plane separating the node's two bodies, from the body of lower index into the
   /// other; zero where none was fitted (step/contact_planes.cpp) and contact uses the gradients.
   std::vector<Vec3> contact_plane;
+  /// With `contact.detection = "separation"`, per node: the gap between the two bodies' particle
+  /// domains along contact_plane [m] (> 0: apart, no contact; step/contact_planes.cpp); empty
+  /// otherwise. Meaningful where contact_plane is not zero.
+  std::vector<double> contact_gap;
   /// Scratch of step/contact_planes.cpp, per node: -1, or the node's place among the step's
   /// two-body nodes (reset after each use, so a step touches only its active nodes).
   std::vector<int> contact_plane_slot;

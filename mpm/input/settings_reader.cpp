@@ -123,10 +123,23 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
     ph.contact.normal = normal == "larger_volume"         ? ContactNormal::larger_volume
                         : normal == "logistic_regression" ? ContactNormal::logistic_regression
                                                           : ContactNormal::mass_gradients;
+    const std::string detection = c->choice(
+        "detection", {"approach", "separation"},
+        "when two bodies at a node are in contact: where they approach, or where they approach "
+        "and their particles meet (needs \"normal\": \"logistic_regression\")",
+        "approach");
+    ph.contact.detection =
+        detection == "separation" ? ContactDetection::separation : ContactDetection::approach;
+    if (ph.contact.type == ContactType::friction &&
+        ph.contact.detection == ContactDetection::separation &&
+        ph.contact.normal != ContactNormal::logistic_regression)
+      c->problems().add(c->key_path("detection"),
+                        "\"separation\" measures the bodies' gap along the plane the logistic "
+                        "regression fits: set \"normal\" to \"logistic_regression\" too");
     // One shared velocity field has no contact surface: a friction coefficient or a normal rule
     // there would be read and ignored, so it is refused (issue 53). A scene that extends one with
     // friction removes the inherited keys with null (RFC 7396).
-    if (ph.contact.type == ContactType::single_velocity)
+    if (ph.contact.type == ContactType::single_velocity) {
       for (const char* key : {"mu", "normal"})
         if (c->has(key))
           c->problems().add(c->key_path(key),
@@ -134,6 +147,15 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
                             "\"single_velocity\" is one velocity field with no contact surface: "
                             "remove the key (null removes one inherited through \"extends\") or "
                             "set type to \"friction\"");
+      // "approach" is also a type's name: the message says which is meant.
+      if (c->has("detection"))
+        c->problems().add(c->key_path("detection"),
+                          "when bodies touch is decided only by the \"friction\" contact; "
+                          "\"single_velocity\" is one velocity field whose bodies never part: "
+                          "remove the key (null removes one inherited through \"extends\") or "
+                          "set type to \"friction\" (with \"normal\": \"logistic_regression\" "
+                          "for \"separation\")");
+    }
     c->reject_unknown_keys();
   }
   if (auto a = r.optional_child("artificial_viscosity", "bulk viscosity, report eq. 12")) {

@@ -222,6 +222,12 @@ enum class ContactType { single_velocity, friction };
 /// Hammerquist & Smith 2020; contact/separating_plane.hpp).
 enum class ContactNormal { mass_gradients, larger_volume, logistic_regression };
 
+/// When two bodies at a node are in contact (contact/contact.hpp): `approach` wherever their
+/// fields approach (Bardenhagen et al. 2001); `separation` where they approach and their particles'
+/// deformed domains meet along the fitted plane's normal (Nairn, Hammerquist & Smith 2020: the
+/// bodies' separation from the logistic regression's cloud; step/contact_planes.cpp).
+enum class ContactDetection { approach, separation };
+
 /// The most velocity fields multi-field contact handles at a node (its per-node arrays in
 /// contact.cpp are this long); the scene check refuses a scene with more (Scene::field_count).
 constexpr int kMaxContactFields = 64;
@@ -230,6 +236,7 @@ struct ContactSpec {
   ContactType type = ContactType::single_velocity;
   double mu = 0.0;  ///< Coulomb friction coefficient [-]
   ContactNormal normal = ContactNormal::mass_gradients;
+  ContactDetection detection = ContactDetection::approach;
 };
 
 /// Artificial bulk viscosity, report eq. 12 (von Neumann & Richtmyer 1950, Wilkins 1980):

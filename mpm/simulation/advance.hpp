@@ -57,7 +57,8 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   const Vec3* body = run.body_force ? run.body_force->data() : nullptr;  // b(X_p, t^n)
   particles_to_grid<Shape>(P, G, S, order, dt, run.halo, body);  // m_I, p_I, f_I (eqs. 20-22)
   if (run.contact && run.contact->normal == ContactNormal::logistic_regression && G.fields() > 1)
-    fit_contact_planes<Shape>(P, G, shape, S, run.halo);  // the planes between bodies (Nairn 2020)
+    fit_contact_planes<Shape>(P, G, shape, S, run.halo,  // the planes between bodies (Nairn 2020)
+                              run.contact->detection == ContactDetection::separation);
   clock.lap(&PhaseTimes::particles_to_grid);
   t.grid = grid_update(G, dt, run.solver.gravity, usl, run.contact);  // v*_I, contact, faces (24)
   clock.lap(&PhaseTimes::grid_update);

@@ -123,10 +123,12 @@ GridSettings Simulation::grid_settings(int threads) const {
   g.light_radius = light.radius;
   g.node_mean_mass = scene_.grid.graded() && scene_.solver.scheme == Scheme::usl;
   if (std::isfinite(light.lightest)) g.light_mass = kLightNodeMassFraction * light.lightest;
-  // Walls hold only where a particle's domain reaches them (grid/wall.cpp). Every rank scatters
+  // Walls hold only where a particle's domain reaches them (grid/wall.cpp); the bodies' separation
+  // measures the domains too (step/contact_planes.cpp). Every rank scatters
   // the touch bits of its particles (the sums carry them to the rank holding the wall's nodes),
   // also one whose box stores no wall node.
-  if (scene_.grid.has_walls())
+  if (scene_.grid.has_walls() ||
+      (g.fields > 1 && scene_.physics.contact.detection == ContactDetection::separation))
     for (const Vec3& l : half_widths(scene_))
       g.particle_half_width.push_back(l.cwiseProduct(scene_.grid.spacing()));
   return g;

@@ -108,11 +108,12 @@ inline constexpr double kLightNodeMassFraction = 0.5;
 
 /// With `contact.normal = "logistic_regression"`: the plane separating the two bodies' particles
 /// at each node of two bodies, fitted by logistic regression (Nairn, Hammerquist & Smith 2020;
-/// contact/separating_plane.hpp), into Grid::contact_plane for the step's contact passes. With
-/// `halo` (several ranks) the other ranks' particles near the box join the clouds.
+/// contact/separating_plane.hpp), into Grid::contact_plane for the step's contact passes; with
+/// `gaps` (`contact.detection = "separation"`) also the bodies' gap along it, Grid::contact_gap.
+/// With `halo` (several ranks) the other ranks' particles near the box join the clouds.
 template <class Shape>
 void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const Stencils<Shape>& S,
-                        const HaloExchange* halo);
+                        const HaloExchange* halo, bool gaps);
 
 /// Grid update (eq. 24), per velocity field: v_I = p_I/m_I, v*_I = v_I + dt (f_I/m_I + g); with
 /// `contact` and more than one field the contact model corrects v_I (the impact) and v*_I (the

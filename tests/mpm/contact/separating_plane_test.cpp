@@ -126,4 +126,32 @@ BOOST_AUTO_TEST_CASE(a_2d_fit_has_no_z_component_and_one_body_gives_none) {
   BOOST_TEST(separating_plane({}, 3).norm() == 0.0);
 }
 
+// The particle's radius along n for the bodies' gap (`contact.detection = "separation"`): the
+// inscribed ellipse of its box of half-widths l carried by F, by hand. An axis-aligned ellipse of
+// semi-axes a, b, along (cos t, sin t): 1 / sqrt(cos^2 t / a^2 + sin^2 t / b^2).
+BOOST_AUTO_TEST_CASE(a_particles_deformed_radius_is_its_ellipse_along_the_normal) {
+  const double pi = std::acos(-1.0), c = std::cos(pi / 6.0), s = std::sin(pi / 6.0);
+  const Vec3 x(1.0, 0.0, 0.0), tilted(c, s, 0.0);
+  const Vec3 l(1e-3, 2e-3, 3e-3), unit(1e-3, 1e-3, 1e-3);
+  const auto tol = boost::test_tools::tolerance(1e-12);
+  const Mat3 I = Mat3::Identity();
+  BOOST_TEST(deformed_radius(I, l, x, 3) == 1e-3, tol);
+  BOOST_TEST(deformed_radius(I, l, tilted, 3) == 1e-3 / std::sqrt(c * c + s * s / 4.0), tol);
+  // Rotated 30 degrees about z: along x the ellipse's axes lie at 30 degrees to it, as the tilted
+  // normal lies to the unrotated ellipse's.
+  Mat3 R;
+  R << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  BOOST_TEST(deformed_radius(R, l, x, 3) == 1e-3 / std::sqrt(c * c + s * s / 4.0), tol);
+  BOOST_TEST(deformed_radius(R, unit, x, 3) == 1e-3, tol);  // a rotated circle: its radius
+  // Compressed to half along x: 0.5 mm along x, 1 / sqrt(4 c^2 + s^2) mm at 30 degrees.
+  const Mat3 squeezed = Vec3(0.5, 1.0, 1.0).asDiagonal();
+  BOOST_TEST(deformed_radius(squeezed, unit, x, 3) == 0.5e-3, tol);
+  BOOST_TEST(deformed_radius(squeezed, unit, tilted, 3) == 1e-3 / std::sqrt(4.0 * c * c + s * s),
+             tol);
+  // A 2D grid: the out-of-plane (hoop) stretch does not widen it.
+  const Mat3 hoop = Vec3(1.0, 1.0, 7.0).asDiagonal();
+  BOOST_TEST(deformed_radius(hoop, l, tilted, 2) == 1e-3 / std::sqrt(c * c + s * s / 4.0), tol);
+  BOOST_TEST(deformed_radius(Mat3::Zero(), l, x, 3) == 0.0);  // degenerate: no reach
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -211,7 +211,8 @@ BOOST_AUTO_TEST_CASE(friction_contact_on_a_slab_boundary_books_as_on_one_rank) {
 // balanced slabs' boundary (x = 10 mm); split across y (and z) the boundary crosses their
 // interface. The small block on the large one (block_on_block.json, 1 us) split as the run
 // chooses (across y) and in boxes 1 x 1 x 2 / 2 x 2 x 1; the Hertz spheres (axisymmetric) split
-// along x at their contact. The blocks and the spheres for their first 30 steps: every step fits
+// along x at their contact, with the gap along the planes (`detection: separation`) compared
+// too. The blocks and the spheres for their first 30 steps: every step fits
 // every plane anew, so a plane that differs shows at once (the fits cost 8.8 s of this test's
 // 33 s on 2 ranks with 99 steps each, 19 s of 69 s on 4). Without the ghosts the nodes within two
 // layers of a boundary fell back to the mass gradients: contact_blocks then booked as with the
@@ -227,6 +228,8 @@ void expect_the_planes_of_one_rank(const Scene& scene) {
   const std::array<int, 3> c0 = ranks.boxes().first_cell(ranks.rank()),
                            c1 = ranks.boxes().end_cell(ranks.rank());
   const int axes = scene.grid.planar() ? 2 : 3;
+  const bool gaps = scene.physics.contact.detection == ContactDetection::separation;
+  BOOST_REQUIRE(G.contact_gap.empty() != gaps);
   long fitted = 0, differ = 0, missing = 0;
   for (const int I : G.active_nodes()) {
     const std::array<int, 3> n = G.ijk(I);
@@ -237,6 +240,10 @@ void expect_the_planes_of_one_rank(const Scene& scene) {
     if (mine != Vec3::Zero()) {
       ++fitted;
       if (mine != one) ++differ;
+      // `detection: separation`: the gap along it too (the ghosts carry their F and half-widths)
+      if (gaps &&
+          G.contact_gap[I] != alone.grid().contact_gap[alone.grid().index(n[0], n[1], n[2])])
+        ++differ;
     } else if (inside && one != Vec3::Zero()) {
       ++missing;
     }
@@ -268,9 +275,12 @@ BOOST_AUTO_TEST_CASE(the_logistic_regression_normal_on_box_boundaries_books_as_o
                             1e-9);
     }
   }
+  // The spheres with the bodies' gap measured along the planes (contact.detection).
+  const Json separation = {{"normal", "logistic_regression"}, {"detection", "separation"}};
   const Scene spheres =
       scene_from("verification/hertz_spheres.json",
-                 {{"physics", {{"contact", lr}}}, {"time", {{"max_time", 2.0e-6}}}});
+                 {{"physics", {{"contact", separation}}}, {"time", {{"max_time", 2.0e-6}}}});
+  BOOST_REQUIRE(spheres.physics.contact.detection == ContactDetection::separation);
   expect_the_planes_of_one_rank(spheres);
   compare_with_one_rank(spheres, 1e-9, 30);
 }

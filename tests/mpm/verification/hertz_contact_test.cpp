@@ -39,6 +39,7 @@
 //    regression of this documented defect, momentum exchanged exactly, an elastic rebound.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "../verification_helpers.hpp"
@@ -111,8 +112,8 @@ double left_momentum(const Particles& P) {
 
 // The two spheres of hertz_spheres.json; the force is the left sphere's loss of momentum, and
 // `restitution` its final velocity over its initial one.
-Impact sphere_pair_impact() {
-  const Scene scene = test::verification_scene("hertz_spheres.json");
+Impact sphere_pair_impact(const Json& patch = Json::object()) {
+  const Scene scene = test::verification_scene("hertz_spheres.json", patch);
   Simulation sim(scene);
   Impact r;
   const double p0 = left_momentum(sim.particles());
@@ -156,6 +157,17 @@ Hertz hertz(const Scene& scene) {
   return h;
 }
 
+// The pair's contact-time and peak-force errors against Hertz's, logged with its books.
+std::pair<double, double> errors_against_hertz(const char* label, const Impact& pair,
+                                               const Hertz& closed) {
+  const double t_err = pair.contact_time / closed.time_above_1_percent - 1.0;
+  const double f_err = pair.peak_force / closed.force - 1.0;
+  BOOST_TEST_MESSAGE(label << ", h = 0.25 mm: t_c " << t_err << ", F_max " << f_err << ", e "
+                           << pair.restitution << ", |energy_error| <= " << pair.worst_energy_error
+                           << ", |total p_x| / p0 <= " << pair.worst_momentum);
+  return {t_err, f_err};
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(hertz_contact)
@@ -196,19 +208,36 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_a_wall_meets_hertz_and_converges_with_the_cell_
 
 BOOST_AUTO_TEST_CASE(two_spheres_in_contact_meet_within_the_documented_distance_of_hertz) {
   const Hertz closed = hertz(test::verification_scene("hertz_spheres.json"));
-  const Impact pair = sphere_pair_impact();
-  const double t_err = pair.contact_time / closed.time_above_1_percent - 1.0;
-  const double f_err = pair.peak_force / closed.force - 1.0;
-  BOOST_TEST_MESSAGE("two spheres, h = 0.25 mm: t_c "
-                     << t_err << ", F_max " << f_err << ", e " << pair.restitution
-                     << ", |energy_error| <= " << pair.worst_energy_error
-                     << ", |total p_x| / p0 <= " << pair.worst_momentum);
+  const Impact pair = sphere_pair_impact({{"time", {{"max_time", 3.0e-5}}}});  // ends by 20 us
+  const auto [t_err, f_err] = errors_against_hertz("two spheres", pair, closed);
   BOOST_TEST(pair.worst_momentum < 1e-12);  // the contact exchanges momentum, creates none
   BOOST_TEST(pair.restitution > 0.98);
   BOOST_TEST(pair.restitution < 1.0 + 1e-3);
   BOOST_TEST(pair.worst_energy_error < 0.005);
   BOOST_TEST(std::abs(t_err) < 0.5);
   BOOST_TEST(std::abs(f_err) < 0.6);
+}
+
+// With `contact.detection = "separation"` (the bodies' gap along the fitted plane, Nairn,
+// Hammerquist & Smith 2020) the two spheres start to touch where their particles' domains meet,
+// as the sphere on the wall does: they meet Hertz as it does at this h (t_c -28 %, F_max +23 %
+// on the wall; the pair -28 % and +23 %, and -14 % and +0.9 % at h = 0.125 mm as the wall's -13.5
+// % and +0.9 %: `mpm run` of the scene with --set '{"grid":{"cells":[336,96]},...}'). The
+// bounds are the wall's at this h; the approach test's -42 % and +53 % fail them. Run to 30 us:
+// the pulse ends by 24 us.
+BOOST_AUTO_TEST_CASE(two_spheres_meet_hertz_as_on_a_wall_when_contact_waits_for_the_particles) {
+  const Hertz closed = hertz(test::verification_scene("hertz_spheres.json"));
+  const Impact pair = sphere_pair_impact(
+      {{"time", {{"max_time", 3.0e-5}}},
+       {"physics",
+        {{"contact", {{"normal", "logistic_regression"}, {"detection", "separation"}}}}}});
+  const auto [t_err, f_err] = errors_against_hertz("two spheres by separation", pair, closed);
+  BOOST_TEST(pair.worst_momentum < 1e-12);
+  BOOST_TEST(pair.restitution > 0.99);
+  BOOST_TEST(pair.restitution < 1.0 + 1e-3);
+  BOOST_TEST(pair.worst_energy_error < 0.005);
+  BOOST_TEST(std::abs(t_err) < 0.35);
+  BOOST_TEST(std::abs(f_err) < 0.3);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
