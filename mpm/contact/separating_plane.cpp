@@ -197,4 +197,11 @@ double deformed_radius(const Mat3& F, const Vec3& l, const Vec3& n, int dims) {
   return std::isfinite(r) ? r : 0.0;
 }
 
+double deformed_reach(const Mat3& F, const Vec3& l, const Vec3& n, int dims) {
+  const Vec3 Fn = F.transpose() * n;
+  double r = 0.0;
+  for (int d = 0; d < dims; ++d) r += l(d) * std::abs(Fn(d));
+  return r;
+}
+
 }  // namespace impact::mpm

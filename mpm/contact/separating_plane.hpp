@@ -62,4 +62,10 @@ Vec3 separating_plane(std::span<const PlanePoint> points, int dims);
 /// (tests/mpm/verification/contact_detection_test.cpp). Zero for a degenerate F.
 double deformed_radius(const Mat3& F, const Vec3& l, const Vec3& n, int dims);
 
+/// The reach along the unit vector n of the same particle's deformed box [m], sum_d l_d
+/// abs((F^T n)_d) (its support: no point of the box lies further along n), at least
+/// deformed_radius. The gap at a node of three or more bodies (step/contact_planes.cpp) takes it,
+/// so that a positive gap along any direction means the domains are apart.
+double deformed_reach(const Mat3& F, const Vec3& l, const Vec3& n, int dims);
+
 }  // namespace impact::mpm

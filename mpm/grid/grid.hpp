@@ -271,12 +271,14 @@ class Grid {
   /// normal of the plane separating the node's two bodies, from the body of lower index into the
   /// other; zero where none was fitted (step/contact_planes.cpp) and contact uses the gradients.
   std::vector<Vec3> contact_plane;
-  /// With `contact.detection = "separation"`, per node: the gap between the two bodies' particle
-  /// domains along contact_plane [m] (> 0: apart, no contact; step/contact_planes.cpp); empty
-  /// otherwise. Meaningful where contact_plane is not zero.
+  /// With `contact.detection = "separation"`, per node: the gap between the bodies' particles
+  /// [m] (> 0: apart, no contact), along contact_plane at a node of two, the smallest pair's at a
+  /// node of three or more; NaN where none was measured (step/contact_planes.cpp); empty
+  /// otherwise.
   std::vector<double> contact_gap;
   /// Scratch of step/contact_planes.cpp, per node: -1, or the node's place among the step's
-  /// two-body nodes (reset after each use, so a step touches only its active nodes).
+  /// two-body nodes (and, with gaps, those of three or more bodies; reset after each use, so a
+  /// step touches only its active nodes).
   std::vector<int> contact_plane_slot;
   /// v*_I - v_I before the face conditions at the boundary nodes (field-major, boundary_nodes()
   /// order): the faces' impulse is what they changed in it.

@@ -1,7 +1,9 @@
 // The separating planes of `contact.normal = "logistic_regression"` (contact/separating_plane.hpp,
 // Nairn, Hammerquist & Smith 2020): after particles to grid, at every node where exactly two
 // bodies have mass, a plane is fitted by logistic regression to the two bodies' particles near it,
-// and its unit normal is stored for contact (Grid::contact_plane). The cloud is wider than the
+// and its unit normal is stored for contact (Grid::contact_plane); with `contact.detection =
+// "separation"` the bodies' gap along it too (Grid::contact_gap; at a node of three or more bodies,
+// which gets no plane, pair by pair: 3b below). The cloud is wider than the
 // node's own support: the particles that weigh on the node or on any neighbouring two-body node
 // (S_Ip > 0, the step's stencils), weighted by a tent of kPlaneReach cells about the node. The
 // node's own support alone (1 + l_p cells) sees a few particle layers of a surface that is not
@@ -219,15 +221,21 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
   const auto position = [&](std::ptrdiff_t q) -> const Vec3& {
     return q < np ? P.x[q] : ghosts[std::size_t(q - np)].x;
   };
-  // q's deformed radius along the unit vector n [m] (separating_plane.hpp): its half-widths are
-  // its own on a graded grid (the owner's, for a ghost), else its object's.
-  const auto radius = [&](std::ptrdiff_t q, const Vec3& n) {
+  // q's deformed radius (or its box's reach) along the unit vector n [m] (separating_plane.hpp):
+  // its half-widths are its own on a graded grid (the owner's, for a ghost), else its object's.
+  const auto domain_along = [&](auto measure, std::ptrdiff_t q, const Vec3& n) {
     const bool ghost = q >= np;
     const std::size_t g = ghost ? std::size_t(q - np) : 0;
     const Vec3& l = G.spec().graded()
                         ? (ghost ? ghosts[g].half_width : P.half_width[q])
                         : G.settings().particle_half_width[ghost ? ghosts[g].object : P.object[q]];
-    return deformed_radius(ghost ? exchanged.F[g] : P.state[q].F, l, n, G.spec().dimensions());
+    return measure(ghost ? exchanged.F[g] : P.state[q].F, l, n, G.spec().dimensions());
+  };
+  const auto radius = [&](std::ptrdiff_t q, const Vec3& n) {
+    return domain_along(deformed_radius, q, n);
+  };
+  const auto box_reach = [&](std::ptrdiff_t q, const Vec3& n) {
+    return domain_along(deformed_reach, q, n);
   };
   const auto seed_id = [&](std::ptrdiff_t q) -> std::uint64_t {
     if (q >= np) return ghosts[std::size_t(q - np)].id;
@@ -289,48 +297,46 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
   const Vec3 base = G.spacing();
   const int dims = spec.dimensions();
   // 3b. The gap at a node of three or more bodies (`detection: separation`), which has no plane:
-  //     for each pair of them, along the line between their particles' centroids in the node's
-  //     list (as the mirror leaves it), min over the second of (m . x_p - r_p) minus max over the
-  //     first of (m . x_p + r_p); the smallest of the pairs. The gap of two convex bodies along
-  //     any direction is at most their distance, so a positive gap along this one means apart;
-  //     along a poor direction it reads too small and contact falls back to approach. Without
-  //     it approach alone decided there, and three blocks closing on one point across gaps of
-  //     one and two cells squeezed each other at those nodes while the pair nodes around read
-  //     gaps: 39 J of 60 J in strain energy by 12 us (tests/mpm/verification/
-  //     contact_detection_test.cpp).
+  //     for each pair of them, along the line between the centres of the boxes that bound their
+  //     particles in the node's list (as the mirror leaves it: min and max, so the same bits in
+  //     any list order, thread or rank), min over the second of (m . x_p - s_p) minus max over
+  //     the first of (m . x_p + s_p), s_p the reach of the particle's deformed box along m
+  //     (separating_plane.hpp); the smallest of the pairs. Two convex bodies' gap along any
+  //     direction is at most their distance, and the boxes' reach bounds the particles' domains,
+  //     so a positive gap means apart; along a poor direction it reads too small and approach
+  //     decides. Without it approach alone decided there, and three blocks closing on one point
+  //     across gaps of one and two cells squeezed each other at those nodes while the pair nodes
+  //     around read gaps: 39 J of 60 J in strain energy by 12 us
+  //     (tests/mpm/verification/contact_detection_test.cpp).
   const auto smallest_pair_gap = [&](int k, const Vec3& node, const MirrorView& mirror) {
-    std::array<Vec3, 64> centroid;
-    std::array<int, 64> members{};
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    std::array<Vec3, 64> low, high;
     const std::uint64_t mask = node_bodies[std::size_t(k)];
     for (std::uint64_t rest = mask; rest != 0; rest &= rest - 1) {
-      centroid[std::size_t(std::countr_zero(rest))].setZero();
+      low[std::size_t(std::countr_zero(rest))].setConstant(inf);
+      high[std::size_t(std::countr_zero(rest))].setConstant(-inf);
     }
-    const auto list = [&] {
-      return std::span<const int>(entries.data() + start[k], entries.data() + start[k + 1]);
-    };
-    for (const int q : list()) {
-      const int b = body_of(field_of(q));
-      centroid[std::size_t(b)] += position(q) - node;
-      ++members[std::size_t(b)];
+    const std::span<const int> list(entries.data() + start[k], entries.data() + start[k + 1]);
+    for (const int q : list) {
+      const std::size_t b = std::size_t(body_of(field_of(q)));
+      low[b] = low[b].cwiseMin(position(q) - node);
+      high[b] = high[b].cwiseMax(position(q) - node);
     }
-    const double closed = -std::numeric_limits<double>::infinity();
-    double smallest = std::numeric_limits<double>::infinity();
+    double smallest = inf;
     for (std::uint64_t ra = mask; ra != 0; ra &= ra - 1)
       for (std::uint64_t rb = ra & (ra - 1); rb != 0; rb &= rb - 1) {
-        const int a = std::countr_zero(ra), b = std::countr_zero(rb);
-        if (members[std::size_t(a)] == 0 || members[std::size_t(b)] == 0) return closed;
-        Vec3 line = mirror.applied_to(centroid[std::size_t(b)] / members[std::size_t(b)] -
-                                      centroid[std::size_t(a)] / members[std::size_t(a)]);
+        const std::size_t a = std::size_t(std::countr_zero(ra)),
+                          b = std::size_t(std::countr_zero(rb));
+        Vec3 line = mirror.applied_to(0.5 * (low[b] + high[b]) - 0.5 * (low[a] + high[a]));
         if (dims == 2) line(2) = 0.0;
-        if (!(line.norm() > 0.0)) return closed;  // no direction
+        if (!(line.norm() > 0.0)) return -inf;  // no direction (or a body without particles)
         const Vec3 m = line.normalized();
-        double top = -std::numeric_limits<double>::infinity();
-        double bottom = std::numeric_limits<double>::infinity();
-        for (const int q : list()) {
-          const int body = body_of(field_of(q));
+        double top = -inf, bottom = inf;
+        for (const int q : list) {
+          const std::size_t body = std::size_t(body_of(field_of(q)));
           const double along = m.dot(position(q) - node);
-          if (body == b) bottom = std::min(bottom, along - radius(q, m));
-          if (body == a) top = std::max(top, along + radius(q, m));
+          if (body == b) bottom = std::min(bottom, along - box_reach(q, m));
+          if (body == a) top = std::max(top, along + box_reach(q, m));
         }
         smallest = std::min(smallest, bottom - top);
       }
@@ -375,7 +381,9 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
               stored_node = stored_node && m[d] >= stored.first[d] && m[d] <= stored.last[d];
             if (!stored_node) continue;
             const int kj = slot[G.index(m[0], m[1], m[2])];
-            if (kj < 0) continue;
+            // Pair nodes only (a node of three bodies is listed only for its gap, 3b): the
+            // planes are those of approach runs.
+            if (kj < 0 || pair_bodies[std::size_t(kj)][0] < 0) continue;
             for (auto e = entries.begin() + start[kj]; e != entries.begin() + start[kj + 1]; ++e) {
               if (taken[compact[*e]] == k + 1) continue;
               const int body = body_of(field_of(*e));
@@ -416,7 +424,7 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
         else
           top = std::max(top, along + radius(*e, m));
       }
-      G.contact_gap[I] = bottom - top;
+      if (std::isfinite(bottom - top)) G.contact_gap[I] = bottom - top;  // else NaN: approach
     }
   }
 }

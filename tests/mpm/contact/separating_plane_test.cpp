@@ -154,4 +154,20 @@ BOOST_AUTO_TEST_CASE(a_particles_deformed_radius_is_its_ellipse_along_the_normal
   BOOST_TEST(deformed_radius(Mat3::Zero(), l, x, 3) == 0.0);  // degenerate: no reach
 }
 
+// The deformed box's reach along n, sum_d l_d abs((F^T n)_d), by hand: the box's corner.
+BOOST_AUTO_TEST_CASE(a_particles_deformed_box_reaches_its_corner_along_the_normal) {
+  const double pi = std::acos(-1.0), c = std::cos(pi / 6.0), s = std::sin(pi / 6.0);
+  const Vec3 x(1.0, 0.0, 0.0), tilted(c, s, 0.0), l(1e-3, 2e-3, 3e-3);
+  const auto tol = boost::test_tools::tolerance(1e-12);
+  BOOST_TEST(deformed_reach(Mat3::Identity(), l, x, 3) == 1e-3, tol);
+  BOOST_TEST(deformed_reach(Mat3::Identity(), l, tilted, 3) == 1e-3 * c + 2e-3 * s, tol);
+  BOOST_TEST(deformed_reach(Mat3::Identity(), l, tilted, 3) >
+             deformed_radius(Mat3::Identity(), l, tilted, 3));  // the ellipse lies inside
+  Mat3 R;  // rotated 30 degrees about z: along x, the rotated half-edges' x components
+  R << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  BOOST_TEST(deformed_reach(R, l, x, 3) == 1e-3 * c + 2e-3 * s, tol);
+  const Mat3 hoop = Vec3(1.0, 1.0, 7.0).asDiagonal();  // 2D: no extent along z
+  BOOST_TEST(deformed_reach(hoop, l, Vec3(0.0, 0.0, 1.0), 2) == 0.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
