@@ -143,6 +143,8 @@ struct Bodies {
   double m[kMaxFields];
   double volume[kMaxFields];  ///< sum over the body's fields of m_f / rho_f [m^3]
   Vec3 v[kMaxFields], grad[kMaxFields], v0[kMaxFields];
+  /// A rigid object (SceneObject::rigid): a partner of infinite mass, never corrected.
+  bool rigid[kMaxFields];
   /// A pair's fitted plane (`logistic_regression`): the normal of each body into the other.
   bool has_plane = false;
   Vec3 plane[2];
@@ -161,6 +163,29 @@ Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNorma
   return larger == b ? Vec3(-B.grad[b]) : Vec3(B.grad[larger]);
 }
 
+// The normal of body b against the rigid object r: the rigid body's own surface, grad m_r (its
+// mass grows into it), whatever contact.normal says; the pair's sum grad m_r - grad m_b where the
+// node is deep inside it (its gradient there is round-off, whose direction is noise). A rigid body
+// does not deform, so its surface is the contact surface (NairnMPM biases rigid contact to the
+// rigid material's gradient likewise). The deformable body's gradient tilts at its own edges: a
+// block at rest on a floor moving at 5 m/s under it read the floor's slide as an approach of its
+// rear face, and the first step made 1.4e-7 J of strain from nothing (5.6 times the energy that had
+// entered); beside a second block the sum over all bodies pushed the blocks apart.
+Vec3 normal_against_rigid(const Bodies& B, int b, int r) {
+  const double rigid = B.grad[r].norm();
+  if (rigid > 1e-6 * (rigid + B.grad[b].norm())) return B.grad[r];
+  return B.grad[r] - B.grad[b];
+}
+
+// The rigid object a node's bodies are corrected against: the one with the most volume there
+// (NairnMPM's choice; not its density, which is arbitrary for a rigid body); -1 if none.
+int rigid_partner(const Bodies& B) {
+  int r = -1;
+  for (int b = 0; b < B.n; ++b)
+    if (B.rigid[b] && (r < 0 || B.volume[b] > B.volume[r])) r = b;
+  return r;
+}
+
 // `hold[b]` (the strain pass, null otherwise): body b was held by the step (contact.hpp), so its
 // relative normal velocity is zeroed whatever its sign; Coulomb acts only where it approaches.
 // `stick[b]` (the strain pass): the step's friction stuck body b, so all its velocity relative to
@@ -176,8 +201,15 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bo
     gradM += B.grad[b];
     if (book) P0 += B.m[b] * B.v0[b];
   }
-  const Vec3 vcm = P / M;
-  const Vec3 vcm_start = P0 / M;
+  Vec3 vcm = P / M;
+  Vec3 vcm_start = P0 / M;
+  // A rigid object has infinite mass: the centre of mass moves with it (with two at one node,
+  // the larger there; each is held at its own velocity, grid/rigid_fields.cpp).
+  const int rigid = rigid_partner(B);
+  if (rigid >= 0) {
+    vcm = B.v[rigid];
+    vcm_start = B.v0[rigid];
+  }
   Vec3 net = Vec3::Zero();
   bool any = false;
   for (int b = 0; b < B.n; ++b) {
@@ -185,7 +217,9 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bo
     heat[b] = 0.0;
     approached[b] = false;
     stuck[b] = false;
-    const Vec3 g = surface_normal(B, gradM, b, rule);
+    if (B.rigid[b]) continue;
+    const Vec3 g =
+        rigid >= 0 ? normal_against_rigid(B, b, rigid) : surface_normal(B, gradM, b, rule);
     const double gn = g.norm();
     if (!(gn > 0.0)) continue;  // no surface here: leave the body alone
     const Vec3 n = g / gn;
@@ -217,7 +251,8 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bo
     net += B.m[b] * dv[b];
     any = true;
   }
-  const Vec3 mean = net / M;  // zero to round-off for a pair; removes it for three or more
+  if (rigid >= 0) return any;  // the momentum gained is the rigid object's reaction
+  const Vec3 mean = net / M;   // zero to round-off for a pair; removes it for three or more
   for (int b = 0; b < B.n; ++b) dv[b] -= mean;
   return any;
 }
@@ -245,7 +280,9 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   // against the others); every field its own body if the solver set none.
   int body_of[kMaxFields];
   double inverse_density[kMaxFields];  // 1 / rho_f: the nodal volume m_f / rho_f
+  bool rigid_field[kMaxFields];        // a rigid object's field (grid/rigid_fields.cpp)
   for (int f = 0; f < nf; ++f) {
+    rigid_field[f] = G.has_rigid_fields() && G.settings().rigid_field[std::size_t(f)];
     body_of[f] =
         f < static_cast<int>(G.settings().field_body.size()) ? G.settings().field_body[f] : f;
     inverse_density[f] = f < static_cast<int>(G.settings().field_density.size())
@@ -296,6 +333,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           B.m[slot] = 0.0;
           B.volume[slot] = 0.0;
           B.grad[slot].setZero();
+          B.rigid[slot] = rigid_field[active[a]];
           P[slot].setZero();
           P0[slot].setZero();
           members[slot] = 0;
@@ -353,10 +391,14 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           correct(B, contact.mu, contact.normal, book, strain ? hold : nullptr,
                   strain ? stick : nullptr, dv, heat, approached, stuck)) {
         any = true;
+        bool rigid_here = false;
+        for (int b = 0; b < B.n; ++b) rigid_here = rigid_here || B.rigid[b];
+        Vec3 rigid_impulse = Vec3::Zero();  // what the step's corrections gained: the reaction
         for (int a = 0; a < na; ++a) {
           const int e = active[a] * nn + I;
           const int b = body_index[a];
           v[e] += dv[b];
+          if (book && rigid_here) rigid_impulse += G.mass[e] * dv[b];
           if (book && approached[b]) G.contact_held[e] |= kHeldBetweenBodies;
           if (book && stuck[b]) G.contact_held[e] |= kStuckBetweenBodies;
           if (book && heat[b] > 0.0) {  // shared by the body's fields by mass
@@ -364,6 +406,10 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
             if (owned) sum.friction_heat += h;
             if (write_heat) G.heat[e] += h;
           }
+        }
+        if (book && rigid_here && owned) {  // at the velocity of the partner that held them
+          sum.rigid_impulse += rigid_impulse;
+          sum.rigid_work += rigid_impulse.dot(B.v[rigid_partner(B)]);
         }
       }
       // 2. Within a body with two fields here (a material's parent and its converted particles):
@@ -384,6 +430,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           pair.v[pair.n] = as_mirrored(v[e]);
           pair.grad[pair.n] = grad[a];
           pair.v0[pair.n] = as_mirrored(G.velocity[e]);
+          pair.rigid[pair.n] = false;  // within a body: never a rigid object's
           ++pair.n;
         }
         for (int k = 0; k < pair.n; ++k) {

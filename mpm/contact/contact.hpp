@@ -38,7 +38,14 @@
 //               node of three or more bodies the gap is measured pair by pair; where none could
 //               be measured (mixed particles: no plane), approach alone.
 //   correction  Dv = -u_n n - s t, s = min(mu u_n, |u_t|), u = v_f - v_cm, t = u_t / |u_t|:
-//               Coulomb slip, or stick when s = |u_t|.
+//               Coulomb slip, or stick when s = |u_t|. With a rigid object at the node v_cm is
+//               its velocity (infinite mass; with two, the one with more volume there), it
+//               takes no correction, and the mean correction is not removed: the momentum the
+//               others gain is its reaction (grid/rigid_fields.cpp). The normal there is the
+//               rigid body's own surface, grad m_rigid, whatever `normal` says (it does not
+//               deform; contact.cpp normal_against_rigid). At a node of three or more bodies
+//               with a rigid one, each is corrected against the rigid alone; the other bodies
+//               are not corrected against each other there.
 //   heat        only in slip (s < |u_t|; static friction does no work): m_f s (u0_f . t) >= 0
 //               per field, the friction impulse times the relative slip at the start of the step
 //               (u0 = v0_f - v0_cm of the corrected start field) along the slip direction t; a
@@ -74,12 +81,19 @@ namespace impact::mpm {
 /// (booking it as a loss counted that energy twice: +7.6 % of E0 on the elastic contact blocks).
 /// The friction reaction's Coulomb dissipation is m s (u0 . t) >= 0 per field in slip (s < |u_t|),
 /// s = min(mu u_n, |u_t|) the slip it removes; zero in stick.
+/// A rigid object (SceneObject::rigid) is a partner of infinite mass: the other bodies are
+/// corrected against its velocity V, it is never corrected, and the momentum they gain is its
+/// reaction, booked as a boundary's impulse J (the sum of m dv over the fields it corrected), its
+/// work J . V (zero for a body at rest) as external work, as a moving face's.
 struct ContactTotals {
-  double friction_heat = 0.0;  ///< >= 0 [J]
-  long contact_nodes = 0;      ///< nodes where a correction was applied
+  double friction_heat = 0.0;         ///< >= 0 [J]
+  long contact_nodes = 0;             ///< nodes where a correction was applied
+  Vec3 rigid_impulse = Vec3::Zero();  ///< what the rigid objects gave the other bodies [N s]
+  double rigid_work = 0.0;            ///< its work, J . V [J]
   /// How each total combines over threads and ranks (mpm/ledger/totals.hpp).
   static constexpr auto kFields =
-      std::tuple{summed(&ContactTotals::friction_heat), summed(&ContactTotals::contact_nodes)};
+      std::tuple{summed(&ContactTotals::friction_heat), summed(&ContactTotals::contact_nodes),
+                 summed(&ContactTotals::rigid_impulse), summed(&ContactTotals::rigid_work)};
 };
 
 /// Which correction: `start` on the start velocities (the start the step's forces act from; the

@@ -128,6 +128,10 @@ struct GridSettings {
   std::vector<int> field_body;
   /// Reference density of each velocity field's material [kg/m^3] (contact's nodal volumes).
   std::vector<double> field_density;
+  /// Per velocity field, 1 where it carries a rigid object (SceneObject::rigid), and that
+  /// object's velocity [m/s] (Grid::hold_rigid_fields); both empty when no object is rigid.
+  std::vector<std::uint8_t> rigid_field;
+  std::vector<Vec3> rigid_velocity;
   /// Per scene object: the particles' half-widths [m] (uGIMP's l times the spacing), the extent
   /// of a particle's domain for the touch test of the wall faces and for the bodies' separation
   /// (`contact.detection = "separation"`); empty without either.
@@ -327,6 +331,13 @@ class Grid {
   double apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallPass pass);
   bool has_walls() const {
     return !wall_all_.empty();
+  }
+  /// Rigid objects (GridSettings::rigid_field, grid/rigid_fields.cpp): at every active node where
+  /// a rigid field has mass its entry of `v` becomes the object's velocity, whatever forces,
+  /// contact and faces made of it. No-op without rigid objects.
+  void hold_rigid_fields(std::vector<Vec3>& v) const;
+  bool has_rigid_fields() const {
+    return !settings_.rigid_field.empty();
   }
   /// The bits (1 << face) of the wall faces that a particle at `x` moving at `v`, of half-widths
   /// `half_width` [m], reaches within `dt`: n . (x - x_wall) - l_n + dt min(0, n . v) <= 1e-9 of

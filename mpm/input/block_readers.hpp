@@ -63,6 +63,9 @@ void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMate
 void check_objects_in_grid(InputProblems& problems, const Scene& s);
 void check_planar_scene(InputProblems& problems, Scene& s);
 void check_field_count(InputProblems& problems, const Scene& s);
+/// Rigid objects: multi-field contact, a material of their own, a velocity of numbers, no body
+/// force.
+void check_rigid_objects(InputProblems& problems, const Scene& s);
 /// The expressions of the objects' velocities and body forces at their seed points (t = 0): a
 /// value that is not finite is refused, naming the point; sets each object's velocity peak and
 /// initial body-force peak for the estimates, and checks the velocity's units there.

@@ -81,6 +81,9 @@ void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMate
     obj.body_force = read_vector_expression(
         o, on, "body_force", "body force per unit mass b(X, t) [m/s^2], beside solver.gravity",
         constants, Vec3::Zero());
+    obj.rigid = o.boolean_or("rigid", false,
+                             "a rigid body: it moves at `velocity` for ever, other bodies contact "
+                             "it (docs/scenes.md#rigid-objects)");
     obj.temperature = o.quantity_or("temperature", 294.0, Quantity::temperature,
                                     Range::open(0.0, 1e4), "initial temperature [K]");
     obj.particles_per_cell =

@@ -209,6 +209,41 @@ void check_initial_fields(InputProblems& problems, Scene& s) {
   }
 }
 
+// A rigid object (SceneObject::rigid) is a velocity field held at one velocity: it needs fields of
+// its own (multi-field contact, a material no deformable body shares) and numbers for that
+// velocity; a body force on it would do nothing.
+void check_rigid_objects(InputProblems& problems, const Scene& s) {
+  for (const SceneObject& o : s.objects) {
+    if (!o.rigid) continue;
+    const std::string key = "/objects/" + o.name;
+    if (s.physics.contact.type == ContactType::single_velocity)
+      problems.add(key + "/rigid",
+                   "a rigid object meets the other bodies through multi-field contact: expected "
+                   "physics.contact.type \"friction\" (under \"single_velocity\" every body "
+                   "shares one velocity field)");
+    if (o.velocity_field.has_text())
+      problems.add(key + "/velocity",
+                   "a rigid object moves at one velocity for ever: expected three numbers [m/s], "
+                   "not expressions");
+    if (o.has_body_force())
+      problems.add(key + "/body_force",
+                   "a rigid object keeps its velocity, so a body force would not act on it: "
+                   "remove the key");
+    if (std::size_t(o.material) >= s.materials.size()) continue;  // its own problem already
+    for (const SceneObject& other : s.objects) {
+      if (&other == &o || other.material != o.material) continue;
+      if (other.rigid && other.velocity == o.velocity && !other.velocity_field.has_text()) continue;
+      problems.add(key + "/material",
+                   "material \"" + s.materials[std::size_t(o.material)].name +
+                       "\" is also that of object \"" + other.name + "\", which " +
+                       (other.rigid ? "moves at another velocity" : "is not rigid") +
+                       ": a material's particles share one velocity field; give the rigid "
+                       "object a material of its own (the same file under another name)");
+      break;
+    }
+  }
+}
+
 // Multi-field contact keeps per-node arrays of kMaxContactFields fields (contact.cpp): a scene
 // with more velocity fields is refused here rather than have the rest ignored.
 void check_field_count(InputProblems& problems, const Scene& s) {

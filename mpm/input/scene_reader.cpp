@@ -35,6 +35,7 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   warn_of_idle_expression_names(problems, s);
   read_observables(problems, doc, s);
   check_field_count(problems, s);
+  check_rigid_objects(problems, s);
   root.reject_unknown_keys();
   problems.throw_if_any();
   s.warnings.insert(s.warnings.end(), problems.warnings().begin(), problems.warnings().end());

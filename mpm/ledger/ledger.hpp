@@ -3,9 +3,10 @@
 //   kinetic_energy  = sum_p 1/2 m_p |v_p|^2, end-of-step velocity            (report eq. 13)
 //   strain_energy   = sum_steps sum_p 1/2 (sigma_n + sigma_{n+1}) : D V_{n+1} dt   (eq. 14)
 //   total_energy    = kinetic + strain                                  (the report's quantity)
-//   boundary_impulse = what the grid-face conditions exerted (grid/boundary.cpp); stationary faces
-//                     do no work, so they have no energy column; a moving face's work
-//                     (grid.face_velocity) is external_work
+//   boundary_impulse = what the grid-face conditions exerted (grid/boundary.cpp), and the rigid
+//                     objects' contact (contact/contact.hpp); stationary faces and bodies do no
+//                     work, so they have no energy column; a moving face's or rigid object's work
+//                     is external_work
 //   sinks           = one column each, registered by the solver for the physics a scene uses, each
 //                     >= 0 and non-decreasing by construction: viscous_work and friction_heat (in
 //                     the balance: heat), eroded_energy (part of strain_energy: shown, not added)
@@ -15,11 +16,12 @@
 //                      - external_work) / E_in: the numerical residual (time integration and
 //                      transfers), the one term that is not physics
 // with E0 the initial kinetic energy and E_in the largest energy that has entered so far,
-// max over the run of E0 + external_work (the energy-growth check's reference): E0 when no body
-// force works. Divided by E0 alone, a body released at rest under gravity read in J and one
-// released at 0.01 m/s read -7.4e4 (issue 53). 1 J if nothing has entered (an absolute error).
-// Column names carry their unit, `name [unit]` (the point driver's convention); a plane-strain
-// run's are per metre of thickness (extensive_units.hpp).
+// max over the run of E0 + external_work (the energy-growth check's reference), at least 1/2 M V^2
+// with a rigid object moving at V (start()): E0 when no body force works. Divided by E0 alone, a
+// body released at rest under gravity read in J and one released at 0.01 m/s read -7.4e4 (issue
+// 53). 1 J if nothing has entered (an absolute error). Column names carry their unit, `name [unit]`
+// (the point driver's convention); a plane-strain run's are per metre of thickness
+// (extensive_units.hpp).
 #pragma once
 
 #include <string>
@@ -83,8 +85,13 @@ class Ledger {
   int add_sink_column(std::string name, bool in_balance = true, bool unchecked = false);
   const std::vector<std::string>& sink_names() const { return sink_names_; }
 
-  /// The state at t = 0 (E0 and p0).
-  void start(double time, double kinetic_energy, const Vec3& momentum);
+  /// The state at t = 0 (E0 and p0). `drive` [J]: the energy scale of a rigid object moving at
+  /// V, 1/2 M V^2 of the system's mass M (Simulation::restart_ledger; 0 without one): E_in is at
+  /// least that from the start (docs/mpm.md#ledger). A rigid body set moving against a body at
+  /// rest strains it from the first step, while contact books its work from the second (the
+  /// start pass corrects velocities the particles do not carry); against an E_in of round-off
+  /// the first step read energy_error 1e16 and the growth check stopped valid runs.
+  void start(double time, double kinetic_energy, const Vec3& momentum, double drive = 0.0);
   /// One step's increments and end-of-step particle totals.
   void record_step(double time, double kinetic_energy, const Vec3& momentum,
                    double strain_energy_increment, const Vec3& boundary_impulse,

@@ -93,8 +93,9 @@ StepEstimate estimate_steps(const Scene& scene) {
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const SceneObject& o = scene.objects[oi];
     const ElasticPlastic& model = scene.materials[o.material].material.model;
-    const double c = model.wave_speed(model.initial_state(o.temperature));
-    const double signal = c + o.velocity.norm();
+    // A rigid object carries no wave; what it pushes moves at up to c + |V| (Scene::rigid_speed).
+    const double c = o.rigid ? 0.0 : model.wave_speed(model.initial_state(o.temperature));
+    const double signal = c + o.velocity.norm() + scene.rigid_speed();
     if (signal > e.signal_speed) {  // NaN (no wave speed) is skipped
       e.signal_speed = signal;
       e.fastest = oi;

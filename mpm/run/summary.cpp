@@ -113,6 +113,9 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
          scene.objects[o].velocity_field.has_text()  // a field: summed over its seed points
              ? initial_fields(scene, o).kinetic_energy
              : 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
+    // A rigid object's motion is outside the books (docs/scenes.md#rigid-objects): its kinetic
+    // energy above is not in E0.
+    if (scene.objects[o].rigid) objects[scene.objects[o].name]["rigid"] = true;
     total_mass += mass;
     total += n;
   }

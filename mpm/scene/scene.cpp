@@ -54,6 +54,14 @@ int Scene::field_count() const {
   return physics.create_new_particles ? 2 * n : n;
 }
 
+std::vector<std::optional<Vec3>> Scene::rigid_field_velocities() const {
+  if (!has_rigid_objects()) return {};
+  std::vector<std::optional<Vec3>> v(static_cast<std::size_t>(field_count()));
+  for (const SceneObject& o : objects)
+    if (o.rigid) v[std::size_t(parent_field(o.material))] = o.velocity;
+  return v;
+}
+
 int Scene::parent_field(int material) const {
   return field_count() == 1 ? 0 : material;
 }

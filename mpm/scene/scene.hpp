@@ -337,6 +337,11 @@ struct SceneObject {
   /// max |b(X_p, 0)| over the seed points [m/s^2] (the reader's, mpm/scene/initial_fields.hpp):
   /// what the step estimate takes of the body force.
   double initial_body_force_peak = 0.0;
+  /// A rigid body (objects.<name>.rigid): its particles move at `velocity` for ever, carry no
+  /// stress and take no body force; the other bodies meet it through multi-field contact as a
+  /// partner of infinite mass (Nairn's rigid material; contact/contact.hpp). Its material gives
+  /// its density (the nodal masses the contact normals read) and its own velocity field.
+  bool rigid = false;
 
   bool has_body_force() const { return body_force.has_text() || !body_force.value.isZero(0.0); }
 };
@@ -377,6 +382,22 @@ struct Scene {
     return std::any_of(objects.begin(), objects.end(),
                        [](const SceneObject& o) { return o.has_body_force(); });
   }
+  /// Whether an object is rigid (SceneObject::rigid).
+  bool has_rigid_objects() const {
+    return std::any_of(objects.begin(), objects.end(),
+                       [](const SceneObject& o) { return o.rigid; });
+  }
+  /// The largest speed of a rigid object [m/s] (0: none moves): the material it pushes is driven
+  /// at it before its particles show it, as a moving face's.
+  double rigid_speed() const {
+    double v = 0.0;
+    for (const SceneObject& o : objects)
+      if (o.rigid) v = std::max(v, o.velocity.norm());
+    return v;
+  }
+  /// Per velocity field, the velocity of the rigid object it carries [m/s] (its material's parent
+  /// field), empty for a field of deformable bodies; an empty vector when no object is rigid.
+  std::vector<std::optional<Vec3>> rigid_field_velocities() const;
   /// The field a particle of material m starts in, and the companion it moves to on failure.
   int parent_field(int material) const;
   int companion_field(int material) const;

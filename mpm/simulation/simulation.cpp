@@ -24,6 +24,12 @@ int thread_count(int requested) {
   return std::min(omp_get_max_threads(), kMaxThreads);
 }
 
+// A rigid object that moves works on what it pushes: the ledger's external columns book it.
+bool moving_rigid_object(const Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [](const SceneObject& o) { return o.rigid && !o.velocity.isZero(0.0); });
+}
+
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm)
@@ -40,7 +46,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
       ledger_(!scene.solver.gravity.isZero(0.0) || scene.has_body_force() ||
-                  scene.grid.has_moving_faces(),
+                  scene.grid.has_moving_faces() || moving_rigid_object(scene),
               scene.grid.outflow == Outflow::remove,
               Vec3(scene.grid.geometry_facts().momentum_components.data()),
               ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
@@ -64,6 +70,13 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
       st.companion_field.push_back(static_cast<std::uint16_t>(scene_.companion_field(int(m))));
     }
   }
+  // Rigid objects: their fields are held at their velocities (grid/rigid_fields.cpp), their
+  // particles never strain, and only their speed enters the time step.
+  for (const std::optional<Vec3>& V : scene_.rigid_field_velocities())
+    st.rigid_field.push_back(V.has_value());
+  if (!st.rigid_field.empty())
+    for (std::size_t p = 0; p < particles_.size(); ++p)
+      if (st.rigid_field[particles_.field[p]]) particles_.wave_speed[p] = 0.0;
   st.f_integration = scene_.solver.f_integration;
   st.fail_particle = ph.on_numerical_fault == NumericalFaultAction::fail_particle;
   if (st.fail_particle) particles_.fault.assign(particles_.size(), 0);
@@ -114,6 +127,10 @@ GridSettings Simulation::grid_settings(int threads) const {
       g.field_density[std::size_t(scene_.parent_field(m))] = rho;
       g.field_density[std::size_t(scene_.companion_field(m))] = rho;
     }
+    for (const std::optional<Vec3>& V : scene_.rigid_field_velocities()) {
+      g.rigid_field.push_back(V.has_value());
+      g.rigid_velocity.push_back(V.value_or(Vec3::Zero()));
+    }
   }
   // The light-node rule's mass (kLightNodeMassFraction in step/step.hpp), by the geometry's rule.
   const LightNode light = visit_geometry(scene_.grid.geometry, [&](auto geometry) {
@@ -154,20 +171,28 @@ void Simulation::resize_particles(std::size_t n) {
 void Simulation::restart_ledger() {
   double ke = 0.0;
   Vec3 p = Vec3::Zero();
+  double mass = 0.0;
+  const std::vector<std::uint8_t>& rigid = stress_settings_.rigid_field;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
+    if (!rigid.empty() && rigid[particles_.field[i]]) continue;  // not the system's (contact.hpp)
     ke += 0.5 * particles_.mass[i] * particles_.v[i].squaredNorm();
     p += particles_.mass[i] * particles_.v[i];
+    mass += particles_.mass[i];
   }
   // Summed (and the signal speed maximised) over the ranks.
-  const std::vector<double> sum = ranks_.sum({ke, p(0), p(1), p(2)});
+  const std::vector<double> sum = ranks_.sum({ke, p(0), p(1), p(2), mass});
   max_signal_speed_ = ranks_.max(max_signal_speed(particles_));
-  ledger_.start(0.0, sum[0], Vec3(sum[1], sum[2], sum[3]));
+  // A moving rigid object's energy scale: the system moving at its speed (Ledger::start).
+  const double V = scene_.rigid_speed();
+  ledger_.start(0.0, sum[0], Vec3(sum[1], sum[2], sum[3]), 0.5 * sum[4] * V * V);
 }
 
 double Simulation::next_dt() const {
   // A moving face drives its material at |V| before the particles' velocities show it (they take
   // the face's jumps through the stress): the signal runs at up to c + |v| + |V|.
-  const double waves = stable_time_step(scene_.grid.min_spacing(), max_signal_speed_ + face_speed_,
+  // A rigid object drives what it pushes at its speed likewise (Scene::rigid_speed).
+  const double waves = stable_time_step(scene_.grid.min_spacing(),
+                                        max_signal_speed_ + face_speed_ + scene_.rigid_speed(),
                                         scene_.time.multiplier);
   // No signal at all (every particle left the grid, grid.outflow = remove): nothing is left to
   // integrate, and gravity, which limits the step of a body, has none to move.

@@ -96,6 +96,8 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
   const int nt = G.threads();
   const bool heat = !G.heat.empty();
   const bool outflow = !P.removed.empty();  // grid.outflow = remove
+  const std::uint8_t* const rigid =
+      G.has_rigid_fields() ? G.settings().rigid_field.data() : nullptr;
   ParticleTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
@@ -105,6 +107,21 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 #pragma omp for schedule(static)
     for (std::ptrdiff_t p = 0; p < n; ++p) {
       if (outflow && P.removed[p]) continue;
+      if (rigid && rigid[P.field[p]]) {  // a rigid object: x += V dt; not in the system's books
+        const Vec3 x_old = P.x[p];
+        P.x[p] += dt * P.v[p];
+        onto_face_within_round_off(G, P.x[p]);
+        if (P.x[p].allFinite() && !outside(G, P.x[p])) continue;
+        if (outflow) {  // leaves with nothing to book: its motion was never the system's
+          P.removed[p] = 1;
+          P.x[p] = x_old;
+        } else if (fails_first(P, std::size_t(p), fail)) {
+          fail = Failure{std::size_t(p), "position",
+                         "a rigid object's particle left the grid (grid.outflow = \"remove\" "
+                         "lets it leave the simulation)"};
+        }
+        continue;
+      }
       const Stencil<N>& s = S[p];
       const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
       Vec3 dv = Vec3::Zero(), v_new = Vec3::Zero();
@@ -209,11 +226,13 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
     G.velocity_L[i] = G.mass[i] > 0.0 ? Vec3(momentum[i] / G.mass[i]) : Vec3::Zero();
   });
   // Projections, not loads: the particles' momentum is already final. Contact holds the nodes
-  // the step held (contact.hpp, ContactPass::strain).
+  // the step held (contact.hpp, ContactPass::strain); a rigid object's field is at V exactly.
+  G.hold_rigid_fields(G.velocity_L);
   if (contact != nullptr && G.fields() > 1)
     apply_contact(G, *contact, G.velocity_L, ContactPass::strain);
   G.apply_mirror(G.velocity_L);
   if (G.has_walls()) G.apply_walls(nullptr, G.velocity_L, WallPass::projection);
+  G.hold_rigid_fields(G.velocity_L);
 #pragma omp parallel for schedule(static) num_threads(nt)
   for (std::ptrdiff_t p = 0; p < n; ++p)
     P.L[p] = gradient<Shape>(G, S[p], G.velocity_L, P.v[p], P.field[p] * nn);

@@ -34,6 +34,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     }
   });
   GridUpdate out;
+  G.hold_rigid_fields(G.velocity);  // a rigid object's field moves at its velocity, always
   // Friction heat of this step (contact and walls add to it; grid-to-particles reads it).
   if (!G.heat.empty()) G.for_active_entries([&](int e) { G.heat[e] = 0.0; });
   if (contact_on) apply_contact(G, *contact, G.velocity, ContactPass::start);
@@ -46,8 +47,14 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
       G.velocity_new[i].setZero();
     }
   });
+  G.hold_rigid_fields(G.velocity_new);
   // The step's contact impulse on v*: the particles see it, the ledger books its friction work.
-  if (contact_on) out.contact = apply_contact(G, *contact, G.velocity_new, ContactPass::step);
+  // A rigid object's reaction is a boundary's: its impulse, and its work at its velocity.
+  if (contact_on) {
+    out.contact = apply_contact(G, *contact, G.velocity_new, ContactPass::step);
+    out.boundary_impulse += out.contact.rigid_impulse;
+    out.external_work += out.contact.rigid_work;
+  }
 
   // The mirror holds for the start-of-step field too: the image cancels the face layer's normal
   // momentum, so the wall acts on the particles only through the stress (an affine field odd
@@ -66,6 +73,8 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
   G.apply_mirror(G.velocity_new, MirrorTime::end);
   if (G.has_walls())
     out.wall_friction_heat = G.apply_walls(&G.velocity, G.velocity_new, WallPass::step);
+  G.hold_rigid_fields(G.velocity);  // the faces do not move a rigid object either
+  G.hold_rigid_fields(G.velocity_new);
   if (!gravity.isZero(0.0)) {
     // Impulse dt m_I g and its work at the mid-step velocity the node keeps, after contact, the
     // mirror and the walls (serial, ascending entries: deterministic, and the same order on the
@@ -73,7 +82,8 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     // credited about M_face g^2 dt^2 / 2 a step that no motion made (2.1e-6 J in 240 us against
     // 9.2e-9 J of potential energy released; issue 53).
     const std::vector<int>& active = G.active_nodes();
-    for (int f = 0; f < G.fields(); ++f)
+    for (int f = 0; f < G.fields(); ++f) {
+      if (G.has_rigid_fields() && G.settings().rigid_field[std::size_t(f)]) continue;  // held
       for (const int I : active) {
         const int i = f * G.node_count() + I;
         if (nodes[i].mass <= 0.0 || !G.owns(I)) continue;
@@ -81,6 +91,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
         out.external_impulse += J;
         out.external_work += 0.5 * (G.velocity[i] + G.velocity_new[i]).dot(J);
       }
+    }
   }
   G.for_active_entries([&](int i) { G.increment[i] = G.velocity_new[i] - G.velocity[i]; });
   // The faces' impulse: what they changed in the increments that move the particles (serial, in
@@ -127,6 +138,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
       if (G.has_walls()) G.apply_walls(nullptr, G.velocity_L, WallPass::projection);
     }
     G.apply_mirror(G.velocity_L);
+    G.hold_rigid_fields(G.velocity_L);
   }
   return out;
 }

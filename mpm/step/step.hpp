@@ -209,6 +209,10 @@ struct StressUpdateSettings {
   const GridSpec* graded_grid = nullptr;
   /// Per material: the field a failed particle moves to (create_new_particles); empty: off.
   std::vector<std::uint16_t> companion_field;
+  /// Per velocity field, 1 where it carries a rigid object (Scene::rigid_field_velocities): its
+  /// particles keep their state (no stress, no strain) and only their speed enters the time
+  /// step; empty: no rigid object.
+  std::vector<std::uint8_t> rigid_field;
   /// physics.on_numerical_fault = fail_particle: a particle whose update fails (non-finite F or
   /// stress, negative Jacobian, radial return not converged, EOS out of range) is flagged in
   /// Particles::fault, its stress (and q) zeroed, its other state kept from the start of the

@@ -96,6 +96,8 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   const bool convert = !settings.companion_field.empty();
   const bool fail_particle = settings.fail_particle && P.fault.size() == P.size();
   const bool outflow = P.removed.size() == P.size() && !P.removed.empty();
+  const std::uint8_t* const rigid =
+      settings.rigid_field.empty() ? nullptr : settings.rigid_field.data();
   // Particles go through the model in blocks of one batch: their radial returns run together on
   // the vector lanes (models/material/update_batch.hpp), with the same bits as one at a time.
   constexpr std::ptrdiff_t kBlock = UpdateBatch::capacity;
@@ -145,6 +147,10 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
           P.state[p].stress.setZero();
           P.wave_speed[p] = 0.0;
           if (!P.q.empty()) P.q[p] = 0.0;
+          continue;
+        }
+        if (rigid && rigid[P.field[p]]) {  // a rigid object: moves, never strains
+          sum.max_signal_speed = std::max(sum.max_signal_speed, P.v[p].norm());
           continue;
         }
         if (fail_particle && P.fault[p] != 0) {  // flagged earlier: zero stress, no update

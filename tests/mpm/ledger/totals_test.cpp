@@ -98,8 +98,9 @@ std::size_t doubles_in(const M&) {
 
 BOOST_AUTO_TEST_CASE(the_step_totals_tables_name_every_member) {
   {
-    const auto& [a, b] = ContactTotals{};
-    BOOST_TEST(field_count<ContactTotals>() == doubles_in(a) + doubles_in(b));
+    const auto& [a, b, c, d] = ContactTotals{};
+    BOOST_TEST(field_count<ContactTotals>() ==
+               doubles_in(a) + doubles_in(b) + doubles_in(c) + doubles_in(d));
   }
   {
     const auto& [a, b, c, d, e] = GridUpdate{};

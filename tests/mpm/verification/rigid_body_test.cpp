@@ -1,0 +1,187 @@
+// Rigid objects (objects.<name>.rigid, docs/scenes.md#rigid-objects): a body that moves at one
+// velocity for ever and meets the others through multi-field contact as a partner of infinite
+// mass (grid/rigid_fields.cpp, contact/contact.hpp). Each case has a closed form:
+// - a rigid piston driven at V into an elastic bar at rest (uniaxial strain): the one-dimensional
+//   elastic wave from a boundary velocity (e.g. Meyers 1994, Dynamic Behavior of Materials, sec.
+//   2.2): impulse rho c_L A V t, work rho c_L A V^2 t, half kinetic and half strain energy; the
+//   piston itself translates exactly and stays out of the system's books;
+// - a block sliding on a rigid floor under gravity with Coulomb friction: v = v0 - mu g t until
+//   it stops at v0 / (mu g), then it sticks;
+// - a block spanning the gap between two rigid blocks at rest: its energy is kept for ever; the
+//   `wall` faces lose most of it (spanning_block.json: -0.94 at h, -0.87 at h/2).
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "../verification_helpers.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+// Small grids: one thread runs them faster than two (docs/performance.md#threads).
+constexpr int kThreads = 1;
+
+int object_index(const Scene& s, const std::string& name) {
+  for (std::size_t o = 0; o < s.objects.size(); ++o)
+    if (s.objects[o].name == name) return static_cast<int>(o);
+  throw std::invalid_argument("no object " + name);
+}
+
+// The mass-weighted mean velocity of one object's particles [m/s] and their kinetic energy [J].
+struct ObjectMotion {
+  Vec3 velocity = Vec3::Zero();
+  double kinetic_energy = 0.0, mass = 0.0;
+};
+ObjectMotion motion_of(const Particles& P, int object) {
+  ObjectMotion m;
+  Vec3 p = Vec3::Zero();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.object[i] != object) continue;
+    m.mass += P.mass[i];
+    p += P.mass[i] * P.v[i];
+    m.kinetic_energy += 0.5 * P.mass[i] * P.v[i].squaredNorm();
+  }
+  m.velocity = p / m.mass;
+  return m;
+}
+
+// The worst |energy_error| over a run of the spanning block (20 us) with `cells` along x.
+double spanning_worst_energy_error(int cells_x) {
+  Simulation sim(test::verification_scene(
+                     "spanning_block_rigid.json",
+                     {{"grid", {{"cells", {cells_x, 12 * cells_x / 8, 12 * cells_x / 8}}}}}),
+                 kThreads);
+  double worst = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    worst = std::max(worst, std::abs(sim.ledger().row().energy_error));
+  }
+  return worst;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(rigid_body)
+
+BOOST_AUTO_TEST_CASE(a_rigid_piston_does_the_work_of_the_elastic_wave_and_translates_exactly) {
+  const Scene scene = test::verification_scene("rigid_piston.json");
+  Simulation sim(scene, kThreads);
+  const int piston = object_index(scene, "piston"), bar = object_index(scene, "block");
+  const Particles& P = sim.particles();
+  std::vector<Vec3> x0;
+  for (std::size_t p = 0; p < P.size(); ++p) x0.push_back(P.x[p]);
+  double worst_closure = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const LedgerRow r = sim.ledger().row();
+    worst_closure = std::max(worst_closure, std::abs(r.momentum(0) - r.boundary_impulse(0)));
+  }
+  const double V = 1.0, t = sim.time();
+  const double rho = scene.materials.front().material.model.params().density;
+  const double Z = rho * test::longitudinal_wave_speed(scene) * 0.0025 * 0.0025;  // rho c_L A
+  const LedgerRow r = sim.ledger().row();
+  const double work = Z * V * V * t, impulse = Z * V * t;
+  // The piston: x0 + V t, no stress, no strain, whatever the bar pushed back with.
+  double worst_position = 0.0, worst_stress = 0.0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.object[p] != piston) continue;
+    worst_position = std::max(worst_position, (P.x[p] - x0[p] - Vec3(V * t, 0, 0)).norm());
+    worst_stress = std::max(worst_stress, P.state[p].stress.norm());
+  }
+  const ObjectMotion b = motion_of(P, bar);
+  BOOST_TEST_MESSAGE("rigid piston at 1 m/s, t = "
+                     << t << " s: work " << r.external_work << " J (closed " << work
+                     << "), impulse " << r.boundary_impulse(0) << " N s (" << impulse
+                     << "), kinetic " << r.kinetic_energy << " J, strain " << r.strain_energy
+                     << " J, energy_error " << r.energy_error << "; piston off x0 + V t by "
+                     << worst_position << " m, stress " << worst_stress << " Pa");
+  BOOST_TEST(r.external_work == work, boost::test_tools::tolerance(0.015));
+  BOOST_TEST(r.boundary_impulse(0) == impulse, boost::test_tools::tolerance(0.015));
+  BOOST_TEST(r.kinetic_energy == 0.5 * work, boost::test_tools::tolerance(0.03));
+  BOOST_TEST(r.strain_energy == 0.5 * work, boost::test_tools::tolerance(0.03));
+  BOOST_TEST(std::abs(r.energy_error) < 0.002);
+  BOOST_TEST(worst_closure <= 1e-12 * impulse);  // the bar's momentum is what the piston gave
+  // The books are the bar's: the piston's kinetic energy (1.7e-4 J) is not in them.
+  BOOST_TEST(r.kinetic_energy == b.kinetic_energy, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(worst_position <= 1e-12 * 0.02);
+  BOOST_TEST(worst_stress == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_rigid_floor_follows_coulombs_law_and_then_sticks) {
+  const Scene scene = test::verification_scene("sliding_block_rigid.json");
+  Simulation sim(scene, kThreads);
+  const int block = object_index(scene, "block");
+  const double v0 = 5.0, g = 1.0e5, mu = 0.25, t_stop = v0 / (mu * g);
+  double worst_sliding = 0.0, worst_stopped = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const double vy = motion_of(sim.particles(), block).velocity(1);
+    if (sim.time() < t_stop)
+      worst_sliding = std::max(worst_sliding, std::abs(vy - (v0 - mu * g * sim.time())) / v0);
+    else if (sim.time() > 1.05 * t_stop)
+      worst_stopped = std::max(worst_stopped, std::abs(vy) / v0);
+  }
+  const ObjectMotion b = motion_of(sim.particles(), block);
+  const double lost = 0.5 * b.mass * (v0 * v0 - b.velocity(1) * b.velocity(1));
+  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
+  const LedgerRow r = sim.ledger().row();
+  BOOST_TEST_MESSAGE("rigid floor: v_y against v0 - mu g t worst "
+                     << worst_sliding << " v0 while sliding, " << worst_stopped
+                     << " v0 after the stop; friction heat " << heat << " J against " << lost
+                     << " J of kinetic energy lost; energy_error " << r.energy_error);
+  BOOST_TEST(worst_sliding < 0.02);
+  BOOST_TEST(worst_stopped < 0.005);
+  BOOST_TEST(std::abs(heat / lost - 1.0) < 0.03);
+  BOOST_TEST(std::abs(r.energy_error) < 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(a_block_on_a_moving_rigid_floor_is_carried_along_by_friction) {
+  // A conveyor: the block at rest on the floor of sliding_block_rigid.json moving at V along y
+  // (its particles leave the grid's y+ face: grid.outflow = remove, nothing booked for them).
+  // Coulomb's law: the block accelerates at mu g until it moves with the floor, at t = V / (mu g)
+  // = 200 us; the floor's friction impulse M V does the work M V^2 at the floor's velocity, half
+  // of it the block's kinetic energy, half the heat of the slip.
+  const double V = 5.0, g = 1.0e5, mu = 0.25, t_stick = V / (mu * g);
+  const Scene scene = test::verification_scene(
+      "sliding_block_rigid.json",
+      {{"objects",
+        {{"block", {{"velocity", {0.0, 0.0, 0.0}}}}, {"floor", {{"velocity", {0.0, V, 0.0}}}}}},
+       {"grid", {{"outflow", "remove"}}}});
+  Simulation sim(scene, kThreads);
+  const int block = object_index(scene, "block");
+  double worst_slip = 0.0, worst_carried = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const double vy = motion_of(sim.particles(), block).velocity(1);
+    if (sim.time() < t_stick)
+      worst_slip = std::max(worst_slip, std::abs(vy - mu * g * sim.time()) / V);
+    else if (sim.time() > 1.05 * t_stick)
+      worst_carried = std::max(worst_carried, std::abs(vy - V) / V);
+  }
+  const ObjectMotion b = motion_of(sim.particles(), block);
+  const LedgerRow r = sim.ledger().row();
+  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
+  const double work = b.mass * V * V;
+  BOOST_TEST_MESSAGE("conveyor: v_y against mu g t worst "
+                     << worst_slip << " V, against V after " << worst_carried << " V; work "
+                     << r.external_work << " J (M V^2 " << work << "), kinetic " << r.kinetic_energy
+                     << " J, heat " << heat << " J, energy_error " << r.energy_error);
+  BOOST_TEST(worst_slip < 0.02);
+  BOOST_TEST(worst_carried < 0.005);
+  BOOST_TEST(r.external_work == work, boost::test_tools::tolerance(0.03));
+  BOOST_TEST(r.kinetic_energy == 0.5 * work, boost::test_tools::tolerance(0.03));
+  BOOST_TEST(heat == 0.5 * work, boost::test_tools::tolerance(0.03));
+  BOOST_TEST(std::abs(r.energy_error) < 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(a_block_spanning_two_rigid_blocks_keeps_its_energy) {
+  // The walls' inelastic catch took 94 % / 87 % of it at h / h/2 (spanning_block.json).
+  const double h = spanning_worst_energy_error(8), h2 = spanning_worst_energy_error(16);
+  BOOST_TEST_MESSAGE("spanning block between rigid blocks, worst abs(energy_error) by 20 us: "
+                     << h << " at h = 0.5 mm, " << h2 << " at h/2");
+  BOOST_TEST(h < 0.12);
+  BOOST_TEST(h2 < 0.65 * h);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
