@@ -26,11 +26,14 @@ The measures:
       falls below 0.2 % (Taylor 1948's X; reported, never judged);
   the deformed profile (radius against axial position, per particle-spacing bin), the energy books
   (history.csv), failed particles per cause and in the compressed core (initial radius <= R0/2).
-  A rod that bounced off a `wall` anvil is measured from its impact face (face_lift: how far its
+  A rod that bounced off a `wall` or `rigid` anvil is measured from its impact face (face_lift: how far its
   lowest particle rose above its lowest position over the run).
 Anvil (--anvil, one per OUT):
   mirror   the symmetric x- face: rigid and frictionless, and it holds the rod in tension too;
-  wall:MU  a rigid wall that never pulls, with Coulomb friction MU (docs/scenes.md#grid).
+  wall:MU  a rigid wall that never pulls, with Coulomb friction MU (docs/scenes.md#grid);
+  rigid:MU a rigid body at rest, two cells thick, below x = 0 (objects.anvil.rigid,
+           docs/scenes.md#rigid-objects), met through multi-field contact with Coulomb friction MU
+           and the normal of the larger volume (the anvil's face).
 
 Parameter sets (calibration kept apart from validation: none is tuned to a Taylor shot):
   table1   data/materials/al6061_t6.json as shipped (the report's Table 1 Johnson-Cook set);
@@ -165,19 +168,21 @@ def end_time(shot):
 
 
 def parse_anvil(text):
-    """'mirror' (the symmetric x- face: frictionless, and it holds the rod in tension) or
-    'wall[:MU]' (a rigid wall that never pulls, Coulomb friction MU, default 0): (kind, mu)."""
+    """'mirror' (the symmetric x- face: frictionless, and it holds the rod in tension),
+    'wall[:MU]' (a rigid wall that never pulls, Coulomb friction MU, default 0) or 'rigid[:MU]'
+    (a rigid body at rest in contact, likewise): (kind, mu)."""
     kind, _, mu = text.partition(":")
     if kind == "mirror" and not mu:
         return "mirror", 0.0
-    if kind == "wall":
+    if kind in ("wall", "rigid"):
         try:
             value = float(mu) if mu else 0.0
         except ValueError:
             value = -1.0
         if 0.0 <= value <= 10.0:
-            return "wall", value
-    sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall or wall:MU with MU in [0, 10]")
+            return kind, value
+    sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall, wall:MU, rigid or rigid:MU with "
+             "MU in [0, 10]")
 
 
 def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0), geometry="3d",
@@ -216,6 +221,20 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0),
     if anvil[0] == "wall":
         boundary["x-"] = "wall"
         grid["wall_friction"] = {"x-": anvil[1]}
+    if anvil[0] == "rigid":
+        # Two cells of rigid anvil below the impact face x = 0, as wide as the grid; its own
+        # material (the density its contact normals read), multi-field contact with the rod.
+        grid["lower"][0] = -2.0 * dx
+        grid["cells"][0] = nx + 2
+        boundary["x-"] = "free"
+        materials["anvil"] = {"file": material_file}
+        objects["anvil"] = {"material": "anvil", "rigid": True,
+                            "geometry": {"type": "cylinder", "bottom": [-2.0 * dx, 0.0, 0.0],
+                                         "top": [0.0, 0.0, 0.0],
+                                         # the grid's radial extent; the quarter's corner too
+                                         "radius": ny * dx * (1.0 if planar else 2 ** 0.5)},
+                            "particles_per_cell": list(objects["rod"]["particles_per_cell"])}
+        physics["contact"] = {"type": "friction", "mu": anvil[1], "normal": "larger_volume"}
     return {
         "description": f"Taylor impact, House et al. (1995) shot {shot['shot']}: "
                        f"{'axisymmetric model' if planar else 'quarter model'}, "
@@ -286,8 +305,10 @@ def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     X0, x = first["points"][rod0], last["points"][rod0]
     R0 = 0.5 * shot["D0"]
     with open(f"{run_dir}/scene.json") as f:
-        wall = json.load(f)["grid"]["boundary"]["x-"] == "wall"
-    # A wall anvil lets the rod bounce off (~10 m/s): the measures take its face where it was
+        as_run = json.load(f)
+    wall = (as_run["grid"]["boundary"]["x-"] == "wall" or
+            as_run["objects"].get("anvil", {}).get("rigid", False))
+    # A wall or rigid anvil lets the rod bounce off (~10 m/s): the measures take its face where it was
     # while it touched, i.e. the rod's lowest particle at its lowest over the snapshots. The
     # mirror holds the face on the anvil (no lift).
     face_lift = 0.0
@@ -378,7 +399,7 @@ def run_attempt(job, run_dir, radial):
     start = time.time()
     proc = results.Launcher(mpm).run("run", scene_file, out=run_dir, threads=threads, check=False)
     row = {"set": set_name, "failure": failure, "cells_per_radius": n,
-           "anvil": anvil[0] if anvil[0] == "mirror" else f"wall:{anvil[1]:g}",
+           "anvil": anvil[0] if anvil[0] == "mirror" else f"{anvil[0]}:{anvil[1]:g}",
            "geometry": geometry, "shot": shot["shot"],
            "L0_over_D0 [-]": shot["aspect"], "U0 [m/s]": shot["U0"], "L0 [m]": shot["L0"],
            "D0 [m]": shot["D0"], "Lf_exp [m]": shot["Lf"], "Dm_exp [m]": shot["Dm"],
@@ -420,7 +441,7 @@ def run_one(job):
     tag = f"{set_name}_{failure}_n{n}"
     # Campaigns with different anvils or geometries may share --runs: each has its own run
     # directories.
-    run_tag = tag if anvil[0] == "mirror" else f"{tag}_wall{anvil[1]:g}"
+    run_tag = tag if anvil[0] == "mirror" else f"{tag}_{anvil[0]}{anvil[1]:g}"
     if geometry != "3d":
         run_tag += f"_{geometry}"
     base = os.path.join(runs_dir, run_tag, shot["shot"])
@@ -537,8 +558,9 @@ def main(argv=None):
     ap.add_argument("--ladder-shots", default=None,
                     help="shots run at resolutions other than the first (default: all --shots)")
     ap.add_argument("--anvil", default="mirror",
-                    help="mirror (default: symmetric x- face, frictionless) or wall[:MU] (rigid "
-                         "wall that never pulls, Coulomb friction MU; one per OUT)")
+                    help="mirror (default: symmetric x- face, frictionless), wall[:MU] (rigid "
+                         "wall that never pulls, Coulomb friction MU) or rigid[:MU] (a rigid body "
+                         "at rest in contact, likewise); one per OUT")
     ap.add_argument("--geometry", default="3d", choices=GEOMETRIES,
                     help="3d (default: the quarter model) or axisymmetric (the r-z section on a 2D "
                          "grid; one per OUT)")

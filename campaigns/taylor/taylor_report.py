@@ -437,7 +437,8 @@ def report(out, draw=True):
     anvils = sorted({r.get("anvil") or "mirror" for r in rows})
     geometries = sorted({r.get("geometry") or "3d" for r in rows})
     lines += [f"Anvil: {', '.join(anvils)} (mirror: the symmetric x- face, rigid and frictionless; "
-              "wall:MU: a rigid wall that never pulls, Coulomb friction MU).", "",
+              "wall:MU: a rigid wall that never pulls, Coulomb friction MU; rigid:MU: a rigid "
+              "body at rest in contact, likewise).", "",
               f"Geometry: {', '.join(geometries)} (3d: the quarter model; axisymmetric: the r-z "
               "section on a 2D grid).", "",
               "## Per parameter set, failure mode and resolution", ""]
