@@ -386,9 +386,11 @@ BOOST_AUTO_TEST_CASE(graded_grids_book_as_on_one_rank) {
 BOOST_AUTO_TEST_CASE(every_verification_scene_books_as_on_one_rank) {
   const Communicator comm(&fixture->session);
   int compared = 0;
+  // rigid_piston and spanning_block_rigid: rigid objects (their reaction booked at owned nodes).
   for (const char* name : {"contact_blocks.json", "elastic_bar.json", "elastic_wave.json",
-                           "flyer_plate.json", "rigid_translation.json", "sliding_block.json",
-                           "taylor_rod.json", "two_spheres.json", "uniaxial_compression.json"}) {
+                           "flyer_plate.json", "rigid_piston.json", "rigid_translation.json",
+                           "sliding_block.json", "spanning_block_rigid.json", "taylor_rod.json",
+                           "two_spheres.json", "uniaxial_compression.json"}) {
     const Scene scene = scene_from(std::string("verification/") + name, Json::object());
     try {
       BoxDecomposition::ranks_per_axis(scene.grid.cells, comm.size());
@@ -401,7 +403,7 @@ BOOST_AUTO_TEST_CASE(every_verification_scene_books_as_on_one_rank) {
     }
     ++compared;
   }
-  BOOST_TEST(compared == 9);
+  BOOST_TEST(compared == 11);
 }
 
 // Boxes split across y and z as well as x (solver.ranks_per_axis): the nodes along the boxes'
