@@ -33,7 +33,7 @@ Anvil (--anvil, one per OUT):
   wall:MU  a rigid wall that never pulls, with Coulomb friction MU (docs/scenes.md#grid);
   rigid:MU a rigid body at rest, two cells thick, below x = 0 (objects.anvil.rigid,
            docs/scenes.md#rigid-objects), met through multi-field contact with Coulomb friction MU
-           and the normal of the larger volume (the anvil's face).
+           (the normal is the anvil's own face).
 
 Parameter sets (calibration kept apart from validation: none is tuned to a Taylor shot):
   table1   data/materials/al6061_t6.json as shipped (the report's Table 1 Johnson-Cook set);
@@ -234,7 +234,7 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0),
                                          # the grid's radial extent; the quarter's corner too
                                          "radius": ny * dx * (1.0 if planar else 2 ** 0.5)},
                             "particles_per_cell": list(objects["rod"]["particles_per_cell"])}
-        physics["contact"] = {"type": "friction", "mu": anvil[1], "normal": "larger_volume"}
+        physics["contact"] = {"type": "friction", "mu": anvil[1]}
     return {
         "description": f"Taylor impact, House et al. (1995) shot {shot['shot']}: "
                        f"{'axisymmetric model' if planar else 'quarter model'}, "
@@ -301,7 +301,10 @@ def extract(run_dir, shot, cells_per_radius, geometry="3d"):
     finished run (module docstring)."""
     snaps = results.snapshots(run_dir)
     first, last = results.read_points(snaps[0][1]), results.read_points(snaps[-1][1])
-    rod0 = first["object"] == max(first["object"])
+    # The rod's object index: the scene's objects in name order (an `anvil` before it).
+    with open(f"{run_dir}/scene.json") as f:
+        names = sorted(json.load(f)["objects"])
+    rod0 = first["object"] == names.index("rod")
     X0, x = first["points"][rod0], last["points"][rod0]
     R0 = 0.5 * shot["D0"]
     with open(f"{run_dir}/scene.json") as f:

@@ -2,7 +2,8 @@
 // 2001, CMES 2:509; docs/report_code.md sec. 14). Each material (and each companion field of
 // converted particles) has its own nodal mass and velocity; where two or more fields meet at a
 // node their velocities are corrected towards the centre-of-mass velocity v_cm:
-//   normal      `mass_gradients` (the default): n_f = unit(grad m_rest - grad m_f), the report's
+//   normal      (against a rigid object: its own surface, below)
+//               `mass_gradients` (the default): n_f = unit(grad m_rest - grad m_f), the report's
 //               (colinear for a pair, n_A = -n_B, so every correction sums to zero momentum).
 //               `larger_volume`, for a pair: the surface of the body with more volume (m / rho0)
 //               at the node, -grad m_b / |.| for that body b and +grad m_b / |.| for the other
@@ -33,8 +34,9 @@
 //               the bodies' stencils first share a node, up to two cells before their particles
 //               meet. `separation` (with the fitted plane): also the gap between the two bodies'
 //               particle domains along the plane's normal (Grid::contact_gap, measured by
-//               step/contact_planes.cpp) must be closed; a pair with a gap > 0 is apart in every
-//               pass of the step (Nairn, Hammerquist & Smith 2020's displacement check). At a
+//               step/contact_planes.cpp) must be closed; a pair with a gap above 0.02 of the
+//               node's smallest cell is apart in every pass of the step (Nairn, Hammerquist &
+//               Smith 2020's displacement check; the margin: contact.cpp kGapMargin). At a
 //               node of three or more bodies the gap is measured pair by pair; where none could
 //               be measured (mixed particles: no plane), approach alone.
 //   correction  Dv = -u_n n - s t, s = min(mu u_n, |u_t|), u = v_f - v_cm, t = u_t / |u_t|:
@@ -43,7 +45,8 @@
 //               takes no correction, and the mean correction is not removed: the momentum the
 //               others gain is its reaction (grid/rigid_fields.cpp). The normal there is the
 //               rigid body's own surface, grad m_rigid, whatever `normal` says (it does not
-//               deform; contact.cpp normal_against_rigid). At a node of three or more bodies
+//               deform; grad m_rigid - grad m_f deep inside it, where its own gradient is
+//               round-off; contact.cpp normal_against_rigid). At a node of three or more bodies
 //               with a rigid one, each is corrected against the rigid alone; the other bodies
 //               are not corrected against each other there.
 //   heat        only in slip (s < |u_t|; static friction does no work): m_f s (u0_f . t) >= 0
@@ -62,7 +65,8 @@
 // against -0.14 % for a single field; -0.78 % with bodies; docs/sphere_cylinder.md).
 // Differences from the 2004 code: its normals were computed per material independently (not
 // colinear), so nodal momentum was not conserved; here a node with three or more bodies also
-// has the mass-weighted mean correction removed, so momentum is conserved to round-off always.
+// has the mass-weighted mean correction removed, so momentum is conserved to round-off (but for
+// a rigid object's reaction, booked as a boundary impulse).
 // single_velocity contact is ordinary single-field MPM and never reaches this code (one field).
 #pragma once
 
@@ -102,20 +106,20 @@ struct ContactTotals {
 /// it corrected in G.contact_held), `strain` on the velocity the strain is built from (MUSL's
 /// re-map, USL's v^L; nothing booked): at the nodes the step corrected the relative normal
 /// velocity is zeroed whatever its sign (the step's decision holds), keeping the fields' centre
-/// of mass, and where the step's friction stuck the pair (s = |u_t|) all of it, the slip too;
-/// elsewhere it is corrected where the fields approach; Coulomb acts where they approach.
-/// (Re-mapped from the particles' FLIP velocities, a stuck interface read a slip that had not
-/// happened; the strain rate sheared it and friction pumped a resting stack: three blocks on a
-/// wall, mu 0.3, rattled after 20 000 quiet steps and the energy check stopped them at step
-/// 24 576; now they stay at rest to 1 ms, stack_friction.json. Taking the step's v* itself there
-/// instead, an experiment not landed, took 6.9 % of the sliding contact blocks' energy against
-/// 2.7 %: at a light node v* is p / m of a sliver of mass, and the strain pass must not move the
-/// fields' centre of mass. Nairn re-decides stick and slip on the re-mapped momenta; carrying the
-/// step's stick over departs from that as the hold does. Exact for a pair; at a node of three or
-/// more bodies the stuck ones are corrected against all the others and the mean removed, as in
-/// the step.) (Holding only the step's nodes and leaving the others alone let a block sliding on a
-/// block and its half cut by a symmetric plane differ by 0.016 m/s of a 5 m/s slip, against
-/// 5e-6 m/s.)
+/// of mass (against a rigid object: its velocity), and where the step's friction stuck the pair (s
+/// = |u_t|) all of it, the slip too; elsewhere it is corrected where the fields approach; Coulomb
+/// acts where they approach. (Re-mapped from the particles' FLIP velocities, a stuck interface read
+/// a slip that had not happened; the strain rate sheared it and friction pumped a resting stack:
+/// three blocks on a wall, mu 0.3, rattled after 20 000 quiet steps and the energy check stopped
+/// them at step 24 576; now they stay at rest to 1 ms, stack_friction.json. Taking the step's v*
+/// itself there instead, an experiment not landed, took 6.9 % of the sliding contact blocks' energy
+/// against 2.7 %: at a light node v* is p / m of a sliver of mass, and the strain pass must not
+/// move the fields' centre of mass. Nairn re-decides stick and slip on the re-mapped momenta;
+/// carrying the step's stick over departs from that as the hold does. Exact for a pair; at a node
+/// of three or more bodies the stuck ones are corrected against all the others and the mean
+/// removed, as in the step.) (Holding only the step's nodes and leaving the others alone let a
+/// block sliding on a block and its half cut by a symmetric plane differ by 0.016 m/s of a 5 m/s
+/// slip, against 5e-6 m/s.)
 ///
 /// Why the strain pass follows the step. Summed over a node's fields, a step whose strain is built
 /// from v* books Delta KE + Delta U <= 0: at a held node (frictionless, forces along n)

@@ -339,6 +339,10 @@ class Grid {
   bool has_rigid_fields() const {
     return !settings_.rigid_field.empty();
   }
+  /// Whether field f carries a rigid object.
+  bool is_rigid_field(int f) const {
+    return has_rigid_fields() && settings_.rigid_field[std::size_t(f)] != 0;
+  }
   /// The bits (1 << face) of the wall faces that a particle at `x` moving at `v`, of half-widths
   /// `half_width` [m], reaches within `dt`: n . (x - x_wall) - l_n + dt min(0, n . v) <= 1e-9 of
   /// the spacing (a particle seeded against the wall touches it whatever the round-off).

@@ -11,7 +11,7 @@ void Grid::hold_rigid_fields(std::vector<Vec3>& v) const {
   if (!has_rigid_fields()) return;
   const int nn = node_count();
   for (int f = 0; f < fields_; ++f) {
-    if (!settings_.rigid_field[std::size_t(f)]) continue;
+    if (!is_rigid_field(f)) continue;
     const Vec3 V = settings_.rigid_velocity[std::size_t(f)];
     for (const int I : active_) {
       const int e = f * nn + I;

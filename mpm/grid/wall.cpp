@@ -130,7 +130,7 @@ double Grid::apply_walls(std::vector<Vec3>* start, std::vector<Vec3>& end, WallP
   for (int f = 0; f < fields_; ++f) {
     // A rigid object's field is held at its velocity (grid/rigid_fields.cpp): a wall neither
     // moves it nor books heat on a slip no particle has.
-    if (has_rigid_fields() && settings_.rigid_field[std::size_t(f)]) continue;
+    if (is_rigid_field(f)) continue;
     const int offset = f * node_count();
     for (std::size_t k = 0; k < nw; ++k) {
       const WallNode& w = wall_active_[k];

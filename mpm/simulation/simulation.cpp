@@ -24,12 +24,6 @@ int thread_count(int requested) {
   return std::min(omp_get_max_threads(), kMaxThreads);
 }
 
-// A rigid object that moves works on what it pushes: the ledger's external columns book it.
-bool moving_rigid_object(const Scene& scene) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(),
-                     [](const SceneObject& o) { return o.rigid && !o.velocity.isZero(0.0); });
-}
-
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm)
@@ -46,7 +40,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
       ledger_(!scene.solver.gravity.isZero(0.0) || scene.has_body_force() ||
-                  scene.grid.has_moving_faces() || moving_rigid_object(scene),
+                  // a moving rigid object works on what it pushes
+                  scene.grid.has_moving_faces() || scene.rigid_speed() > 0.0,
               scene.grid.outflow == Outflow::remove,
               Vec3(scene.grid.geometry_facts().momentum_components.data()),
               ExtensiveUnits::of(scene.grid.per_metre_of_thickness())) {
@@ -72,11 +67,10 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   }
   // Rigid objects: their fields are held at their velocities (grid/rigid_fields.cpp), their
   // particles never strain, and only their speed enters the time step.
-  for (const std::optional<Vec3>& V : scene_.rigid_field_velocities())
-    st.rigid_field.push_back(V.has_value());
-  if (!st.rigid_field.empty())
-    for (std::size_t p = 0; p < particles_.size(); ++p)
-      if (st.rigid_field[particles_.field[p]]) particles_.wave_speed[p] = 0.0;
+  st.rigid_field = grid_.settings().rigid_field;
+  const std::uint8_t* const rigid = st.rigid_field.empty() ? nullptr : st.rigid_field.data();
+  for (std::size_t p = 0; p < particles_.size(); ++p)
+    if (in_rigid_field(rigid, particles_, p)) particles_.wave_speed[p] = 0.0;
   st.f_integration = scene_.solver.f_integration;
   st.fail_particle = ph.on_numerical_fault == NumericalFaultAction::fail_particle;
   if (st.fail_particle) particles_.fault.assign(particles_.size(), 0);
@@ -127,10 +121,12 @@ GridSettings Simulation::grid_settings(int threads) const {
       g.field_density[std::size_t(scene_.parent_field(m))] = rho;
       g.field_density[std::size_t(scene_.companion_field(m))] = rho;
     }
-    for (const std::optional<Vec3>& V : scene_.rigid_field_velocities()) {
-      g.rigid_field.push_back(V.has_value());
-      g.rigid_velocity.push_back(V.value_or(Vec3::Zero()));
-    }
+  }
+  // Rigid objects' fields, whatever the field count (one material of rigid objects alone is one
+  // field): the one table the grid, the stress update and the ledger read.
+  for (const std::optional<Vec3>& V : scene_.rigid_field_velocities()) {
+    g.rigid_field.push_back(V.has_value());
+    g.rigid_velocity.push_back(V.value_or(Vec3::Zero()));
   }
   // The light-node rule's mass (kLightNodeMassFraction in step/step.hpp), by the geometry's rule.
   const LightNode light = visit_geometry(scene_.grid.geometry, [&](auto geometry) {
@@ -172,9 +168,10 @@ void Simulation::restart_ledger() {
   double ke = 0.0;
   Vec3 p = Vec3::Zero();
   double mass = 0.0;
-  const std::vector<std::uint8_t>& rigid = stress_settings_.rigid_field;
+  const std::vector<std::uint8_t>& table = stress_settings_.rigid_field;
+  const std::uint8_t* const rigid = table.empty() ? nullptr : table.data();
   for (std::size_t i = 0; i < particles_.size(); ++i) {
-    if (!rigid.empty() && rigid[particles_.field[i]]) continue;  // not the system's (contact.hpp)
+    if (in_rigid_field(rigid, particles_, i)) continue;  // not the system's (contact.hpp)
     ke += 0.5 * particles_.mass[i] * particles_.v[i].squaredNorm();
     p += particles_.mass[i] * particles_.v[i];
     mass += particles_.mass[i];

@@ -107,7 +107,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 #pragma omp for schedule(static)
     for (std::ptrdiff_t p = 0; p < n; ++p) {
       if (outflow && P.removed[p]) continue;
-      if (rigid && rigid[P.field[p]]) {  // a rigid object: x += V dt; not in the system's books
+      if (in_rigid_field(rigid, P, std::size_t(p))) {  // x += V dt; not in the system's books
         const Vec3 x_old = P.x[p];
         P.x[p] += dt * P.v[p];
         onto_face_within_round_off(G, P.x[p]);

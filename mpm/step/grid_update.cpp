@@ -11,7 +11,8 @@
 // the sphere-cylinder lost 26 % of E0 in 10 us that way
 // (docs/mpm.md#velocity-fields-and-contact-physicscontact-contact). The mirror faces act on the
 // start and end velocities alike: a stationary wall does no work; a `wall` holds the end velocity
-// of the face nodes its body touches (grid/wall.cpp) (docs/mpm.md#ledger).
+// of the face nodes its body touches (grid/wall.cpp) (docs/mpm.md#ledger). A rigid object's field
+// is held at its velocity after each of these (grid/rigid_fields.cpp).
 #include <omp.h>
 
 #include <algorithm>
@@ -83,7 +84,7 @@ GridUpdate grid_update(Grid& G, double dt, const Vec3& gravity, bool usl_gradien
     // 9.2e-9 J of potential energy released; issue 53).
     const std::vector<int>& active = G.active_nodes();
     for (int f = 0; f < G.fields(); ++f) {
-      if (G.has_rigid_fields() && G.settings().rigid_field[std::size_t(f)]) continue;  // held
+      if (G.is_rigid_field(f)) continue;  // held at its velocity: gravity does not move it
       for (const int I : active) {
         const int i = f * G.node_count() + I;
         if (nodes[i].mass <= 0.0 || !G.owns(I)) continue;

@@ -123,8 +123,9 @@ void fit_contact_planes(const Particles& P, Grid& G, const Shape& shape, const S
 /// impulse, what the contact corrections removed, and the external (gravity) impulse and work
 /// (grid_update.cpp).
 struct GridUpdate {
-  /// sum over constrained nodes of m_I (dv_I - dv_I^free): what the faces exerted [N s]. A
-  /// stationary face does no work (docs/mpm.md#ledger).
+  /// sum over constrained nodes of m_I (dv_I - dv_I^free): what the faces exerted, and the
+  /// rigid objects' contact reaction (ContactTotals::rigid_impulse) [N s]. A stationary face or
+  /// body does no work (docs/mpm.md#ledger).
   Vec3 boundary_impulse = Vec3::Zero();
   ContactTotals contact;
   double wall_friction_heat = 0.0;  ///< Coulomb heat of the wall faces (grid/wall.cpp) [J]
@@ -200,6 +201,12 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
 
 /// What the stress update needs besides the particles: the models per material and the
 /// optional physics of the scene.
+/// Whether particle p belongs to a rigid object, by the per-field table of GridSettings::
+/// rigid_field (`rigid` its data, null without rigid objects).
+inline bool in_rigid_field(const std::uint8_t* rigid, const Particles& P, std::size_t p) {
+  return rigid != nullptr && rigid[P.field[p]] != 0;
+}
+
 struct StressUpdateSettings {
   std::vector<const ElasticPlastic*> models;  ///< per material
   FIntegration f_integration = FIntegration::forward_euler;
@@ -209,9 +216,9 @@ struct StressUpdateSettings {
   const GridSpec* graded_grid = nullptr;
   /// Per material: the field a failed particle moves to (create_new_particles); empty: off.
   std::vector<std::uint16_t> companion_field;
-  /// Per velocity field, 1 where it carries a rigid object (Scene::rigid_field_velocities): its
-  /// particles keep their state (no stress, no strain) and only their speed enters the time
-  /// step; empty: no rigid object.
+  /// Per velocity field, 1 where it carries a rigid object: the grid's table
+  /// (GridSettings::rigid_field, the one source). Its particles keep their state (no stress, no
+  /// strain) and only their speed enters the time step; empty: no rigid object.
   std::vector<std::uint8_t> rigid_field;
   /// physics.on_numerical_fault = fail_particle: a particle whose update fails (non-finite F or
   /// stress, negative Jacobian, radial return not converged, EOS out of range) is flagged in

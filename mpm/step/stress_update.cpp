@@ -149,7 +149,7 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
           if (!P.q.empty()) P.q[p] = 0.0;
           continue;
         }
-        if (rigid && rigid[P.field[p]]) {  // a rigid object: moves, never strains
+        if (in_rigid_field(rigid, P, std::size_t(p))) {  // a rigid object: moves, never strains
           sum.max_signal_speed = std::max(sum.max_signal_speed, P.v[p].norm());
           continue;
         }

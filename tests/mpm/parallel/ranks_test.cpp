@@ -387,6 +387,8 @@ BOOST_AUTO_TEST_CASE(every_verification_scene_books_as_on_one_rank) {
   const Communicator comm(&fixture->session);
   int compared = 0;
   // rigid_piston and spanning_block_rigid: rigid objects (their reaction booked at owned nodes).
+  // Not sliding_block_rigid: its resting contact under gravity agrees to about 1e-5 only, a
+  // contact decision flipping on round-off (docs/mpi.md#limits).
   for (const char* name : {"contact_blocks.json", "elastic_bar.json", "elastic_wave.json",
                            "flyer_plate.json", "rigid_piston.json", "rigid_translation.json",
                            "sliding_block.json", "spanning_block_rigid.json", "taylor_rod.json",
