@@ -17,6 +17,7 @@
 #include "models/material/update_batch.hpp"
 #include "models/thermal/adiabatic_heating.hpp"
 #include "mpm/step/step.hpp"
+#include "mpm/threads/chunk_shares.hpp"
 #include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
@@ -102,6 +103,15 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   // the vector lanes (models/material/update_batch.hpp), with the same bits as one at a time.
   constexpr std::ptrdiff_t kBlock = UpdateBatch::capacity;
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
+  // The threads balance chunks of kChunkBlocks blocks (mpm/threads/chunk_shares.hpp); the energy
+  // sums are taken per chunk and then in chunk order, the same bits on any thread count.
+  constexpr std::ptrdiff_t kChunkBlocks = 64;
+  const std::ptrdiff_t chunks = (blocks + kChunkBlocks - 1) / kChunkBlocks;
+  struct EnergySums {
+    double strain = 0.0, viscous = 0.0, eroded = 0.0, plastic = 0.0;  // [J]
+  };
+  std::vector<EnergySums> chunk_sums(static_cast<std::size_t>(chunks));
+  ChunkShares shares(chunks, nt);
   StressTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
@@ -127,115 +137,123 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
       sum.faulted.push_back(std::move(f));
       sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
     };
-    // One contiguous share per thread. Chunks of 4 blocks dealt round the threads (42f7956, for the
-    // plastic points of an impact, which are neighbours in the arrays) cost 10-15 % of the whole
-    // step on 2 threads on the 2-core VM of issue 57: the recommended scene to 10 us, side by side
-    // (campaigns/benchmark/side_by_side.py, 5 repeats), 2.56 -> 2.93 M particle-steps/s median;
-    // the stress update 1.30 -> 1.15 s and the transfers after it 2.62 -> 2.25 s, which read the
-    // particles each thread has just written. One thread runs the same order either way.
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t block = 0; block < blocks; ++block) {
-      const std::ptrdiff_t p0 = block * kBlock, p1 = std::min(n, p0 + kBlock);
-      batch.clear();
-      for (std::ptrdiff_t p = p0; p < p1; ++p) {
-        const std::ptrdiff_t i = p - p0;
-        lane_of[i] = -1;
-        if (outflow && P.removed[p]) {  // left the grid: out of the simulation, nothing to carry
-          P.v[p].setZero();
-          P.mass[p] = 0.0;
-          P.volume[p] = 0.0;
-          P.state[p].stress.setZero();
-          P.wave_speed[p] = 0.0;
-          if (!P.q.empty()) P.q[p] = 0.0;
-          continue;
-        }
-        if (in_rigid_field(rigid, P, std::size_t(p))) {  // a rigid object: moves, never strains
-          sum.max_signal_speed = std::max(sum.max_signal_speed, P.v[p].norm());
-          continue;
-        }
-        if (fail_particle && P.fault[p] != 0) {  // flagged earlier: zero stress, no update
-          sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
-          continue;
-        }
-        F1s[i] = advance_deformation_gradient(P.state[p].F, P.L[p], dt, settings.f_integration);
-        if (!F1s[i].allFinite()) {  // not passed to the model
-          fault(p, describe_fault(P.L[p], F1s[i], StepReport{}, false));
-          continue;
-        }
-        lane_of[i] =
-            batch.add(*settings.models[P.material[p]], P.state[p], P.L[p], F1s[i], next[i]);
-      }
-      batch.run(dt);
-      for (std::ptrdiff_t p = p0; p < p1; ++p) {
-        const std::ptrdiff_t i = p - p0;
-        if (lane_of[i] < 0) continue;
-        const PointState& s0 = P.state[p];
-        const Mat3& L = P.L[p];
-        const Mat3& F1 = F1s[i];
-        PointState& s1 = next[i];
-        StepReport r = batch.finish(lane_of[i], dt, s1);
-        const bool inject = p == settings.inject_nan_stress;
-        if (!checked(s1, r, inject)) {
-          fault(p, describe_fault(L, F1, r, inject, s0.melted || s1.melted));
-          continue;
-        }
-        const ElasticPlastic& model = *settings.models[P.material[p]];
-        const double V1 = P.volume0[p] * F1.determinant();
-        // Report eq. 14, the stress power at mid-step; a hyperelastic point's stored energy is
-        // W(F), and its change is booked exactly: the quadrature drifts from it at first order in
-        // dt (a soft block ringing on a wall for 1 s booked 0.8 J/m less than sum V0 W(F),
-        // going negative while compressed; docs/mpm.md#ledger).
-        sum.strain_energy_increment +=
-            model.hyperelastic()
-                ? P.volume0[p] * (model.stored_energy(F1) - model.stored_energy(s0.F))
-                : 0.5 * ddot(s0.stress + s1.stress, sym(L)) * V1 * dt;
-        sum.eroded_energy += r.eroded_energy * V1;
-        if (settings.plastic_work)  // with the stress the point carries: none once eroded to zero
-          sum.plastic_work += von_mises(s1.stress) * (s1.plastic_strain - s0.plastic_strain) * V1;
-        double signal = r.wave_speed;
-        if (av != nullptr) {
-          const double trD = L.trace();
-          const double rho = P.mass[p] / V1;
-          const double K = model.params().bulk_modulus;
-          const double lp = graded ? local_mean_spacing(*graded, P.x[p]) : l;
-          const double q1 = bulk_viscosity(*av, rho, K, trD, lp);
-          // The viscous dissipation of this step's compression: q(D) (-tr D) V dt >= 0, q > 0
-          // only where tr D < 0 (the force applies q one step later; the lag is part of the
-          // residual).
-          const double work = q1 * (-trD) * V1 * dt;
-          sum.viscous_work += work;
-          P.q[p] = q1;
-          // The shock's entropy: heat retained by the point when heating is on (e and T, which
-          // the Mie-Gruneisen pressure and the flow stress read; models/thermal/
-          // adiabatic_heating.hpp). The 2004 code dropped it (docs/report_code.md sec. 13).
-          retain_heat(s1, work / P.mass[p], model.params().heating.enabled,
-                      model.params().specific_heat);
-          if (trD < 0.0) {
-            const double Q = av->linear * std::sqrt(K / rho) + av->quadratic * lp * std::abs(trD);
-            signal = Q + std::sqrt(Q * Q + r.wave_speed * r.wave_speed);
+    // A contiguous share per thread, the tail balanced by stealing chunks. Chunks of 4 blocks
+    // dealt round the threads (42f7956, for the plastic points of an impact, which are neighbours
+    // in the arrays) cost 10-15 % of the whole step on 2 threads on the 2-core VM of issue 57: the
+    // transfers after the stress update read the particles the other thread had just written.
+    // One thread runs the same order either way.
+    for (std::ptrdiff_t chunk; (chunk = shares.next(omp_get_thread_num())) >= 0;) {
+      EnergySums& energy = chunk_sums[static_cast<std::size_t>(chunk)];
+      const std::ptrdiff_t chunk_end = std::min(blocks, (chunk + 1) * kChunkBlocks);
+      for (std::ptrdiff_t block = chunk * kChunkBlocks; block < chunk_end; ++block) {
+        const std::ptrdiff_t p0 = block * kBlock, p1 = std::min(n, p0 + kBlock);
+        batch.clear();
+        for (std::ptrdiff_t p = p0; p < p1; ++p) {
+          const std::ptrdiff_t i = p - p0;
+          lane_of[i] = -1;
+          if (outflow && P.removed[p]) {  // left the grid: out of the simulation, nothing to carry
+            P.v[p].setZero();
+            P.mass[p] = 0.0;
+            P.volume[p] = 0.0;
+            P.state[p].stress.setZero();
+            P.wave_speed[p] = 0.0;
+            if (!P.q.empty()) P.q[p] = 0.0;
+            continue;
           }
-        }
-        if (r.failure != FailureCause::none) {
-          ++sum.failed;
-          if (convert && P.field[p] != settings.companion_field[P.material[p]]) {
-            // Same mass, velocity, stress and history: only the velocity field changes, at the
-            // time level the failure happened (the 2004 code re-inserted the particle with its
-            // time-n position and velocity, a one-step lag: docs/report_code.md sec. 12).
-            P.field[p] = settings.companion_field[P.material[p]];
-            ++sum.converted;
+          if (in_rigid_field(rigid, P, std::size_t(p))) {  // a rigid object: moves, never strains
+            sum.max_signal_speed = std::max(sum.max_signal_speed, P.v[p].norm());
+            continue;
           }
+          if (fail_particle && P.fault[p] != 0) {  // flagged earlier: zero stress, no update
+            sum.max_signal_speed = std::max(sum.max_signal_speed, P.wave_speed[p] + P.v[p].norm());
+            continue;
+          }
+          F1s[i] = advance_deformation_gradient(P.state[p].F, P.L[p], dt, settings.f_integration);
+          if (!F1s[i].allFinite()) {  // not passed to the model
+            fault(p, describe_fault(P.L[p], F1s[i], StepReport{}, false));
+            continue;
+          }
+          lane_of[i] =
+              batch.add(*settings.models[P.material[p]], P.state[p], P.L[p], F1s[i], next[i]);
         }
-        P.state[p] = s1;
-        P.volume[p] = V1;
-        P.wave_speed[p] = signal;
-        sum.max_signal_speed = std::max(sum.max_signal_speed, signal + P.v[p].norm());
+        batch.run(dt);
+        for (std::ptrdiff_t p = p0; p < p1; ++p) {
+          const std::ptrdiff_t i = p - p0;
+          if (lane_of[i] < 0) continue;
+          const PointState& s0 = P.state[p];
+          const Mat3& L = P.L[p];
+          const Mat3& F1 = F1s[i];
+          PointState& s1 = next[i];
+          StepReport r = batch.finish(lane_of[i], dt, s1);
+          const bool inject = p == settings.inject_nan_stress;
+          if (!checked(s1, r, inject)) {
+            fault(p, describe_fault(L, F1, r, inject, s0.melted || s1.melted));
+            continue;
+          }
+          const ElasticPlastic& model = *settings.models[P.material[p]];
+          const double V1 = P.volume0[p] * F1.determinant();
+          // Report eq. 14, the stress power at mid-step; a hyperelastic point's stored energy is
+          // W(F), and its change is booked exactly: the quadrature drifts from it at first order in
+          // dt (a soft block ringing on a wall for 1 s booked 0.8 J/m less than sum V0 W(F),
+          // going negative while compressed; docs/mpm.md#ledger).
+          energy.strain +=
+              model.hyperelastic()
+                  ? P.volume0[p] * (model.stored_energy(F1) - model.stored_energy(s0.F))
+                  : 0.5 * ddot(s0.stress + s1.stress, sym(L)) * V1 * dt;
+          energy.eroded += r.eroded_energy * V1;
+          if (settings.plastic_work)  // with the stress the point carries: none once eroded to zero
+            energy.plastic += von_mises(s1.stress) * (s1.plastic_strain - s0.plastic_strain) * V1;
+          double signal = r.wave_speed;
+          if (av != nullptr) {
+            const double trD = L.trace();
+            const double rho = P.mass[p] / V1;
+            const double K = model.params().bulk_modulus;
+            const double lp = graded ? local_mean_spacing(*graded, P.x[p]) : l;
+            const double q1 = bulk_viscosity(*av, rho, K, trD, lp);
+            // The viscous dissipation of this step's compression: q(D) (-tr D) V dt >= 0, q > 0
+            // only where tr D < 0 (the force applies q one step later; the lag is part of the
+            // residual).
+            const double work = q1 * (-trD) * V1 * dt;
+            energy.viscous += work;
+            P.q[p] = q1;
+            // The shock's entropy: heat retained by the point when heating is on (e and T, which
+            // the Mie-Gruneisen pressure and the flow stress read; models/thermal/
+            // adiabatic_heating.hpp). The 2004 code dropped it (docs/report_code.md sec. 13).
+            retain_heat(s1, work / P.mass[p], model.params().heating.enabled,
+                        model.params().specific_heat);
+            if (trD < 0.0) {
+              const double Q = av->linear * std::sqrt(K / rho) + av->quadratic * lp * std::abs(trD);
+              signal = Q + std::sqrt(Q * Q + r.wave_speed * r.wave_speed);
+            }
+          }
+          if (r.failure != FailureCause::none) {
+            ++sum.failed;
+            if (convert && P.field[p] != settings.companion_field[P.material[p]]) {
+              // Same mass, velocity, stress and history: only the velocity field changes, at the
+              // time level the failure happened (the 2004 code re-inserted the particle with its
+              // time-n position and velocity, a one-step lag: docs/report_code.md sec. 12).
+              P.field[p] = settings.companion_field[P.material[p]];
+              ++sum.converted;
+            }
+          }
+          P.state[p] = s1;
+          P.volume[p] = V1;
+          P.wave_speed[p] = signal;
+          sum.max_signal_speed = std::max(sum.max_signal_speed, signal + P.v[p].norm());
+        }
       }
     }
     partial[omp_get_thread_num()] = sum;
     failures[omp_get_thread_num()] = fail;
   }
   StressTotals total;
-  for (int t = 0; t < nt; ++t) {  // thread order: deterministic
+  for (const EnergySums& e : chunk_sums) {  // chunk order: the same bits on any thread count
+    total.strain_energy_increment += e.strain;
+    total.viscous_work += e.viscous;
+    total.eroded_energy += e.eroded;
+    total.plastic_work += e.plastic;
+  }
+  for (int t = 0; t < nt; ++t) {  // the counts, the largest speed and the faults
     merge_into(total, partial[t]);
     for (Failure& f : partial[t].faulted) total.faulted.push_back(std::move(f));
     merge_failure(failure, failures[t],
