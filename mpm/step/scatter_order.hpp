@@ -31,10 +31,13 @@ struct ScatterOrder {
   std::vector<int> particles;               ///< indices grouped by band, ascending within one
   std::vector<int> start;                   ///< band s holds particles[start[s], start[s + 1])
   std::array<std::vector<int>, 2> colours;  ///< the non-empty even and odd bands, ascending
-  std::vector<int> band_of, next;           ///< scratch: each particle's band, fill positions
+  std::vector<int> band_of;                 ///< scratch: each particle's band
+  std::vector<int> next;  ///< scratch: per thread, where its next particle of each band goes
 };
 
-/// Groups the particles by the band of their stencil's base node (every step, after the stencils).
+/// Groups the particles by the band of their stencil's base node (every step, after the stencils):
+/// a counting sort, each thread counting and then placing a contiguous range of the particles, so
+/// the order is the same as one thread's.
 template <int N>
 void order_for_scatter(const std::vector<Stencil<N>>& S, const Grid& G, ScatterOrder& order);
 
