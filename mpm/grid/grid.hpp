@@ -216,8 +216,12 @@ class Grid {
   void activate();
   /// Below this many active nodes a node loop runs on one thread: waking the team costs more
   /// than it saves (about 30 us per parallel region with passive waiting on the project VM,
-  /// against ~5 ns per node; docs/performance.md#threads).
-  static constexpr int kMinParallelNodes = 16384;
+  /// against ~5 ns per node; docs/performance.md#threads). Above it the team shares the loop
+  /// even where waking it costs more than the loop: a node loop on one thread pulls every node
+  /// into that core's cache, and the other threads' particles then read them from it (16 384
+  /// -> 4096: the recommended scene, 22 491 nodes, on 2 threads 1.03-1.05x; a 672-particle rod
+  /// always on the team 0.80x).
+  static constexpr int kMinParallelNodes = 4096;
   /// body(e) for every entry e = f * node_count() + I of every field f and active node I, in
   /// parallel over the nodes of each field (on one thread when there are few: the bodies are
   /// independent per entry, so the bits are the same either way).
