@@ -3,9 +3,12 @@
 // colours. The counting sort runs on every thread, each counting and placing a contiguous range;
 // the order must be the one thread's whatever the thread count (the scatters' sums, and so every
 // particle's bits, follow it: docs/mpm.md#threads-and-determinism).
+#include <omp.h>
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -80,6 +83,66 @@ BOOST_AUTO_TEST_CASE(every_thread_count_gives_the_one_thread_order) {
       BOOST_TEST(many.start == one.start);
       BOOST_TEST(many.colours[0] == one.colours[0]);
       BOOST_TEST(many.colours[1] == one.colours[1]);
+    }
+  }
+}
+
+// scatter_by_colour: each colour's bands are dealt in contiguous runs, one per thread in thread
+// order, of about equal particle counts (each thread's share within one band of the equal share),
+// every band wholly one thread's in its stored order, and a colour complete before the next
+// starts. Dealt on demand, band by band, the runs interleave.
+BOOST_AUTO_TEST_CASE(the_scatter_deals_contiguous_balanced_runs_of_bands) {
+  GridSpec spec = long_grid();
+  spec.upper = Vec3(200.0, 4.0, 4.0);
+  spec.cells = {200, 4, 4};  // 26 bands, 13 of each colour
+  std::mt19937 draw(11);
+  std::uniform_int_distribution<int> any(-1, 198), crowded(60, 75);
+  std::vector<Stencil<3>> S(20000);
+  for (std::size_t p = 0; p < S.size(); ++p)
+    S[p].base = {p % 3 == 0 ? crowded(draw) : any(draw), 0, 0};
+  for (int threads : {2, 3, 4}) {
+    GridSettings settings;
+    settings.threads = threads;
+    const Grid G(spec, settings);
+    ScatterOrder order;
+    order_for_scatter(S, G, order);
+    std::vector<int> thread_of(S.size(), -1), seq_of(S.size(), -1);
+    std::vector<int> visits(S.size(), 0);
+    std::atomic<int> seq{0};
+    scatter_by_colour(order, threads, [&](int p) {
+      thread_of[p] = omp_get_thread_num();
+      seq_of[p] = seq++;
+      ++visits[p];  // one thread per band: no race if the deal is right
+    });
+    BOOST_TEST(std::all_of(visits.begin(), visits.end(), [](int v) { return v == 1; }));
+    int last_of_colour0 = -1;
+    for (int s : order.colours[0])
+      for (int k = order.start[s]; k < order.start[s + 1]; ++k)
+        last_of_colour0 = std::max(last_of_colour0, seq_of[order.particles[k]]);
+    for (int s : order.colours[1])
+      for (int k = order.start[s]; k < order.start[s + 1]; ++k)
+        BOOST_TEST(seq_of[order.particles[k]] > last_of_colour0);
+    for (const std::vector<int>& bands : order.colours) {
+      int previous_owner = 0, largest = 0, total = 0;
+      std::vector<int> share(threads, 0);
+      for (int s : bands) {
+        const int first = order.particles[order.start[s]];
+        const int owner = thread_of[first];
+        for (int k = order.start[s]; k < order.start[s + 1]; ++k) {
+          const int p = order.particles[k];
+          BOOST_TEST(thread_of[p] == owner, "band " << s << " on one thread");
+          if (k > order.start[s]) BOOST_TEST(seq_of[p] > seq_of[order.particles[k - 1]]);
+        }
+        BOOST_TEST(owner >= previous_owner, "band " << s << " on " << threads << " threads");
+        previous_owner = owner;
+        const int count = order.start[s + 1] - order.start[s];
+        share[owner] += count;
+        largest = std::max(largest, count);
+        total += count;
+      }
+      for (int t = 0; t < threads; ++t)
+        BOOST_TEST(std::abs(share[t] - total / threads) <= largest + 1,
+                   "thread " << t << " of " << threads << ": " << share[t] << " of " << total);
     }
   }
 }
