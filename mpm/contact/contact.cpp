@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "mpm/grid/mirror_view.hpp"
 #include "mpm/threads/threads.hpp"
@@ -311,15 +312,19 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
                              ? 1.0 / G.settings().field_density[f]
                              : 1.0;
   }
-  ContactTotals partial[kMaxThreads];
   // G.heat was zeroed at the start of the step (grid_update): contact adds to it.
   const std::vector<int>& nodes = G.active_nodes();  // heat is read at active nodes only
   const int na_nodes = static_cast<int>(nodes.size());
-#pragma omp parallel num_threads(nt)
-  {
-    ContactTotals sum;
-#pragma omp for schedule(static)
-    for (int a_node = 0; a_node < na_nodes; ++a_node) {
+  // The totals are taken per chunk of kSumChunk active nodes and added in chunk order: the same
+  // bits on any thread count.
+  constexpr int kSumChunk = 1024;
+  const int chunks = (na_nodes + kSumChunk - 1) / kSumChunk;
+  std::vector<ContactTotals> chunk_sums(static_cast<std::size_t>(chunks));
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (int chunk = 0; chunk < chunks; ++chunk) {
+    ContactTotals& sum = chunk_sums[static_cast<std::size_t>(chunk)];
+    const int chunk_end = std::min(na_nodes, (chunk + 1) * kSumChunk);
+    for (int a_node = chunk * kSumChunk; a_node < chunk_end; ++a_node) {
       const int I = nodes[a_node];
       // The step marks per entry what it held (between bodies, within one); the strain pass
       // holds that, and elsewhere corrects where the fields approach.
@@ -478,10 +483,9 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
       }
       if (any && owned) ++sum.contact_nodes;
     }
-    partial[omp_get_thread_num()] = sum;
   }
   ContactTotals total;
-  for (int t = 0; t < nt; ++t) merge_into(total, partial[t]);  // thread order: deterministic
+  for (const ContactTotals& sum : chunk_sums) merge_into(total, sum);  // chunk order
   return total;
 }
 

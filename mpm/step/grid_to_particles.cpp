@@ -1,8 +1,10 @@
 // Grid to particles (Sulsky et al. 1994 eqs. 23, 25-26): FLIP velocity update, position from the
 // updated grid velocity, velocity gradient; and MUSL's re-map (Sulsky et al. 1995, Nairn 2003).
 // The weights are the cached start-of-step stencils throughout.
+#include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <vector>
 
 #include "models/thermal/adiabatic_heating.hpp"
 
@@ -98,100 +100,105 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
   const bool outflow = !P.removed.empty();  // grid.outflow = remove
   const std::uint8_t* const rigid =
       G.has_rigid_fields() ? G.settings().rigid_field.data() : nullptr;
-  ParticleTotals partial[kMaxThreads];
+  // The sums are taken per chunk of kSumChunk particles and added in chunk order: the same bits
+  // on any thread count (as the stress update's, mpm/step/stress_update.cpp).
+  constexpr std::ptrdiff_t kSumChunk = 512;
+  const std::ptrdiff_t chunks = (n + kSumChunk - 1) / kSumChunk;
+  std::vector<ParticleTotals> chunk_sums(static_cast<std::size_t>(chunks));
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
   {
-    ParticleTotals sum;
     std::optional<Failure> fail;
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t p = 0; p < n; ++p) {
-      if (outflow && P.removed[p]) continue;
-      if (in_rigid_field(rigid, P, std::size_t(p))) {  // x += V dt; not in the system's books
-        const Vec3 x_old = P.x[p];
-        P.x[p] += dt * P.v[p];
-        onto_face_within_round_off(G, P.x[p]);
-        if (P.x[p].allFinite() && !outside(G, P.x[p])) continue;
-        if (outflow) {  // leaves with nothing to book: its motion was never the system's
-          P.removed[p] = 1;
-          P.x[p] = x_old;
-        } else if (fails_first(P, std::size_t(p), fail)) {
-          fail = Failure{std::size_t(p), "position",
-                         "a rigid object's particle left the grid (grid.outflow = \"remove\" "
-                         "lets it leave the simulation)"};
-        }
-        continue;
-      }
-      const Stencil<N>& s = S[p];
-      const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
-      Vec3 dv = Vec3::Zero(), v_new = Vec3::Zero();
-      double h = 0.0;  // sum_I S_Ip heat_I / m_I
-      const std::size_t base = offset + G.index(s.base[0], s.base[1], s.base[2]);
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j) {
-          const std::size_t row = base + i * sx + j * sy;
-          const double wij = s.w[0][i] * s.w[1][j];
-          for (int k = 0; k < NZ; ++k) {
-            const double w = wij * s.w[2][k];
-            const Vec3& inc = G.increment[row + k];
-            dv += w * inc;
-            v_new += w * G.velocity_new[row + k];
-            if (heat && G.heat[row + k] != 0.0) h += w * G.heat[row + k] / G.mass[row + k];
+    for (std::ptrdiff_t chunk = 0; chunk < chunks; ++chunk) {
+      ParticleTotals& sum = chunk_sums[static_cast<std::size_t>(chunk)];
+      const std::ptrdiff_t chunk_end = std::min(n, (chunk + 1) * kSumChunk);
+      for (std::ptrdiff_t p = chunk * kSumChunk; p < chunk_end; ++p) {
+        if (outflow && P.removed[p]) continue;
+        if (in_rigid_field(rigid, P, std::size_t(p))) {  // x += V dt; not in the system's books
+          const Vec3 x_old = P.x[p];
+          P.x[p] += dt * P.v[p];
+          onto_face_within_round_off(G, P.x[p]);
+          if (P.x[p].allFinite() && !outside(G, P.x[p])) continue;
+          if (outflow) {  // leaves with nothing to book: its motion was never the system's
+            P.removed[p] = 1;
+            P.x[p] = x_old;
+          } else if (fails_first(P, std::size_t(p), fail)) {
+            fail = Failure{std::size_t(p), "position",
+                           "a rigid object's particle left the grid (grid.outflow = \"remove\" "
+                           "lets it leave the simulation)"};
           }
-        }
-      if (usl_gradient) P.L[p] = gradient<Shape>(G, s, G.velocity_L, P.v[p], offset);
-      const double m = P.mass[p];
-      if (body_force) {  // sum_I S_Ip (v_I + v*_I)/2 = v_new - dv/2 (step.hpp ParticleTotals)
-        const Vec3 J = dt * m * body_force[p];
-        sum.external_impulse += J;
-        sum.external_work += J.dot(v_new - 0.5 * dv);
-      }
-      if (h != 0.0) {
-        const HeatCapacity& c = heat_capacity[P.material[p]];
-        retain_heat(P.state[p], h, c.retained, c.specific_heat);
-        sum.friction_heat += m * h;
-      }
-      P.v[p] += dv;
-      const Vec3 x_old = P.x[p];
-      P.x[p] += dt * v_new;
-      onto_face_within_round_off(G, P.x[p]);
-      const Vec3& v = P.v[p];
-      if (!v.allFinite() && fails_first(P, std::size_t(p), fail))
-        fail = Failure{std::size_t(p), "velocity", "not finite"};
-      if (!(P.x[p].allFinite() && !outside(G, P.x[p]))) {
-        if (outflow && v.allFinite()) {
-          // Leaves the simulation: its mass, momentum and kinetic energy go to the outflow
-          // columns; it stays parked where it was. It keeps its mass and final velocity until
-          // the stress update empties it, so that the MUSL re-map, which divides by the nodal
-          // masses of this step, still sees its momentum (without it the nodes it shared slow
-          // down and strain the rest of the body: 20 J on a rigid block; outflow_test).
-          sum.outflow_mass += m;
-          sum.outflow_momentum += m * v;
-          sum.outflow_kinetic_energy += 0.5 * m * v.squaredNorm();
-          ++sum.removed;
-          P.removed[p] = 1;
-          P.x[p] = x_old;
           continue;
         }
-        if (fails_first(P, std::size_t(p), fail)) {
-          fail = Failure{std::size_t(p), "position",
-                         "left the grid (grid.outflow = \"remove\" lets it leave the simulation, "
-                         "booked as outflow)"};
+        const Stencil<N>& s = S[p];
+        const std::size_t offset = P.field[p] * nn;  // the particle's velocity field
+        Vec3 dv = Vec3::Zero(), v_new = Vec3::Zero();
+        double h = 0.0;  // sum_I S_Ip heat_I / m_I
+        const std::size_t base = offset + G.index(s.base[0], s.base[1], s.base[2]);
+        for (int i = 0; i < N; ++i)
+          for (int j = 0; j < N; ++j) {
+            const std::size_t row = base + i * sx + j * sy;
+            const double wij = s.w[0][i] * s.w[1][j];
+            for (int k = 0; k < NZ; ++k) {
+              const double w = wij * s.w[2][k];
+              const Vec3& inc = G.increment[row + k];
+              dv += w * inc;
+              v_new += w * G.velocity_new[row + k];
+              if (heat && G.heat[row + k] != 0.0) h += w * G.heat[row + k] / G.mass[row + k];
+            }
+          }
+        if (usl_gradient) P.L[p] = gradient<Shape>(G, s, G.velocity_L, P.v[p], offset);
+        const double m = P.mass[p];
+        if (body_force) {  // sum_I S_Ip (v_I + v*_I)/2 = v_new - dv/2 (step.hpp ParticleTotals)
+          const Vec3 J = dt * m * body_force[p];
+          sum.external_impulse += J;
+          sum.external_work += J.dot(v_new - 0.5 * dv);
         }
+        if (h != 0.0) {
+          const HeatCapacity& c = heat_capacity[P.material[p]];
+          retain_heat(P.state[p], h, c.retained, c.specific_heat);
+          sum.friction_heat += m * h;
+        }
+        P.v[p] += dv;
+        const Vec3 x_old = P.x[p];
+        P.x[p] += dt * v_new;
+        onto_face_within_round_off(G, P.x[p]);
+        const Vec3& v = P.v[p];
+        if (!v.allFinite() && fails_first(P, std::size_t(p), fail))
+          fail = Failure{std::size_t(p), "velocity", "not finite"};
+        if (!(P.x[p].allFinite() && !outside(G, P.x[p]))) {
+          if (outflow && v.allFinite()) {
+            // Leaves the simulation: its mass, momentum and kinetic energy go to the outflow
+            // columns; it stays parked where it was. It keeps its mass and final velocity until
+            // the stress update empties it, so that the MUSL re-map, which divides by the nodal
+            // masses of this step, still sees its momentum (without it the nodes it shared slow
+            // down and strain the rest of the body: 20 J on a rigid block; outflow_test).
+            sum.outflow_mass += m;
+            sum.outflow_momentum += m * v;
+            sum.outflow_kinetic_energy += 0.5 * m * v.squaredNorm();
+            ++sum.removed;
+            P.removed[p] = 1;
+            P.x[p] = x_old;
+            continue;
+          }
+          if (fails_first(P, std::size_t(p), fail)) {
+            fail = Failure{std::size_t(p), "position",
+                           "left the grid (grid.outflow = \"remove\" lets it leave the simulation, "
+                           "booked as outflow)"};
+          }
+        }
+        sum.kinetic_energy += 0.5 * m * v.squaredNorm();  // report eq. 13, end-of-step velocity
+        sum.momentum += m * v;
+        sum.max_speed = std::max(sum.max_speed, v.norm());
       }
-      sum.kinetic_energy += 0.5 * m * v.squaredNorm();  // report eq. 13, end-of-step velocity
-      sum.momentum += m * v;
-      sum.max_speed = std::max(sum.max_speed, v.norm());
     }
-    partial[omp_get_thread_num()] = sum;
     failures[omp_get_thread_num()] = fail;
   }
   ParticleTotals total;
-  for (int t = 0; t < nt; ++t) {  // thread order: deterministic
-    merge_into(total, partial[t]);
+  for (const ParticleTotals& sum : chunk_sums) merge_into(total, sum);  // chunk order
+  for (int t = 0; t < nt; ++t)  // the lowest seed index: the same whichever thread saw it
     merge_failure(failure, failures[t],
                   [&](const Failure& a, const Failure& b) { return fails_first(P, a, b); });
-  }
   return total;
 }
 

@@ -14,8 +14,10 @@
 //     particle's position, velocity, mass, volume, stress, plastic strain, temperature and failure
 //     flag equal, bit for bit, those of the same run without create_new_particles; the ledger's
 //     kinetic energy and momentum (summed in grid-to-particles BEFORE the stress update that
-//     converts) equal the sums over the particles AFTER Simulation::step() returns, to 1e-14
-//     relative, every step;
+//     converts) equal the sums over the particles AFTER Simulation::step() returns, every step,
+//     to n eps relative (n particles: the worst round-off of a sum of n terms, here 3.4e-13; the
+//     ledger sums in chunks of 512 particles, the check in storage order; a particle's share lost
+//     in the conversion would be about 1 / n = 3e-4);
 //   - total particle mass unchanged (exactly) and the mass now in the companion field equals the
 //     right block's mass;
 //   - total momentum |p - p0 - J_b| <= 1e-12 p_block every step (free faces: J_b = 0), with the
@@ -25,6 +27,8 @@
 //     projection, which takes kinetic energy:
 //     docs/mpm.md#velocity-fields-and-contact-physicscontact-contact).
 #include <boost/test/unit_test.hpp>
+
+#include <limits>
 #include <sstream>
 
 #include "../verification_helpers.hpp"
@@ -133,8 +137,10 @@ BOOST_AUTO_TEST_CASE(melted_particles_move_to_the_companion_field_conserving_mas
                                     << ", max |p - p0 - J_b|/p_block " << worst_closure
                                     << "; energy_error " << row.energy_error << sinks.str());
   BOOST_TEST(sim.converted_particles() > 0);
-  BOOST_TEST(worst_ke <= 1e-14);
-  BOOST_TEST(worst_p <= 1e-14);
+  // Round-off of a sum of n terms, whatever its order (the ledger's chunks against this loop).
+  const double sum_round_off = double(P.size()) * std::numeric_limits<double>::epsilon() / 2.0;
+  BOOST_TEST(worst_ke <= sum_round_off);
+  BOOST_TEST(worst_p <= sum_round_off);
   BOOST_TEST(worst_closure <= 1e-12);
   BOOST_TEST(worst_sink_decrease == 0.0);
   BOOST_TEST(std::abs(row.energy_error) < 0.05);
