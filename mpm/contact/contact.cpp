@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mpm/grid/mirror_view.hpp"
+#include "mpm/threads/chunk_sums.hpp"
 #include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
@@ -315,16 +316,15 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   // G.heat was zeroed at the start of the step (grid_update): contact adds to it.
   const std::vector<int>& nodes = G.active_nodes();  // heat is read at active nodes only
   const int na_nodes = static_cast<int>(nodes.size());
-  // The totals are taken per chunk of kSumChunk active nodes and added in chunk order: the same
-  // bits on any thread count.
-  constexpr int kSumChunk = 1024;
-  const int chunks = (na_nodes + kSumChunk - 1) / kSumChunk;
-  std::vector<ContactTotals> chunk_sums(static_cast<std::size_t>(chunks));
+  // The totals per chunk of 1024 active nodes, then in chunk order: the same bits on any thread
+  // count (mpm/threads/chunk_sums.hpp).
+  ChunkSums<ContactTotals> chunk_sums(na_nodes, 1024);
+  const std::ptrdiff_t chunks = chunk_sums.chunks();
 #pragma omp parallel for schedule(static) num_threads(nt)
-  for (int chunk = 0; chunk < chunks; ++chunk) {
-    ContactTotals& sum = chunk_sums[static_cast<std::size_t>(chunk)];
-    const int chunk_end = std::min(na_nodes, (chunk + 1) * kSumChunk);
-    for (int a_node = chunk * kSumChunk; a_node < chunk_end; ++a_node) {
+  for (std::ptrdiff_t chunk = 0; chunk < chunks; ++chunk) {
+    ContactTotals& sum = chunk_sums[chunk];
+    const int chunk_end = static_cast<int>(chunk_sums.end(chunk));
+    for (int a_node = static_cast<int>(chunk_sums.begin(chunk)); a_node < chunk_end; ++a_node) {
       const int I = nodes[a_node];
       // The step marks per entry what it held (between bodies, within one); the strain pass
       // holds that, and elsewhere corrects where the fields approach.
@@ -485,7 +485,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
     }
   }
   ContactTotals total;
-  for (const ContactTotals& sum : chunk_sums) merge_into(total, sum);  // chunk order
+  chunk_sums.add_in_order([&](const ContactTotals& sum) { merge_into(total, sum); });
   return total;
 }
 

@@ -10,6 +10,7 @@
 
 #include "mpm/parallel/halo_exchange.hpp"
 #include "mpm/step/step.hpp"
+#include "mpm/threads/chunk_sums.hpp"
 #include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
@@ -100,20 +101,17 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
   const bool outflow = !P.removed.empty();  // grid.outflow = remove
   const std::uint8_t* const rigid =
       G.has_rigid_fields() ? G.settings().rigid_field.data() : nullptr;
-  // The sums are taken per chunk of kSumChunk particles and added in chunk order: the same bits
-  // on any thread count (as the stress update's, mpm/step/stress_update.cpp).
-  constexpr std::ptrdiff_t kSumChunk = 512;
-  const std::ptrdiff_t chunks = (n + kSumChunk - 1) / kSumChunk;
-  std::vector<ParticleTotals> chunk_sums(static_cast<std::size_t>(chunks));
+  // The sums per chunk of 512 particles, then in chunk order (mpm/threads/chunk_sums.hpp).
+  ChunkSums<ParticleTotals> chunk_sums(n, 512);
+  const std::ptrdiff_t chunks = chunk_sums.chunks();
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
   {
     std::optional<Failure> fail;
 #pragma omp for schedule(static)
     for (std::ptrdiff_t chunk = 0; chunk < chunks; ++chunk) {
-      ParticleTotals& sum = chunk_sums[static_cast<std::size_t>(chunk)];
-      const std::ptrdiff_t chunk_end = std::min(n, (chunk + 1) * kSumChunk);
-      for (std::ptrdiff_t p = chunk * kSumChunk; p < chunk_end; ++p) {
+      ParticleTotals& sum = chunk_sums[chunk];
+      for (std::ptrdiff_t p = chunk_sums.begin(chunk); p < chunk_sums.end(chunk); ++p) {
         if (outflow && P.removed[p]) continue;
         if (in_rigid_field(rigid, P, std::size_t(p))) {  // x += V dt; not in the system's books
           const Vec3 x_old = P.x[p];
@@ -195,7 +193,7 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
     failures[omp_get_thread_num()] = fail;
   }
   ParticleTotals total;
-  for (const ParticleTotals& sum : chunk_sums) merge_into(total, sum);  // chunk order
+  chunk_sums.add_in_order([&](const ParticleTotals& sum) { merge_into(total, sum); });
   for (int t = 0; t < nt; ++t)  // the lowest seed index: the same whichever thread saw it
     merge_failure(failure, failures[t],
                   [&](const Failure& a, const Failure& b) { return fails_first(P, a, b); });

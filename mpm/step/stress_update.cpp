@@ -18,6 +18,7 @@
 #include "models/thermal/adiabatic_heating.hpp"
 #include "mpm/step/step.hpp"
 #include "mpm/threads/chunk_shares.hpp"
+#include "mpm/threads/chunk_sums.hpp"
 #include "mpm/threads/threads.hpp"
 
 namespace impact::mpm {
@@ -106,12 +107,11 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
   // The threads balance chunks of kChunkBlocks blocks (mpm/threads/chunk_shares.hpp); the energy
   // sums are taken per chunk and then in chunk order, the same bits on any thread count.
   constexpr std::ptrdiff_t kChunkBlocks = 64;
-  const std::ptrdiff_t chunks = (blocks + kChunkBlocks - 1) / kChunkBlocks;
   struct EnergySums {
     double strain = 0.0, viscous = 0.0, eroded = 0.0, plastic = 0.0;  // [J]
   };
-  std::vector<EnergySums> chunk_sums(static_cast<std::size_t>(chunks));
-  ChunkShares shares(chunks, nt);
+  ChunkSums<EnergySums> chunk_sums(blocks, kChunkBlocks);
+  ChunkShares shares(chunk_sums.chunks(), nt);
   StressTotals partial[kMaxThreads];
   std::optional<Failure> failures[kMaxThreads];
 #pragma omp parallel num_threads(nt)
@@ -143,9 +143,8 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
     // transfers after the stress update read the particles the other thread had just written.
     // One thread runs the same order either way.
     for (std::ptrdiff_t chunk; (chunk = shares.next(omp_get_thread_num())) >= 0;) {
-      EnergySums& energy = chunk_sums[static_cast<std::size_t>(chunk)];
-      const std::ptrdiff_t chunk_end = std::min(blocks, (chunk + 1) * kChunkBlocks);
-      for (std::ptrdiff_t block = chunk * kChunkBlocks; block < chunk_end; ++block) {
+      EnergySums& energy = chunk_sums[chunk];
+      for (std::ptrdiff_t block = chunk_sums.begin(chunk); block < chunk_sums.end(chunk); ++block) {
         const std::ptrdiff_t p0 = block * kBlock, p1 = std::min(n, p0 + kBlock);
         batch.clear();
         for (std::ptrdiff_t p = p0; p < p1; ++p) {
@@ -247,12 +246,12 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
     failures[omp_get_thread_num()] = fail;
   }
   StressTotals total;
-  for (const EnergySums& e : chunk_sums) {  // chunk order: the same bits on any thread count
+  chunk_sums.add_in_order([&](const EnergySums& e) {
     total.strain_energy_increment += e.strain;
     total.viscous_work += e.viscous;
     total.eroded_energy += e.eroded;
     total.plastic_work += e.plastic;
-  }
+  });
   for (int t = 0; t < nt; ++t) {  // the counts, the largest speed and the faults
     merge_into(total, partial[t]);
     for (Failure& f : partial[t].faulted) total.faulted.push_back(std::move(f));

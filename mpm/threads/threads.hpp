@@ -1,6 +1,6 @@
 // The OpenMP threads of the particle loops: the per-thread partial sums' bound (the loops partition
 // [0, n) statically, so their sums are deterministic for a given thread count) and the
-// first-failure merge.
+// first-failure merge (sums that must not depend on the thread count: chunk_sums.hpp).
 #pragma once
 
 #include <omp.h>
