@@ -77,8 +77,9 @@ BOOST_AUTO_TEST_CASE(a_steel_rod_on_an_aluminium_plate_makes_no_energy) {
 // (40 us: impact, separation at about 23 us, free flight) by `separation` with the fitted plane,
 // at 3, 6 and 12 cells per radius (history rows: 0.68, 0.45, 0.33 %). By `approach` the same
 // ladder gives 0.67, 0.44 and 2.3 % (1.4 % at 24): the gain comes after the bodies have parted,
-// with no contact node left, and is first order in dt (+0.98 % at multiplier 0.25); which
-// state the earlier contact leaves to make it is not found yet (docs/verification.md).
+// with no contact node left, in the plate alone, and is first order in dt (+0.98 % at
+// multiplier 0.25); which state the earlier contact leaves to make it is not found yet
+// (docs/verification.md).
 BOOST_AUTO_TEST_CASE(the_rod_on_plates_books_close_better_as_h_falls_by_separation) {
   double worst[3];
   int k = 0;
