@@ -16,6 +16,7 @@
 #include "mpm/run/interrupt.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/run/output_directory.hpp"
+#include "mpm/run/output_times.hpp"
 #include "mpm/run/progress.hpp"
 #include "mpm/run/run_outputs.hpp"
 #include "mpm/run/run_status.hpp"
@@ -268,7 +269,7 @@ RunEnd step_loop(const RunContext& run, Simulation& sim, RunOutputs& outputs,
       faults.report(sim);
       if (sim.time() >= next_output * (1.0 - 1e-12) || sim.finished()) {
         writer.outputs(true, sim.steps());
-        while (next_output <= sim.time() * (1.0 + 1e-12)) next_output += scene.output.interval;
+        next_output = next_output_after(next_output, sim.time(), scene.output.interval);
       }
       if (every > 0 && sim.steps() % every == 0 && !sim.finished()) writer.checkpoint(next_output);
       const int signal = agreed_interrupt(run, sim);
