@@ -116,7 +116,7 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
     ph.contact.type =
         type == "single_velocity" ? ContactType::single_velocity : ContactType::friction;
     ph.contact.mu =
-        c->number_or("mu", 0.0, Range::non_negative(), "Coulomb friction coefficient [-]");
+        c->number_or("mu", 0.0, Range::closed(0.0, 10.0), "Coulomb friction coefficient [-]");
     const std::string normal =
         c->choice("normal", {"mass_gradients", "larger_volume", "logistic_regression"},
                   "contact normal at a node", "mass_gradients");
