@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace impact {
@@ -68,13 +69,16 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 
 /// SAX events of nlohmann::json that track the key path, to name where parsing stopped: the
 /// value after the last key of an object, or after the last element of an array. The parse
-/// stops at a number beyond the range of a double (1e999: nlohmann::json's own error) and at one
-/// below it (1e-400, which it reads as 0 without a word: `underflow`).
+/// stops at a number beyond the range of a double (1e999: nlohmann::json's own error), at one
+/// below it (1e-400, which it reads as 0 without a word: `underflow`) and at a key that its
+/// object already has (`duplicate`: nlohmann::json keeps the last silently, so `"time"` written
+/// twice ran with the second and `"x-": 0.25, "x-": 99` reported only the 99).
 class NumberLocator {
  public:
   std::string pointer;     ///< of the value that stopped the parse ("" for the top level)
   std::string token;       ///< its text, e.g. 1e999
   bool underflow = false;  ///< stopped at a number that is not 0 but reads as 0
+  bool duplicate = false;  ///< stopped at a key its object already has
 
   bool null() { return value(); }
   bool boolean(bool) { return value(); }
@@ -92,12 +96,14 @@ class NumberLocator {
   bool binary(Json::binary_t&) { return value(); }
   bool start_object(std::size_t) {
     value();
-    frames_.push_back({false, "", -1});
+    frames_.push_back({false, "", -1, {}});
     return true;
   }
   bool key(Json::string_t& k) {
     frames_.back().key = k;
-    return true;
+    if (frames_.back().keys.insert(k).second) return true;
+    duplicate = true;
+    return stop("\"" + k + "\"");
   }
   bool end_object() {
     frames_.pop_back();
@@ -105,7 +111,7 @@ class NumberLocator {
   }
   bool start_array(std::size_t) {
     value();
-    frames_.push_back({true, "", -1});
+    frames_.push_back({true, "", -1, {}});
     return true;
   }
   bool end_array() {
@@ -121,6 +127,7 @@ class NumberLocator {
     bool array;
     std::string key;
     long index;
+    std::set<std::string> keys;  ///< an object's keys so far
   };
   bool value() {
     if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
@@ -442,17 +449,19 @@ Json parse_json_text(const std::string& text, const std::string& what) {
   bool beyond = false;
   try {
     parsed = Json::parse(text, nullptr, true, /*ignore_comments=*/false);
-    // 1e-400 reads as 0 without a word: only a number with a negative exponent can.
-    if (text.find("e-") == std::string::npos && text.find("E-") == std::string::npos) return parsed;
   } catch (const Json::parse_error& e) {
     throw InputError({what + ": JSON syntax error at byte " + std::to_string(e.byte) + ": " +
                       std::string(e.what())});
   } catch (const Json::out_of_range&) {  // a number beyond the double range (1e999)
     beyond = true;
   }
-  // Parsed again, without building it, only to find where the number is.
+  // Parsed again, without building it: a key written twice, or where the number is.
   NumberLocator locator;
   Json::sax_parse(text, &locator);
+  if (locator.duplicate)
+    throw InputError({what + ": " + locator.pointer + ": the key " + locator.token +
+                      " appears twice in its object (JSON would keep only the last); write it "
+                      "once"});
   if (!beyond && !locator.underflow) return parsed;
   std::string number = locator.token;
   if (number.size() > 32)
