@@ -107,6 +107,29 @@ BOOST_AUTO_TEST_CASE(syntax_errors_and_missing_files_name_the_file) {
   });
 }
 
+// A key written twice in one object: nlohmann::json keeps the last without a word (a scene with
+// two "time" blocks ran with the second). An InputError naming the key path; the same key in two
+// objects, or in objects of an array, is fine.
+BOOST_AUTO_TEST_CASE(a_key_written_twice_in_one_object_is_an_input_error) {
+  const auto message = [](const std::string& text) {
+    try {
+      const Json parsed = parse_json_text(text, "scene.json");
+      return "no error: " + parsed.dump();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  const std::string twice =
+      " appears twice in its object (JSON would keep only the last); "
+      "write it once";
+  BOOST_TEST(message(R"({"time": {"a": 1}, "time": {"a": 2}})") ==
+             "scene.json: /time: the key \"time\"" + twice);
+  BOOST_TEST(message(R"({"a": [{"b": 1}, {"c": 1, "c": 2}]})") ==
+             "scene.json: /a/1/c: the key \"c\"" + twice);
+  BOOST_TEST(message(R"({"a": {"b": 1}, "c": {"b": 1}, "d": [{"b": 1}, {"b": 2}]})") ==
+             "no error: {\"a\":{\"b\":1},\"c\":{\"b\":1},\"d\":[{\"b\":1},{\"b\":2}]}");
+}
+
 // A number no double holds (1e999, -1e400, a 400-digit integer) is valid JSON that nlohmann::json
 // refuses with out_of_range: before, it escaped every --set (SIGABRT) and the Python patches
 // (RuntimeError). It is an InputError naming what was parsed and the key path of the number.
