@@ -209,6 +209,41 @@ void check_initial_fields(InputProblems& problems, Scene& s) {
   }
 }
 
+// A rigid object keeps its velocity: where that carries its body to a face of the grid before
+// time.max_time, its particles leave and stop the run (grid.outflow "stop") at a time known now;
+// a `wall` does not hold it (grid/wall.cpp), so one driven into a wall went through it and the
+// run stopped at step 10 after `mpm check` had passed it. Measured on the geometry's bounding box
+// (within the grid), so it errs early by at most a particle's half-width over the speed.
+void check_rigid_object_stays_in_grid(InputProblems& problems, const Scene& s, const SceneObject& o,
+                                      const std::string& key) {
+  if (s.grid.outflow != Outflow::stop || o.velocity_field.has_text() || o.velocity.isZero(0.0))
+    return;
+  const GridSpec& g = s.grid;
+  const auto [lo, hi] = bounds(o.geometry);
+  double first = std::numeric_limits<double>::infinity();
+  int face = -1;
+  for (int d = 0; d < (g.planar() ? 2 : 3); ++d) {
+    const double v = o.velocity(d);
+    if (v == 0.0) continue;
+    const double t = v > 0.0 ? (g.upper(d) - std::min(hi(d), g.upper(d))) / v
+                             : (std::max(lo(d), g.lower(d)) - g.lower(d)) / -v;
+    if (t < first) {
+      first = t;
+      face = 2 * d + (v > 0.0 ? 1 : 0);
+    }
+  }
+  if (!(first < s.time.max_time)) return;
+  std::ostringstream m;
+  m.precision(4);
+  m << "a rigid object keeps its velocity " << vec_text(o.velocity) << " m/s, and it carries its "
+    << "body to the grid's " << kFaceNames[face] << " face at t = " << first
+    << " s, before time.max_time = " << s.time.max_time
+    << " s: its particles would leave the grid and stop the run (a wall does not hold a rigid "
+       "object); expected a velocity or a time.max_time that keeps it inside, or grid.outflow "
+       "\"remove\"";
+  problems.add(key + "/velocity", m.str());
+}
+
 // A rigid object (SceneObject::rigid) is a velocity field held at one velocity: it needs fields of
 // its own (multi-field contact, a material no deformable body shares) and numbers for that
 // velocity; a body force on it would do nothing.
@@ -229,6 +264,7 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
       problems.add(key + "/body_force",
                    "a rigid object keeps its velocity, so a body force would not act on it: "
                    "remove the key");
+    check_rigid_object_stays_in_grid(problems, s, o, key);
     if (std::size_t(o.material) >= s.materials.size()) continue;  // its own problem already
     for (const SceneObject& other : s.objects) {
       if (&other == &o || other.material != o.material) continue;
