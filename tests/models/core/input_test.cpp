@@ -19,6 +19,16 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
+// What parse_json_text says of `text` read as `what`: its InputError, or "no error: " and the JSON.
+std::string parse_message(const std::string& text, const std::string& what) {
+  try {
+    const Json parsed = parse_json_text(text, what);
+    return "no error: " + parsed.dump();
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(core_input)
@@ -111,14 +121,7 @@ BOOST_AUTO_TEST_CASE(syntax_errors_and_missing_files_name_the_file) {
 // two "time" blocks ran with the second). An InputError naming the key path; the same key in two
 // objects, or in objects of an array, is fine.
 BOOST_AUTO_TEST_CASE(a_key_written_twice_in_one_object_is_an_input_error) {
-  const auto message = [](const std::string& text) {
-    try {
-      const Json parsed = parse_json_text(text, "scene.json");
-      return "no error: " + parsed.dump();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-  };
+  const auto message = [](const std::string& text) { return parse_message(text, "scene.json"); };
   const std::string twice =
       " appears twice in its object (JSON would keep only the last); "
       "write it once";
@@ -134,14 +137,7 @@ BOOST_AUTO_TEST_CASE(a_key_written_twice_in_one_object_is_an_input_error) {
 // refuses with out_of_range: before, it escaped every --set (SIGABRT) and the Python patches
 // (RuntimeError). It is an InputError naming what was parsed and the key path of the number.
 BOOST_AUTO_TEST_CASE(a_number_beyond_the_double_range_names_its_key_path) {
-  const auto message = [](const std::string& text) {
-    try {
-      const Json parsed = parse_json_text(text, "--set patch 2");
-      return "no error: " + parsed.dump();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-  };
+  const auto message = [](const std::string& text) { return parse_message(text, "--set patch 2"); };
   const std::string range = "is beyond the range of a double (magnitude at most 1.8e308)";
   BOOST_TEST(message(R"({"density": 1e999})") ==
              "--set patch 2: /density: the number 1e999 " + range);
