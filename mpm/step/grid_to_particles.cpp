@@ -111,7 +111,8 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 #pragma omp for schedule(static)
     for (std::ptrdiff_t chunk = 0; chunk < chunks; ++chunk) {
       ParticleTotals& sum = chunk_sums[chunk];
-      for (std::ptrdiff_t p = chunk_sums.begin(chunk); p < chunk_sums.end(chunk); ++p) {
+      const std::ptrdiff_t chunk_end = chunk_sums.end(chunk);
+      for (std::ptrdiff_t p = chunk_sums.begin(chunk); p < chunk_end; ++p) {
         if (outflow && P.removed[p]) continue;
         if (in_rigid_field(rigid, P, std::size_t(p))) {  // x += V dt; not in the system's books
           const Vec3 x_old = P.x[p];

@@ -144,7 +144,8 @@ StressTotals update_stress(Particles& P, const StressUpdateSettings& settings, d
     // One thread runs the same order either way.
     for (std::ptrdiff_t chunk; (chunk = shares.next(omp_get_thread_num())) >= 0;) {
       EnergySums& energy = chunk_sums[chunk];
-      for (std::ptrdiff_t block = chunk_sums.begin(chunk); block < chunk_sums.end(chunk); ++block) {
+      const std::ptrdiff_t chunk_end = chunk_sums.end(chunk);
+      for (std::ptrdiff_t block = chunk_sums.begin(chunk); block < chunk_end; ++block) {
         const std::ptrdiff_t p0 = block * kBlock, p1 = std::min(n, p0 + kBlock);
         batch.clear();
         for (std::ptrdiff_t p = p0; p < p1; ++p) {
