@@ -135,7 +135,10 @@ class NumberLocator {
   }
   bool stop(const std::string& at) {
     value();  // the value being read when the parse stopped
-    for (const Frame& f : frames_) pointer += "/" + (f.array ? std::to_string(f.index) : f.key);
+    for (const Frame& f : frames_) {
+      pointer += '/';
+      pointer += f.array ? std::to_string(f.index) : pointer_token(f.key);
+    }
     token = at;
     return false;
   }
@@ -146,6 +149,21 @@ class NumberLocator {
 
 InputError::InputError(std::vector<std::string> problems)
     : std::runtime_error(join_problems(problems)), problems_(std::move(problems)) {}
+
+std::string pointer_token(std::string_view key) {
+  std::string token;
+  token.reserve(key.size());
+  for (const char c : key) {
+    if (c == '~') {
+      token += "~0";
+    } else if (c == '/') {
+      token += "~1";
+    } else {
+      token += c;
+    }
+  }
+  return token;
+}
 
 void InputProblems::add(std::string_view key_path, std::string_view message) {
   std::string where = key_path.empty() ? "/" : std::string(key_path);

@@ -72,6 +72,10 @@ class InputProblems {
   std::vector<std::string> warnings_;
 };
 
+/// One reference token of a JSON pointer (RFC 6901, section 3): '~' written "~0" and '/' written
+/// "~1", so a key that holds either still names its own place in a key path.
+std::string pointer_token(std::string_view key);
+
 /// An interval of admissible values, open or closed at each end.
 struct Range {
   double min = -std::numeric_limits<double>::infinity();
@@ -99,7 +103,7 @@ class JsonReader {
   JsonReader(const Json& node, std::string path, InputProblems& problems);
 
   const std::string& path() const { return path_; }
-  std::string key_path(std::string_view key) const { return path_ + "/" + std::string(key); }
+  std::string key_path(std::string_view key) const { return path_ + "/" + pointer_token(key); }
   bool has(std::string_view key) const;
   InputProblems& problems() const { return *problems_; }
 

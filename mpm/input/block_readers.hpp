@@ -70,6 +70,8 @@ void check_rigid_objects(InputProblems& problems, const Scene& s);
 /// value that is not finite is refused, naming the point; sets each object's velocity peak and
 /// initial body-force peak for the estimates, and checks the velocity's units there.
 void check_initial_fields(InputProblems& problems, Scene& s);
+/// Each object's (peak) initial speed below the speed of light.
+void check_object_speeds(InputProblems& problems, const Scene& s);
 /// grid.face_velocity's expressions: they compile with the scene's constants and read t alone.
 void check_face_velocities(InputProblems& problems, const Scene& s);
 /// A warning in s.warnings for each moving face that travels more than a quarter of its cell.

@@ -19,7 +19,7 @@ void read_constants(JsonReader& root, const Json& doc, NamedConstants& out) {
     return;
   }
   for (const auto& item : n.items()) {
-    const std::string key = "/constants/" + item.key();
+    const std::string key = "/constants/" + pointer_token(item.key());
     if (const auto why = check_constant_name(item.key())) {
       root.problems().add(key, *why);
     } else if (!item.value().is_number()) {
@@ -109,11 +109,11 @@ void warn_of_idle_expression_names(InputProblems& problems, const Scene& s) {
     for (const VectorExpression* f : fields)
       for (const std::string& text : f->text) used = used || names(text, name);
     for (const FaceMotion& m : s.grid.face_velocity) used = used || names(m.text, name);
-    if (!used) problems.warn("/constants/" + name, "not used by any expression");
+    if (!used) problems.warn("/constants/" + pointer_token(name), "not used by any expression");
   }
   for (const SceneObject& o : s.objects)
     if (o.velocity_field.uses("t", s.constants))
-      problems.warn("/objects/" + o.name + "/velocity",
+      problems.warn("/objects/" + pointer_token(o.name) + "/velocity",
                     "an initial velocity is evaluated at t = 0: its t is always 0");
 }
 

@@ -94,7 +94,7 @@ Json with_plane_arrays_completed(const Json& doc, InputProblems& problems) {
   }
   if (out.contains("objects") && out["objects"].is_object())
     for (auto& item : out["objects"].items())
-      complete(item.value(), "/objects/" + item.key(), "particles_per_cell", 1);
+      complete(item.value(), "/objects/" + pointer_token(item.key()), "particles_per_cell", 1);
   // Positions in the plane may be written [x, y] too (the particles lie at z = 0); [x, y, z]
   // stays valid for them, as for the bodies.
   const auto position = [](Json& node, const char* key) {

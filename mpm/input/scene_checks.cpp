@@ -53,7 +53,7 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
   const std::string grid_text = corner(g.lower) + " to " + corner(g.upper) + " m";
   for (std::size_t oi = 0; oi < s.objects.size(); ++oi) {
     const SceneObject& o = s.objects[oi];
-    const std::string key = "/objects/" + o.name + "/geometry";
+    const std::string key = "/objects/" + pointer_token(o.name) + "/geometry";
     const auto [lo, hi] = bounds(o.geometry);
     const std::string box_text = "its bounding box " + vec_text(lo) + " to " + vec_text(hi) + " m";
     const GridCoverage c = grid_coverage(o.geometry, g);
@@ -147,7 +147,7 @@ void check_planar_scene(InputProblems& problems, Scene& s) {
     const std::string grid = "grid.geometry \"" + std::string(Grid::kName) + "\"";
     const std::string expected(Grid::kExpectedMotion);
     for (SceneObject& o : s.objects) {
-      const std::string key = "/objects/" + o.name;
+      const std::string key = "/objects/" + pointer_token(o.name);
       const std::string why = Grid::form_problem(o.geometry);
       if (!why.empty()) problems.add(key + "/geometry", why + " (" + grid + ")");
       // The uniform part of a field (numbers, and texts without a variable) must move the body as
@@ -191,7 +191,7 @@ void check_initial_fields(InputProblems& problems, Scene& s) {
     SceneObject& o = s.objects[i];
     if (!o.velocity_field.has_text() && !o.body_force.has_text()) continue;
     const InitialFields f = initial_fields(s, i);
-    const std::string key = "/objects/" + o.name;
+    const std::string key = "/objects/" + pointer_token(o.name);
     if (f.non_finite_velocity)
       problems.add(key + "/velocity", "not finite at the seed point X = " +
                                           vec_text(*f.non_finite_velocity) + " m (t = 0)");
@@ -206,6 +206,23 @@ void check_initial_fields(InputProblems& problems, Scene& s) {
                                f.velocity_peak(d));
     }
     o.initial_body_force_peak = f.body_force_peak;
+  }
+}
+
+// A speed at or above light's is no impact speed: it is a slip (a unit, an exponent). Refused by
+// its key rather than left to the step estimate, which read 1e300 m/s as an infinite speed.
+void check_object_speeds(InputProblems& problems, const Scene& s) {
+  constexpr double kSpeedOfLight = 299792458.0;  // m/s, exact (SI definition of the metre)
+  for (const SceneObject& o : s.objects) {
+    const double speed = o.velocity.cwiseAbs().maxCoeff() < kSpeedOfLight
+                             ? o.velocity.norm()
+                             : std::numeric_limits<double>::infinity();
+    if (speed < kSpeedOfLight) continue;
+    std::ostringstream m;
+    m.precision(4);
+    m << "expected a speed below that of light (2.998e8 m/s), got " << vec_text(o.velocity)
+      << " m/s" << (o.velocity_field.has_text() ? " at its fastest seed point" : "");
+    problems.add("/objects/" + pointer_token(o.name) + "/velocity", m.str());
   }
 }
 
@@ -246,11 +263,21 @@ void check_rigid_object_stays_in_grid(InputProblems& problems, const Scene& s, c
 
 // A rigid object (SceneObject::rigid) is a velocity field held at one velocity: it needs fields of
 // its own (multi-field contact, a material no deformable body shares) and numbers for that
-// velocity; a body force on it would do nothing.
+// velocity; a body force on it would do nothing. Rigid bodies alone compute nothing: no wave,
+// no contact, a time step of time.max_time (the run completed in one step).
 void check_rigid_objects(InputProblems& problems, const Scene& s) {
+  const bool any_rigid =
+      std::any_of(s.objects.begin(), s.objects.end(), [](const SceneObject& o) { return o.rigid; });
+  const bool all_rigid =
+      std::all_of(s.objects.begin(), s.objects.end(), [](const SceneObject& o) { return o.rigid; });
+  if (any_rigid && all_rigid)
+    problems.add("/objects",
+                 "every object is rigid: expected at least one deformable object "
+                 "(rigid objects move at their velocity and, alone, leave nothing "
+                 "to compute)");
   for (const SceneObject& o : s.objects) {
     if (!o.rigid) continue;
-    const std::string key = "/objects/" + o.name;
+    const std::string key = "/objects/" + pointer_token(o.name);
     if (s.physics.contact.type == ContactType::single_velocity)
       problems.add(key + "/rigid",
                    "a rigid object meets the other bodies through multi-field contact: expected "

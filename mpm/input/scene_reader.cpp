@@ -32,6 +32,7 @@ Scene read_scene(const Json& document, const std::string& file, InputKeyRecorder
   if (problems.empty()) check_planar_scene(problems, s);
   if (problems.empty()) check_objects_in_grid(problems, s);  // grid and objects valid
   if (problems.empty()) check_initial_fields(problems, s);   // expressions at the seed points
+  if (problems.empty()) check_object_speeds(problems, s);    // numbers and expression peaks
   warn_of_idle_expression_names(problems, s);
   read_observables(problems, doc, s);
   check_field_count(problems, s);

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "models/core/input.hpp"
 #include "mpm/scene/grid_geometry.hpp"
 
 namespace impact::mpm {
@@ -93,8 +94,8 @@ std::vector<std::string> seeding_warnings(const Scene& scene, const Particles& P
     const Vec3 h = scene.grid.largest_cell();
     std::ostringstream m;
     m.precision(3);
-    m << scene.file << ": /objects/" << object.name << "/geometry: its particles hold "
-      << std::setprecision(4) << ratio << std::setprecision(3)
+    m << scene.file << ": /objects/" << pointer_token(object.name)
+      << "/geometry: its particles hold " << std::setprecision(4) << ratio << std::setprecision(3)
       << " of the volume they should fill (" << seeded[o] << " of " << expected
       << (scene.grid.per_metre_of_thickness() ? " m^3 per m" : " m^3")
       << ", its part inside the grid and outside earlier objects): seeded at the sub-cell centres ("

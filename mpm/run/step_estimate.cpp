@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "models/core/input.hpp"
 #include "mpm/run/memory.hpp"
 #include "mpm/step/step.hpp"
 
@@ -73,11 +74,12 @@ std::string driver_of(const Scene& scene, const StepEstimate& e) {
       // The density is named with its value: a density of 1e-30 is the usual cause, set in the
       // material file or in the scene's overrides of it.
       const SceneMaterial& m = scene.materials[o.material];
-      add(e.signal_speed / kUsualSignal, "/materials/", m.name, " (its density ",
+      add(e.signal_speed / kUsualSignal, "/materials/", pointer_token(m.name), " (its density ",
           m.material.model.params().density, " kg/m^3, from its file or overrides/density, and ",
           "moduli give a wave speed of ", e.wave_speed, " m/s)");
     } else {
-      add(e.signal_speed / kUsualSignal, "/objects/", o.name, "/velocity (", speed, " m/s)");
+      add(e.signal_speed / kUsualSignal, "/objects/", pointer_token(o.name), "/velocity (", speed,
+          " m/s)");
     }
   }
   const Factor* largest = &factors.front();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include "models/core/input.hpp"
 
 namespace impact::mpm {
 
@@ -71,10 +72,10 @@ std::vector<std::string> fitted_range_warnings(const Scene& scene) {
       if (!fast && !hot) continue;
       std::ostringstream w;
       w.precision(3);
-      w << scene.file << ": /materials/" << scene.materials[m].name << "/file: " << material.file
-        << " was fitted on strain rates " << f.strain_rate_min << " to " << f.strain_rate_max
-        << " /s and temperatures " << f.temperature_min << " to " << f.temperature_max
-        << " K (its fitted_range); object " << scene.objects[o].name;
+      w << scene.file << ": /materials/" << pointer_token(scene.materials[m].name)
+        << "/file: " << material.file << " was fitted on strain rates " << f.strain_rate_min
+        << " to " << f.strain_rate_max << " /s and temperatures " << f.temperature_min << " to "
+        << f.temperature_max << " K (its fitted_range); object " << scene.objects[o].name;
       if (fast)
         w << "'s nominal strain rate is " << rate
           << " /s (its speed relative to what it hits over its length)";

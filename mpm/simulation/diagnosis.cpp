@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "models/core/input.hpp"
 #include "mpm/simulation/simulation.hpp"
 
 namespace impact::mpm {
@@ -68,7 +69,7 @@ std::optional<std::string> Simulation::non_finite_body_force() const {
   const SceneObject& o = scene_.objects[particles_.object[p]];
   std::ostringstream m;
   m.precision(9);
-  m << "/objects/" << o.name << "/body_force = [";
+  m << "/objects/" << pointer_token(o.name) << "/body_force = [";
   for (int d = 0; d < 3; ++d) {
     m << (d ? ", " : "");
     if (o.body_force.text[d].empty())

@@ -133,6 +133,28 @@ BOOST_AUTO_TEST_CASE(a_key_written_twice_in_one_object_is_an_input_error) {
              "no error: {\"a\":{\"b\":1},\"c\":{\"b\":1},\"d\":[{\"b\":1},{\"b\":2}]}");
 }
 
+// RFC 6901, section 3: a key holding '/' or '~' is one reference token, escaped "~1" and "~0"
+// (the '~' first, so "~1" in a key stays two characters of the key).
+BOOST_AUTO_TEST_CASE(a_key_with_a_slash_or_tilde_is_one_token_of_its_key_path) {
+  BOOST_TEST(pointer_token("block") == "block");
+  BOOST_TEST(pointer_token("a/b") == "a~1b");
+  BOOST_TEST(pointer_token("~1") == "~01");
+  BOOST_TEST(pointer_token("/~/") == "~1~0~1");
+  BOOST_TEST(pointer_token("") == "");
+  // Through a reader: the unknown key inside the object named "top/left".
+  const Json j = Json::parse(R"({"objects": {"top/left": {"velocty": 1}}})");
+  InputProblems problems("s.json");
+  JsonReader root(j, "", problems);
+  JsonReader objects = root.child("objects", "");
+  JsonReader object = objects.child("top/left", "");
+  object.reject_unknown_keys();
+  BOOST_TEST(contains(problems_text(problems), "s.json: /objects/top~1left/velocty: unknown key"));
+  // And the parse's own key paths (a key written twice).
+  BOOST_TEST(parse_message(R"({"a/b": {"~": 1, "~": 2}})", "s.json") ==
+             "s.json: /a~1b/~0: the key \"~\" appears twice in its object (JSON would keep only "
+             "the last); write it once");
+}
+
 // A number no double holds (1e999, -1e400, a 400-digit integer) is valid JSON that nlohmann::json
 // refuses with out_of_range: before, it escaped every --set (SIGABRT) and the Python patches
 // (RuntimeError). It is an InputError naming what was parsed and the key path of the number.
