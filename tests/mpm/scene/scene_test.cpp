@@ -366,6 +366,26 @@ BOOST_AUTO_TEST_CASE(a_bad_material_override_names_the_scene_entry_and_the_mater
 // material, two with particle conversion (a companion each). 64 fields are read; 65 (65
 // materials, or 33 with conversion: 66) are refused at /materials with the limit, where the
 // contact used to ignore the fields beyond the 64th.
+// A mistyped contact type, or a contact block that is not an object, is one error: before, the
+// reader fell back to single_velocity and blamed the scene's mu and its rigid object as well
+// (a new-user trial, on sliding_block_rigid.json).
+BOOST_AUTO_TEST_CASE(a_mistyped_contact_type_is_one_error_not_three) {
+  Json doc = load_scene_document(kScenes + "verification/sliding_block_rigid.json");
+  const auto count = [](const std::string& text, const std::string& part) {
+    std::size_t n = 0;
+    for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+  };
+  doc["physics"]["contact"]["type"] = "frictional";
+  std::string e = scene_error_of(doc);
+  BOOST_TEST(e.find("/physics/contact/type: unknown name \"frictional\"") != std::string::npos, e);
+  BOOST_TEST(count(e, ": /") == 1u, e);
+  doc["physics"]["contact"] = "friction";
+  e = scene_error_of(doc);
+  BOOST_TEST(e.find("/physics/contact: expected") != std::string::npos, e);
+  BOOST_TEST(count(e, ": /") == 1u, e);
+}
+
 BOOST_AUTO_TEST_CASE(more_than_64_contact_fields_are_refused) {
   const auto with_materials = [](int n, bool conversion) {
     Json doc = base();
