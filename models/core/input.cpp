@@ -426,13 +426,23 @@ void JsonReader::ignore(std::string_view key) {
   used_.insert(std::string(key));
 }
 
+// An unknown key with no near name lists the keys its place reads, up to this many (an
+// object's handful; the root of a scene reads more, and a long list would bury the message).
+constexpr std::size_t kListedKnownKeys = 12;
+
 void JsonReader::reject_unknown_keys() {
   if (!node_->is_object()) return;
   std::vector<std::string> known(used_.begin(), used_.end());
   for (const auto& item : node_->items()) {
     if (used_.count(item.key()) != 0) continue;
     std::string message = "unknown key";
-    if (auto near = nearest_name(item.key(), known)) message += " (did you mean " + *near + "?)";
+    if (auto near = nearest_name(item.key(), known)) {
+      message += " (did you mean " + *near + "?)";
+    } else if (!known.empty() && known.size() <= kListedKnownKeys) {
+      // Nothing near ("x_minus" for "x-", "friction" for "mu"): the few keys this place reads.
+      message += "; known here: ";
+      for (std::size_t k = 0; k < known.size(); ++k) message += (k == 0 ? "" : ", ") + known[k];
+    }
     problems_->add(key_path(item.key()), message);
   }
 }

@@ -111,8 +111,8 @@ void warn_of_idle_expression_names(InputProblems& problems, const Scene& s) {
     for (const FaceMotion& m : s.grid.face_velocity) used = used || names(m.text, name);
     if (!used) problems.warn("/constants/" + pointer_token(name), "not used by any expression");
   }
-  for (const SceneObject& o : s.objects)
-    if (o.velocity_field.uses("t", s.constants))
+  for (const SceneObject& o : s.objects)  // a rigid object's expression is refused outright
+    if (!o.rigid && o.velocity_field.uses("t", s.constants))
       problems.warn("/objects/" + pointer_token(o.name) + "/velocity",
                     "an initial velocity is evaluated at t = 0: its t is always 0");
 }

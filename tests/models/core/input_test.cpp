@@ -92,6 +92,17 @@ BOOST_AUTO_TEST_CASE(unknown_key_suggests_the_nearest_known_key) {
   BOOST_TEST(contains(problems_text(problems), "/densty: unknown key (did you mean density?)"));
 }
 
+// With no near name, the few keys a place reads are listed ("x_minus" is far from "x-").
+BOOST_AUTO_TEST_CASE(an_unknown_key_with_no_near_name_lists_the_known_ones) {
+  const Json j = Json::parse(R"({"x_minus": 0.3, "x-": 0.1})");
+  InputProblems problems("s.json");
+  JsonReader r(j, "/grid/wall_friction", problems);
+  for (const char* face : {"x-", "x+", "y-"}) r.number_or(face, 0.0, Range::closed(0.0, 10.0), "");
+  r.reject_unknown_keys();
+  BOOST_TEST(problems_text(problems) ==
+             "s.json: /grid/wall_friction/x_minus: unknown key; known here: x+, x-, y-");
+}
+
 BOOST_AUTO_TEST_CASE(a_line_based_file_names_the_line_instead_of_a_key_path) {
   InputProblems problems("curve.csv");
   problems.add_at_line(7, "column 2 (true_stress [Pa]): empty cell");
