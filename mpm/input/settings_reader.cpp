@@ -115,11 +115,10 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
   // "frictional" drew two such errors after the right one).
   const std::size_t problems_before = r.problems().count();
   if (auto c = r.optional_child("contact", "interaction of the materials' velocity fields")) {
-    const bool block_unreadable = r.problems().count() > problems_before;
     // "approach" is the report's name for the same model as "friction" (contact/contact.hpp).
     const std::string type = c->choice("type", {"single_velocity", "friction", "approach"},
                                        "contact model", "single_velocity");
-    const bool type_unknown = block_unreadable || r.problems().count() > problems_before;
+    const bool type_unknown = r.problems().count() > problems_before;  // the block or its type
     ph.contact.type = type == "single_velocity" && !type_unknown ? ContactType::single_velocity
                                                                  : ContactType::friction;
     ph.contact.mu =
