@@ -44,8 +44,10 @@
 //               its velocity (infinite mass; with two, the one with more volume there), it
 //               takes no correction, and the mean correction is not removed: the momentum the
 //               others gain is its reaction (grid/rigid_fields.cpp). The normal there is the
-//               rigid body's own surface, grad m_rigid, whatever `normal` says (it does not
-//               deform; grad m_rigid - grad m_f deep inside it, where its own gradient is
+//               rigid body's own surface whatever `normal` says (it does not deform): its
+//               geometry's, the nearest surface's outward normal at the node (moved by V t;
+//               mpm/geometry/surface_distance.hpp), where that faces the other body; else
+//               grad m_rigid (grad m_rigid - grad m_f deep inside it, where its own gradient is
 //               round-off; contact.cpp normal_against_rigid). At a node of three or more bodies
 //               with a rigid one, each is corrected against the rigid alone; the other bodies
 //               are not corrected against each other there.

@@ -132,6 +132,9 @@ struct GridSettings {
   /// object's velocity [m/s] (Grid::hold_rigid_fields); both empty when no object is rigid.
   std::vector<std::uint8_t> rigid_field;
   std::vector<Vec3> rigid_velocity;
+  /// Per velocity field, the rigid object's surface at t = 0 (scene/rigid_surface.hpp), absent
+  /// where its mass gradient serves; empty when no object is rigid.
+  std::vector<std::optional<Geometry>> rigid_surface;
   /// Per scene object: the particles' half-widths [m] (uGIMP's l times the spacing), the extent
   /// of a particle's domain for the touch test of the wall faces and for the bodies' separation
   /// (`contact.detection = "separation"`); empty without either.
@@ -343,6 +346,14 @@ class Grid {
   bool has_rigid_fields() const {
     return !settings_.rigid_field.empty();
   }
+  /// The time at the step's start [s]: where the rigid objects are (Grid::rigid_inward_normal).
+  void set_time(double t) {
+    time_ = t;
+  }
+  /// The unit normal of rigid field f's surface into the object at node `node` (storage index
+  /// within one field): its geometry moved by V t (GridSettings::rigid_surface), the nearest
+  /// surface's; zero without a surface or where no direction is defined (grid/rigid_fields.cpp).
+  Vec3 rigid_inward_normal(int f, int node) const;
   /// Whether field f carries a rigid object.
   bool is_rigid_field(int f) const {
     return has_rigid_fields() && settings_.rigid_field[std::size_t(f)] != 0;
@@ -384,6 +395,7 @@ class Grid {
   std::vector<int> boundary_nodes_;
   std::vector<int> active_boundary_;
   std::array<std::array<double, 6>, 2> face_velocity_{};  ///< [start, end] per face [m/s]
+  double time_ = 0.0;                                     ///< the step's start [s] (set_time)
   std::vector<MirrorWrite> mirror_all_;     ///< every face node, in the order of the mirror
   std::vector<MirrorWrite> mirror_active_;  ///< those whose target is in an active block
   /// Mirror writes whose source lies on a wall's layers: applied after the walls.

@@ -3,6 +3,7 @@
 // (the particles keep V), its velocity gradient is zero (no strain), and contact meets it as a
 // partner of infinite mass (contact/contact.hpp). Nairn's rigid material sets the nodal velocity
 // of its field the same way (Nairn, NairnMPM's RigidMaterial; docs/scenes.md#rigid-objects).
+#include "mpm/geometry/surface_distance.hpp"
 #include "mpm/grid/grid.hpp"
 
 namespace impact::mpm {
@@ -18,6 +19,21 @@ void Grid::hold_rigid_fields(std::vector<Vec3>& v) const {
       if (mass[e] > 0.0) v[e] = V;
     }
   }
+}
+
+// The object's particles move at V from their seed points, so at time t its surface is the
+// seeded geometry moved by V t. A 2D grid's node plane is the section z = 0 the grid seeds
+// (scene/planar_form.hpp); a plane-strain body is a prism along z, whose z faces are none.
+Vec3 Grid::rigid_inward_normal(int f, int node) const {
+  if (settings_.rigid_surface.empty()) return Vec3::Zero();
+  const std::optional<Geometry>& surface = settings_.rigid_surface[std::size_t(f)];
+  if (!surface) return Vec3::Zero();
+  const std::array<int, 3> n = ijk(node);
+  Vec3 x = Vec3::Zero();
+  for (int d = 0; d < spec_.dimensions(); ++d) x(d) = node_coordinate(d, n[d]);
+  x -= settings_.rigid_velocity[std::size_t(f)] * time_;
+  const bool prism_z = spec_.per_metre_of_thickness();  // its bodies: prisms along z
+  return -surface_distance(*surface, x, prism_z).outward;
 }
 
 }  // namespace impact::mpm

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mpm/particles/particle_order.hpp"
+#include "mpm/scene/rigid_surface.hpp"
 #include "mpm/simulation/advance.hpp"
 #include "mpm/simulation/diagnosis.hpp"
 #include "mpm/threads/threads.hpp"
@@ -128,6 +129,7 @@ GridSettings Simulation::grid_settings(int threads) const {
     g.rigid_field.push_back(V.has_value());
     g.rigid_velocity.push_back(V.value_or(Vec3::Zero()));
   }
+  g.rigid_surface = rigid_field_surfaces(scene_);  // contact's normal against them
   // The light-node rule's mass (kLightNodeMassFraction in step/step.hpp), by the geometry's rule.
   const LightNode light = visit_geometry(scene_.grid.geometry, [&](auto geometry) {
     return decltype(geometry)::light_node(particles_.mass, particles_.x,
@@ -219,6 +221,7 @@ const StepTotals& Simulation::step() {
   const double dt = checked_dt();
   if (face_motions_)
     grid_.set_face_velocities(face_motions_->at(time_), face_motions_->at(time_ + dt));
+  grid_.set_time(time_);  // where the rigid objects' surfaces are
   std::optional<Failure> failure;
   last_ = advance_step(dt, failure);
   phase_totals_ += last_.seconds;
