@@ -112,6 +112,23 @@ void check_objects_in_grid(InputProblems& problems, const Scene& s) {
     // A body placed into an earlier one loses the shared part to it (seed_points.hpp): warned as
     // a clip by the grid is.
     const ObjectOverlap overlap = object_overlap(s, oi);
+    // A deformable body that keeps part of a rigid one would sit embedded in it for ever (the
+    // rigid body never deforms nor pushes it out): refused. Named the other way round, the
+    // deformable body loses the shared part and is warned about, as any overlap.
+    std::string embedded;
+    for (const std::size_t a : overlap.by)
+      if (o.rigid && !s.objects[a].rigid) embedded = s.objects[a].name;
+    if (overlap.claimed > kMaxSilentLoss && !embedded.empty()) {
+      std::ostringstream e;
+      e.precision(3);
+      e << "a rigid object overlaps the earlier deformable object \"" << embedded << "\": about "
+        << overlap.claimed
+        << " of its volume lies inside it, and that part of the deformable body would stay "
+           "embedded in the rigid one (a point inside an earlier object, in alphabetical order of "
+           "the names, belongs to that object); expected bodies that do not overlap";
+      problems.add(key, e.str());
+      continue;
+    }
     if (overlap.claimed > kMaxSilentLoss) {
       std::ostringstream w;
       w.precision(3);
