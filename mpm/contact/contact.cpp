@@ -180,9 +180,9 @@ struct Bodies {
   /// The rigid partner's one-sided mass differences, towards the lower and the upper neighbour
   /// along each axis (set where a rigid partner meets another body; normal_against_rigid).
   Vec3 rigid_lower = Vec3::Zero(), rigid_upper = Vec3::Zero();
-  /// The rigid partner's own surface normal into it (Grid::rigid_inward_normal, as the mirror
-  /// leaves it); zero where its geometry gives none.
-  Vec3 rigid_surface = Vec3::Zero();
+  /// Per body, the rigid partner's own surface normal into it as the body meets it
+  /// (Grid::rigid_inward_normal, as the mirror leaves it); zero where its geometry gives none.
+  Vec3 rigid_surface[kMaxFields];
   /// A pair's fitted plane (`logistic_regression`): the normal of each body into the other.
   bool has_plane = false;
   Vec3 plane[2];
@@ -205,9 +205,9 @@ Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNorma
 // contact.normal says. First its geometry's (Grid::rigid_inward_normal): exact, where the mass
 // gradient of its seeded particles is a staircase. A block on a rigid ramp at 20 degrees to the
 // grid slid at 0.64 of Coulomb's rate on the gradient and at 0.76 on the fitted plane; on the
-// geometry's normal at 1.000 (contact_friction_test). It serves where it faces body b (not along
-// b's own gradient, which points into b): at the middle node of a slab two cells thick the
-// nearest face may be the far one. Else grad m_r (its mass grows into it); the pair's sum
+// geometry's normal at 1.000 (contact_friction_test); at a node inside the rigid body, the face
+// on body b's side (Grid::rigid_inward_normal). Where the geometry gives no direction, grad m_r
+// (its mass grows into it); the pair's sum
 // grad m_r - grad m_b where the node is deep inside it (its gradient there is round-off, whose
 // direction is noise). A rigid body
 // does not deform, so its surface is the contact surface (NairnMPM biases rigid contact to the
@@ -228,9 +228,8 @@ Vec3 surface_normal(const Bodies& B, const Vec3& grad_total, int b, ContactNorma
 // difference opposes it or is much the weaker (a quarter: at a thick body's top node and the
 // node below it they are equal or half, and agree).
 Vec3 normal_against_rigid(const Bodies& B, int b, int r) {
-  if (B.rigid_surface.squaredNorm() > 0.0 && B.rigid_surface.dot(B.grad[b]) <= 0.0)
-    return B.rigid_surface;
   const double rigid = B.grad[r].norm() / B.m[r], other = B.grad[b].norm() / B.m[b];
+  if (B.rigid_surface[b].squaredNorm() > 0.0) return B.rigid_surface[b];
   const double tiny = 1e-6 * B.grad[b].norm();
   Vec3 facing;
   for (int d = 0; d < 3; ++d)
@@ -426,8 +425,10 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           const double* m = G.mass.data() + std::size_t(active[a]) * nn;
           B.rigid_lower += mass_gradient(G, m, ijk, {-1, -1, -1});
           B.rigid_upper += mass_gradient(G, m, ijk, {1, 1, 1});
-          if (B.rigid_surface.squaredNorm() == 0.0)
-            B.rigid_surface = as_mirrored(G.rigid_inward_normal(active[a], I));
+          // As each other body meets it (the side its own gradient points from).
+          for (int b = 0; b < B.n; ++b)
+            B.rigid_surface[b] =
+                b == r ? Vec3::Zero() : as_mirrored(G.rigid_inward_normal(active[a], I, B.grad[b]));
         }
       }
       // The separating plane (`logistic_regression`, step/contact_planes.cpp) between two

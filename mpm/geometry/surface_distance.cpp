@@ -4,12 +4,15 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 namespace impact::mpm {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+SurfaceDistance union_distance(const std::vector<Geometry>& parts, const Vec3& x, bool prism_z);
 
 double sign(double x) {
   return x > 0.0 ? 1.0 : x < 0.0 ? -1.0 : 0.0;
@@ -93,10 +96,54 @@ bool along_z(const Vec3& bottom, const Vec3& top) {
   return std::abs(e(0)) < 1e-12 && std::abs(e(1)) < 1e-12;
 }
 
-// The nearer of two distances (a union): exact outside both; inside, that of the part the point
-// lies deeper in.
-SurfaceDistance nearer(const SurfaceDistance& a, const SurfaceDistance& b) {
-  return b.distance < a.distance ? b : a;
+// Of two distances, the nearer surface: outside both, the smaller distance (a union's, exact);
+// `inside`, the larger, the face less deep. Equally near (a point on the bisector of two faces,
+// in the corner they make), their normals' mean, normalised, as at a box's edge.
+SurfaceDistance nearer(const SurfaceDistance& a, const SurfaceDistance& b, bool inside = false) {
+  if (!std::isfinite(a.distance)) return b;
+  const double tie = 1e-12 * std::max({1.0, std::abs(a.distance), std::abs(b.distance)});
+  if (std::abs(a.distance - b.distance) > tie) return (b.distance < a.distance) != inside ? b : a;
+  const Vec3 n = a.outward + b.outward;
+  const double norm = n.norm();
+  return {a.distance, norm > 0.0 ? Vec3(n / norm) : Vec3::Zero()};
+}
+
+// A union. Outside every part, the nearest part's distance is the union's (exact). Inside, a
+// part's nearest face may be buried in another part (two boxes that touch: their shared face; an
+// overlap): its foot point x - d n, just past the face, lies inside that other part, and the
+// face is no surface of the union. The nearest face of a part that holds x and is not buried
+// serves; none (x beside a joint, its faces all buried): no direction (zero normal). Before this
+// screen the joint of two touching rigid boxes read as a surface at any depth, and a block
+// resting over it was pushed sideways (issue 53's audit).
+SurfaceDistance union_distance(const std::vector<Geometry>& parts, const Vec3& x, bool prism_z) {
+  std::vector<SurfaceDistance> d;
+  d.reserve(parts.size());
+  bool inside_any = false;
+  for (const Geometry& part : parts) {
+    d.push_back(surface_distance(part, x, prism_z));
+    inside_any = inside_any || d.back().distance < 0.0;
+  }
+  SurfaceDistance best{kInf, Vec3::Zero()};
+  if (!inside_any) {
+    for (const SurfaceDistance& k : d) best = nearer(best, k);
+    return best;
+  }
+  std::vector<std::size_t> open;  // the parts holding x whose nearest face is not buried
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (d[k].distance > 0.0 || d[k].outward.squaredNorm() == 0.0) continue;
+    const double past = std::max(1e-9 * std::abs(d[k].distance), 1e-15);
+    const Vec3 foot = x - (d[k].distance - past) * d[k].outward;
+    bool buried = false;
+    for (std::size_t j = 0; j < parts.size() && !buried; ++j)
+      buried = j != k && inside(parts[j], foot);
+    if (!buried) open.push_back(k);
+  }
+  const bool found = !open.empty();
+  for (const std::size_t k : open) best = nearer(best, d[k], true);
+  if (found) return best;
+  double deepest = 0.0;  // no unburied face: the depth of the deepest part, no direction
+  for (const SurfaceDistance& k : d) deepest = std::min(deepest, k.distance);
+  return {deepest, Vec3::Zero()};
 }
 
 }  // namespace
@@ -115,20 +162,20 @@ SurfaceDistance surface_distance(const Geometry& g, const Vec3& x, bool prism_z)
           return of_meridian_rectangle(s.bottom, e, 0.0, length, 0.0, s.radius, x,
                                        prism_z && along_z(s.bottom, s.top));
         } else if constexpr (std::is_same_v<T, HollowCylinder>) {
-          // Its meridian section: the wall's rectangle and the cap's, which reaches the axis.
           const Vec3 e = (s.top - s.bottom).normalized();
           const double length = (s.top - s.bottom).norm();
-          const bool cap_free = prism_z && along_z(s.bottom, s.top);
-          const SurfaceDistance wall = of_meridian_rectangle(
-              s.bottom, e, 0.0, length, s.radius - s.thickness, s.radius, x, cap_free);
-          if (!(s.cap_thickness > 0.0)) return wall;
-          return nearer(wall, of_meridian_rectangle(s.bottom, e, 0.0, s.cap_thickness, 0.0,
-                                                    s.radius, x, cap_free));
+          if (!(s.cap_thickness > 0.0))  // the wall's meridian rectangle
+            return of_meridian_rectangle(s.bottom, e, 0.0, length, s.radius - s.thickness, s.radius,
+                                         x, prism_z && along_z(s.bottom, s.top));
+          // The open tube and its cap, a solid cylinder.
+          HollowCylinder tube = s;
+          tube.cap_thickness = 0.0;
+          const std::vector<Geometry> parts{
+              Geometry{tube},
+              Geometry{Cylinder{s.bottom, s.bottom + s.cap_thickness * e, s.radius}}};
+          return union_distance(parts, x, prism_z);
         } else {
-          SurfaceDistance nearest{kInf, Vec3::Zero()};
-          for (const Geometry& part : s.parts)
-            nearest = nearer(nearest, surface_distance(part, x, prism_z));
-          return nearest;
+          return union_distance(s.parts, x, prism_z);
         }
       },
       g.shape);

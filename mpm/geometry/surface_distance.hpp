@@ -18,12 +18,13 @@ struct SurfaceDistance {
   Vec3 outward;
 };
 
-/// Exact for a box, a sphere and a capped cylinder. A hollow cylinder is the union of its wall and
-/// its cap (rectangles of its meridian section), and a union is its nearest part, min_k d_k:
-/// exact outside; inside, the distance within the part the point lies deepest in, exact but
-/// where the nearest face of that part lies inside another (deep in a joint). `prism_z`: the
-/// shape is a prism along z (a plane-strain body, whose grid seeds its section z = 0): its faces
-/// across z (a box's z faces, a z-cylinder's ends) are not surfaces.
+/// Exact for a box, a sphere and a capped cylinder. A hollow cylinder is the union of its open
+/// tube and its cap. A union, outside its parts: the nearest part's (exact); inside: the nearest
+/// face, among the parts that hold the point, that no other part buries (two boxes that touch
+/// share a face that is no surface), exact but where that part's nearest face is buried (beside a
+/// joint, where the normal is zero). `prism_z`: the shape is a prism along z (a plane-strain
+/// body, whose grid seeds its section z = 0): its faces across z (a box's z faces, a
+/// z-cylinder's ends) are not surfaces.
 SurfaceDistance surface_distance(const Geometry& g, const Vec3& x, bool prism_z = false);
 
 }  // namespace impact::mpm

@@ -351,9 +351,11 @@ class Grid {
     time_ = t;
   }
   /// The unit normal of rigid field f's surface into the object at node `node` (storage index
-  /// within one field): its geometry moved by V t (GridSettings::rigid_surface), the nearest
-  /// surface's; zero without a surface or where no direction is defined (grid/rigid_fields.cpp).
-  Vec3 rigid_inward_normal(int f, int node) const;
+  /// within one field), as a body whose surface faces `toward` there (the body's mass gradient,
+  /// pointing into it; zero: unknown) meets it: its geometry moved by V t
+  /// (GridSettings::rigid_surface), the nearest surface's; zero without a surface or where no
+  /// direction is defined (grid/rigid_fields.cpp).
+  Vec3 rigid_inward_normal(int f, int node, const Vec3& toward) const;
   /// Whether field f carries a rigid object.
   bool is_rigid_field(int f) const {
     return has_rigid_fields() && settings_.rigid_field[std::size_t(f)] != 0;

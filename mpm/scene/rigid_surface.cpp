@@ -58,11 +58,18 @@ Geometry continued(const Geometry& g, const MirrorFaces& m) {
           for (int d = 0; d < 3; ++d)
             if (std::abs(std::abs(e(d)) - 1.0) < 1e-12)
               continue_segment(m, d, c.bottom(d), c.top(d));
+        } else if constexpr (std::is_same_v<T, HollowCylinder>) {
+          // Its open end, and its bottom too where it has no cap; its cap is a body's end.
+          const Vec3 e = (s.top - s.bottom).normalized();
+          for (int d = 0; d < 3; ++d) {
+            if (!(std::abs(std::abs(e(d)) - 1.0) < 1e-12)) continue;
+            continue_segment(m, d, c.bottom(d), c.top(d));
+            if (s.cap_thickness > 0.0) c.bottom(d) = s.bottom(d);
+          }
         } else if constexpr (std::is_same_v<T, Union>) {
           for (Geometry& part : c.parts) part = continued(part, m);
         }
-        // A sphere has no plane face; a hollow cylinder keeps its ends (its cap is a body's end,
-        // its open end a rim).
+        // A sphere has no plane face.
         return Geometry{c};
       },
       g.shape);
@@ -78,7 +85,11 @@ std::vector<std::optional<Geometry>> rigid_field_surfaces(const Scene& scene) {
     const SceneObject& o = scene.objects[oi];
     if (!o.rigid) continue;
     const std::size_t f = std::size_t(scene.parent_field(o.material));
-    if (object_overlap(scene, oi).claimed > 0.0) cut[f] = true;
+    // Cut by an object of another field (one of its own field's parts is its body too: several
+    // rigid boxes of one material make one bowl, and their union is what is seeded).
+    const ObjectOverlap overlap = object_overlap(scene, oi);
+    for (const std::size_t a : overlap.by)
+      if (std::size_t(scene.parent_field(scene.objects[a].material)) != f) cut[f] = true;
     const Geometry part = continued(o.geometry, mirror_faces(scene.grid, o.velocity));
     surface[f] = surface[f] ? Geometry{Union{{*surface[f], part}}} : part;
   }

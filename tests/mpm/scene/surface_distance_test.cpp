@@ -142,6 +142,28 @@ BOOST_AUTO_TEST_CASE(a_union_gives_its_nearest_part) {
   BOOST_TEST(s.distance == 1e-4, tt::tolerance(1e-9));
   BOOST_TEST(near(s.outward, e));
   check_projection(ramp, "the ramp's union", true);
+  // A corner of two rigid boxes (a floor and a wall): on its bisector both faces are as near,
+  // and the normal is their mean, as at a box's edge.
+  const Geometry corner{Union{
+      {Geometry{Box{Vec3(0, 0, 0), Vec3(4, 1, 4)}}, Geometry{Box{Vec3(0, 0, 0), Vec3(1, 4, 4)}}}}};
+  const SurfaceDistance c = surface_distance(corner, Vec3(1.5, 1.5, 2));
+  BOOST_TEST(c.distance == 0.5, tt::tolerance(1e-12));
+  BOOST_TEST(near(c.outward, Vec3(1, 1, 0) / std::sqrt(2.0)));
+  BOOST_TEST(near(surface_distance(corner, Vec3(1.5, 1.2, 2)).outward, Vec3(0, 1, 0)));
+  // Two boxes that touch along x = 1: their shared face is no surface. Above the joint the
+  // surface is the top; inside, a face another part buries does not serve (beside the joint no
+  // face is left: no direction), and where the overlap of the corner buries the floor's top,
+  // the wall's face does (taking the deepest part instead, the joint read as a surface at any
+  // depth and pushed a block resting over it sideways).
+  const Geometry pair{Union{
+      {Geometry{Box{Vec3(0, 0, 0), Vec3(1, 1, 4)}}, Geometry{Box{Vec3(1, 0, 0), Vec3(2, 1, 4)}}}}};
+  BOOST_TEST(near(surface_distance(pair, Vec3(1, 1, 2)).outward, Vec3(0, 1, 0)));
+  BOOST_TEST(near(surface_distance(pair, Vec3(1, 1.2, 2)).outward, Vec3(0, 1, 0)));
+  BOOST_TEST(near(surface_distance(pair, Vec3(0.9, 0.75, 2)).outward, Vec3::Zero()));
+  BOOST_TEST(near(surface_distance(pair, Vec3(1.5, 0.95, 2)).outward, Vec3(0, 1, 0)));
+  const SurfaceDistance in_corner = surface_distance(corner, Vec3(0.3, 0.9, 2));
+  BOOST_TEST(in_corner.distance == -0.3, tt::tolerance(1e-12));
+  BOOST_TEST(near(in_corner.outward, Vec3(-1, 0, 0)));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
