@@ -420,15 +420,21 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
         B.v0[b] = as_mirrored(P0[b] / B.m[b]);
       }
       if (const int r = rigid_partner(B); r >= 0) {
+        for (int b = 0; b < B.n; ++b) B.rigid_surface[b].setZero();
         for (int a = 0; a < na; ++a) {
           if (body_index[a] != r) continue;
           const double* m = G.mass.data() + std::size_t(active[a]) * nn;
           B.rigid_lower += mass_gradient(G, m, ijk, {-1, -1, -1});
           B.rigid_upper += mass_gradient(G, m, ijk, {1, 1, 1});
-          // As each other body meets it (the side its own gradient points from).
-          for (int b = 0; b < B.n; ++b)
-            B.rigid_surface[b] =
-                b == r ? Vec3::Zero() : as_mirrored(G.rigid_inward_normal(active[a], I, B.grad[b]));
+          // As each other body meets it, from the side its own gradient points from (none where
+          // that gradient is round-off: a body on both sides of a thin blade).
+          if (!G.is_rigid_field(active[a])) continue;
+          for (int b = 0; b < B.n; ++b) {
+            if (b == r) continue;
+            const double own = B.grad[b].norm() / B.m[b], partner = B.grad[r].norm() / B.m[r];
+            const Vec3 toward = own > 1e-6 * (own + partner) ? B.grad[b] : Vec3::Zero();
+            B.rigid_surface[b] = as_mirrored(G.rigid_inward_normal(active[a], I, toward));
+          }
         }
       }
       // The separating plane (`logistic_regression`, step/contact_planes.cpp) between two

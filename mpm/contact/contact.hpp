@@ -46,9 +46,11 @@
 //               others gain is its reaction (grid/rigid_fields.cpp). The normal there is the
 //               rigid body's own surface whatever `normal` says (it does not deform): its
 //               geometry's, the nearest surface's outward normal at the node (moved by V t;
-//               mpm/geometry/surface_distance.hpp), where that faces the other body; else
-//               grad m_rigid (grad m_rigid - grad m_f deep inside it, where its own gradient is
-//               round-off; contact.cpp normal_against_rigid). At a node of three or more bodies
+//               mpm/geometry/surface_distance.hpp; at a node inside it, the face where it is
+//               left along the other body's mass gradient, grid/rigid_fields.cpp); where that
+//               gives no direction, grad m_rigid (grad m_rigid - grad m_f deep inside it, where
+//               its own gradient is round-off; contact.cpp normal_against_rigid). At a node of
+//               three or more bodies
 //               with a rigid one, each is corrected against the rigid alone; the other bodies
 //               are not corrected against each other there.
 //   heat        only in slip (s < |u_t|; static friction does no work): m_f s (u0_f . t) >= 0

@@ -121,7 +121,7 @@ SurfaceDistance union_distance(const std::vector<Geometry>& parts, const Vec3& x
   bool inside_any = false;
   for (const Geometry& part : parts) {
     d.push_back(surface_distance(part, x, prism_z));
-    inside_any = inside_any || d.back().distance < 0.0;
+    inside_any = inside_any || d.back().distance <= 0.0;
   }
   SurfaceDistance best{kInf, Vec3::Zero()};
   if (!inside_any) {

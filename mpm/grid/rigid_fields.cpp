@@ -27,27 +27,45 @@ void Grid::hold_rigid_fields(std::vector<Vec3>& v) const {
 // seeded geometry moved by V t. A 2D grid's node plane is the section z = 0 the grid seeds
 // (scene/planar_form.hpp); a plane-strain body is a prism along z, whose z faces are none.
 // A node inside the object has a nearest face that need not be the one the other body meets: the
-// far face of a slab two cells thick, a side face within a cell of an edge. There the surface
-// is the one nearest to a point on the body's side, the node moved along `toward` out of the
-// object (its depth and two cells more). A test of the node's own normal against the body's
-// gradient instead (accepted within 60 degrees of it) threw most nodes of a pressed ramp back on
-// the staircase gradient: the block on a rigid 20-degree ramp slid at 0.56 of Coulomb's rate.
+// far face of a slab two cells thick, a side face within a cell of an edge, the wall of a bowl
+// beside its floor, the near wall of a gap narrower than the body. There the surface is the one
+// where the object is left along `toward` (the body's mass gradient, pointing into the body):
+// marched from the node in steps of its distance to the nearest surface, which inside never
+// passes a surface (sphere tracing), up to its depth and two of its cells. Taken at the node moved
+// its depth and two cells at once instead (an audit's catch), a floor node within two cells of a
+// bowl's wall took the wall's normal, and in a gap under four cells the other wall's, pointing
+// out of the object. A test of the node's own normal against the body's gradient instead
+// (accepted within 60 degrees of it) threw most nodes of a pressed ramp back on the staircase
+// gradient: the block on a rigid 20-degree ramp slid at 0.56 of Coulomb's rate. A node on the
+// joint of two parts (no direction) keeps the mass gradient: marching from there too took 13 % of
+// the energy put into a block resting in the corner of a rigid floor and wall (against 1.5 %).
 Vec3 Grid::rigid_inward_normal(int f, int node, const Vec3& toward) const {
   if (settings_.rigid_surface.empty()) return Vec3::Zero();
   const std::optional<Geometry>& surface = settings_.rigid_surface[std::size_t(f)];
   if (!surface) return Vec3::Zero();
   const std::array<int, 3> n = ijk(node);
   Vec3 x = Vec3::Zero();
-  for (int d = 0; d < spec_.dimensions(); ++d) x(d) = node_coordinate(d, n[d]);
+  double cell = 0.0;  // the node's largest cell edge along the mesh's axes
+  for (int d = 0; d < spec_.dimensions(); ++d) {
+    x(d) = node_coordinate(d, n[d]);
+    cell = std::max(cell, spec_.graded() ? spec_.dual_size(d, n[d]) : dx_(d));
+  }
   x -= settings_.rigid_velocity[std::size_t(f)] * time_;
   const bool prism_z = spec_.per_metre_of_thickness();  // its bodies: prisms along z
   SurfaceDistance s = surface_distance(*surface, x, prism_z);
   const double norm = toward.norm();
-  if (s.distance < 0.0 && norm > 0.0) {
-    const Vec3 h = spec_.spacing();  // the base cells, the largest of a graded grid
-    const double cell = spec_.planar() ? std::max(h(0), h(1)) : h.maxCoeff();
-    const double out = -s.distance + 2.0 * cell;
-    s = surface_distance(*surface, x + out * (toward / norm), prism_z);
+  const bool within = s.distance < 0.0;
+  if (!within || !(norm > 0.0)) return -s.outward;
+  const Vec3 e = toward / norm;
+  const double reach = -s.distance + 2.0 * cell, least = 1e-3 * cell;
+  double travelled = 0.0;
+  Vec3 p = x;
+  for (int k = 0; k < 32 && travelled < reach; ++k) {
+    const double step = std::min(std::max(-s.distance, least), reach - travelled);
+    p += step * e;
+    travelled += step;
+    s = surface_distance(*surface, p, prism_z);
+    if (s.distance > 0.0) break;  // out: the nearest surface is the one left through
   }
   return -s.outward;
 }

@@ -75,4 +75,35 @@ BOOST_AUTO_TEST_CASE(a_rigid_object_an_earlier_object_cuts_has_no_surface) {
   BOOST_TEST(std::holds_alternative<Union>(bowl->shape));
 }
 
+// A rigid bowl (a floor x <= 1 mm and a wall 0.5 <= y <= 2 mm, one field) and a node inside the
+// floor half a millimetre (a cell) below its top and a cell beside the wall, met by a body above
+// the floor (its gradient along +x): the surface it meets is the floor's top, whose normal into the
+// bowl is -x. The node's own nearest face is the top too; moved at once by its depth and two cells
+// (an audit's catch) it was next to the wall, and took the wall's normal. Outside the bowl the
+// node's own nearest surface serves whatever the body.
+BOOST_AUTO_TEST_CASE(a_node_inside_a_bowl_meets_the_face_the_body_is_on) {
+  const Json bowl = {
+      {"type", "union"},
+      {"lower", nullptr},
+      {"upper", nullptr},
+      {"parts",
+       {{"bottom", {{"type", "box"}, {"lower", {0, 0, 0}}, {"upper", {0.001, 0.01, 0.006}}}},
+        {"side", {{"type", "box"}, {"lower", {0, 0.0005, 0}}, {"upper", {0.004, 0.002, 0.006}}}}}}};
+  const Simulation sim(test::verification_scene("sliding_block_rigid.json",
+                                                {{"objects", {{"floor", {{"geometry", bowl}}}}}}));
+  const Grid& G = sim.grid();
+  int field = -1;
+  for (int f = 0; f < G.fields(); ++f)
+    if (G.is_rigid_field(f)) field = f;
+  BOOST_TEST_REQUIRE(field >= 0);
+  // Nodes are 0.5 mm apart from the origin: (1, 5) is x = 0.5 mm, y = 2.5 mm.
+  const Vec3 inside = G.rigid_inward_normal(field, G.index(1, 5, 6), Vec3(1, 0, 0));
+  BOOST_TEST((inside - Vec3(-1, 0, 0)).norm() < 1e-12);
+  const Vec3 above = G.rigid_inward_normal(field, G.index(3, 7, 6), Vec3(0, 0, 1));
+  BOOST_TEST((above - Vec3(-1, 0, 0)).norm() < 1e-12);
+  // Beside the wall, above the floor: the wall's face is nearer (0.5 mm against 1 mm).
+  const Vec3 beside = G.rigid_inward_normal(field, G.index(4, 5, 6), Vec3(1, 0, 0));
+  BOOST_TEST((beside - Vec3(0, -1, 0)).norm() < 1e-12);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
