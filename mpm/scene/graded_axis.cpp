@@ -78,6 +78,11 @@ struct Widened {
 std::optional<Widened> widened(double lower, double upper, int base_cells,
                                const RefinedSpan& span) {
   const double h0 = (upper - lower) / base_cells;
+  // A grid or a box the reader refused (a missing bound is NaN) has no span: the reader's
+  // problems name it, and NaN must not reach the index conversions below (undefined behaviour;
+  // a fuzzed scene without its base file's grid hit it).
+  if (!(std::isfinite(h0) && h0 > 0.0 && std::isfinite(span.lower) && std::isfinite(span.upper)))
+    return std::nullopt;
   // The node's coordinate and its index.
   const auto base_node = [&](double x, bool up) -> std::pair<double, long> {
     const double c = (x - lower) / h0;
