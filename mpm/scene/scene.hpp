@@ -152,7 +152,10 @@ struct GridSpec {
   int cell_along(int d, double x) const {
     if (graded()) return axes[std::size_t(d)].cell_of(x);
     const double c = std::floor((x - lower(d)) / spacing()(d));
-    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells[std::size_t(d)] - 1)));
+    // NaN (a refused grid's bounds, read on to report every problem) clamps to 0 as well:
+    // converted to int it is undefined (a crater's face on a grid without `lower`, fuzz_scene).
+    if (!(c >= 0.0)) return 0;
+    return static_cast<int>(std::min(c, static_cast<double>(cells[std::size_t(d)] - 1)));
   }
   /// The cell (i, j, k) holding position x, clamped into the grid.
   std::array<int, 3> cell_of(const Vec3& x) const {
