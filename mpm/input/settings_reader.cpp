@@ -136,6 +136,12 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
         "approach");
     ph.contact.detection =
         detection == "separation" ? ContactDetection::separation : ContactDetection::approach;
+    const std::string rigid = c->choice(
+        "rigid_contact", {"nodes", "particles"},
+        "where bodies meet the rigid objects: at the shared nodes, or at the particles, by a "
+        "frictionless penalty against the rigid geometry's exact surface",
+        "nodes");
+    ph.contact.rigid = rigid == "particles" ? RigidContact::particles : RigidContact::nodes;
     if (ph.contact.type == ContactType::friction &&
         ph.contact.detection == ContactDetection::separation &&
         ph.contact.normal != ContactNormal::logistic_regression)
@@ -146,7 +152,7 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
     // there would be read and ignored, so it is refused (issue 53). A scene that extends one with
     // friction removes the inherited keys with null (RFC 7396).
     if (ph.contact.type == ContactType::single_velocity) {
-      for (const char* key : {"mu", "normal"})
+      for (const char* key : {"mu", "normal", "rigid_contact"})
         if (c->has(key))
           c->problems().add(c->key_path(key),
                             "read only by the \"friction\" contact (also called \"approach\"); "

@@ -13,11 +13,13 @@ int Ledger::add_sink_column(std::string name, bool in_balance, bool unchecked) {
   return static_cast<int>(s_.sinks.size()) - 1;
 }
 
-void Ledger::start(double time, double kinetic_energy, const Vec3& momentum, double drive) {
+void Ledger::start(double time, double kinetic_energy, const Vec3& momentum, double drive,
+                   double stored) {
   s_.time = time;
   s_.kinetic = kinetic_energy;
-  s_.initial_energy = kinetic_energy;  // the initial strain energy is zero: stress-free start
-  s_.peak_input = std::max(kinetic_energy, drive);
+  // The initial strain energy is zero: stress-free start.
+  s_.initial_energy = kinetic_energy + stored;
+  s_.peak_input = std::max(s_.initial_energy, drive);
   s_.momentum = booked(momentum);
   s_.p0 = s_.momentum;
 }

@@ -9,7 +9,10 @@
 //                     is external_work
 //   sinks           = one column each, registered by the solver for the physics a scene uses, each
 //                     >= 0 and non-decreasing by construction: viscous_work and friction_heat (in
-//                     the balance: heat), eroded_energy (part of strain_energy: shown, not added)
+//                     the balance: heat), eroded_energy (part of strain_energy: shown, not added);
+//                     and one stored energy that rises and falls, contact_energy, the energy of
+//                     the rigid objects' contact at the particles (contact/
+//                     rigid_particle_contact.hpp: sum_p W(delta_p) >= 0, in the balance)
 //   outflow_*       = (grid.outflow = remove) mass, momentum and kinetic energy of the particles
 //                     that left the grid (the stress work done on them stays in strain_energy)
 //   energy_error    = (kinetic + strain + sum of balance sinks + outflow_kinetic_energy - E0
@@ -91,12 +94,17 @@ class Ledger {
   /// rest strains it from the first step, while contact books its work from the second (the
   /// start pass corrects velocities the particles do not carry); against an E_in of round-off
   /// the first step read energy_error 1e16 and the growth check stopped valid runs.
-  void start(double time, double kinetic_energy, const Vec3& momentum, double drive = 0.0);
+  /// `stored` [J]: energy held at t = 0 in a column other than kinetic and strain (the rigid
+  /// contact's contact_energy, where a body is seeded overlapping a rigid object): part of E0.
+  void start(double time, double kinetic_energy, const Vec3& momentum, double drive = 0.0,
+             double stored = 0.0);
   /// One step's increments and end-of-step particle totals.
   void record_step(double time, double kinetic_energy, const Vec3& momentum,
                    double strain_energy_increment, const Vec3& boundary_impulse,
                    const Vec3& external_impulse, double external_work);
   void add_sink(int index, double energy) { s_.sinks[std::size_t(index)] += energy; }
+  /// A sink column's value [J].
+  double sink(int index) const { return s_.sinks[std::size_t(index)]; }
   /// Particles removed at the grid's edge this step (grid.outflow = remove).
   void add_outflow(double mass, const Vec3& momentum, double kinetic_energy) {
     s_.outflow_mass += mass;

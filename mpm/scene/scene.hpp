@@ -235,11 +235,17 @@ enum class ContactDetection { approach, separation };
 /// contact.cpp are this long); the scene check refuses a scene with more (Scene::field_count).
 constexpr int kMaxContactFields = 64;
 
+/// Where bodies meet rigid objects: at the shared nodes (contact/contact.hpp, as between any two
+/// bodies), or at the particles, by a penalty against the rigid surface
+/// (contact/rigid_particle_contact.hpp).
+enum class RigidContact { nodes, particles };
+
 struct ContactSpec {
   ContactType type = ContactType::single_velocity;
   double mu = 0.0;  ///< Coulomb friction coefficient [-]
   ContactNormal normal = ContactNormal::mass_gradients;
   ContactDetection detection = ContactDetection::approach;
+  RigidContact rigid = RigidContact::nodes;
 };
 
 /// Artificial bulk viscosity, report eq. 12 (von Neumann & Richtmyer 1950, Wilkins 1980):
@@ -371,7 +377,13 @@ struct Scene {
   /// Whether the particles keep their reference positions (Particles::X): a body force or an
   /// exact displacement reads them.
   bool needs_reference_positions() const {
-    return has_body_force() || output.exact_displacement.has_value();
+    return has_body_force() || output.exact_displacement.has_value() ||
+           rigid_contact_at_particles();
+  }
+  /// Whether bodies meet the rigid objects at the particles (ContactSpec::rigid), which reads the
+  /// seed points (contact/rigid_particle_contact.hpp).
+  bool rigid_contact_at_particles() const {
+    return physics.contact.rigid == RigidContact::particles && has_rigid_objects();
   }
   /// |solver.gravity| + the largest initial body force of an object [m/s^2]: the body-force step's
   /// at the start.

@@ -26,6 +26,9 @@ struct StepSetup {
   const HaloExchange* halo;                        ///< null on one rank
   /// b_p per particle of this step [m/s^2] (step/body_force.hpp); null: no body force.
   const std::vector<Vec3>* body_force;
+  /// The rigid objects' contact force per particle [N] (contact/rigid_particle_contact.hpp); null
+  /// where bodies meet them at the nodes.
+  const std::vector<Vec3>* rigid_force = nullptr;
 };
 
 /// Attributes wall time to the phases of a step.
@@ -55,7 +58,8 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   t.narrowed = compute_stencils<Shape>(P, shape, S, G.threads());  // S_Ip, grad S_Ip at x^n
   order_for_scatter(S, G, order);  // by band and colour: race-free scatters, any thread count
   const Vec3* body = run.body_force ? run.body_force->data() : nullptr;  // b(X_p, t^n)
-  particles_to_grid<Shape>(P, G, S, order, dt, run.halo, body);  // m_I, p_I, f_I (eqs. 20-22)
+  const Vec3* rigid = run.rigid_force ? run.rigid_force->data() : nullptr;
+  particles_to_grid<Shape>(P, G, S, order, dt, run.halo, body, rigid);  // m_I, p_I, f_I (20-22)
   if (run.contact && run.contact->normal == ContactNormal::logistic_regression && G.fields() > 1)
     fit_contact_planes<Shape>(P, G, shape, S, run.halo,  // the planes between bodies (Nairn 2020)
                               run.contact->detection == ContactDetection::separation);
@@ -63,12 +67,14 @@ StepTotals advance(Particles& P, Grid& G, const Shape& shape, Stencils<Shape>& S
   t.grid = grid_update(G, dt, run.solver.gravity, usl, run.contact);  // v*_I, contact, faces (24)
   clock.lap(&PhaseTimes::grid_update);
   // FLIP velocity, x from v*_I; USL: L from v^L_I (= v*_I but at light nodes)   (eqs. 23, 25-26)
-  t.particles =
-      grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, run.heat_capacity, failure, body);
+  // (x of a particle the rigid contact pushed: from the velocity its L takes, step.hpp)
+  t.particles = grid_to_particles<Shape>(P, G, S, dt, /*usl_gradient=*/usl, run.heat_capacity,
+                                         failure, body, rigid);
   clock.lap(&PhaseTimes::grid_to_particles);
   if (run.halo ? run.halo->comm().any(failure.has_value()) : failure.has_value()) return t;
   if (!usl) {
-    remap_and_gradient<Shape>(P, G, S, order, run.contact, run.halo);  // MUSL: L from v^{n+1}_I
+    // MUSL: L from v^{n+1}_I, and the particles the rigid contact pushed moved with it
+    remap_and_gradient<Shape>(P, G, S, order, run.contact, run.halo, dt, rigid);
     clock.lap(&PhaseTimes::remap);
   }
   t.stress = update_stress(P, run.stress, dt, failure);  // sigma, F, V, q; eq. 14

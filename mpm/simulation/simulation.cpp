@@ -7,6 +7,7 @@
 
 #include "mpm/particles/particle_order.hpp"
 #include "mpm/scene/rigid_surface.hpp"
+#include "mpm/scene/seed_points.hpp"
 #include "mpm/simulation/advance.hpp"
 #include "mpm/simulation/diagnosis.hpp"
 #include "mpm/threads/threads.hpp"
@@ -79,6 +80,13 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   if (scene_.needs_reference_positions())
     particles_.X = particles_.x;  // the reference positions: the seed points
   if (scene_.has_body_force()) body_forces_.emplace(scene_, grid_.threads());
+  if (scene_.rigid_contact_at_particles()) {
+    std::vector<Vec3> widths;  // uGIMP's half-widths per object [m] (a graded grid's: per particle)
+    for (const Vec3& l : half_widths(scene_))
+      widths.push_back(l.cwiseProduct(scene_.grid.spacing()));
+    rigid_contact_.emplace(scene_, grid_.settings().rigid_surface, grid_.settings().rigid_velocity,
+                           std::move(widths));
+  }
   if (scene_.grid.has_moving_faces()) face_motions_.emplace(scene_.grid, scene_.constants);
   st.mean_spacing = scene_.grid.mean_spacing();
   if (scene_.grid.graded()) st.graded_grid = &scene_.grid;
@@ -102,6 +110,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   st.plastic_work = scene_.output.plastic_work;
   if (st.plastic_work)
     sinks_.plastic = ledger_.add_sink_column("plastic_work", /*in_balance=*/false);
+  // The energy stored in the rigid objects' contact at the particles: it rises and falls.
+  if (rigid_contact_) sinks_.contact_energy = ledger_.add_sink_column("contact_energy");
   restart_ledger();
 }
 
@@ -183,16 +193,32 @@ void Simulation::restart_ledger() {
   max_signal_speed_ = ranks_.max(max_signal_speed(particles_));
   // A moving rigid object's energy scale: the system moving at its speed (Ledger::start).
   const double V = scene_.rigid_speed();
-  ledger_.start(0.0, sum[0], Vec3(sum[1], sum[2], sum[3]), 0.5 * sum[4] * V * V);
+  // A body seeded overlapping a rigid object beyond its clipped reach starts with contact energy.
+  const double stored = rigid_contact_ ? evaluate_rigid_contact()[0] : 0.0;
+  ledger_.start(0.0, sum[0], Vec3(sum[1], sum[2], sum[3]), 0.5 * sum[4] * V * V, stored);
+  if (sinks_.contact_energy >= 0)
+    ledger_.add_sink(sinks_.contact_energy, stored - ledger_.sink(sinks_.contact_energy));
+}
+
+std::vector<double> Simulation::evaluate_rigid_contact() {
+  rigid_contact_->evaluate(particles_, time_, grid_.threads());
+  const Vec3& F = rigid_contact_->total_force();
+  rigid_contact_sums_ =
+      ranks_.sum({rigid_contact_->energy(), F(0), F(1), F(2), rigid_contact_->power()});
+  rigid_contact_current_ = true;
+  return rigid_contact_sums_;
 }
 
 double Simulation::next_dt() const {
   // A moving face drives its material at |V| before the particles' velocities show it (they take
   // the face's jumps through the stress): the signal runs at up to c + |v| + |V|.
   // A rigid object drives what it pushes at its speed likewise (Scene::rigid_speed).
-  const double waves = stable_time_step(scene_.grid.min_spacing(),
-                                        max_signal_speed_ + face_speed_ + scene_.rigid_speed(),
-                                        scene_.time.multiplier);
+  // Contact at the particles: its penalty's frequency (RigidParticleContact::signal_speed).
+  const double contact = rigid_contact_ ? rigid_contact_->signal_speed() : 0.0;
+  const double waves =
+      stable_time_step(scene_.grid.min_spacing(),
+                       std::max(max_signal_speed_ + face_speed_ + scene_.rigid_speed(), contact),
+                       scene_.time.multiplier);
   // No signal at all (every particle left the grid, grid.outflow = remove): nothing is left to
   // integrate, and gravity, which limits the step of a body, has none to move.
   if (max_signal_speed_ == 0.0 && std::isinf(std::min(waves, scene_.time.max_dt)))
@@ -213,6 +239,7 @@ const StepTotals& Simulation::step() {
     stop_if(ranks_.first_failure(non_finite_body_force()));
     max_body_force_ = ranks_.max(body_forces_->peak());
   }
+  if (rigid_contact_ && !rigid_contact_current_) evaluate_rigid_contact();  // at x^n, t^n
   if (face_motions_) {
     face_speed_ = 0.0;
     for (const double v : face_motions_->at(time_))
@@ -237,6 +264,8 @@ const StepTotals& Simulation::step() {
       ranks_.first_failure(grown ? std::optional(describe(*grown, steps_, time_)) : std::nullopt));
   migrated_ = ranks_.migrate(particles_, boxes_, scene_.grid);  // those that left this box
   rebalance_if_needed();
+  // The rigid contact's forces are per particle: on several ranks the particles have moved.
+  if (ranks_.several()) rigid_contact_current_ = false;
   return last_;
 }
 
@@ -247,7 +276,8 @@ StepTotals Simulation::advance_step(double dt, std::optional<Failure>& failure) 
                         contact,
                         heat_capacity_,
                         halo_ ? &*halo_ : nullptr,
-                        body_forces_ ? &body_forces_->values() : nullptr};
+                        body_forces_ ? &body_forces_->values() : nullptr,
+                        rigid_contact_ ? &rigid_contact_->forces() : nullptr};
   StepTotals t = std::visit(
       [&](const auto& shape) {
         using Shape = std::decay_t<decltype(shape)>;
@@ -263,10 +293,21 @@ void Simulation::book(double dt) {
   time_ += dt;
   ++steps_;
   max_signal_speed_ = last_.stress.max_signal_speed;
+  Vec3 boundary_impulse = last_.grid.boundary_impulse;
+  double external_work = last_.grid.external_work + last_.particles.external_work;
+  if (rigid_contact_) {  // the step's rigid contact forces, at t^n: their impulse, and their work
+    const std::vector<double>& c = rigid_contact_sums_;  // at the rigid objects' velocities
+    boundary_impulse += dt * Vec3(c[1], c[2], c[3]);
+    external_work += dt * c[4];
+  }
   ledger_.record_step(time_, last_.particles.kinetic_energy, last_.particles.momentum,
-                      last_.stress.strain_energy_increment, last_.grid.boundary_impulse,
+                      last_.stress.strain_energy_increment, boundary_impulse,
                       last_.grid.external_impulse + last_.particles.external_impulse,
-                      last_.grid.external_work + last_.particles.external_work);
+                      external_work);
+  if (rigid_contact_) {  // the contact's energy at t^{n+1}, and its forces for the next step
+    const double stored = evaluate_rigid_contact()[0];
+    ledger_.add_sink(sinks_.contact_energy, stored - ledger_.sink(sinks_.contact_energy));
+  }
   if (sinks_.viscous >= 0) ledger_.add_sink(sinks_.viscous, last_.stress.viscous_work);
   if (sinks_.friction >= 0) {
     ledger_.add_sink(sinks_.friction,

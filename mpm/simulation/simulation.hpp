@@ -10,6 +10,7 @@
 #include <utility>
 #include <variant>
 
+#include "mpm/contact/rigid_particle_contact.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/ledger/ledger.hpp"
 #include "mpm/parallel/box_decomposition.hpp"
@@ -126,6 +127,7 @@ class Simulation {
   /// Ledger sink columns registered for this scene's physics (-1: not registered).
   struct SinkColumns {
     int viscous = -1, friction = -1, wall_friction = -1, eroded = -1, plastic = -1;
+    int contact_energy = -1;  ///< stored, not a sink: the particles' contact with rigid objects
   } sinks_;
   long failed_ = 0, converted_ = 0, faulted_ = 0, removed_ = 0, narrowed_ = 0;
   std::vector<FaultInjection> injections_;
@@ -172,6 +174,15 @@ class Simulation {
   std::optional<FaceMotions> face_motions_;
   double face_speed_ = 0.0;      ///< max_f |V_f(t^n)| [m/s]: the material a face drives moves at it
   double max_body_force_ = 0.0;  ///< max_p |b_p| of this step, over the ranks [m/s^2]
+  /// Bodies meet the rigid objects at the particles (ContactSpec::rigid): its forces are those of
+  /// the current particle positions and time while `rigid_contact_current_`.
+  std::optional<RigidParticleContact> rigid_contact_;
+  bool rigid_contact_current_ = false;
+  /// Evaluates the rigid contact at the particles' positions and time_; returns its energy, its
+  /// force and its power on the system, each summed over the ranks: {U [J], F_x, F_y, F_z [N],
+  /// P [W]}.
+  std::vector<double> evaluate_rigid_contact();
+  std::vector<double> rigid_contact_sums_;  ///< the last evaluate_rigid_contact()
 };
 
 }  // namespace impact::mpm

@@ -140,6 +140,7 @@ void Simulation::load(CheckpointReader& in) {
   set_all_fields(l, record);
   in.array("ledger_sinks", l.sinks, ledger_.sink_names().size());
   ledger_.restore(l);
+  rigid_contact_current_ = false;  // its forces were the seeded state's: the next step re-evaluates
 }
 
 }  // namespace impact::mpm

@@ -86,12 +86,35 @@ Mat3 gradient(const Grid& G, const Stencil<Shape::N>& s, const std::vector<Vec3>
   return L;
 }
 
+// sum_I S_Ip (u_I - w_I) over the particle's stencil in its field (`offset`).
+template <class Shape>
+Vec3 interpolated_difference(const Grid& G, const Stencil<Shape::N>& s, const std::vector<Vec3>& u,
+                             const std::vector<Vec3>& w, std::size_t offset) {
+  constexpr int N = Shape::N, NZ = Shape::NZ;
+  const std::size_t base = offset + G.index(s.base[0], s.base[1], s.base[2]);
+  const std::size_t sx = G.stride_x(), sy = G.stride_y();
+  Vec3 d = Vec3::Zero();
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j)
+      for (int k = 0; k < NZ; ++k) {
+        const std::size_t e = base + i * sx + j * sy + k;
+        d += (s.w[0][i] * s.w[1][j] * s.w[2][k]) * (u[e] - w[e]);
+      }
+  return d;
+}
+
+// Whether the rigid contact pushed particle p this step (rigid_particle_contact.hpp).
+bool pushed(const Vec3* rigid_force, std::size_t p) {
+  return rigid_force != nullptr && rigid_force[p].squaredNorm() > 0.0;
+}
+
 }  // namespace
 
 template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
                                  bool usl_gradient, const std::vector<HeatCapacity>& heat_capacity,
-                                 std::optional<Failure>& failure, const Vec3* body_force) {
+                                 std::optional<Failure>& failure, const Vec3* body_force,
+                                 const Vec3* rigid_force) {
   constexpr int N = Shape::N, NZ = Shape::NZ;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
@@ -161,6 +184,8 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
         P.v[p] += dv;
         const Vec3 x_old = P.x[p];
         P.x[p] += dt * v_new;
+        if (usl_gradient && pushed(rigid_force, std::size_t(p)))  // with v^L_I, as L (step.hpp)
+          P.x[p] += dt * interpolated_difference<Shape>(G, s, G.velocity_L, G.velocity_new, offset);
         onto_face_within_round_off(G, P.x[p]);
         const Vec3& v = P.v[p];
         if (!v.allFinite() && fails_first(P, std::size_t(p), fail))
@@ -203,7 +228,8 @@ ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Sha
 
 template <class Shape>
 void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const ScatterOrder& order,
-                        const ContactSpec* contact, const HaloExchange* halo) {
+                        const ContactSpec* contact, const HaloExchange* halo, double dt,
+                        const Vec3* rigid_force) {
   constexpr int N = Shape::N, NZ = Shape::NZ;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   const int nt = G.threads();
@@ -240,8 +266,17 @@ void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const S
   if (G.has_walls()) G.apply_walls(nullptr, G.velocity_L, WallPass::projection);
   G.hold_rigid_fields(G.velocity_L);
 #pragma omp parallel for schedule(static) num_threads(nt)
-  for (std::ptrdiff_t p = 0; p < n; ++p)
+  for (std::ptrdiff_t p = 0; p < n; ++p) {
     P.L[p] = gradient<Shape>(G, S[p], G.velocity_L, P.v[p], P.field[p] * nn);
+    // A particle the rigid contact pushed moves with v^{n+1}_I, as L (step.hpp): grid_to_particles
+    // moved it with v*_I from the same x^n. Where that would leave the grid it keeps that move.
+    if (pushed(rigid_force, std::size_t(p)) && !(P.removed.size() > 0 && P.removed[p])) {
+      Vec3 x = P.x[p] + dt * interpolated_difference<Shape>(G, S[p], G.velocity_L, G.velocity_new,
+                                                            P.field[p] * nn);
+      onto_face_within_round_off(G, x);
+      if (x.allFinite() && !outside(G, x)) P.x[p] = x;
+    }
+  }
 }
 
 // Both phases for every shape of the catalogue (mpm/shape/shape.hpp): taking their addresses

@@ -35,7 +35,7 @@ long compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
                        const ScatterOrder& order, double dt, const HaloExchange* halo,
-                       const Vec3* body_force) {
+                       const Vec3* body_force, const Vec3* rigid_force) {
   constexpr int N = Shape::N, NZ = Shape::NZ;  // NZ = 1 on a 2D grid
   G.clear();                                   // where the last step put mass: now zero everywhere
   const std::size_t nn = static_cast<std::size_t>(G.node_count());
@@ -51,6 +51,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
   scatter_by_colour(
       order, G.threads(),
       [&](int p) {
+        if (rigid_force && G.is_rigid_field(P.field[p])) return;  // met at the particles instead
         const Stencil<N>& s = S[p];
         if (marks) G.mark_stencil(marks, s.base, N, NZ);
         const int base_index = G.index(s.base[0], s.base[1], s.base[2]);
@@ -68,7 +69,10 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
         const double m = P.mass[p];
         const Vec3 mv = m * P.v[p];
         // A body force adds m_p b_p S_Ip, a term of a with w_z (step/body_force.hpp).
-        const Vec3 mb = body_force ? Vec3(m * body_force[p]) : Vec3::Zero();
+        // The rigid objects' contact force f_p joins it (contact/rigid_particle_contact.hpp).
+        Vec3 mb = body_force ? Vec3(m * body_force[p]) : Vec3::Zero();
+        if (rigid_force) mb += rigid_force[p];
+        const bool external = body_force || rigid_force;
         for (int i = 0; i < N; ++i) {
           for (int j = 0; j < N; ++j) {
             const int row_index = base_index + i * sx + j * sy;
@@ -79,7 +83,7 @@ void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
             // vs * grad = a * w_z + b * dw_z with a, b per (i, j)
             Vec3 a = vs.col(0) * dxw + vs.col(1) * wdy;
             if constexpr (Shape::kHoop) a = a + hoop * wij;  // w_z = 1, dw_z = 0 on a 2D grid
-            if (body_force) a += mb * wij;
+            if (external) a += mb * wij;
             const Vec3 b = vs.col(2) * wij;
             for (int k = 0; k < NZ; ++k) {
               NodeData& node = row[k];

@@ -87,10 +87,13 @@ long compute_stencils(const Particles& P, const Shape& shape, Stencils<Shape>& S
 /// reaches within the step `dt` (Grid::wall_touch); `halo` (several ranks) completes the sums at
 /// the node planes shared with the neighbouring ranks before the step's nodes are activated.
 /// With `body_force` (b_p per particle [m/s^2], step/body_force.hpp) f_I += sum_p S_Ip m_p b_p.
+/// With `rigid_force` (f_p per particle [N], contact/rigid_particle_contact.hpp) f_I += sum_p
+/// S_Ip f_p, and the rigid objects' particles put nothing on the grid: the bodies meet them at
+/// the particles alone.
 template <class Shape>
 void particles_to_grid(const Particles& P, Grid& G, const Stencils<Shape>& S,
                        const ScatterOrder& order, double dt, const HaloExchange* halo = nullptr,
-                       const Vec3* body_force = nullptr);
+                       const Vec3* body_force = nullptr, const Vec3* rigid_force = nullptr);
 
 /// USL's velocity gradient limits the acceleration part of v*_I at nodes lighter than this
 /// fraction of the lightest particle mass: v^L_I = v_I + min(1, m_I/m_light) (v*_I - v_I). Why:
@@ -186,18 +189,28 @@ struct HeatCapacity {
 /// (`heat_capacity` per material). A particle that leaves the grid stops the step (a Failure), or
 /// with grid.outflow = remove (Particles::removed allocated) leaves the simulation.
 /// With `body_force` (the b_p particles-to-grid added), its impulse and work (ParticleTotals).
+/// With `rigid_force` (contact/rigid_particle_contact.hpp) a particle the rigid contact pushed
+/// this step moves with the velocity its strain sees, for USL x_p += dt sum_I S_Ip v^L_I; for
+/// MUSL remap_and_gradient moves it. Why: its contact energy is a function of x_p, its
+/// neighbours' strain energy of the displacement L integrates; driven by two velocities the
+/// spring and the body trade work that is not a gradient, O(dt^2) per step and one-signed: a
+/// column resting on a rigid floor gained energy until the check stopped it (docs/verification.md).
 template <class Shape>
 ParticleTotals grid_to_particles(Particles& P, const Grid& G, const Stencils<Shape>& S, double dt,
                                  bool usl_gradient, const std::vector<HeatCapacity>& heat_capacity,
-                                 std::optional<Failure>& failure, const Vec3* body_force = nullptr);
+                                 std::optional<Failure>& failure, const Vec3* body_force = nullptr,
+                                 const Vec3* rigid_force = nullptr);
 
 /// MUSL (Sulsky et al. 1995; Nairn 2003): re-map the updated particle momentum with the same
 /// weights, v^{n+1}_I = sum_p S_Ip m_p v_p^{n+1} / m_I, correct it by the contact model (if any)
 /// and mirror it at the faces (projections: the particles do not see them), and
 /// L_p = sum_I v^{n+1}_I (x) grad S_Ip. The momentum is scattered in `order`, as in P2G.
+/// With `rigid_force`, a particle the rigid contact pushed this step moves with the velocity L
+/// integrates, x_p = x_p^n + dt sum_I S_Ip v^{n+1}_I (grid_to_particles says why).
 template <class Shape>
 void remap_and_gradient(Particles& P, Grid& G, const Stencils<Shape>& S, const ScatterOrder& order,
-                        const ContactSpec* contact, const HaloExchange* halo = nullptr);
+                        const ContactSpec* contact, const HaloExchange* halo = nullptr,
+                        double dt = 0.0, const Vec3* rigid_force = nullptr);
 
 /// What the stress update needs besides the particles: the models per material and the
 /// optional physics of the scene.

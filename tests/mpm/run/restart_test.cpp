@@ -285,6 +285,23 @@ BOOST_AUTO_TEST_CASE(a_body_force_run_continues_bit_for_bit_from_a_checkpoint) {
   BOOST_TEST(r.last.external_work != 0.0);
 }
 
+// (a'''') Rigid objects met at the particles (contact.rigid_contact = "particles"): the forces are
+// evaluated afresh from the restored positions, seed points and time, and the contact energy
+// column comes back with the ledger, so the disk in the trough continues bit for bit.
+BOOST_AUTO_TEST_CASE(a_rigid_contact_at_the_particles_continues_bit_for_bit_from_a_checkpoint) {
+  const Scene s = test::verification_scene(
+      "rigid_trough.json", {{"physics", {{"contact", {{"rigid_contact", "particles"}}}}},
+                            {"grid", {{"cells", {22, 22}}}}});
+  // The disk meets the trough at step 84: the checkpoint falls in the contact, at step 100.
+  const Continuation r = continue_from_checkpoint(s, 160, 100);
+  BOOST_TEST(differing(r.uninterrupted, r.continued) == 0u);
+  BOOST_TEST(r.rows_differ == 0u);
+  const std::vector<std::string> names = Simulation(s, 1).ledger().sink_names();
+  const auto column = std::find(names.begin(), names.end(), "contact_energy");
+  BOOST_TEST_REQUIRE((column != names.end()));
+  BOOST_TEST(r.last.sinks[std::size_t(column - names.begin())] > 0.0);  // the disk is pressed
+}
+
 // (a''') A graded grid (grid.refine): each particle's uGIMP half-width, fixed at seeding, comes
 // back from the checkpoint (Particles::half_width, checkpoint version 11), so the Taylor rod with
 // its impact end refined continues bit for bit (artificial viscosity on: its length is the cell's).

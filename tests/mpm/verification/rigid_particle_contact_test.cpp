@@ -1,0 +1,356 @@
+// Bodies meeting rigid objects at the particles (physics.contact.rigid_contact = "particles",
+// contact/rigid_particle_contact.hpp), each case against a closed form:
+// - a disk sliding in a frictionless rigid trough (rigid_trough.json): every normal force acts
+//   through the disk's centre, so it does not turn (omega = 0), and its centre reaches the bottom
+//   at the slide's sqrt(2 g (R - r)(1 - cos 30 deg)) = 25.88 m/s. At the nodes the contact patch
+//   holds it as a pendulum about the trough's centre, omega r / v = r / (R - r) = 0.6 whatever h,
+//   and it reaches only the pendulum's 23.8 m/s (docs/verification.md);
+// - a block released at rest on a rigid floor under gravity: it stays there, its books closed and
+//   its ringing not growing; with a force that jumps to k delta as a domain enters, each entry
+//   and exit worked energy no motion paid for and the energy check stopped the run at 24 us;
+// - a column (uniaxial strain) released at rest on a rigid floor stays there for a second, its
+//   ringing at the closed form's scale and its books closed, by MUSL and USL: a pushed particle
+//   that moved with another velocity than its strain sees made MUSL gain energy until the check
+//   stopped it (contact/rigid_particle_contact.hpp);
+// - a soft block thrown at 2.6 times its wave speed onto a rigid floor bounces off it, no
+//   particle centre passing into the floor;
+// - a block spanning the gap between two rigid blocks at rest keeps its energy (the exact bounce);
+// - a rigid piston driven into an elastic bar pushes with the one-dimensional wave's force
+//   rho c_L A V (Meyers 1994, sec. 2.2), its work booked as external work at its velocity;
+// - a block seeded around a rigid pin, all at rest, stays at rest.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <string>
+
+#include "../verification_helpers.hpp"
+
+using namespace impact;
+using namespace impact::mpm;
+
+namespace {
+
+// Small grids: one thread runs them faster than two (docs/performance.md#threads).
+constexpr int kThreads = 1;
+
+const Json kAtParticles = {{"physics", {{"contact", {{"rigid_contact", "particles"}}}}}};
+
+Json at_particles(Json patch) {
+  Json p = kAtParticles;
+  p.merge_patch(patch);
+  return p;
+}
+
+int object_index(const Scene& s, const std::string& name) {
+  for (std::size_t o = 0; o < s.objects.size(); ++o)
+    if (s.objects[o].name == name) return static_cast<int>(o);
+  throw std::invalid_argument("no object " + name);
+}
+
+// One object's centre of mass [m], its velocity [m/s], and its spin about the centre in the x-y
+// plane, omega_z = sum m (r x u)_z / sum m |r|^2 [rad/s] (r, u: position and velocity relative to
+// the centre's), the rigid-body fit of the particles' motion.
+struct BodyMotion {
+  Vec3 centre = Vec3::Zero(), velocity = Vec3::Zero();
+  double omega = 0.0, mass = 0.0, kinetic_energy = 0.0;
+};
+BodyMotion motion_of(const Particles& P, int object) {
+  BodyMotion b;
+  Vec3 mx = Vec3::Zero(), mv = Vec3::Zero();
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.object[p] != object) continue;
+    b.mass += P.mass[p];
+    mx += P.mass[p] * P.x[p];
+    mv += P.mass[p] * P.v[p];
+    b.kinetic_energy += 0.5 * P.mass[p] * P.v[p].squaredNorm();
+  }
+  b.centre = mx / b.mass;
+  b.velocity = mv / b.mass;
+  double angular = 0.0, inertia = 0.0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.object[p] != object) continue;
+    const Vec3 r = P.x[p] - b.centre, u = P.v[p] - b.velocity;
+    angular += P.mass[p] * (r(0) * u(1) - r(1) * u(0));
+    inertia += P.mass[p] * (r(0) * r(0) + r(1) * r(1));
+  }
+  b.omega = angular / inertia;
+  return b;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(rigid_particle_contact)
+
+BOOST_AUTO_TEST_CASE(a_disk_slides_down_a_frictionless_rigid_trough_without_turning) {
+  const Scene scene = test::verification_scene("rigid_trough.json", kAtParticles);
+  Simulation sim(scene, kThreads);
+  const int disk = object_index(scene, "disk");
+  const double r = 1.5e-3, R = 4.0e-3, g = 1.0e6;
+  const double slide = std::sqrt(2.0 * g * (R - r) * (1.0 - std::cos(M_PI / 6.0)));  // 25.88 m/s
+  double worst_spin = 0.0, fastest = 0.0, next_sample = 5.0e-6;
+  while (!sim.finished()) {
+    sim.step();
+    if (sim.time() < next_sample) continue;  // every 5 us, as body_spin.py reads the snapshots
+    next_sample += 5.0e-6;
+    const BodyMotion b = motion_of(sim.particles(), disk);
+    const double speed = b.velocity.norm();
+    fastest = std::max(fastest, speed);
+    worst_spin = std::max(worst_spin, std::abs(b.omega) * r / speed);
+  }
+  const LedgerRow row = sim.ledger().row();
+  BOOST_TEST_MESSAGE(
+      "disk in a frictionless rigid trough, h = 0.25 mm, contact at the particles: "
+      "worst omega r / v "
+      << worst_spin << " (nodes: 0.58-0.67; pendulum " << r / (R - r) << "), fastest " << fastest
+      << " m/s (slide " << slide << "), energy_error " << row.energy_error << ", contact energy "
+      << test::ledger_sink(sim.ledger(), "contact_energy") << " J/m");
+  // Measured 0.095 here, 0.019 at h/2, 0.233 at 2h (docs/verification.md): bounded well below
+  // the pendulum's 0.6 that the nodes give at every h.
+  BOOST_TEST(worst_spin < 0.15);
+  BOOST_TEST(fastest == slide, boost::test_tools::tolerance(0.04));  // 26.47: +2.3 %
+  BOOST_TEST(std::abs(row.energy_error) < 0.02);
+}
+
+BOOST_AUTO_TEST_CASE(a_block_released_at_rest_on_a_rigid_floor_stays_there) {
+  // The 2 x 4 x 2 mm block of sliding_block_rigid.json at rest, gravity 1e5 m/s^2 along -x into
+  // the floor, applied at once; frictionless; h = 0.5 mm.
+  const Scene scene = test::verification_scene(
+      "sliding_block_rigid.json",
+      at_particles({{"physics", {{"contact", {{"mu", 0.0}}}}},
+                    {"objects", {{"block", {{"velocity", {0.0, 0.0, 0.0}}}}}},
+                    {"time", {{"max_time", 1.0e-4}}}}));
+  Simulation sim(scene, kThreads);
+  const int block = object_index(scene, "block");
+  const double g = 1.0e5, h = 0.5e-3, t_end = 1.0e-4;
+  const BodyMotion start = motion_of(sim.particles(), block);
+  double early_kinetic = 0.0, late_kinetic = 0.0, worst_sink = 0.0, worst_error = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const BodyMotion b = motion_of(sim.particles(), block);
+    if (sim.time() <= 0.25 * t_end) early_kinetic = std::max(early_kinetic, b.kinetic_energy);
+    if (sim.time() >= 0.75 * t_end) late_kinetic = std::max(late_kinetic, b.kinetic_energy);
+    worst_sink = std::max(worst_sink, start.centre(0) - b.centre(0));
+    worst_error = std::max(worst_error, std::abs(sim.ledger().row().energy_error));
+  }
+  const LedgerRow row = sim.ledger().row();
+  const double weight_impulse = start.mass * g * sim.time();
+  BOOST_TEST_MESSAGE("block at rest on a rigid floor, contact at the particles, "
+                     << sim.steps() << " steps: kinetic energy at most " << early_kinetic
+                     << " J in the first quarter, " << late_kinetic
+                     << " J in the last; sank at most " << worst_sink << " m; worst energy_error "
+                     << worst_error << " (end " << row.energy_error << "); the floor's impulse "
+                     << row.boundary_impulse(0) << " N s against the weight's " << weight_impulse
+                     << " N s");
+  BOOST_TEST(sim.steps() > 2000);  // 1e-4 s: it completes
+  // Nothing grows: a force that jumps to k delta as a domain enters pumped the ringing until the
+  // energy check stopped the run at 24 us.
+  BOOST_TEST(late_kinetic <= 1.2 * early_kinetic);
+  BOOST_TEST(worst_error < 0.05);
+  // The onset's compliance lets it settle 1.0 um (0.002 h) into the floor, and no further.
+  BOOST_TEST(worst_sink < 0.005 * h);
+  BOOST_TEST(row.boundary_impulse(0) == weight_impulse, boost::test_tools::tolerance(0.02));
+}
+
+BOOST_AUTO_TEST_CASE(a_column_stays_at_rest_on_a_rigid_floor_for_a_second) {
+  // resting_column_rigid.json: a soft column (uniaxial strain) under gravity applied at once.
+  // Closed forms: the floor's impulse is the weight's, rho g W L t; the column rings about its
+  // settled state with a kinetic energy of at most the energy stored there (a load applied at
+  // once does twice the work the springs keep): its own U_s = (rho g)^2 W L^3 / (6 M), and the
+  // onset layer's, whose force grows as delta^2, F delta_c / 3 stored for F delta_c of work, so
+  // U_s + 2 F delta_c / 3 with delta_c = (h / 2) sqrt(rho g L / M) (the piston's formula below).
+  // Before the pushed particles moved with the velocity their strain sees, MUSL gained energy
+  // until the check stopped the run at step 3917, and USL ended at +0.645.
+  for (const char* scheme : {"musl", "usl"}) {
+    const Scene scene =
+        test::verification_scene("resting_column_rigid.json", {{"solver", {{"scheme", scheme}}}});
+    Simulation sim(scene, kThreads);
+    const double rho = 1000.0, g = 1000.0, W = 0.025, L = 0.1, h = 0.0125, t_end = 1.0;
+    const int column = object_index(scene, "block");
+    const auto& p = scene.materials[scene.objects[column].material].material.model.params();
+    const double M = p.bulk_modulus + 4.0 / 3.0 * p.shear_modulus;
+    const double F = rho * g * L * W;  // [N/m]
+    const double U_s = rho * g * rho * g * W * L * L * L / (6.0 * M);
+    const double delta_c = 0.5 * h * std::sqrt(rho * g * L / M);
+    const double ringing = U_s + 2.0 / 3.0 * F * delta_c;  // [J/m]
+    double early = 0.0, late = 0.0, worst = 0.0, most = -1.0;
+    while (!sim.finished()) {
+      sim.step();
+      const LedgerRow r = sim.ledger().row();
+      if (sim.time() <= 0.25 * t_end) early = std::max(early, r.kinetic_energy);
+      if (sim.time() >= 0.75 * t_end) late = std::max(late, r.kinetic_energy);
+      worst = std::max(worst, std::abs(r.energy_error));
+      most = std::max(most, r.energy_error);
+    }
+    const LedgerRow r = sim.ledger().row();
+    BOOST_TEST_MESSAGE(scheme << ": column at rest on a rigid floor, " << sim.steps()
+                              << " steps: kinetic energy at most " << early << " J/m in the first "
+                              << "quarter, " << late << " in the last (closed form of the "
+                              << "ringing " << ringing << "); energy_error worst " << worst
+                              << ", highest " << most << ", end " << r.energy_error
+                              << "; the floor's impulse " << r.boundary_impulse(1) << " N s/m ("
+                              << F * sim.time() << ")");
+    BOOST_TEST(sim.time() == t_end, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(late <= early);           // nothing grows
+    BOOST_TEST(early <= 1.1 * ringing);  // the ringing's scale: at most its bound, 1.195 J/m
+    BOOST_TEST(most < 0.05);             // never gains: MUSL at most 0.036, USL 0.032 at the start
+    if (std::string(scheme) == "musl") BOOST_TEST(worst < 0.05);
+    // USL damps the ringing: it ends at -0.32 with the column settled (the nodes: -0.18).
+    if (std::string(scheme) == "usl") BOOST_TEST(r.energy_error > -0.35);
+    BOOST_TEST(r.boundary_impulse(1) == F * sim.time(), boost::test_tools::tolerance(0.01));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_soft_block_faster_than_its_waves_does_not_pass_through_a_rigid_floor) {
+  // The soft block of resting_block_plane_strain.json (c0 = 116 m/s) thrown at 300 m/s onto a
+  // rigid floor three cells thick, no gravity. A penalty of c0 alone let it through (a new
+  // user's trial: at 300 m/s the run stopped on a particle stretched to J = 9 below the floor,
+  // at 1000 m/s the whole block left through the grid's far face): the closing speed the scene
+  // starts with now stiffens it (contact/rigid_particle_contact.hpp, "speed").
+  const double V = 300.0, h = 0.0125;
+  const Scene scene = test::verification_scene(
+      "resting_block_plane_strain.json",
+      at_particles(
+          {{"materials",
+            {{"floor_al",
+              {{"file", std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json"}}}}},
+           {"objects",
+            {{"block", {{"velocity", {0.0, -V, 0.0}}}},
+             {"floor",
+              {{"material", "floor_al"},
+               {"rigid", true},
+               {"geometry",
+                {{"type", "box"}, {"lower", {0.0, -0.0375, -0.5}}, {"upper", {0.2, 0.0, 0.5}}}}}}}},
+           {"grid",
+            {{"lower", {0.0, -0.0375}},
+             {"upper", {0.2, 0.15}},
+             {"cells", {16, 15}},
+             {"boundary", {{"y-", "free"}}}}},
+           {"physics", {{"contact", {{"type", "friction"}}}}},
+           {"solver", {{"gravity", {0.0, 0.0, 0.0}}}},
+           {"time", {{"max_time", 5.0e-4}}}}));
+  Simulation sim(scene, kThreads);
+  const int block = object_index(scene, "block");
+  const double p0 =
+      motion_of(sim.particles(), block).velocity(1) * motion_of(sim.particles(), block).mass;
+  double deepest = 0.0, worst_closure = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const Particles& P = sim.particles();
+    for (std::size_t p = 0; p < P.size(); ++p)
+      if (P.object[p] == block) deepest = std::min(deepest, P.x[p](1));
+    const LedgerRow r = sim.ledger().row();
+    worst_closure = std::max(worst_closure, std::abs(r.momentum(1) - p0 - r.boundary_impulse(1)));
+  }
+  const BodyMotion end = motion_of(sim.particles(), block);
+  BOOST_TEST_MESSAGE("soft block at " << V << " m/s onto a rigid floor, " << sim.steps()
+                                      << " steps: deepest particle centre " << deepest
+                                      << " m (floor at 0, h " << h << "), leaves at "
+                                      << end.velocity(1) << " m/s, energy_error "
+                                      << sim.ledger().row().energy_error);
+  // Measured -0.41 h: the impact's pressure needs an overlap beyond the domain's reach. Past the
+  // floor's middle (1.5 h) a particle would be pushed out of its far side.
+  BOOST_TEST(deepest > -0.5 * h);
+  BOOST_TEST(end.velocity(1) > 0.0);                  // it bounced
+  BOOST_TEST(worst_closure <= 1e-12 * std::abs(p0));  // the floor's push is the momentum's change
+}
+
+BOOST_AUTO_TEST_CASE(a_block_spanning_two_rigid_blocks_keeps_its_energy) {
+  Simulation sim(test::verification_scene("spanning_block_rigid.json", kAtParticles), kThreads);
+  double worst = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    worst = std::max(worst, std::abs(sim.ledger().row().energy_error));
+  }
+  const double last = sim.ledger().row().energy_error;
+  BOOST_TEST_MESSAGE("spanning block, contact at the particles: worst abs(energy_error) "
+                     << worst << ", at the end " << last << " (nodes: 0.063 / -0.021)");
+  BOOST_TEST(worst < 0.05);
+  BOOST_TEST(std::abs(last) < 0.02);
+}
+
+BOOST_AUTO_TEST_CASE(a_rigid_piston_at_the_particles_pushes_as_the_elastic_wave_does) {
+  // At 2 m/s, so that the power's check does not coincide with the push's.
+  const double V = 2.0;
+  const Scene scene = test::verification_scene(
+      "rigid_piston.json",
+      at_particles({{"objects", {{"piston", {{"velocity", {V, 0.0, 0.0}}}}}}}));
+  Simulation sim(scene, kThreads);
+  const double t_end = 2.0e-5, h = 1.25e-3;
+  double worst_closure = 0.0, late_time = 0.0, late_impulse = 0.0, late_work = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const LedgerRow r = sim.ledger().row();
+    worst_closure = std::max(worst_closure, std::abs(r.momentum(0) - r.boundary_impulse(0)));
+    if (late_time == 0.0 && sim.time() >= 0.9 * t_end) {
+      late_time = sim.time();
+      late_impulse = r.boundary_impulse(0);
+      late_work = r.external_work;
+    }
+  }
+  const double rho = scene.materials.front().material.model.params().density;
+  const double c = test::longitudinal_wave_speed(scene);
+  const double Z = rho * c * 0.0025 * 0.0025;  // rho c_L A
+  const LedgerRow r = sim.ledger().row();
+  const double t = sim.time(), span = t - late_time;
+  const double push = (r.boundary_impulse(0) - late_impulse) / span;
+  const double power = (r.external_work - late_work) / span;
+  // The onset's layer carries the wave's pressure rho c V at the overlap (h / 2) sqrt(V / c)
+  // (contact/rigid_particle_contact.hpp: k delta^2 / (2 delta_s) = p A_p): the bar's end
+  // follows the piston that far behind, and its impulse lags by that overlap over V.
+  const double lag = 0.5 * h * std::sqrt(V / c) / V;
+  BOOST_TEST_MESSAGE("rigid piston at " << V << " m/s at the particles, t = " << t << " s: impulse "
+                                        << r.boundary_impulse(0) << " N s (closed " << Z * V * t
+                                        << ", with the lag of " << lag << " s " << Z * V * (t - lag)
+                                        << "), push over the last tenth " << push << " N (closed "
+                                        << Z * V << "), power " << power << " W (" << Z * V * V
+                                        << "), energy_error " << r.energy_error);
+  BOOST_TEST(r.boundary_impulse(0) == Z * V * (t - lag), boost::test_tools::tolerance(0.03));
+  BOOST_TEST(push == Z * V, boost::test_tools::tolerance(0.05));
+  BOOST_TEST(power == Z * V * V, boost::test_tools::tolerance(0.05));
+  BOOST_TEST(std::abs(r.energy_error) < 0.005);
+  BOOST_TEST(worst_closure <= 1e-12 * Z * V * t_end);  // the bar's momentum: the piston's push
+}
+
+BOOST_AUTO_TEST_CASE(a_block_seeded_around_a_rigid_pin_stays_at_rest) {
+  // Plane strain: an elastic 2 mm block seeded around a rigid pin of radius 0.7 mm that cuts it
+  // (the pin named first keeps the shared points), all at rest. Nothing acts: it stays so.
+  Json patch = {
+      {"materials",
+       {{"pin_al", {{"file", std::string(IMPACT_SOURCE_DIR) + "/data/materials/al6061_t6.json"}}}}},
+      {"objects",
+       {{"a_pin",
+         {{"material", "pin_al"},
+          {"rigid", true},
+          {"geometry",
+           {{"type", "cylinder"},
+            {"bottom", {0.002, 0.002, -0.5}},
+            {"top", {0.002, 0.002, 0.5}},
+            {"radius", 0.0007}}}}},
+        {"block",
+         {{"material", "elastic_al"},
+          {"geometry",
+           {{"type", "box"}, {"lower", {0.001, 0.001, -0.5}}, {"upper", {0.003, 0.003, 0.5}}}},
+          {"velocity", {0.0, 0.0, 0.0}}}}}},
+      {"grid",
+       {{"geometry", "plane_strain"},
+        {"lower", {0.0, 0.0}},
+        {"upper", {0.004, 0.004}},
+        {"cells", {16, 16}},
+        {"boundary", {{"x-", "free"}, {"x+", "free"}, {"y-", "free"}, {"y+", "free"}}}}},
+      {"physics", {{"contact", {{"type", "friction"}, {"mu", 0.0}}}}},
+      {"time", {{"max_time", 2.0e-6}}}};
+  Simulation sim(test::verification_scene("elastic_base.json", at_particles(patch)), kThreads);
+  const double start = test::ledger_sink(sim.ledger(), "contact_energy");
+  double kinetic = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    kinetic = std::max(kinetic, sim.ledger().row().kinetic_energy);
+  }
+  BOOST_TEST_MESSAGE("block around a rigid pin at rest: contact energy at t = 0 "
+                     << start << " J/m, largest kinetic energy " << kinetic << " J/m");
+  // Clipped only by the block's own box, the domains around the pin overlapped it by up to a
+  // quarter cell: 1522 J/m at t = 0, and 700 J/m of kinetic energy.
+  BOOST_TEST(start == 0.0);
+  BOOST_TEST(kinetic == 0.0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
