@@ -156,7 +156,8 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
         if (c->has(key))
           c->problems().add(c->key_path(key),
                             "read only by the \"friction\" contact (also called \"approach\"); "
-                            "\"single_velocity\" is one velocity field with no contact surface: "
+                            "the type here is \"single_velocity\" (the default where \"type\" "
+                            "is absent or null), one velocity field with no contact surface: "
                             "remove the key (null removes one inherited through \"extends\") or "
                             "set type to \"friction\"");
       // "approach" is also a type's name: the message says which is meant.
