@@ -33,7 +33,9 @@ Anvil (--anvil, one per OUT):
   wall:MU  a rigid wall that never pulls, with Coulomb friction MU (docs/scenes.md#grid);
   rigid:MU a rigid body at rest, two cells thick, below x = 0 (objects.anvil.rigid,
            docs/scenes.md#rigid-objects), met through multi-field contact with Coulomb friction MU
-           (the normal is the anvil's own face).
+           (the normal is the anvil's own face);
+  rigid_particles  the same body met at the rod's particles, frictionless
+           (physics.contact.rigid_contact "particles", docs/scenes.md#rigid-objects).
 
 Parameter sets (calibration kept apart from validation: none is tuned to a Taylor shot):
   table1   data/materials/al6061_t6.json as shipped (the report's Table 1 Johnson-Cook set);
@@ -170,10 +172,11 @@ def end_time(shot):
 def parse_anvil(text):
     """'mirror' (the symmetric x- face: frictionless, and it holds the rod in tension),
     'wall[:MU]' (a rigid wall that never pulls, Coulomb friction MU, default 0) or 'rigid[:MU]'
-    (a rigid body at rest in contact, likewise): (kind, mu)."""
+    (a rigid body at rest in contact, likewise) or 'rigid_particles' (that body met at the rod's
+    particles, frictionless): (kind, mu)."""
     kind, _, mu = text.partition(":")
-    if kind == "mirror" and not mu:
-        return "mirror", 0.0
+    if kind in ("mirror", "rigid_particles") and not mu:
+        return kind, 0.0
     if kind in ("wall", "rigid"):
         try:
             value = float(mu) if mu else 0.0
@@ -181,8 +184,8 @@ def parse_anvil(text):
             value = -1.0
         if 0.0 <= value <= 10.0:
             return kind, value
-    sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall, wall:MU, rigid or rigid:MU with "
-             "MU in [0, 10]")
+    sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall, wall:MU, rigid, rigid:MU with "
+             "MU in [0, 10], or rigid_particles")
 
 
 def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0), geometry="3d",
@@ -221,7 +224,7 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0),
     if anvil[0] == "wall":
         boundary["x-"] = "wall"
         grid["wall_friction"] = {"x-": anvil[1]}
-    if anvil[0] == "rigid":
+    if anvil[0] in ("rigid", "rigid_particles"):
         # Two cells of rigid anvil below the impact face x = 0, as wide as the grid; its own
         # material (the density its contact normals read), multi-field contact with the rod.
         grid["lower"][0] = -2.0 * dx
@@ -235,6 +238,8 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0),
                                          "radius": ny * dx * (1.0 if planar else 2 ** 0.5)},
                             "particles_per_cell": list(objects["rod"]["particles_per_cell"])}
         physics["contact"] = {"type": "friction", "mu": anvil[1]}
+        if anvil[0] == "rigid_particles":
+            physics["contact"]["rigid_contact"] = "particles"
     return {
         "description": f"Taylor impact, House et al. (1995) shot {shot['shot']}: "
                        f"{'axisymmetric model' if planar else 'quarter model'}, "
@@ -562,8 +567,9 @@ def main(argv=None):
                     help="shots run at resolutions other than the first (default: all --shots)")
     ap.add_argument("--anvil", default="mirror",
                     help="mirror (default: symmetric x- face, frictionless), wall[:MU] (rigid "
-                         "wall that never pulls, Coulomb friction MU) or rigid[:MU] (a rigid body "
-                         "at rest in contact, likewise); one per OUT")
+                         "wall that never pulls, Coulomb friction MU), rigid[:MU] (a rigid body "
+                         "at rest in contact, likewise) or rigid_particles (that body met at the "
+                         "rod's particles, frictionless); one per OUT")
     ap.add_argument("--geometry", default="3d", choices=GEOMETRIES,
                     help="3d (default: the quarter model) or axisymmetric (the r-z section on a 2D "
                          "grid; one per OUT)")

@@ -438,7 +438,8 @@ def report(out, draw=True):
     geometries = sorted({r.get("geometry") or "3d" for r in rows})
     lines += [f"Anvil: {', '.join(anvils)} (mirror: the symmetric x- face, rigid and frictionless; "
               "wall:MU: a rigid wall that never pulls, Coulomb friction MU; rigid:MU: a rigid "
-              "body at rest in contact, likewise).", "",
+              "body at rest in contact, likewise; rigid_particles:0: that body met at the rod's "
+              "particles, frictionless).", "",
               f"Geometry: {', '.join(geometries)} (3d: the quarter model; axisymmetric: the r-z "
               "section on a 2D grid).", "",
               "## Per parameter set, failure mode and resolution", ""]
