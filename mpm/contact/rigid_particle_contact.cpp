@@ -95,19 +95,25 @@ void RigidParticleContact::evaluate(const Particles& P, double t, int threads) {
         continue;
       const std::uint16_t object = P.object[p];
       // The domain's reach: the largest sphere in it (its smallest half-width over the mesh's
-      // axes), no further than the seed point lay inside its own object's geometry.
+      // axes), no further than the seed point lay inside its own object's geometry. The seed
+      // point's distances are measured only for a particle within that sphere of a surface: the
+      // clips only shorten the reach, and most particles lie further away.
       const Vec3& l = P.half_width.empty() ? half_widths_[object] : P.half_width[p];
-      double reach = l(0);
-      for (int d = 1; d < axes_; ++d) reach = std::min(reach, l(d));
-      reach = std::min(
-          reach,
-          std::max(0.0,
-                   -surface_distance(scene_.objects[object].geometry, P.X[p], prism_z_).distance));
+      double widest = l(0);
+      for (int d = 1; d < axes_; ++d) widest = std::min(widest, l(d));
+      double reach = -1.0;                                     // not yet clipped
       const double k = stiffness_[P.material[p]] * P.mass[p];  // k_p [N/m]
       for (std::size_t r = 0; r < surfaces_.size(); ++r) {
         if (!surfaces_[r]) continue;
         const SurfaceDistance s =
             surface_distance(*surfaces_[r], P.x[p] - velocities_[r] * t, prism_z_);
+        if (!(widest - s.distance > 0.0)) continue;  // no overlap, whatever the clips
+        if (reach < 0.0)
+          reach = std::min(
+              widest,
+              std::max(
+                  0.0,
+                  -surface_distance(scene_.objects[object].geometry, P.X[p], prism_z_).distance));
         const Vec3& normal = s.outward;
         if (normal.squaredNorm() == 0.0) continue;  // no direction (a joint, an axis): no push
         // ... nor further than the seed point lay from this object as seeded: a body seeded
