@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/thermal/adiabatic_heating.hpp"
 #include "mpm/geometry/surface_distance.hpp"
 #include "mpm/threads/chunk_sums.hpp"
 #include "mpm/threads/threads.hpp"
@@ -23,7 +24,8 @@ RigidParticleContact::RigidParticleContact(const Scene& scene,
       half_widths_(std::move(half_widths)),
       h_(scene.grid.min_spacing()),
       prism_z_(scene.grid.per_metre_of_thickness()),
-      axes_(scene.grid.dimensions()) {
+      axes_(scene.grid.dimensions()),
+      mu_(scene.physics.contact.mu) {
   const std::vector<std::optional<Vec3>> rigid = scene.rigid_field_velocities();
   for (std::size_t f = 0; f < rigid.size(); ++f) {
     rigid_.push_back(rigid[f].has_value());
@@ -69,15 +71,65 @@ double push(double k, double onset, double delta) {
   if (!(delta > 0.0)) return 0.0;
   return delta < onset ? k * delta * delta / (2.0 * onset) : k * (delta - 0.5 * onset);
 }
+
+// Coulomb's stick spring at one particle (header comment, "friction"), pushed by F_n along
+// `normal` (F_n = 0: it touches nothing) by a surface moving at V. With `advance` (the time moved
+// on since the last evaluation, by `carried` seconds) the anchor is carried with the surface,
+// brought into the plane through x_p normal to the push, and moved where the particle slips;
+// without (a second evaluation at one time, on several ranks or after a restart) it stays, and
+// the same anchor gives the same bits.
+struct Rub {
+  Vec3 force = Vec3::Zero();  ///< f_t [N]
+  double energy = 0.0;        ///< the spring's k |s|^2 / 2 [J]
+  double heat = 0.0;          ///< the slip's mu F_n (|s*| - |s|) [J]
+};
+Rub stick_or_slip(Vec3& anchor, const Vec3& x, double F_n, const Vec3& normal, const Vec3& V,
+                  bool advance, double carried, double k, double mu) {
+  Rub rub;
+  if (!(F_n > 0.0)) {  // free: the spring is slack; the anchor waits where the particle is
+    if (advance) anchor = x;
+    return rub;
+  }
+  const auto stretch = [&] {  // the spring's extension along the surface, from the anchor
+    const Vec3 d = x - anchor;
+    return Vec3(d - d.dot(normal) * normal);
+  };
+  const double longest = mu * F_n / k;  // Coulomb's bound on |s| [m]
+  Vec3 s;
+  if (advance) {
+    anchor += carried * V;
+    s = stretch();   // the trial s*
+    anchor = x - s;  // in the plane normal to the push: the force is the energy's gradient
+    const double length = s.norm();
+    if (length > longest) {  // slips: back onto Coulomb's cone; the slip's work is heat
+      anchor = x - (longest / length) * s;
+      rub.heat = mu * F_n * (length - longest);
+    }
+  }
+  s = stretch();  // from the stored anchor, as a second evaluation finds it
+  const double length = s.norm();
+  if (length > longest) s *= longest / length;  // round-off beyond the cone
+  rub.force = -k * s;
+  rub.energy = 0.5 * k * s.squaredNorm();
+  return rub;
+}
 }  // namespace
 
-void RigidParticleContact::evaluate(const Particles& P, double t, int threads) {
+void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   force_.resize(P.size());
+  const bool friction = mu_ > 0.0;
+  // The anchors are carried with their surfaces over the time since the last evaluation (none at
+  // the first, also after a restart: the checkpoint's anchors were carried to its time).
+  const double carried = last_time_ ? t - *last_time_ : 0.0;
+  const bool advance = carried > 0.0;
+  last_time_ = t;
+  if (friction && P.friction_anchor.size() != P.size())
+    throw std::logic_error("RigidParticleContact::evaluate: no friction anchor per particle");
   const double onset = kOnset * h_;  // delta_s [m]
   const bool outflow = !P.removed.empty();
   struct Sums {
-    double energy = 0.0, power = 0.0;
+    double energy = 0.0, power = 0.0, heat = 0.0;
     Vec3 force = Vec3::Zero();
   };
   // Per chunk, then in chunk order: the same bits on any thread count (threads/chunk_sums.hpp).
@@ -89,10 +141,16 @@ void RigidParticleContact::evaluate(const Particles& P, double t, int threads) {
     for (std::ptrdiff_t p = sums.begin(chunk); p < sums.end(chunk); ++p) {
       Vec3& f_p = force_[p];
       f_p.setZero();
+      // The surface that pushes hardest: its friction acts (header comment, "corners").
+      double hardest = 0.0;
+      std::size_t rubbing = 0;
+      Vec3 rubbing_normal = Vec3::Zero();
       const std::size_t field = P.field[p];
       if ((field < rigid_.size() && rigid_[field]) || (outflow && P.removed[p]) ||
-          !(P.mass[p] > 0.0))
+          !(P.mass[p] > 0.0)) {
+        if (friction) P.friction_anchor[p] = P.x[p];
         continue;
+      }
       const std::uint16_t object = P.object[p];
       // The domain's reach: the largest sphere in it (its smallest half-width over the mesh's
       // axes), no further than the seed point lay inside its own object's geometry. The seed
@@ -121,22 +179,43 @@ void RigidParticleContact::evaluate(const Particles& P, double t, int threads) {
         const double seeded = surface_distance(*surfaces_[r], P.X[p], prism_z_).distance;
         const double overlap = std::min(reach, std::max(0.0, seeded)) - s.distance;
         if (!(overlap > 0.0)) continue;
-        const Vec3 f = push(k, onset, overlap) * normal;
+        const double F = push(k, onset, overlap);
+        const Vec3 f = F * normal;
         f_p += f;
+        if (F > hardest) {
+          hardest = F;
+          rubbing = r;
+          rubbing_normal = normal;
+        }
         sum.energy += stored_energy(k, onset, overlap);
         sum.force += f;
         sum.power += f.dot(velocities_[r]);
       }
+      if (!friction) continue;
+      const Vec3 V = hardest > 0.0 ? velocities_[rubbing] : Vec3::Zero();
+      const Rub rub = stick_or_slip(P.friction_anchor[p], P.x[p], hardest, rubbing_normal, V,
+                                    advance, carried, k, mu_);
+      if (rub.heat > 0.0) {
+        const auto& params = scene_.materials[P.material[p]].material.model.params();
+        retain_heat(P.state[p], rub.heat / P.mass[p], params.heating.enabled, params.specific_heat);
+      }
+      f_p += rub.force;
+      sum.energy += rub.energy;
+      sum.heat += rub.heat;
+      sum.force += rub.force;
+      sum.power += rub.force.dot(V);
     }
   }
   Sums total;
   sums.add_in_order([&](const Sums& s) {
     total.energy += s.energy;
     total.power += s.power;
+    total.heat += s.heat;
     total.force += s.force;
   });
   energy_ = total.energy;
   power_ = total.power;
+  heat_ = total.heat;
   total_force_ = total.force;
 }
 

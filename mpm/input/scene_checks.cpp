@@ -286,19 +286,14 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
                  "every object is rigid: expected at least one deformable object "
                  "(rigid objects move at their velocity and, alone, leave nothing "
                  "to compute)");
-  // The particles' contact with rigid objects is frictionless (contact/
-  // rigid_particle_contact.hpp): a friction coefficient would be read and ignored there.
-  // (Under single_velocity the key is refused where it is read.)
+  // The particles' contact with rigid objects (contact/rigid_particle_contact.hpp).
+  // (Under single_velocity its keys are refused where they are read.)
   if (s.physics.contact.type == ContactType::friction &&
       s.physics.contact.rigid == RigidContact::particles) {
     if (!s.has_rigid_objects())
       problems.add("/physics/contact/rigid_contact",
                    "\"particles\" is how bodies meet rigid objects, and no object is rigid: "
                    "remove the key, or make an object rigid (objects.<name>.rigid)");
-    else if (s.physics.contact.mu > 0.0)
-      problems.add("/physics/contact/mu",
-                   "the contact at the particles (rigid_contact \"particles\") is frictionless: "
-                   "expected 0, or rigid_contact \"nodes\" for friction");
     // There a rigid object is its geometry's exact surface: one that an earlier object of another
     // body cuts is seeded without the cut part, and its surface would be none of its own.
     for (std::size_t oi = 0; oi < s.objects.size(); ++oi) {

@@ -139,7 +139,7 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
     const std::string rigid = c->choice(
         "rigid_contact", {"nodes", "particles"},
         "where bodies meet the rigid objects: at the shared nodes, or at the particles, by a "
-        "frictionless penalty against the rigid geometry's exact surface",
+        "penalty against the rigid geometry's exact surface, with Coulomb friction mu",
         "nodes");
     ph.contact.rigid = rigid == "particles" ? RigidContact::particles : RigidContact::nodes;
     if (ph.contact.type == ContactType::friction &&

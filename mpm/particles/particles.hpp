@@ -50,6 +50,11 @@ struct Particles {
   /// half the sub-cell of the cell it was seeded in, fixed then); empty on a uniform grid, where
   /// the object's half-width in cells serves.
   std::vector<Vec3> half_width;
+  /// Anchor a_p [m] of the particle's stick spring against a rigid surface, Coulomb friction at
+  /// the particles (contact/rigid_particle_contact.hpp): the point it sticks to, carried with the
+  /// surface; x_p itself where it touches nothing. Empty unless rigid_contact = "particles" with
+  /// contact.mu > 0.
+  std::vector<Vec3> friction_anchor;
 
   /// f(array) for every per-particle array of kParticleArrays (below), optional ones (q, fault,
   /// removed, id, X) included even when empty: what moves a particle whole (migration between
@@ -106,7 +111,8 @@ inline constexpr auto kParticleArrays = std::make_tuple(
     ParticleArray<std::uint8_t>{"removed", "-", &Particles::removed, true},
     ParticleArray<std::uint64_t>{"id", "-", &Particles::id, true},
     ParticleArray<Vec3>{"X", "m", &Particles::X, true},
-    ParticleArray<Vec3>{"half_width", "m", &Particles::half_width, true});
+    ParticleArray<Vec3>{"half_width", "m", &Particles::half_width, true},
+    ParticleArray<Vec3>{"friction_anchor", "m", &Particles::friction_anchor, true});
 
 static_assert(aggregate_arity<Particles>() == std::tuple_size_v<decltype(kParticleArrays)>,
               "a Particles array is missing from kParticleArrays");

@@ -108,6 +108,8 @@ MemoryEstimate estimate_memory(const Scene& scene, std::optional<std::size_t> pa
   if (scene.has_body_force()) per_particle += sizeof(Vec3);  // b_p (step/body_force.hpp)
   // f_p, the rigid objects' contact force (contact/rigid_particle_contact.hpp)
   if (scene.rigid_contact_at_particles()) per_particle += sizeof(Vec3);
+  // a_p, its friction's stick-spring anchor
+  if (scene.rigid_friction_at_particles()) per_particle += sizeof(Vec3);
   per_particle += stencil_bytes(scene.solver.interpolation);
   per_particle += 2 * sizeof(int);  // scatter order: index and tile (mpm/step/scatter_order.hpp)
   e.particle_bytes = e.particles * per_particle;

@@ -385,6 +385,11 @@ struct Scene {
   bool rigid_contact_at_particles() const {
     return physics.contact.rigid == RigidContact::particles && has_rigid_objects();
   }
+  /// Whether that contact has Coulomb friction (contact.mu > 0), which keeps a stick spring's
+  /// anchor per particle (Particles::friction_anchor).
+  bool rigid_friction_at_particles() const {
+    return rigid_contact_at_particles() && physics.contact.mu > 0.0;
+  }
   /// |solver.gravity| + the largest initial body force of an object [m/s^2]: the body-force step's
   /// at the start.
   double body_force_at_start() const {

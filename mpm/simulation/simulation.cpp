@@ -79,6 +79,8 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   if (scene_.grid.outflow == Outflow::remove) particles_.removed.assign(particles_.size(), 0);
   if (scene_.needs_reference_positions())
     particles_.X = particles_.x;  // the reference positions: the seed points
+  if (scene_.rigid_friction_at_particles())
+    particles_.friction_anchor = particles_.x;  // each stick spring slack where it starts
   if (scene_.has_body_force()) body_forces_.emplace(scene_, grid_.threads());
   if (scene_.rigid_contact_at_particles()) {
     std::vector<Vec3> widths;  // uGIMP's half-widths per object [m] (a graded grid's: per particle)
@@ -174,6 +176,7 @@ void Simulation::resize_particles(std::size_t n) {
   if (!id) P.id.clear();
   if (!reference) P.X.clear();
   if (!scene_.grid.graded()) P.half_width.clear();
+  if (!scene_.rigid_friction_at_particles()) P.friction_anchor.clear();
 }
 
 void Simulation::restart_ledger() {
@@ -203,8 +206,8 @@ void Simulation::restart_ledger() {
 std::vector<double> Simulation::evaluate_rigid_contact() {
   rigid_contact_->evaluate(particles_, time_, grid_.threads());
   const Vec3& F = rigid_contact_->total_force();
-  rigid_contact_sums_ =
-      ranks_.sum({rigid_contact_->energy(), F(0), F(1), F(2), rigid_contact_->power()});
+  rigid_contact_sums_ = ranks_.sum({rigid_contact_->energy(), F(0), F(1), F(2),
+                                    rigid_contact_->power(), rigid_contact_->friction_heat()});
   rigid_contact_current_ = true;
   return rigid_contact_sums_;
 }
@@ -304,14 +307,17 @@ void Simulation::book(double dt) {
                       last_.stress.strain_energy_increment, boundary_impulse,
                       last_.grid.external_impulse + last_.particles.external_impulse,
                       external_work);
-  if (rigid_contact_) {  // the contact's energy at t^{n+1}, and its forces for the next step
-    const double stored = evaluate_rigid_contact()[0];
-    ledger_.add_sink(sinks_.contact_energy, stored - ledger_.sink(sinks_.contact_energy));
+  double rigid_friction_heat = 0.0;
+  if (rigid_contact_) {  // the contact's energy at t^{n+1}, its forces for the next step, and the
+    // heat of the slip since t^n
+    const std::vector<double> sums = evaluate_rigid_contact();
+    ledger_.add_sink(sinks_.contact_energy, sums[0] - ledger_.sink(sinks_.contact_energy));
+    rigid_friction_heat = sums[5];
   }
   if (sinks_.viscous >= 0) ledger_.add_sink(sinks_.viscous, last_.stress.viscous_work);
   if (sinks_.friction >= 0) {
-    ledger_.add_sink(sinks_.friction,
-                     last_.grid.contact.friction_heat + last_.grid.wall_friction_heat);
+    ledger_.add_sink(sinks_.friction, last_.grid.contact.friction_heat +
+                                          last_.grid.wall_friction_heat + rigid_friction_heat);
   }
   if (sinks_.wall_friction >= 0)
     ledger_.add_sink(sinks_.wall_friction, last_.grid.wall_friction_heat);

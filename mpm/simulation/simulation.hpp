@@ -182,7 +182,9 @@ class Simulation {
   /// force and its power on the system, each summed over the ranks: {U [J], F_x, F_y, F_z [N],
   /// P [W]}.
   std::vector<double> evaluate_rigid_contact();
-  std::vector<double> rigid_contact_sums_;  ///< the last evaluate_rigid_contact()
+  /// The last evaluate_rigid_contact(), summed over the ranks: energy [J], force [N], power [W],
+  /// slip heat [J].
+  std::vector<double> rigid_contact_sums_;
 };
 
 }  // namespace impact::mpm

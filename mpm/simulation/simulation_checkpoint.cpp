@@ -141,6 +141,7 @@ void Simulation::load(CheckpointReader& in) {
   in.array("ledger_sinks", l.sinks, ledger_.sink_names().size());
   ledger_.restore(l);
   rigid_contact_current_ = false;  // its forces were the seeded state's: the next step re-evaluates
+  if (rigid_contact_) rigid_contact_->resume();
 }
 
 }  // namespace impact::mpm

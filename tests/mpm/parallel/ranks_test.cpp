@@ -205,6 +205,17 @@ BOOST_AUTO_TEST_CASE(friction_contact_on_a_slab_boundary_books_as_on_one_rank) {
       1e-9);
 }
 
+// Friction against a rigid floor at the particles (rigid_contact = "particles", mu 0.25): the
+// block of sliding_block_rigid.json straddles the slabs' boundary and slides along it at 200 m/s,
+// so particles change rank with their stick springs' anchors (Particles::friction_anchor), and
+// each rank books the slip heat of its own particles.
+BOOST_AUTO_TEST_CASE(friction_at_the_particles_across_ranks_books_as_on_one_rank) {
+  compare_with_one_rank(scene_from("verification/sliding_block_rigid.json",
+                                   {{"physics", {{"contact", {{"rigid_contact", "particles"}}}}},
+                                    {"objects", {{"block", {{"velocity", {0.0, 200.0, 0.0}}}}}}}),
+                        1e-9, 150);
+}
+
 // The separating plane of contact.normal = "logistic_regression" fitted on a box boundary: the
 // clouds of the nodes around it hold the neighbour ranks' particles (the ghosts of
 // step/contact_planes.cpp), so each rank fits the planes one rank fits. The two blocks meet on the

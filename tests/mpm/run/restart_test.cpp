@@ -83,6 +83,7 @@ std::size_t differing(const Particles& a, const Particles& b) {
   BOOST_REQUIRE(a.fault.size() == b.fault.size());
   BOOST_REQUIRE(a.X.size() == b.X.size());
   BOOST_REQUIRE(a.half_width.size() == b.half_width.size());
+  BOOST_REQUIRE(a.friction_anchor.size() == b.friction_anchor.size());
   std::size_t n = 0;
   for (std::size_t p = 0; p < a.size(); ++p) {
     const bool same =
@@ -92,7 +93,8 @@ std::size_t differing(const Particles& a, const Particles& b) {
         a.material[p] == b.material[p] && a.object[p] == b.object[p] && a.field[p] == b.field[p] &&
         (a.q.empty() || a.q[p] == b.q[p]) && (a.fault.empty() || a.fault[p] == b.fault[p]) &&
         (a.X.empty() || a.X[p] == b.X[p]) &&
-        (a.half_width.empty() || a.half_width[p] == b.half_width[p]);
+        (a.half_width.empty() || a.half_width[p] == b.half_width[p]) &&
+        (a.friction_anchor.empty() || a.friction_anchor[p] == b.friction_anchor[p]);
     n += same ? 0 : 1;
   }
   return n;
@@ -300,6 +302,22 @@ BOOST_AUTO_TEST_CASE(a_rigid_contact_at_the_particles_continues_bit_for_bit_from
   const auto column = std::find(names.begin(), names.end(), "contact_energy");
   BOOST_TEST_REQUIRE((column != names.end()));
   BOOST_TEST(r.last.sinks[std::size_t(column - names.begin())] > 0.0);  // the disk is pressed
+}
+
+// (a''''') With friction there (contact.mu > 0): each particle's stick-spring anchor
+// (Particles::friction_anchor) comes back from the checkpoint, so the block sliding on its rigid
+// floor continues bit for bit.
+BOOST_AUTO_TEST_CASE(a_rigid_friction_at_the_particles_continues_bit_for_bit_from_a_checkpoint) {
+  const Scene s = test::verification_scene(
+      "sliding_block_rigid.json", {{"physics", {{"contact", {{"rigid_contact", "particles"}}}}}});
+  const Continuation r = continue_from_checkpoint(s, 60, 30);
+  BOOST_TEST_REQUIRE(r.uninterrupted.friction_anchor.size() == r.uninterrupted.size());
+  std::size_t stretched = 0;  // springs with their anchor off the particle
+  for (std::size_t p = 0; p < r.uninterrupted.size(); ++p)
+    stretched += r.uninterrupted.friction_anchor[p] != r.uninterrupted.x[p];
+  BOOST_TEST(stretched > 0u);
+  BOOST_TEST(differing(r.uninterrupted, r.continued) == 0u);
+  BOOST_TEST(r.rows_differ == 0u);
 }
 
 // (a''') A graded grid (grid.refine): each particle's uGIMP half-width, fixed at seeding, comes

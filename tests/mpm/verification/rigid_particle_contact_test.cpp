@@ -20,6 +20,7 @@
 // - a block seeded around a rigid pin, all at rest, stays at rest.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "../verification_helpers.hpp"
@@ -354,3 +355,190 @@ BOOST_AUTO_TEST_CASE(a_block_seeded_around_a_rigid_pin_stays_at_rest) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Coulomb friction at the particles (contact.mu > 0: a stick spring anchored where the particle
+// sticks, and a return map; contact/rigid_particle_contact.hpp). The loads are ramped over T: the
+// penalty's compliant layer, undamped, rings under a sudden load, and a block that hops on it
+// walks down a slope between touches (docs/verification.md).
+//
+// The block of sliding_block_rigid.json (2 x 4 x 2 mm, h = 0.5 mm) launched at 5 m/s along y,
+// pressed by a body force ramped to 1e5 m/s^2 along -x over T = 20 us, mu = 0.25: Coulomb's law
+// gives v_y = v0 - mu g (t - T / 2) (after T), a stop at t = v0 / (mu g) + T / 2 = 210 us, and
+// then it stays stopped; the kinetic energy it loses is the slip's heat.
+constexpr double kRamp = 2.0e-5;  // T [s]
+Json ramped_body_force(double g_n, double g_t, double ramp) {
+  const auto ramped = [&](double g) {
+    return std::to_string(g) + "*min(t/" + std::to_string(ramp) + ",1)";
+  };
+  return {{"body_force", {ramped(-g_n), ramped(g_t), 0}}};
+}
+// The integral of a load ramped over T to its full value, per unit of it: min(t, T)^2 / (2 T) +
+// max(t - T, 0).
+double ramped_time(double t, double ramp) {
+  return t < ramp ? t * t / (2.0 * ramp) : t - 0.5 * ramp;
+}
+
+BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_rigid_floor_with_friction_follows_coulomb_and_sticks) {
+  const double v0 = 5.0, g = 1.0e5, mu = 0.25, t_stop = v0 / (mu * g) + 0.5 * kRamp;
+  Json block = ramped_body_force(g, 0.0, kRamp);
+  block["velocity"] = {0.0, v0, 0.0};
+  const Scene scene = test::verification_scene(
+      "sliding_block_rigid.json",
+      at_particles({{"objects", {{"block", block}}}, {"solver", {{"gravity", {0, 0, 0}}}}}));
+  Simulation sim(scene, kThreads);
+  const int id = object_index(scene, "block");
+  double worst_sliding = 0.0, worst_stopped = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const double vy = motion_of(sim.particles(), id).velocity(1);
+    if (sim.time() < t_stop) {
+      const double coulomb = v0 - mu * g * ramped_time(sim.time(), kRamp);
+      worst_sliding = std::max(worst_sliding, std::abs(vy - coulomb) / v0);
+    } else if (sim.time() > 1.05 * t_stop) {
+      worst_stopped = std::max(worst_stopped, std::abs(vy) / v0);
+    }
+  }
+  const BodyMotion b = motion_of(sim.particles(), id);
+  const double lost = 0.5 * b.mass * (v0 * v0 - b.velocity(1) * b.velocity(1));
+  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
+  const LedgerRow r = sim.ledger().row();
+  BOOST_TEST_MESSAGE("rigid floor at the particles, mu 0.25: v_y against Coulomb worst "
+                     << worst_sliding << " v0 while sliding, " << worst_stopped
+                     << " v0 after the stop; friction heat " << heat << " J against " << lost
+                     << " J of kinetic energy lost; energy_error " << r.energy_error);
+  BOOST_TEST(worst_sliding < 0.02);
+  BOOST_TEST(worst_stopped < 0.005);
+  BOOST_TEST(std::abs(heat / lost - 1.0) < 0.03);
+  BOOST_TEST(std::abs(r.energy_error) < 0.01);
+}
+
+// The same block released at rest under a load ramped over T = 200 us to g_n = 1e5 m/s^2 into the
+// floor and g_t = 0.2 g_n along it: with mu = 0.25 > g_t / g_n it sticks, its velocity at the
+// ringing's scale; with mu = 0.15 it slides at a = g_t - mu g_n = 0.05 g_n once loaded, v_y =
+// a (t - T / 2). Both from the same code path: only mu differs. A rate-only law (f_t capped at
+// m_p |u_t| / dt) would creep at about H g_t / c0 = 0.006 m/s. The slow ramp: the compliant
+// layer rings less, and a block that rings on it walks down the slope (over 50 us: 0.25 um in
+// the 100 us after it, about 5 um per ms).
+BOOST_AUTO_TEST_CASE(a_block_under_a_tangential_load_sticks_below_mu_g_n_and_slides_above_it) {
+  const double g_n = 1.0e5, g_t = 0.2 * g_n, ramp = 2.0e-4, t_end = 4.0e-4;
+  for (const double mu : {0.25, 0.15}) {
+    Json block = ramped_body_force(g_n, g_t, ramp);
+    block["velocity"] = {0.0, 0.0, 0.0};
+    const Scene scene = test::verification_scene(
+        "sliding_block_rigid.json", at_particles({{"physics", {{"contact", {{"mu", mu}}}}},
+                                                  {"objects", {{"block", block}}},
+                                                  {"solver", {{"gravity", {0, 0, 0}}}},
+                                                  {"time", {{"max_time", t_end}}}}));
+    Simulation sim(scene, kThreads);
+    const int id = object_index(scene, "block");
+    const double a = mu > g_t / g_n ? 0.0 : g_t - mu * g_n;
+    double worst = 0.0;            // |v_y - a (t - T / 2)| [m/s] once loaded
+    std::optional<double> loaded;  // the centre's y when the load is full [m]
+    while (!sim.finished()) {
+      sim.step();
+      if (sim.time() < ramp) continue;
+      const BodyMotion b = motion_of(sim.particles(), id);
+      if (!loaded) loaded = b.centre(1);
+      worst = std::max(worst, std::abs(b.velocity(1) - a * ramped_time(sim.time(), ramp)));
+    }
+    // How far the centre moved along y once loaded, against the law's distance.
+    const double moved = motion_of(sim.particles(), id).centre(1) - *loaded;
+    const double law = 0.5 * a * (t_end - ramp) * (t_end - ramp) + a * 0.5 * ramp * (t_end - ramp);
+    const LedgerRow r = sim.ledger().row();
+    const double slid = 0.05 * g_n * ramped_time(t_end, ramp);  // v_y at mu = 0.15, at the end
+    BOOST_TEST_MESSAGE("block under g_t = 0.2 g_n ramped over 200 us, mu = "
+                       << mu << ": worst |v_y - a (t - T/2)| " << worst << " m/s (v_y at mu 0.15 "
+                       << slid << " m/s at the end), moved " << moved << " m once loaded (law "
+                       << law << " m), energy_error " << r.energy_error << ", friction heat "
+                       << test::ledger_sink(sim.ledger(), "friction_heat") << " J");
+    BOOST_TEST(worst < 0.02 * slid);
+    // Stuck, it moves far less than the rate-only law's creep (0.006 m/s over 200 us: 1.2 um);
+    // sliding, the law's distance.
+    if (a == 0.0)
+      BOOST_TEST(std::abs(moved) < 0.1e-6);
+    else
+      BOOST_TEST(moved == law, boost::test_tools::tolerance(0.03));
+    BOOST_TEST(std::abs(r.energy_error) < 0.01);
+  }
+}
+
+// A block at rest dropped onto a rigid floor that slides under it at V = 2 m/s along y (the load
+// ramped over 20 us to 1e5 m/s^2, mu 0.3): friction drags it up to the floor's speed at mu g,
+// v_y = mu g (t - T / 2), reached at 77 us, and then it rides along. As in any Coulomb start,
+// the slip's heat equals the kinetic energy the block gains, 1/2 M V^2, and the floor's work,
+// f . V summed, is twice that. The anchors are carried with the floor.
+BOOST_AUTO_TEST_CASE(a_block_dropped_on_a_sliding_rigid_floor_is_dragged_to_its_speed) {
+  const double V = 2.0, g = 1.0e5, mu = 0.3;
+  Json block = ramped_body_force(g, 0.0, kRamp);
+  block["velocity"] = {0.0, 0.0, 0.0};
+  const Scene scene = test::verification_scene(
+      "sliding_block_rigid.json",
+      at_particles(
+          {{"physics", {{"contact", {{"mu", mu}}}}},
+           {"objects",
+            {{"block", block},
+             {"floor",
+              {{"velocity", {0.0, V, 0.0}}, {"geometry", {{"upper", {0.001, 0.008, 0.006}}}}}}}},
+           {"solver", {{"gravity", {0, 0, 0}}}},
+           {"time", {{"max_time", 1.5e-4}}}}));
+  Simulation sim(scene, kThreads);
+  const int id = object_index(scene, "block");
+  const double t_lock = V / (mu * g) + 0.5 * kRamp;
+  double worst_dragged = 0.0, worst_riding = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const double vy = motion_of(sim.particles(), id).velocity(1);
+    if (sim.time() < t_lock)
+      worst_dragged =
+          std::max(worst_dragged, std::abs(vy - mu * g * ramped_time(sim.time(), kRamp)) / V);
+    else if (sim.time() > 1.1 * t_lock)
+      worst_riding = std::max(worst_riding, std::abs(vy - V) / V);
+  }
+  const BodyMotion b = motion_of(sim.particles(), id);
+  const double gained = 0.5 * b.mass * V * V;
+  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
+  const LedgerRow r = sim.ledger().row();
+  BOOST_TEST_MESSAGE(
+      "block dragged by a rigid floor at 2 m/s, mu 0.3: v_y against mu g (t - T/2) "
+      "worst "
+      << worst_dragged << " V, riding " << worst_riding << " V; heat " << heat
+      << " J, floor's work " << r.external_work << " J against 1/2 M V^2 = " << gained
+      << " J; energy_error " << r.energy_error);
+  BOOST_TEST(worst_dragged < 0.05);
+  BOOST_TEST(worst_riding < 0.03);
+  BOOST_TEST(heat == gained, boost::test_tools::tolerance(0.03));
+  BOOST_TEST(r.external_work == 2.0 * gained, boost::test_tools::tolerance(0.03));
+  BOOST_TEST(std::abs(r.energy_error) < 0.01);
+}
+
+// The disk of rolling_cylinder_rigid.json (plane strain, R = 2 mm, 8 cells per radius) on its
+// rigid floor met at the particles, a load ramped over T = 20 us to 1e5 m/s^2 at 30 degrees from
+// the floor's normal, mu = 0.5 > tan(30 deg) / 3: it rolls without slip at a = 2/3 g sin(30 deg)
+// = g / 3, v_y = a (t - T / 2), spinning at omega_z R = v_y (the floor below it, at -x). Without
+// friction it would slide at g / 2 and not turn; on a `wall` it rolls at -43 % of a
+// (rolling_cylinder_test).
+BOOST_AUTO_TEST_CASE(a_disk_rolls_down_a_rigid_incline_at_the_particles_without_slip) {
+  const double g = 1.0e5, R = 2.0e-3, a = g / 3.0;
+  const Scene scene = test::verification_scene(
+      "rolling_cylinder_rigid.json",
+      at_particles({{"physics", {{"contact", {{"normal", nullptr}, {"detection", nullptr}}}}},
+                    {"objects",
+                     {{"disk", ramped_body_force(g * std::cos(M_PI / 6.0), g * std::sin(M_PI / 6.0),
+                                                 kRamp)}}},
+                    {"solver", {{"gravity", {0, 0, 0}}}},
+                    {"time", {{"max_time", 1.0e-4}}}}));
+  Simulation sim(scene, kThreads);
+  const int disk = object_index(scene, "disk");
+  while (!sim.finished()) sim.step();
+  const BodyMotion b = motion_of(sim.particles(), disk);
+  const double t = sim.time(), rolling = a * ramped_time(t, kRamp);
+  const LedgerRow r = sim.ledger().row();
+  BOOST_TEST_MESSAGE("disk rolling on a rigid incline at the particles, t = "
+                     << t << " s: v_y " << b.velocity(1) << " m/s (rolling " << rolling
+                     << ", sliding " << 1.5 * rolling << "), omega R " << b.omega * R
+                     << " m/s, energy_error " << r.energy_error << ", friction heat "
+                     << test::ledger_sink(sim.ledger(), "friction_heat") << " J/m");
+  BOOST_TEST(b.velocity(1) == rolling, boost::test_tools::tolerance(0.05));
+  BOOST_TEST(b.omega * R == b.velocity(1), boost::test_tools::tolerance(0.05));
+  BOOST_TEST(std::abs(r.energy_error) < 0.01);
+}
