@@ -25,7 +25,8 @@ RigidParticleContact::RigidParticleContact(const Scene& scene,
       h_(scene.grid.min_spacing()),
       prism_z_(scene.grid.per_metre_of_thickness()),
       axes_(scene.grid.dimensions()),
-      mu_(scene.physics.contact.mu) {
+      mu_(scene.physics.contact.mu),
+      damping_(scene.physics.contact.penalty_damping) {
   const std::vector<std::optional<Vec3>> rigid = scene.rigid_field_velocities();
   for (std::size_t f = 0; f < rigid.size(); ++f) {
     rigid_.push_back(rigid[f].has_value());
@@ -119,6 +120,11 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   force_.resize(P.size());
   const bool friction = mu_ > 0.0;
+  const bool damped = damping_ > 0.0;
+  if (damped) {  // the dashpots' forces, and where they act from: their work over the step
+    damper_force_.assign(P.size(), Vec3::Zero());
+    evaluated_at_ = P.x;
+  }
   // The anchors are carried with their surfaces over the time since the last evaluation (none at
   // the first, also after a restart: the checkpoint's anchors were carried to its time).
   const double carried = last_time_ ? t - *last_time_ : 0.0;
@@ -129,7 +135,7 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
   const double onset = kOnset * h_;  // delta_s [m]
   const bool outflow = !P.removed.empty();
   struct Sums {
-    double energy = 0.0, power = 0.0, heat = 0.0;
+    double energy = 0.0, power = 0.0, heat = 0.0, damper_power = 0.0;
     Vec3 force = Vec3::Zero();
   };
   // Per chunk, then in chunk order: the same bits on any thread count (threads/chunk_sums.hpp).
@@ -179,7 +185,16 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
         const double seeded = surface_distance(*surfaces_[r], P.X[p], prism_z_).distance;
         const double overlap = std::min(reach, std::max(0.0, seeded)) - s.distance;
         if (!(overlap > 0.0)) continue;
-        const double F = push(k, onset, overlap);
+        // The push, with the dashpot's -c u_n where damped.
+        double F = push(k, onset, overlap);
+        if (damped) {
+          const double u_n = (P.v[p] - velocities_[r]).dot(normal);  // < 0: approaching
+          const double F_d =
+              std::max(-F, -2.0 * damping_ * std::sqrt(k * P.mass[p]) * u_n);  // never a pull
+          damper_force_[p] += F_d * normal;
+          sum.damper_power += F_d * normal.dot(velocities_[r]);
+          F += F_d;
+        }
         const Vec3 f = F * normal;
         f_p += f;
         if (F > hardest) {
@@ -211,12 +226,28 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
     total.energy += s.energy;
     total.power += s.power;
     total.heat += s.heat;
+    total.damper_power += s.damper_power;
     total.force += s.force;
   });
   energy_ = total.energy;
   power_ = total.power;
   heat_ = total.heat;
+  damper_power_ = total.damper_power;
   total_force_ = total.force;
+}
+
+double RigidParticleContact::damper_work(const Particles& P, double dt, int threads) const {
+  if (!(damping_ > 0.0)) return 0.0;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(std::min(P.size(), evaluated_at_.size()));
+  ChunkSums<double> sums(n, 512);
+  const std::ptrdiff_t chunks = sums.chunks();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t chunk = 0; chunk < chunks; ++chunk)
+    for (std::ptrdiff_t p = sums.begin(chunk); p < sums.end(chunk); ++p)
+      sums[chunk] -= damper_force_[p].dot(P.x[p] - evaluated_at_[p]);
+  double taken = dt * damper_power_;  // the dashpots' work at the surfaces' velocities, -f_d . V dt
+  sums.add_in_order([&](double s) { taken += s; });
+  return taken;
 }
 
 }  // namespace impact::mpm

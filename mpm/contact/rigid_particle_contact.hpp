@@ -93,6 +93,19 @@
 //           onto the wall it leaves (adhesion), carry the anchor at a mean of the surfaces'
 //           velocities, and give no friction where opposed pushes cancel. An anchor per
 //           surface would be exact (open).
+//   damping with contact.penalty_damping = zeta > 0 (opt-in; default 0), a dashpot beside each
+//           push: F = max(0, F(delta) - c_p u_n), c_p = 2 zeta sqrt(k_p m_p), u_n = (v_p - V) . n
+//           (negative when approaching), never a pull. Why: the penalty's compliant layer is
+//           undamped, and a body pressed by a load applied at once rings on it, off the surface
+//           for spells; with friction the ringing makes a stuck body walk and lets sideways
+//           motion grow from round-off (docs/scenes.md#rigid-objects). The energy it takes is
+//           the work of the step's dashpot forces f_d on the particles' own motion relative to
+//           the surface, -f_d . (x^{n+1} - x^n - V dt): the ledger's contact_damping column, a
+//           numerical dissipation named as one (a bounce loses energy by it). Booked as c_p u_n^2
+//           dt from the FLIP velocity instead, it over-counted: a pushed particle moves with the
+//           velocity its strain sees, and v_p's ringing added to the sum (energy_error +0.20 on
+//           a block settling on a slope). Stable with the penalty's frequency times the step at
+//           most 1 while zeta <= 0.5 (c_p dt / m_p <= 1).
 // The force joins the particle's internal force in particles-to-grid (f_p S_Ip). The rigid
 // objects' particles put no mass on the grid in this mode, so node contact never meets them.
 #pragma once
@@ -141,6 +154,11 @@ class RigidParticleContact {
   double power() const { return power_; }
   /// The slip's heat at the last evaluate() [J], >= 0: the Coulomb work since the one before.
   double friction_heat() const { return heat_; }
+  /// The energy the dashpots took over the step just made [J] (header comment, "damping"; 0
+  /// without): -sum_p f_d . (x_p - x_p at the last evaluate() - V dt), the work of the forces the
+  /// step applied on the particles' own motion relative to the surface. Call it before the next
+  /// evaluate(), with the particles in the same order.
+  double damper_work(const Particles& P, double dt, int threads) const;
   /// max over the deformable bodies' materials of c0 + V_c [m/s] (header comment, "speed"): the
   /// time step's signal speed is at least this, so that the penalty's frequency times the step
   /// stays at most 1 after the bodies have slowed down.
@@ -160,7 +178,9 @@ class RigidParticleContact {
   double mu_;  ///< contact.mu
   std::vector<Vec3> force_;
   std::optional<double> last_time_;  ///< of the last evaluate(): the anchors' carry, V (t - t_last)
-  double energy_ = 0.0, power_ = 0.0, heat_ = 0.0;
+  double damping_;                   ///< contact.penalty_damping
+  std::vector<Vec3> damper_force_, evaluated_at_;  ///< per particle, with damping
+  double energy_ = 0.0, power_ = 0.0, heat_ = 0.0, damper_power_ = 0.0;
   Vec3 total_force_ = Vec3::Zero();
 };
 

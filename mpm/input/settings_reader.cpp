@@ -142,6 +142,15 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
         "penalty against the rigid geometry's exact surface, with Coulomb friction mu",
         "nodes");
     ph.contact.rigid = rigid == "particles" ? RigidContact::particles : RigidContact::nodes;
+    ph.contact.penalty_damping = c->number_or(
+        "penalty_damping", 0.0, Range::closed(0.0, 0.5),
+        "damping of the contact at the particles, a fraction of each particle's critical damping "
+        "[-]");
+    if (ph.contact.type == ContactType::friction && ph.contact.rigid != RigidContact::particles &&
+        c->has("penalty_damping"))
+      c->problems().add(c->key_path("penalty_damping"),
+                        "damps the penalty of the contact at the particles only: set "
+                        "\"rigid_contact\": \"particles\", or remove the key");
     if (ph.contact.type == ContactType::friction &&
         ph.contact.detection == ContactDetection::separation &&
         ph.contact.normal != ContactNormal::logistic_regression)
@@ -152,7 +161,7 @@ void read_physics(JsonReader& root, PhysicsSpec& ph) {
     // there would be read and ignored, so it is refused (issue 53). A scene that extends one with
     // friction removes the inherited keys with null (RFC 7396).
     if (ph.contact.type == ContactType::single_velocity) {
-      for (const char* key : {"mu", "normal", "rigid_contact"})
+      for (const char* key : {"mu", "normal", "rigid_contact", "penalty_damping"})
         if (c->has(key))
           c->problems().add(c->key_path(key),
                             "read only by the \"friction\" contact (also called \"approach\"); "

@@ -110,6 +110,9 @@ MemoryEstimate estimate_memory(const Scene& scene, std::optional<std::size_t> pa
   if (scene.rigid_contact_at_particles()) per_particle += sizeof(Vec3);
   // a_p, its friction's stick-spring anchor
   if (scene.rigid_friction_at_particles()) per_particle += sizeof(Vec3);
+  // the dashpots' forces and where they act from (contact.penalty_damping)
+  if (scene.rigid_contact_at_particles() && scene.physics.contact.penalty_damping > 0.0)
+    per_particle += 2 * sizeof(Vec3);
   per_particle += stencil_bytes(scene.solver.interpolation);
   per_particle += 2 * sizeof(int);  // scatter order: index and tile (mpm/step/scatter_order.hpp)
   e.particle_bytes = e.particles * per_particle;

@@ -246,6 +246,9 @@ struct ContactSpec {
   ContactNormal normal = ContactNormal::mass_gradients;
   ContactDetection detection = ContactDetection::approach;
   RigidContact rigid = RigidContact::nodes;
+  /// The penalty's damping at the particles, a fraction of each particle's critical damping
+  /// 2 sqrt(k_p m_p) [-] (contact/rigid_particle_contact.hpp, "damping"); 0: none.
+  double penalty_damping = 0.0;
 };
 
 /// Artificial bulk viscosity, report eq. 12 (von Neumann & Richtmyer 1950, Wilkins 1980):

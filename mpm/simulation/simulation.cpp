@@ -114,6 +114,9 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
     sinks_.plastic = ledger_.add_sink_column("plastic_work", /*in_balance=*/false);
   // The energy stored in the rigid objects' contact at the particles: it rises and falls.
   if (rigid_contact_) sinks_.contact_energy = ledger_.add_sink_column("contact_energy");
+  // Its dashpots' dissipation (contact.penalty_damping), a numerical sink named as one.
+  if (rigid_contact_ && ph.contact.penalty_damping > 0.0)
+    sinks_.contact_damping = ledger_.add_sink_column("contact_damping");
   restart_ledger();
 }
 
@@ -308,6 +311,10 @@ void Simulation::book(double dt) {
                       last_.grid.external_impulse + last_.particles.external_impulse,
                       external_work);
   double rigid_friction_heat = 0.0;
+  if (sinks_.contact_damping >= 0)  // the step's dashpots, on the motion they acted on
+    ledger_.add_sink(sinks_.contact_damping,
+                     ranks_.sum(std::vector<double>{
+                         rigid_contact_->damper_work(particles_, dt, grid_.threads())})[0]);
   if (rigid_contact_) {  // the contact's energy at t^{n+1}, its forces for the next step, and the
     // heat of the slip since t^n
     const std::vector<double> sums = evaluate_rigid_contact();

@@ -127,7 +127,8 @@ class Simulation {
   /// Ledger sink columns registered for this scene's physics (-1: not registered).
   struct SinkColumns {
     int viscous = -1, friction = -1, wall_friction = -1, eroded = -1, plastic = -1;
-    int contact_energy = -1;  ///< stored, not a sink: the particles' contact with rigid objects
+    int contact_energy = -1;   ///< stored, not a sink: the particles' contact with rigid objects
+    int contact_damping = -1;  ///< its dashpots' dissipation (contact.penalty_damping)
   } sinks_;
   long failed_ = 0, converted_ = 0, faulted_ = 0, removed_ = 0, narrowed_ = 0;
   std::vector<FaultInjection> injections_;
