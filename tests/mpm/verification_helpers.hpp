@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <functional>
+#include <stdexcept>
 #include <string>
 
 #include "mpm/input/scene_reader.hpp"
@@ -59,6 +61,66 @@ inline Json axisymmetric_case01_patch() {
            {{"sphere",
              {{"geometry", {{"center", {9.75e-3, 0.0, 0.0}}}}, {"particles_per_cell", {2, 2}}}},
             {"target", {{"particles_per_cell", {2, 2}}}}}}};
+}
+
+/// The index of the scene's object `name` (Particles::object).
+inline int object_index(const Scene& s, const std::string& name) {
+  for (std::size_t o = 0; o < s.objects.size(); ++o)
+    if (s.objects[o].name == name) return static_cast<int>(o);
+  throw std::invalid_argument("no object " + name);
+}
+
+/// One object's centre of mass [m], its velocity [m/s], and its spin about the centre in the x-y
+/// plane, omega_z = sum m (r x u)_z / sum m |r|^2 [rad/s] (r, u: position and velocity relative to
+/// the centre's), the rigid-body fit of the particles' motion; its mass [kg] and kinetic energy
+/// [J].
+struct BodyMotion {
+  Vec3 centre = Vec3::Zero(), velocity = Vec3::Zero();
+  double omega = 0.0, mass = 0.0, kinetic_energy = 0.0;
+};
+inline BodyMotion motion_of(const Particles& P, int object) {
+  BodyMotion b;
+  Vec3 mx = Vec3::Zero(), mv = Vec3::Zero();
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.object[p] != object) continue;
+    b.mass += P.mass[p];
+    mx += P.mass[p] * P.x[p];
+    mv += P.mass[p] * P.v[p];
+    b.kinetic_energy += 0.5 * P.mass[p] * P.v[p].squaredNorm();
+  }
+  b.centre = mx / b.mass;
+  b.velocity = mv / b.mass;
+  double angular = 0.0, inertia = 0.0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.object[p] != object) continue;
+    const Vec3 r = P.x[p] - b.centre, u = P.v[p] - b.velocity;
+    angular += P.mass[p] * (r(0) * u(1) - r(1) * u(0));
+    inertia += P.mass[p] * (r(0) * r(0) + r(1) * r(1));
+  }
+  b.omega = angular / inertia;
+  return b;
+}
+
+/// How closely a body's velocity along y follows a law of friction over a run to its end (a block
+/// sliding to a stop, one dragged by a moving floor): the worst |v_y - law(t)| while t < t_change
+/// and the worst |v_y - after| once t > 1.05 t_change (the law's end, given a twentieth of it to
+/// settle), each over `scale` [m/s].
+struct LawFollowed {
+  double worst_before = 0.0, worst_after = 0.0;  ///< [-]
+};
+inline LawFollowed follow_along_y(Simulation& sim, int object,
+                                  const std::function<double(double)>& law, double t_change,
+                                  double after, double scale) {
+  LawFollowed f;
+  while (!sim.finished()) {
+    sim.step();
+    const double vy = motion_of(sim.particles(), object).velocity(1);
+    if (sim.time() < t_change)
+      f.worst_before = std::max(f.worst_before, std::abs(vy - law(sim.time())) / scale);
+    else if (sim.time() > 1.05 * t_change)
+      f.worst_after = std::max(f.worst_after, std::abs(vy - after) / scale);
+  }
+  return f;
 }
 
 /// The ledger's sink column `name` [J] (e.g. "friction_heat"); 0 when the scene has no such

@@ -25,29 +25,8 @@ namespace {
 // Small grids: one thread runs them faster than two (docs/performance.md#threads).
 constexpr int kThreads = 1;
 
-int object_index(const Scene& s, const std::string& name) {
-  for (std::size_t o = 0; o < s.objects.size(); ++o)
-    if (s.objects[o].name == name) return static_cast<int>(o);
-  throw std::invalid_argument("no object " + name);
-}
-
-// The mass-weighted mean velocity of one object's particles [m/s] and their kinetic energy [J].
-struct ObjectMotion {
-  Vec3 velocity = Vec3::Zero();
-  double kinetic_energy = 0.0, mass = 0.0;
-};
-ObjectMotion motion_of(const Particles& P, int object) {
-  ObjectMotion m;
-  Vec3 p = Vec3::Zero();
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.object[i] != object) continue;
-    m.mass += P.mass[i];
-    p += P.mass[i] * P.v[i];
-    m.kinetic_energy += 0.5 * P.mass[i] * P.v[i].squaredNorm();
-  }
-  m.velocity = p / m.mass;
-  return m;
-}
+using test::motion_of;
+using test::object_index;
 
 // The worst |energy_error| over a run of the spanning block (20 us) with `cells` along x, and the
 // last.
@@ -96,7 +75,7 @@ BOOST_AUTO_TEST_CASE(a_rigid_piston_does_the_work_of_the_elastic_wave_and_transl
     worst_position = std::max(worst_position, (P.x[p] - x0[p] - Vec3(V * t, 0, 0)).norm());
     worst_stress = std::max(worst_stress, P.state[p].stress.norm());
   }
-  const ObjectMotion b = motion_of(P, bar);
+  const test::BodyMotion b = motion_of(P, bar);
   BOOST_TEST_MESSAGE("rigid piston at 1 m/s, t = "
                      << t << " s: work " << r.external_work << " J (closed " << work
                      << "), impulse " << r.boundary_impulse(0) << " N s (" << impulse
@@ -120,16 +99,9 @@ BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_rigid_floor_follows_coulombs_law_and_t
   Simulation sim(scene, kThreads);
   const int block = object_index(scene, "block");
   const double v0 = 5.0, g = 1.0e5, mu = 0.25, t_stop = v0 / (mu * g);
-  double worst_sliding = 0.0, worst_stopped = 0.0;
-  while (!sim.finished()) {
-    sim.step();
-    const double vy = motion_of(sim.particles(), block).velocity(1);
-    if (sim.time() < t_stop)
-      worst_sliding = std::max(worst_sliding, std::abs(vy - (v0 - mu * g * sim.time())) / v0);
-    else if (sim.time() > 1.05 * t_stop)
-      worst_stopped = std::max(worst_stopped, std::abs(vy) / v0);
-  }
-  const ObjectMotion b = motion_of(sim.particles(), block);
+  const auto [worst_sliding, worst_stopped] = test::follow_along_y(
+      sim, block, [&](double t) { return v0 - mu * g * t; }, t_stop, 0.0, v0);
+  const test::BodyMotion b = motion_of(sim.particles(), block);
   const double lost = 0.5 * b.mass * (v0 * v0 - b.velocity(1) * b.velocity(1));
   const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
   const LedgerRow r = sim.ledger().row();
@@ -221,16 +193,9 @@ BOOST_AUTO_TEST_CASE(a_block_on_a_moving_rigid_floor_is_carried_along_by_frictio
        {"grid", {{"outflow", "remove"}}}});
   Simulation sim(scene, kThreads);
   const int block = object_index(scene, "block");
-  double worst_slip = 0.0, worst_carried = 0.0;
-  while (!sim.finished()) {
-    sim.step();
-    const double vy = motion_of(sim.particles(), block).velocity(1);
-    if (sim.time() < t_stick)
-      worst_slip = std::max(worst_slip, std::abs(vy - mu * g * sim.time()) / V);
-    else if (sim.time() > 1.05 * t_stick)
-      worst_carried = std::max(worst_carried, std::abs(vy - V) / V);
-  }
-  const ObjectMotion b = motion_of(sim.particles(), block);
+  const auto [worst_slip, worst_carried] = test::follow_along_y(
+      sim, block, [&](double t) { return mu * g * t; }, t_stick, V, V);
+  const test::BodyMotion b = motion_of(sim.particles(), block);
   const LedgerRow r = sim.ledger().row();
   const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
   const double work = b.mass * V * V;

@@ -41,41 +41,9 @@ Json at_particles(Json patch) {
   return p;
 }
 
-int object_index(const Scene& s, const std::string& name) {
-  for (std::size_t o = 0; o < s.objects.size(); ++o)
-    if (s.objects[o].name == name) return static_cast<int>(o);
-  throw std::invalid_argument("no object " + name);
-}
-
-// One object's centre of mass [m], its velocity [m/s], and its spin about the centre in the x-y
-// plane, omega_z = sum m (r x u)_z / sum m |r|^2 [rad/s] (r, u: position and velocity relative to
-// the centre's), the rigid-body fit of the particles' motion.
-struct BodyMotion {
-  Vec3 centre = Vec3::Zero(), velocity = Vec3::Zero();
-  double omega = 0.0, mass = 0.0, kinetic_energy = 0.0;
-};
-BodyMotion motion_of(const Particles& P, int object) {
-  BodyMotion b;
-  Vec3 mx = Vec3::Zero(), mv = Vec3::Zero();
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    if (P.object[p] != object) continue;
-    b.mass += P.mass[p];
-    mx += P.mass[p] * P.x[p];
-    mv += P.mass[p] * P.v[p];
-    b.kinetic_energy += 0.5 * P.mass[p] * P.v[p].squaredNorm();
-  }
-  b.centre = mx / b.mass;
-  b.velocity = mv / b.mass;
-  double angular = 0.0, inertia = 0.0;
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    if (P.object[p] != object) continue;
-    const Vec3 r = P.x[p] - b.centre, u = P.v[p] - b.velocity;
-    angular += P.mass[p] * (r(0) * u(1) - r(1) * u(0));
-    inertia += P.mass[p] * (r(0) * r(0) + r(1) * r(1));
-  }
-  b.omega = angular / inertia;
-  return b;
-}
+using test::BodyMotion;
+using test::motion_of;
+using test::object_index;
 
 }  // namespace
 
@@ -387,17 +355,8 @@ BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_rigid_floor_with_friction_follows_coul
       at_particles({{"objects", {{"block", block}}}, {"solver", {{"gravity", {0, 0, 0}}}}}));
   Simulation sim(scene, kThreads);
   const int id = object_index(scene, "block");
-  double worst_sliding = 0.0, worst_stopped = 0.0;
-  while (!sim.finished()) {
-    sim.step();
-    const double vy = motion_of(sim.particles(), id).velocity(1);
-    if (sim.time() < t_stop) {
-      const double coulomb = v0 - mu * g * ramped_time(sim.time(), kRamp);
-      worst_sliding = std::max(worst_sliding, std::abs(vy - coulomb) / v0);
-    } else if (sim.time() > 1.05 * t_stop) {
-      worst_stopped = std::max(worst_stopped, std::abs(vy) / v0);
-    }
-  }
+  const auto [worst_sliding, worst_stopped] = test::follow_along_y(
+      sim, id, [&](double t) { return v0 - mu * g * ramped_time(t, kRamp); }, t_stop, 0.0, v0);
   const BodyMotion b = motion_of(sim.particles(), id);
   const double lost = 0.5 * b.mass * (v0 * v0 - b.velocity(1) * b.velocity(1));
   const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
