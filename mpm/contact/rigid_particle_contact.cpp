@@ -19,22 +19,43 @@ RigidParticleContact::RigidParticleContact(const Scene& scene,
                                            std::vector<Vec3> velocities,
                                            std::vector<Vec3> half_widths)
     : scene_(scene),
-      surfaces_(std::move(surfaces)),
-      velocities_(std::move(velocities)),
       half_widths_(std::move(half_widths)),
       h_(scene.grid.min_spacing()),
       prism_z_(scene.grid.per_metre_of_thickness()),
-      axes_(scene.grid.dimensions()),
-      mu_(scene.physics.contact.mu),
-      damping_(scene.physics.contact.penalty_damping) {
+      axes_(scene.grid.dimensions()) {
   const std::vector<std::optional<Vec3>> rigid = scene.rigid_field_velocities();
   for (std::size_t f = 0; f < rigid.size(); ++f) {
     rigid_.push_back(rigid[f].has_value());
-    if (rigid[f] && (f >= surfaces_.size() || !surfaces_[f]))
+    if (!rigid[f] || !scene.rigid_contact_at_particles()) continue;
+    if (f >= surfaces.size() || !surfaces[f])
       throw std::invalid_argument(
           "/physics/contact/rigid_contact: \"particles\" needs each rigid object's own surface, "
           "and a rigid object here is cut by an earlier object (its seeded body is not its "
           "geometry): place the objects apart, or use \"nodes\"");
+    Surface s;
+    s.geometry = std::move(surfaces[f]);
+    s.velocity = f < velocities.size() ? velocities[f] : Vec3::Zero();
+    s.mu = scene.physics.contact.mu;
+    s.damping = scene.physics.contact.penalty_damping;
+    surfaces_.push_back(std::move(s));
+  }
+  // The `wall` faces (grid.wall_contact "particles"): each a plane at rest, inward . x = offset.
+  const GridSpec& g = scene.grid;
+  if (g.walls_at_particles())
+    for (int f = 0; f < 6; ++f) {
+      if (g.faces[std::size_t(f)] != FaceCondition::wall || !g.is_domain_face(f)) continue;
+      const int axis = f / 2;
+      const bool lower = f % 2 == 0;
+      Surface s;
+      s.inward = (lower ? 1.0 : -1.0) * Vec3::Unit(axis);
+      s.offset = lower ? g.lower(axis) : -g.upper(axis);
+      s.mu = g.wall_friction[std::size_t(f)];
+      s.damping = g.wall_penalty_damping;
+      surfaces_.push_back(s);
+    }
+  for (const Surface& s : surfaces_) {
+    friction_ = friction_ || s.mu > 0.0;
+    damped_ = damped_ || s.damping > 0.0;
   }
   // The closing speed the scene starts with: its fastest deformable body's and its fastest
   // rigid object's speeds added (header comment, "speed").
@@ -55,7 +76,11 @@ RigidParticleContact::RigidParticleContact(const Scene& scene,
     // a block dropped on a floor at 600 m/s fail the energy check).
     const double slower = std::min(1.0, std::pow(0.5 / scene.time.multiplier, 2));
     stiffness_.push_back(slower * kStiffness * c * c / (h_ * h_));
-    if (deformable[i]) signal_speed_ = std::max(signal_speed_, c);
+    // A wall's: kWallSpeed times the closing speed (header comment, "walls").
+    const double c_wall = c + (kWallSpeed - 1.0) * closing;
+    wall_stiffness_.push_back(slower * kStiffness * c_wall * c_wall / (h_ * h_));
+    if (deformable[i])
+      signal_speed_ = std::max(signal_speed_, scene.grid.walls_at_particles() ? c_wall : c);
   }
 }
 
@@ -116,20 +141,33 @@ Rub stick_or_slip(Vec3& anchor, const Vec3& x, double F_n, const Vec3& normal, c
 }
 }  // namespace
 
+SurfaceDistance RigidParticleContact::distance(const Surface& s, const Vec3& x, double t) const {
+  if (s.geometry) return surface_distance(*s.geometry, x - s.velocity * t, prism_z_);
+  return {s.inward.dot(x) - s.offset, s.inward};  // a wall's plane
+}
+
 void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(P.size());
   force_.resize(P.size());
-  const bool friction = mu_ > 0.0;
-  const bool damped = damping_ > 0.0;
-  if (damped) {  // the dashpots' forces, and where they act from: their work over the step
-    damper_force_.assign(P.size(), Vec3::Zero());
-    evaluated_at_ = P.x;
-  }
+  const bool friction = friction_;
+  const bool damped = damped_;
   // The anchors are carried with their surfaces over the time since the last evaluation (none at
   // the first, also after a restart: the checkpoint's anchors were carried to its time).
   const double carried = last_time_ ? t - *last_time_ : 0.0;
   const bool advance = carried > 0.0;
   last_time_ = t;
+  if (damped) {  // the dashpots' forces, and where they act from: their work over the step
+    if (P.damper_velocity.size() != P.size())
+      throw std::logic_error("RigidParticleContact::evaluate: no damper velocity per particle");
+    // The velocity each particle moved with since the last evaluation, in the same order (the
+    // step's: on several ranks the last one came after the migration); a second evaluation at
+    // the same time reads the stored one (header comment, "damping").
+    if (advance)
+      for (std::size_t p = 0; p < std::min(P.size(), evaluated_at_.size()); ++p)
+        P.damper_velocity[p] = (P.x[p] - evaluated_at_[p]) / carried;
+    damper_force_.assign(P.size(), Vec3::Zero());
+    evaluated_at_ = P.x;
+  }
   if (friction && P.friction_anchor.size() != P.size())
     throw std::logic_error("RigidParticleContact::evaluate: no friction anchor per particle");
   const double onset = kOnset * h_;  // delta_s [m]
@@ -147,8 +185,9 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
     for (std::ptrdiff_t p = sums.begin(chunk); p < sums.end(chunk); ++p) {
       Vec3& f_p = force_[p];
       f_p.setZero();
-      // The surface that pushes hardest: its friction acts (header comment, "corners").
-      double hardest = 0.0;
+      // The surface with the largest Coulomb bound mu F: its friction acts (header comment,
+      // "corners").
+      double rub_push = 0.0, bound = -1.0;  // its push F_n [N] and mu F_n
       std::size_t rubbing = 0;
       Vec3 rubbing_normal = Vec3::Zero();
       const std::size_t field = P.field[p];
@@ -165,14 +204,16 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
       const Vec3& l = P.half_width.empty() ? half_widths_[object] : P.half_width[p];
       double widest = l(0);
       for (int d = 1; d < axes_; ++d) widest = std::min(widest, l(d));
-      double reach = -1.0;                                     // not yet clipped
-      const double k = stiffness_[P.material[p]] * P.mass[p];  // k_p [N/m]
+      double reach = -1.0;  // not yet clipped
+      double rub_k = 0.0;   // the rubbing surface's k_p [N/m]
       for (std::size_t r = 0; r < surfaces_.size(); ++r) {
-        if (!surfaces_[r]) continue;
-        const SurfaceDistance s =
-            surface_distance(*surfaces_[r], P.x[p] - velocities_[r] * t, prism_z_);
+        const Surface& surface = surfaces_[r];
+        const SurfaceDistance s = distance(surface, P.x[p], t);
         if (!(widest - s.distance > 0.0)) continue;  // no overlap, whatever the clips
-        if (reach < 0.0)
+        const bool wall = !surface.geometry;
+        const double k =
+            (wall ? wall_stiffness_ : stiffness_)[P.material[p]] * P.mass[p];  // k_p [N/m]
+        if (reach < 0.0 && !wall)
           reach = std::min(
               widest,
               std::max(
@@ -182,34 +223,38 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
         if (normal.squaredNorm() == 0.0) continue;  // no direction (a joint, an axis): no push
         // ... nor further than the seed point lay from this object as seeded: a body seeded
         // around a rigid object (cut by it) starts without overlap too.
-        const double seeded = surface_distance(*surfaces_[r], P.X[p], prism_z_).distance;
-        const double overlap = std::min(reach, std::max(0.0, seeded)) - s.distance;
+        const double seeded = distance(surface, P.X[p], 0.0).distance;
+        const double overlap = std::min(wall ? widest : reach, std::max(0.0, seeded)) - s.distance;
         if (!(overlap > 0.0)) continue;
         // The push, with the dashpot's -c u_n where damped.
         double F = push(k, onset, overlap);
-        if (damped) {
-          const double u_n = (P.v[p] - velocities_[r]).dot(normal);  // < 0: approaching
-          const double F_d =
-              std::max(-F, -2.0 * damping_ * std::sqrt(k * P.mass[p]) * u_n);  // never a pull
+        if (surface.damping > 0.0) {
+          const double u_n =
+              (P.damper_velocity[p] - surface.velocity).dot(normal);  // < 0: approaching
+          const double F_d = std::max(
+              -F, -2.0 * surface.damping * std::sqrt(k * P.mass[p]) * u_n);  // never a pull
           damper_force_[p] += F_d * normal;
-          sum.damper_power += F_d * normal.dot(velocities_[r]);
+          sum.damper_power += F_d * normal.dot(surface.velocity);
           F += F_d;
         }
         const Vec3 f = F * normal;
         f_p += f;
-        if (F > hardest) {
-          hardest = F;
+        if (F > 0.0 && surface.mu * F > bound) {
+          bound = surface.mu * F;
+          rub_push = F;
+          rub_k = k;
           rubbing = r;
           rubbing_normal = normal;
         }
         sum.energy += stored_energy(k, onset, overlap);
         sum.force += f;
-        sum.power += f.dot(velocities_[r]);
+        sum.power += f.dot(surface.velocity);
       }
       if (!friction) continue;
-      const Vec3 V = hardest > 0.0 ? velocities_[rubbing] : Vec3::Zero();
-      const Rub rub = stick_or_slip(P.friction_anchor[p], P.x[p], hardest, rubbing_normal, V,
-                                    advance, carried, k, mu_);
+      const Vec3 V = rub_push > 0.0 ? surfaces_[rubbing].velocity : Vec3::Zero();
+      const double mu = rub_push > 0.0 ? surfaces_[rubbing].mu : 0.0;
+      const Rub rub = stick_or_slip(P.friction_anchor[p], P.x[p], rub_push, rubbing_normal, V,
+                                    advance, carried, rub_k, mu);
       if (rub.heat > 0.0) {
         const auto& params = scene_.materials[P.material[p]].material.model.params();
         retain_heat(P.state[p], rub.heat / P.mass[p], params.heating.enabled, params.specific_heat);
@@ -237,7 +282,7 @@ void RigidParticleContact::evaluate(Particles& P, double t, int threads) {
 }
 
 double RigidParticleContact::damper_work(const Particles& P, double dt, int threads) const {
-  if (!(damping_ > 0.0)) return 0.0;
+  if (!damped_) return 0.0;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(std::min(P.size(), evaluated_at_.size()));
   ChunkSums<double> sums(n, 512);
   const std::ptrdiff_t chunks = sums.chunks();

@@ -1,5 +1,26 @@
 // Contact against rigid objects at the particles (physics.contact.rigid_contact = "particles";
-// docs/scenes.md#rigid-objects), instead of at the shared nodes (contact/contact.hpp).
+// docs/scenes.md#rigid-objects), instead of at the shared nodes (contact/contact.hpp); and
+// against the `wall` faces of the grid (grid.wall_contact = "particles"; docs/scenes.md#grid),
+// instead of at their face nodes (grid/wall.cpp). A wall is a plane at rest, phi(x) = n . x -
+// offset with n its inward normal, its friction the face's wall_friction and its damping
+// grid.wall_penalty_damping; a rigid object's are contact.mu and contact.penalty_damping.
+// Why for walls: a wall's face nodes catch each arrival inelastically and hold and release a
+// ringing face layer, so a body that stays on a wall loses energy without converging (a block
+// spanning two walls: energy_error -0.94 at h, -0.87 at h/2; a block stuck under a tilted load
+// applied at once, -0.50; one in a three-wall corner, -0.097; docs/verification.md). At the
+// particles nothing is caught: the same three keep their books within 0.03, 1e-4 and 2e-4.
+// What differs for walls: the wall's plane ends the grid, so a particle whose centre passes it
+// leaves the grid and stops the run, where one that passes a rigid object's surface is pushed on
+// from inside. So a wall's push counts the particle's whole domain (no clip to the seed point's
+// depth in its body, which at a curved body's surface left a reach of microns and let a Hertz
+// sphere's particle through at 10 m/s; an audit's catch), and its stiffness takes the closing
+// speed kWallSpeed = 4 times, k_p = kStiffness m_p (c0 + 4 V_c)^2 / h^2: a particle alone
+// arriving at V_c is stopped within its reach l = h / 4 when the energy stored there, k_p l^2 /
+// 6, exceeds m_p V_c^2 / 2, i.e. for c0 + a V_c >= sqrt(12) V_c, a >= 3.46. With c0 + V_c a
+// soft block (c0 = 116 m/s) thrown at 50 to 200 m/s, and an aluminium one at 1800 m/s, went
+// through at the first contact (a new user's trial). The time step keeps this signal speed.
+// A load beyond about rho0 (c0 + 4 V_c)^2 / 4 still pushes a particle through; the walls at the
+// nodes hold any.
 //
 // Why: at the nodes, each contact node holds the rigid surface's normal at its own place, and
 // the one-sided holds of a patch of nodes act as a kinematic constraint. On a curved surface the
@@ -87,15 +108,25 @@
 //           temperature as plastic work is (models/thermal/adiabatic_heating.hpp; the rigid
 //           object takes none).
 //   corners a particle that two surfaces push (a corner, a sheet between two dies) rubs on the
-//           one that pushes it hardest only, with that one's F_n, n and V: its friction is low
-//           there by the other's share (at most half), on the particles within a cell of the
-//           corner. One spring in the plane normal to the summed push would pull the particle
-//           onto the wall it leaves (adhesion), carry the anchor at a mean of the surfaces'
-//           velocities, and give no friction where opposed pushes cancel. An anchor per
-//           surface would be exact (open).
+//           one whose Coulomb bound mu F_n is the largest only, with that one's F_n, n and V
+//           (with one mu: the one that pushes it hardest): its friction is low there by the
+//           other's share (at most half), on the particles within a cell of the corner. Chosen by
+//           the push alone, a frictionless wall beside a rough one took the edge row's friction
+//           away (a block sliding along an x- wall at mu 0.5 beside a frictionless y- wall
+//           slowed at 0.938 of Coulomb's rate; an audit's catch). One spring in the plane normal
+//           to the summed push would pull the particle onto the wall it leaves (adhesion), carry
+//           the anchor at a mean of the surfaces' velocities, and give no friction where opposed
+//           pushes cancel. An anchor per surface would be exact (open).
 //   damping with contact.penalty_damping = zeta > 0 (opt-in; default 0), a dashpot beside each
-//           push: F = max(0, F(delta) - c_p u_n), c_p = 2 zeta sqrt(k_p m_p), u_n = (v_p - V) . n
-//           (negative when approaching), never a pull. Why: the penalty's compliant layer is
+//           push: F = max(0, F(delta) - c_p u_n), c_p = 2 zeta sqrt(k_p m_p), u_n = (u_p - V) . n
+//           (negative when approaching), never a pull, with u_p = (x^n - x^{n-1}) / dt the
+//           velocity the particle moved with over the last step (Particles::damper_velocity; its
+//           initial velocity at the start), the half-step velocity of central-difference damping.
+//           Why not v_p: a pushed particle moves with the velocity its strain sees (below,
+//           "motion"), and its FLIP velocity drifts from it; a dashpot on v_p pumped energy into
+//           a plane-strain block resting on a wall at zeta 0.3 (energy_error -31 by 1 ms, the
+//           contact_damping column negative; zeta 0.5: stopped on the energy check at 703 us; an
+//           audit's catch), the same on a rigid floor. Why damp: the penalty's compliant layer is
 //           undamped, and a body pressed by a load applied at once rings on it, off the surface
 //           for spells; with friction the ringing makes a stuck body walk and lets sideways
 //           motion grow from round-off (docs/scenes.md#rigid-objects). The energy it takes is
@@ -105,7 +136,8 @@
 //           dt from the FLIP velocity instead, it over-counted: a pushed particle moves with the
 //           velocity its strain sees, and v_p's ringing added to the sum (energy_error +0.20 on
 //           a block settling on a slope). Stable with the penalty's frequency times the step at
-//           most 1 while zeta <= 0.5 (c_p dt / m_p <= 1).
+//           most 1 while zeta <= 0.5 (central-difference damping with the half-step velocity is
+//           stable for omega dt <= 2 (sqrt(1 + zeta^2) - zeta) = 1.24 at zeta 0.5).
 // The force joins the particle's internal force in particles-to-grid (f_p S_Ip). The rigid
 // objects' particles put no mass on the grid in this mode, so node contact never meets them.
 #pragma once
@@ -114,6 +146,7 @@
 #include <vector>
 
 #include "mpm/geometry/geometry.hpp"
+#include "mpm/geometry/surface_distance.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/scene/scene.hpp"
 
@@ -127,10 +160,14 @@ class RigidParticleContact {
   /// The onset delta_s in units of h (header comment): a quarter of a cell, uGIMP's half-width
   /// at two particles per cell.
   static constexpr double kOnset = 0.25;
+  /// A wall's stiffness takes the closing speed this many times (header comment, "walls").
+  static constexpr double kWallSpeed = 4.0;
 
   /// `surfaces` and `velocities` per velocity field (GridSettings::rigid_surface and
-  /// rigid_velocity); `half_widths` per object [m]. Throws std::invalid_argument where a rigid
-  /// field has no surface of its own (an object cut by an earlier one): nothing would meet it.
+  /// rigid_velocity), met when scene.rigid_contact_at_particles(); the `wall` faces when
+  /// scene.grid.walls_at_particles(); `half_widths` per object [m]. Throws std::invalid_argument
+  /// where a rigid field met here has no surface of its own (an object cut by an earlier one):
+  /// nothing would meet it.
   RigidParticleContact(const Scene& scene, std::vector<std::optional<Geometry>> surfaces,
                        std::vector<Vec3> velocities, std::vector<Vec3> half_widths);
 
@@ -165,20 +202,31 @@ class RigidParticleContact {
   double signal_speed() const { return signal_speed_; }
 
  private:
+  /// One surface the particles meet: a rigid object's or a wall's.
+  struct Surface {
+    std::optional<Geometry> geometry;  ///< a rigid object's at t = 0, moved by V t; none: a wall
+    Vec3 inward = Vec3::Zero();        ///< a wall's plane, inward . x = offset [-, m]
+    double offset = 0.0;
+    Vec3 velocity = Vec3::Zero();  ///< V [m/s]
+    double mu = 0.0;               ///< contact.mu, or the wall face's wall_friction
+    double damping = 0.0;          ///< contact.penalty_damping, or grid.wall_penalty_damping
+  };
+  /// phi(x) and the outward normal of surface s at time t.
+  SurfaceDistance distance(const Surface& s, const Vec3& x, double t) const;
+
   const Scene& scene_;
-  std::vector<std::optional<Geometry>> surfaces_;  // per field
-  std::vector<Vec3> velocities_;                   // per field
-  std::vector<Vec3> half_widths_;                  // per object
-  std::vector<double> stiffness_;  // per material: kStiffness (c0 + V_c)^2 / h^2 [1/s^2]
+  std::vector<Surface> surfaces_;
+  std::vector<Vec3> half_widths_;       // per object
+  std::vector<double> stiffness_;       // per material: kStiffness (c0 + V_c)^2 / h^2 [1/s^2]
+  std::vector<double> wall_stiffness_;  // per material: with c0 + kWallSpeed V_c [1/s^2]
   double signal_speed_ = 0.0;
   std::vector<std::uint8_t> rigid_;  // per field: a rigid object's
   double h_;
   bool prism_z_;
-  int axes_;   ///< the mesh's axes: a 2D grid's particles have no extent along z
-  double mu_;  ///< contact.mu
+  int axes_;  ///< the mesh's axes: a 2D grid's particles have no extent along z
+  bool friction_ = false, damped_ = false;  ///< a surface with mu > 0, with damping > 0
   std::vector<Vec3> force_;
   std::optional<double> last_time_;  ///< of the last evaluate(): the anchors' carry, V (t - t_last)
-  double damping_;                   ///< contact.penalty_damping
   std::vector<Vec3> damper_force_, evaluated_at_;  ///< per particle, with damping
   double energy_ = 0.0, power_ = 0.0, heat_ = 0.0, damper_power_ = 0.0;
   Vec3 total_force_ = Vec3::Zero();

@@ -220,6 +220,25 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
     }
     w->reject_unknown_keys();
   }
+  // How the walls meet the bodies: at their face nodes (grid/wall.cpp) or at the particles, by
+  // the penalty against each wall's plane (contact/rigid_particle_contact.hpp).
+  const std::string wall_contact =
+      r.choice("wall_contact", {"nodes", "particles"},
+               "where the wall faces meet the bodies: at the face nodes, or at the particles, by a "
+               "penalty against the face's plane (with Coulomb friction wall_friction)",
+               "nodes");
+  g.wall_contact = wall_contact == "particles" ? WallContact::particles : WallContact::nodes;
+  if (r.has("wall_contact") && !g.has_walls())
+    r.problems().add(r.key_path("wall_contact"),
+                     "no face is a wall: set a grid.boundary face to \"wall\", or remove the key");
+  g.wall_penalty_damping = r.number_or(
+      "wall_penalty_damping", 0.0, Range::closed(0.0, 0.5),
+      "damping of the walls' contact at the particles, a fraction of each particle's critical "
+      "damping [-]");
+  if (r.has("wall_penalty_damping") && g.wall_contact != WallContact::particles)
+    r.problems().add(r.key_path("wall_penalty_damping"),
+                     "damps the walls' penalty at the particles only: set \"wall_contact\": "
+                     "\"particles\", or remove the key");
   // A moving face beside a no-slip face or a wall with friction: their edge nodes would be held by
   // both (the fixed face zeroes the velocity the moving one imposes, or the wall's friction slows
   // it), with work booked at a velocity the nodes do not have. Refused.

@@ -55,6 +55,10 @@ struct Particles {
   /// surface; x_p itself where it touches nothing. Empty unless rigid_contact = "particles" with
   /// contact.mu > 0.
   std::vector<Vec3> friction_anchor;
+  /// The velocity the particle moved with over the last step, (x^n - x^{n-1}) / dt [m/s] (its
+  /// initial velocity at the start): what the penalty's dashpot at the particles damps
+  /// (contact/rigid_particle_contact.hpp, "damping"). Empty unless that contact is damped.
+  std::vector<Vec3> damper_velocity;
 
   /// f(array) for every per-particle array of kParticleArrays (below), optional ones (q, fault,
   /// removed, id, X) included even when empty: what moves a particle whole (migration between
@@ -112,7 +116,8 @@ inline constexpr auto kParticleArrays = std::make_tuple(
     ParticleArray<std::uint64_t>{"id", "-", &Particles::id, true},
     ParticleArray<Vec3>{"X", "m", &Particles::X, true},
     ParticleArray<Vec3>{"half_width", "m", &Particles::half_width, true},
-    ParticleArray<Vec3>{"friction_anchor", "m", &Particles::friction_anchor, true});
+    ParticleArray<Vec3>{"friction_anchor", "m", &Particles::friction_anchor, true},
+    ParticleArray<Vec3>{"damper_velocity", "m/s", &Particles::damper_velocity, true});
 
 static_assert(aggregate_arity<Particles>() == std::tuple_size_v<decltype(kParticleArrays)>,
               "a Particles array is missing from kParticleArrays");

@@ -38,8 +38,9 @@ class Simulation;
 // 8: the file's length, the faces material reached; 9: the ledger's peak energy input; 10: the
 // particles' reference positions (Particles::X, for body forces); 11: the particles' uGIMP
 // half-widths on a graded grid (Particles::half_width; an empty section on a uniform one); 12:
-// the anchors of friction at the particles (Particles::friction_anchor; empty without it)
-inline constexpr std::uint32_t kCheckpointVersion = 12;
+// the anchors of friction at the particles (Particles::friction_anchor; empty without it); 13:
+// the velocities the dashpots at the particles damp (Particles::damper_velocity; likewise)
+inline constexpr std::uint32_t kCheckpointVersion = 13;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 /// Rank r's checkpoint in DIR: checkpoint.bin for rank 0 (and a one-rank run),
 /// checkpoint.rank<r>.bin for the others.

@@ -56,7 +56,7 @@ double estimated_particle_count(const Scene& scene) {
 }
 
 double estimated_grid_bytes(const Scene& scene) {
-  const GridSpec& g = scene.grid;
+  const GridSpec g = scene.grid.at_the_nodes();  // walls at the particles are free faces there
   // A 2D grid stores one node plane along z (grid/grid.hpp).
   const double nx = g.cells[0] + 3.0, ny = g.cells[1] + 3.0,
                nz = g.planar() ? 1.0 : g.cells[2] + 3.0;
@@ -106,13 +106,13 @@ MemoryEstimate estimate_memory(const Scene& scene, std::optional<std::size_t> pa
   if (scene.grid.graded()) per_particle += sizeof(Vec3);                           // half_width_p
   if (scene.solver.shuffle_particles != 0) per_particle += sizeof(std::uint64_t);  // id_p
   if (scene.has_body_force()) per_particle += sizeof(Vec3);  // b_p (step/body_force.hpp)
-  // f_p, the rigid objects' contact force (contact/rigid_particle_contact.hpp)
-  if (scene.rigid_contact_at_particles()) per_particle += sizeof(Vec3);
+  // f_p, the rigid objects' and walls' contact force (contact/rigid_particle_contact.hpp)
+  if (scene.contact_at_particles()) per_particle += sizeof(Vec3);
   // a_p, its friction's stick-spring anchor
-  if (scene.rigid_friction_at_particles()) per_particle += sizeof(Vec3);
-  // the dashpots' forces and where they act from (contact.penalty_damping)
-  if (scene.rigid_contact_at_particles() && scene.physics.contact.penalty_damping > 0.0)
-    per_particle += 2 * sizeof(Vec3);
+  if (scene.friction_at_particles()) per_particle += sizeof(Vec3);
+  // the dashpots' forces, where they act from and the velocities they damp
+  // (contact.penalty_damping, grid.wall_penalty_damping)
+  if (scene.damping_at_particles()) per_particle += 3 * sizeof(Vec3);
   per_particle += stencil_bytes(scene.solver.interpolation);
   per_particle += 2 * sizeof(int);  // scatter order: index and tile (mpm/step/scatter_order.hpp)
   e.particle_bytes = e.particles * per_particle;

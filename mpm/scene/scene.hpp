@@ -26,6 +26,9 @@ enum class Scheme { usl, musl };  ///< update stress last / modified USL
 /// free: nothing; wall: rigid stationary wall that pushes and never pulls, with Coulomb friction
 /// (grid/wall.cpp).
 enum class FaceCondition { symmetric, fixed, free, wall };
+/// How `wall` faces meet the bodies (grid.wall_contact): at the face nodes (grid/wall.cpp), or at
+/// the particles, by the penalty of contact/rigid_particle_contact.hpp against the face's plane.
+enum class WallContact { nodes, particles };
 /// What a particle that leaves the grid does (grid.outflow): stop the run (a numerical failure), or
 /// leave the simulation with its mass, momentum and kinetic energy booked as outflow.
 enum class Outflow { stop, remove };
@@ -61,8 +64,12 @@ struct GridSpec {
   std::array<int, 3> base_cells{};  ///< grid.cells (the base size); == cells when uniform
   /// Each axis's node coordinates on a graded grid (empty when uniform).
   std::array<GradedAxis, 3> axes;
-  std::array<FaceCondition, 6> faces{};       ///< per face, kFaceNames order
-  std::array<double, 6> wall_friction{};      ///< Coulomb coefficient of each `wall` face [-]
+  std::array<FaceCondition, 6> faces{};           ///< per face, kFaceNames order
+  std::array<double, 6> wall_friction{};          ///< Coulomb coefficient of each `wall` face [-]
+  WallContact wall_contact = WallContact::nodes;  ///< grid.wall_contact
+  /// grid.wall_penalty_damping: the walls' penalty damping at the particles, a fraction of each
+  /// particle's critical damping [-] (contact/rigid_particle_contact.hpp, "damping"); 0: none.
+  double wall_penalty_damping = 0.0;
   std::array<FaceMotion, 6> face_velocity{};  ///< per face, kFaceNames order
   bool has_moving_faces() const {
     for (const FaceMotion& m : face_velocity)
@@ -79,6 +86,20 @@ struct GridSpec {
     for (const FaceCondition f : faces)
       if (f == FaceCondition::wall) return true;
     return false;
+  }
+  /// The `wall` faces act at the particles (grid.wall_contact), not at the nodes.
+  bool walls_at_particles() const { return wall_contact == WallContact::particles && has_walls(); }
+  /// The faces as the nodes see them: walls that act at the particles are free there (and
+  /// frictionless); the Grid is built from this.
+  GridSpec at_the_nodes() const {
+    GridSpec g = *this;
+    if (!walls_at_particles()) return g;
+    for (int f = 0; f < 6; ++f)
+      if (g.faces[std::size_t(f)] == FaceCondition::wall) {
+        g.faces[std::size_t(f)] = FaceCondition::free;
+        g.wall_friction[std::size_t(f)] = 0.0;
+      }
+    return g;
   }
   /// Grid work only on the 2x2x2-node blocks the particles' stencils touch (grid/grid.hpp);
   /// false: every node of the box every step (the 2004 code's dense loops).
@@ -380,18 +401,30 @@ struct Scene {
   /// Whether the particles keep their reference positions (Particles::X): a body force or an
   /// exact displacement reads them.
   bool needs_reference_positions() const {
-    return has_body_force() || output.exact_displacement.has_value() ||
-           rigid_contact_at_particles();
+    return has_body_force() || output.exact_displacement.has_value() || contact_at_particles();
   }
   /// Whether bodies meet the rigid objects at the particles (ContactSpec::rigid), which reads the
   /// seed points (contact/rigid_particle_contact.hpp).
   bool rigid_contact_at_particles() const {
     return physics.contact.rigid == RigidContact::particles && has_rigid_objects();
   }
-  /// Whether that contact has Coulomb friction (contact.mu > 0), which keeps a stick spring's
-  /// anchor per particle (Particles::friction_anchor).
-  bool rigid_friction_at_particles() const {
-    return rigid_contact_at_particles() && physics.contact.mu > 0.0;
+  /// Whether anything meets the bodies at the particles: rigid objects, or `wall` faces
+  /// (grid.wall_contact).
+  bool contact_at_particles() const {
+    return rigid_contact_at_particles() || grid.walls_at_particles();
+  }
+  /// Whether that contact has Coulomb friction (contact.mu > 0 with rigid objects, a wall face's
+  /// wall_friction > 0), which keeps a stick spring's anchor per particle
+  /// (Particles::friction_anchor).
+  bool friction_at_particles() const {
+    return (rigid_contact_at_particles() && physics.contact.mu > 0.0) ||
+           (grid.walls_at_particles() && grid.has_wall_friction());
+  }
+  /// Whether that contact's penalty is damped (contact.penalty_damping with rigid objects,
+  /// grid.wall_penalty_damping with walls).
+  bool damping_at_particles() const {
+    return (rigid_contact_at_particles() && physics.contact.penalty_damping > 0.0) ||
+           (grid.walls_at_particles() && grid.wall_penalty_damping > 0.0);
   }
   /// |solver.gravity| + the largest initial body force of an object [m/s^2]: the body-force step's
   /// at the start.

@@ -145,6 +145,19 @@ std::string Simulation::describe(const Failure& f, long step, double time) const
       << " K, J = " << s.F.determinant() << ", damage = " << s.damage << ")";
   }
   m << ": " << f.field << ": " << f.message;
+  // Through a wall met at the particles: the penalty's pressure has a bound, the nodes' hold none.
+  if (f.field == "position" && f.particle < P.size() && scene_.grid.walls_at_particles())
+    for (int face = 0; face < 6; ++face) {
+      const int axis = face / 2;
+      const bool beyond = face % 2 == 0 ? P.x[f.particle](axis) < scene_.grid.lower(axis)
+                                        : P.x[f.particle](axis) > scene_.grid.upper(axis);
+      if (scene_.grid.faces[std::size_t(face)] != FaceCondition::wall || !beyond) continue;
+      m << "; it went through the " << kFaceNames[std::size_t(face)]
+        << " wall, met at the particles (grid.wall_contact \"particles\"), whose penalty stops a "
+           "body closing at up to about its wave speed c0 and holds a contact pressure up to "
+           "about rho0 (c0 + 4 V)^2 / 4 (docs/scenes.md#grid): \"nodes\" holds any";
+      break;
+    }
   return m.str();
 }
 

@@ -37,7 +37,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
       census_(ranks_.census(scene)),
       boxes_(ranks_.split(scene, census_)),
       particles_(ranks_.seed(scene, boxes_, census_)),
-      grid_(scene.grid, grid_settings(thread_count(threads)),
+      grid_(scene.grid.at_the_nodes(), grid_settings(thread_count(threads)),
             ranks_.stored_box(boxes_, scene.grid)),
       shape_(make_shape(scene)),
       stencils_(make_stencils(shape_)),
@@ -79,15 +79,17 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   if (scene_.grid.outflow == Outflow::remove) particles_.removed.assign(particles_.size(), 0);
   if (scene_.needs_reference_positions())
     particles_.X = particles_.x;  // the reference positions: the seed points
-  if (scene_.rigid_friction_at_particles())
+  if (scene_.friction_at_particles())
     particles_.friction_anchor = particles_.x;  // each stick spring slack where it starts
+  if (scene_.damping_at_particles())
+    particles_.damper_velocity = particles_.v;  // each particle moves with its own at the start
   if (scene_.has_body_force()) body_forces_.emplace(scene_, grid_.threads());
-  if (scene_.rigid_contact_at_particles()) {
+  if (scene_.contact_at_particles()) {
     std::vector<Vec3> widths;  // uGIMP's half-widths per object [m] (a graded grid's: per particle)
     for (const Vec3& l : half_widths(scene_))
       widths.push_back(l.cwiseProduct(scene_.grid.spacing()));
-    rigid_contact_.emplace(scene_, grid_.settings().rigid_surface, grid_.settings().rigid_velocity,
-                           std::move(widths));
+    particle_contact_.emplace(scene_, grid_.settings().rigid_surface,
+                              grid_.settings().rigid_velocity, std::move(widths));
   }
   if (scene_.grid.has_moving_faces()) face_motions_.emplace(scene_.grid, scene_.constants);
   st.mean_spacing = scene_.grid.mean_spacing();
@@ -104,7 +106,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   if ((grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0) ||
       scene_.grid.has_wall_friction())
     sinks_.friction = ledger_.add_sink_column("friction_heat");
-  if (scene_.grid.has_wall_friction())
+  if (grid_.spec().has_wall_friction())  // the walls at the nodes (at the particles: as rigid)
     sinks_.wall_friction = ledger_.add_sink_column("wall_friction_heat", /*in_balance=*/false,
                                                    /*unchecked=*/true);
   if (erosion) sinks_.eroded = ledger_.add_sink_column("eroded_energy", /*in_balance=*/false);
@@ -112,10 +114,11 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   st.plastic_work = scene_.output.plastic_work;
   if (st.plastic_work)
     sinks_.plastic = ledger_.add_sink_column("plastic_work", /*in_balance=*/false);
-  // The energy stored in the rigid objects' contact at the particles: it rises and falls.
-  if (rigid_contact_) sinks_.contact_energy = ledger_.add_sink_column("contact_energy");
-  // Its dashpots' dissipation (contact.penalty_damping), a numerical sink named as one.
-  if (rigid_contact_ && ph.contact.penalty_damping > 0.0)
+  // The energy stored in the contact at the particles (rigid objects, walls): it rises and falls.
+  if (particle_contact_) sinks_.contact_energy = ledger_.add_sink_column("contact_energy");
+  // Its dashpots' dissipation (contact.penalty_damping, grid.wall_penalty_damping), a numerical
+  // sink named as one.
+  if (scene_.damping_at_particles())
     sinks_.contact_damping = ledger_.add_sink_column("contact_damping");
   restart_ledger();
 }
@@ -157,7 +160,7 @@ GridSettings Simulation::grid_settings(int threads) const {
   // measures the domains too (step/contact_planes.cpp). Every rank scatters
   // the touch bits of its particles (the sums carry them to the rank holding the wall's nodes),
   // also one whose box stores no wall node.
-  if (scene_.grid.has_walls() ||
+  if ((scene_.grid.has_walls() && !scene_.grid.walls_at_particles()) ||
       (g.fields > 1 && scene_.physics.contact.detection == ContactDetection::separation))
     for (const Vec3& l : half_widths(scene_))
       g.particle_half_width.push_back(l.cwiseProduct(scene_.grid.spacing()));
@@ -179,7 +182,8 @@ void Simulation::resize_particles(std::size_t n) {
   if (!id) P.id.clear();
   if (!reference) P.X.clear();
   if (!scene_.grid.graded()) P.half_width.clear();
-  if (!scene_.rigid_friction_at_particles()) P.friction_anchor.clear();
+  if (!scene_.friction_at_particles()) P.friction_anchor.clear();
+  if (!scene_.damping_at_particles()) P.damper_velocity.clear();
 }
 
 void Simulation::restart_ledger() {
@@ -200,19 +204,20 @@ void Simulation::restart_ledger() {
   // A moving rigid object's energy scale: the system moving at its speed (Ledger::start).
   const double V = scene_.rigid_speed();
   // A body seeded overlapping a rigid object beyond its clipped reach starts with contact energy.
-  const double stored = rigid_contact_ ? evaluate_rigid_contact()[0] : 0.0;
+  const double stored = particle_contact_ ? evaluate_particle_contact()[0] : 0.0;
   ledger_.start(0.0, sum[0], Vec3(sum[1], sum[2], sum[3]), 0.5 * sum[4] * V * V, stored);
   if (sinks_.contact_energy >= 0)
     ledger_.add_sink(sinks_.contact_energy, stored - ledger_.sink(sinks_.contact_energy));
 }
 
-std::vector<double> Simulation::evaluate_rigid_contact() {
-  rigid_contact_->evaluate(particles_, time_, grid_.threads());
-  const Vec3& F = rigid_contact_->total_force();
-  rigid_contact_sums_ = ranks_.sum({rigid_contact_->energy(), F(0), F(1), F(2),
-                                    rigid_contact_->power(), rigid_contact_->friction_heat()});
-  rigid_contact_current_ = true;
-  return rigid_contact_sums_;
+std::vector<double> Simulation::evaluate_particle_contact() {
+  particle_contact_->evaluate(particles_, time_, grid_.threads());
+  const Vec3& F = particle_contact_->total_force();
+  particle_contact_sums_ =
+      ranks_.sum({particle_contact_->energy(), F(0), F(1), F(2), particle_contact_->power(),
+                  particle_contact_->friction_heat()});
+  particle_contact_current_ = true;
+  return particle_contact_sums_;
 }
 
 double Simulation::next_dt() const {
@@ -220,7 +225,7 @@ double Simulation::next_dt() const {
   // the face's jumps through the stress): the signal runs at up to c + |v| + |V|.
   // A rigid object drives what it pushes at its speed likewise (Scene::rigid_speed).
   // Contact at the particles: its penalty's frequency (RigidParticleContact::signal_speed).
-  const double contact = rigid_contact_ ? rigid_contact_->signal_speed() : 0.0;
+  const double contact = particle_contact_ ? particle_contact_->signal_speed() : 0.0;
   const double waves =
       stable_time_step(scene_.grid.min_spacing(),
                        std::max(max_signal_speed_ + face_speed_ + scene_.rigid_speed(), contact),
@@ -245,7 +250,7 @@ const StepTotals& Simulation::step() {
     stop_if(ranks_.first_failure(non_finite_body_force()));
     max_body_force_ = ranks_.max(body_forces_->peak());
   }
-  if (rigid_contact_ && !rigid_contact_current_) evaluate_rigid_contact();  // at x^n, t^n
+  if (particle_contact_ && !particle_contact_current_) evaluate_particle_contact();  // at x^n, t^n
   if (face_motions_) {
     face_speed_ = 0.0;
     for (const double v : face_motions_->at(time_))
@@ -271,7 +276,7 @@ const StepTotals& Simulation::step() {
   migrated_ = ranks_.migrate(particles_, boxes_, scene_.grid);  // those that left this box
   rebalance_if_needed();
   // The rigid contact's forces are per particle: on several ranks the particles have moved.
-  if (ranks_.several()) rigid_contact_current_ = false;
+  if (ranks_.several()) particle_contact_current_ = false;
   return last_;
 }
 
@@ -283,7 +288,7 @@ StepTotals Simulation::advance_step(double dt, std::optional<Failure>& failure) 
                         heat_capacity_,
                         halo_ ? &*halo_ : nullptr,
                         body_forces_ ? &body_forces_->values() : nullptr,
-                        rigid_contact_ ? &rigid_contact_->forces() : nullptr};
+                        particle_contact_ ? &particle_contact_->forces() : nullptr};
   StepTotals t = std::visit(
       [&](const auto& shape) {
         using Shape = std::decay_t<decltype(shape)>;
@@ -301,8 +306,9 @@ void Simulation::book(double dt) {
   max_signal_speed_ = last_.stress.max_signal_speed;
   Vec3 boundary_impulse = last_.grid.boundary_impulse;
   double external_work = last_.grid.external_work + last_.particles.external_work;
-  if (rigid_contact_) {  // the step's rigid contact forces, at t^n: their impulse, and their work
-    const std::vector<double>& c = rigid_contact_sums_;  // at the rigid objects' velocities
+  if (particle_contact_) {  // the step's rigid contact forces, at t^n: their impulse, and their
+                            // work
+    const std::vector<double>& c = particle_contact_sums_;  // at the rigid objects' velocities
     boundary_impulse += dt * Vec3(c[1], c[2], c[3]);
     external_work += dt * c[4];
   }
@@ -314,10 +320,11 @@ void Simulation::book(double dt) {
   if (sinks_.contact_damping >= 0)  // the step's dashpots, on the motion they acted on
     ledger_.add_sink(sinks_.contact_damping,
                      ranks_.sum(std::vector<double>{
-                         rigid_contact_->damper_work(particles_, dt, grid_.threads())})[0]);
-  if (rigid_contact_) {  // the contact's energy at t^{n+1}, its forces for the next step, and the
+                         particle_contact_->damper_work(particles_, dt, grid_.threads())})[0]);
+  if (particle_contact_) {  // the contact's energy at t^{n+1}, its forces for the next step, and
+                            // the
     // heat of the slip since t^n
-    const std::vector<double> sums = evaluate_rigid_contact();
+    const std::vector<double> sums = evaluate_particle_contact();
     ledger_.add_sink(sinks_.contact_energy, sums[0] - ledger_.sink(sinks_.contact_energy));
     rigid_friction_heat = sums[5];
   }
@@ -346,7 +353,8 @@ void Simulation::stop_if(const std::optional<std::string>& message) const {
 }
 
 void Simulation::rebuild_grid() {
-  grid_ = Grid(scene_.grid, grid_.settings(), ranks_.stored_box(boxes_, scene_.grid));
+  grid_ =
+      Grid(scene_.grid.at_the_nodes(), grid_.settings(), ranks_.stored_box(boxes_, scene_.grid));
   grid_.set_owned(ranks_.owned_box(boxes_, scene_.grid.cells));
 }
 

@@ -175,17 +175,18 @@ class Simulation {
   std::optional<FaceMotions> face_motions_;
   double face_speed_ = 0.0;      ///< max_f |V_f(t^n)| [m/s]: the material a face drives moves at it
   double max_body_force_ = 0.0;  ///< max_p |b_p| of this step, over the ranks [m/s^2]
-  /// Bodies meet the rigid objects at the particles (ContactSpec::rigid): its forces are those of
-  /// the current particle positions and time while `rigid_contact_current_`.
-  std::optional<RigidParticleContact> rigid_contact_;
-  bool rigid_contact_current_ = false;
-  /// Evaluates the rigid contact at the particles' positions and time_; returns its energy, its
+  /// Bodies meet the rigid objects (ContactSpec::rigid) or the `wall` faces
+  /// (GridSpec::wall_contact) at the particles: its forces are those of the current particle
+  /// positions and time while `particle_contact_current_`.
+  std::optional<RigidParticleContact> particle_contact_;
+  bool particle_contact_current_ = false;
+  /// Evaluates the contact at the particles' positions and time_; returns its energy, its
   /// force and its power on the system, each summed over the ranks: {U [J], F_x, F_y, F_z [N],
   /// P [W]}.
-  std::vector<double> evaluate_rigid_contact();
-  /// The last evaluate_rigid_contact(), summed over the ranks: energy [J], force [N], power [W],
+  std::vector<double> evaluate_particle_contact();
+  /// The last evaluate_particle_contact(), summed over the ranks: energy [J], force [N], power [W],
   /// slip heat [J].
-  std::vector<double> rigid_contact_sums_;
+  std::vector<double> particle_contact_sums_;
 };
 
 }  // namespace impact::mpm

@@ -140,8 +140,9 @@ void Simulation::load(CheckpointReader& in) {
   set_all_fields(l, record);
   in.array("ledger_sinks", l.sinks, ledger_.sink_names().size());
   ledger_.restore(l);
-  rigid_contact_current_ = false;  // its forces were the seeded state's: the next step re-evaluates
-  if (rigid_contact_) rigid_contact_->resume();
+  particle_contact_current_ =
+      false;  // its forces were the seeded state's: the next step re-evaluates
+  if (particle_contact_) particle_contact_->resume();
 }
 
 }  // namespace impact::mpm

@@ -216,6 +216,18 @@ BOOST_AUTO_TEST_CASE(friction_at_the_particles_across_ranks_books_as_on_one_rank
                         1e-9, 150);
 }
 
+// The walls met at the particles (grid.wall_contact = "particles", wall friction 0.25, damping
+// 0.3): the block of sliding_block.json slides along its x- wall at 200 m/s across the slabs'
+// boundaries, so particles change rank with their anchors, and each rank books its own particles'
+// pushes, slip heat and dashpots.
+BOOST_AUTO_TEST_CASE(walls_at_the_particles_across_ranks_book_as_on_one_rank) {
+  compare_with_one_rank(
+      scene_from("verification/sliding_block.json",
+                 {{"grid", {{"wall_contact", "particles"}, {"wall_penalty_damping", 0.3}}},
+                  {"objects", {{"block", {{"velocity", {0.0, 200.0, 0.0}}}}}}}),
+      1e-9, 150);
+}
+
 // The separating plane of contact.normal = "logistic_regression" fitted on a box boundary: the
 // clouds of the nodes around it hold the neighbour ranks' particles (the ghosts of
 // step/contact_planes.cpp), so each rank fits the planes one rank fits. The two blocks meet on the

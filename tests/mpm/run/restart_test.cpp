@@ -320,6 +320,28 @@ BOOST_AUTO_TEST_CASE(a_rigid_friction_at_the_particles_continues_bit_for_bit_fro
   BOOST_TEST(r.rows_differ == 0u);
 }
 
+// (a'''''') Walls met at the particles (grid.wall_contact = "particles") with friction and the
+// penalty's damping: the anchors come back from the checkpoint as above, and the dashpots' forces
+// are evaluated afresh at the restored positions, so the block sliding on its wall continues bit
+// for bit, its contact_damping column too.
+BOOST_AUTO_TEST_CASE(a_wall_met_at_the_particles_continues_bit_for_bit_from_a_checkpoint) {
+  const Scene s = test::verification_scene(
+      "sliding_block.json",
+      {{"grid", {{"wall_contact", "particles"}, {"wall_penalty_damping", 0.3}}}});
+  const Continuation r = continue_from_checkpoint(s, 60, 30);
+  BOOST_TEST_REQUIRE(r.uninterrupted.friction_anchor.size() == r.uninterrupted.size());
+  std::size_t stretched = 0;  // springs with their anchor off the particle
+  for (std::size_t p = 0; p < r.uninterrupted.size(); ++p)
+    stretched += r.uninterrupted.friction_anchor[p] != r.uninterrupted.x[p];
+  BOOST_TEST(stretched > 0u);
+  BOOST_TEST(differing(r.uninterrupted, r.continued) == 0u);
+  BOOST_TEST(r.rows_differ == 0u);
+  const std::vector<std::string> names = Simulation(s, 1).ledger().sink_names();
+  const auto column = std::find(names.begin(), names.end(), "contact_damping");
+  BOOST_TEST_REQUIRE((column != names.end()));
+  BOOST_TEST(r.last.sinks[std::size_t(column - names.begin())] != 0.0);  // the dashpots acted
+}
+
 // (a''') A graded grid (grid.refine): each particle's uGIMP half-width, fixed at seeding, comes
 // back from the checkpoint (Particles::half_width, checkpoint version 11), so the Taylor rod with
 // its impact end refined continues bit for bit (artificial viscosity on: its length is the cell's).
