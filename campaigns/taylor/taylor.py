@@ -31,6 +31,8 @@ The measures:
 Anvil (--anvil, one per OUT):
   mirror   the symmetric x- face: rigid and frictionless, and it holds the rod in tension too;
   wall:MU  a rigid wall that never pulls, with Coulomb friction MU (docs/scenes.md#grid);
+  wall_particles:MU  the same wall met at the rod's particles, by the penalty against its plane
+           (grid.wall_contact "particles", docs/scenes.md#grid);
   rigid:MU a rigid body at rest, two cells thick, below x = 0 (objects.anvil.rigid,
            docs/scenes.md#rigid-objects), met through multi-field contact with Coulomb friction MU
            (the normal is the anvil's own face);
@@ -171,21 +173,22 @@ def end_time(shot):
 
 def parse_anvil(text):
     """'mirror' (the symmetric x- face: frictionless, and it holds the rod in tension),
-    'wall[:MU]' (a rigid wall that never pulls, Coulomb friction MU, default 0) or 'rigid[:MU]'
-    (a rigid body at rest in contact, likewise) or 'rigid_particles' (that body met at the rod's
-    particles, frictionless): (kind, mu)."""
+    'wall[:MU]' (a rigid wall that never pulls, Coulomb friction MU, default 0),
+    'wall_particles[:MU]' (that wall met at the rod's particles), 'rigid[:MU]' (a rigid body at
+    rest in contact, likewise) or 'rigid_particles' (that body met at the rod's particles,
+    frictionless): (kind, mu)."""
     kind, _, mu = text.partition(":")
     if kind in ("mirror", "rigid_particles") and not mu:
         return kind, 0.0
-    if kind in ("wall", "rigid"):
+    if kind in ("wall", "wall_particles", "rigid"):
         try:
             value = float(mu) if mu else 0.0
         except ValueError:
             value = -1.0
         if 0.0 <= value <= 10.0:
             return kind, value
-    sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall, wall:MU, rigid, rigid:MU with "
-             "MU in [0, 10], or rigid_particles")
+    sys.exit(f"taylor: --anvil: '{text}': expected mirror, wall, wall:MU, wall_particles, "
+             "wall_particles:MU, rigid, rigid:MU with MU in [0, 10], or rigid_particles")
 
 
 def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0), geometry="3d",
@@ -221,9 +224,11 @@ def scene(shot, material_file, failure, cells_per_radius, anvil=("mirror", 0.0),
         del boundary["z-"], boundary["z+"]
         grid = {"geometry": "axisymmetric", "lower": [0.0, 0.0], "upper": [nx * dx, ny * dx],
                 "cells": [nx, ny], "boundary": boundary}
-    if anvil[0] == "wall":
+    if anvil[0] in ("wall", "wall_particles"):
         boundary["x-"] = "wall"
         grid["wall_friction"] = {"x-": anvil[1]}
+        if anvil[0] == "wall_particles":
+            grid["wall_contact"] = "particles"
     if anvil[0] in ("rigid", "rigid_particles"):
         # Two cells of rigid anvil below the impact face x = 0, as wide as the grid; its own
         # material (the density its contact normals read), multi-field contact with the rod.
@@ -567,7 +572,8 @@ def main(argv=None):
                     help="shots run at resolutions other than the first (default: all --shots)")
     ap.add_argument("--anvil", default="mirror",
                     help="mirror (default: symmetric x- face, frictionless), wall[:MU] (rigid "
-                         "wall that never pulls, Coulomb friction MU), rigid[:MU] (a rigid body "
+                         "wall that never pulls, Coulomb friction MU), wall_particles[:MU] (that "
+                         "wall met at the rod's particles), rigid[:MU] (a rigid body "
                          "at rest in contact, likewise) or rigid_particles (that body met at the "
                          "rod's particles, frictionless); one per OUT")
     ap.add_argument("--geometry", default="3d", choices=GEOMETRIES,
