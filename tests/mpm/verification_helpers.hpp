@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -123,12 +124,47 @@ inline LawFollowed follow_along_y(Simulation& sim, int object,
   return f;
 }
 
+/// What a body sliding to a stop along y booked, at the run's end: the kinetic energy it lost
+/// from v0, 1/2 M (v0^2 - v_y^2) [J], the ledger's friction heat [J] and its energy_error [-].
+struct SlideBooks {
+  double lost = 0.0, heat = 0.0, energy_error = 0.0;
+};
+inline SlideBooks slide_books(const Simulation& sim, int object, double v0);
+
+/// Steps a run to its end: the worst |energy_error| over every step, and the share of kinetic
+/// plus strain energy held as strain energy over the steps after `from` [s] (an exact elastic
+/// bounce holds 0.5 on average).
+struct BounceBooks {
+  double worst = 0.0, strain_share = 0.0;
+};
+inline BounceBooks bounce_books(Simulation& sim, double from) {
+  BounceBooks b;
+  double strain = 0.0, books = 0.0;
+  while (!sim.finished()) {
+    sim.step();
+    const LedgerRow r = sim.ledger().row();
+    b.worst = std::max(b.worst, std::abs(r.energy_error));
+    if (sim.time() > from) {
+      strain += r.strain_energy;
+      books += r.strain_energy + r.kinetic_energy;
+    }
+  }
+  b.strain_share = strain / books;
+  return b;
+}
+
 /// The ledger's sink column `name` [J] (e.g. "friction_heat"); 0 when the scene has no such
 /// column (nothing of that kind can be booked in it).
 inline double ledger_sink(const Ledger& ledger, const std::string& name) {
   const auto& names = ledger.sink_names();
   const auto it = std::find(names.begin(), names.end(), name);
   return it == names.end() ? 0.0 : ledger.row().sinks[std::size_t(it - names.begin())];
+}
+
+inline SlideBooks slide_books(const Simulation& sim, int object, double v0) {
+  const BodyMotion b = motion_of(sim.particles(), object);
+  return {0.5 * b.mass * (v0 * v0 - b.velocity(1) * b.velocity(1)),
+          ledger_sink(sim.ledger(), "friction_heat"), sim.ledger().row().energy_error};
 }
 
 }  // namespace impact::mpm::test

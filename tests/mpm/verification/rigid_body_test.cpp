@@ -101,18 +101,15 @@ BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_rigid_floor_follows_coulombs_law_and_t
   const double v0 = 5.0, g = 1.0e5, mu = 0.25, t_stop = v0 / (mu * g);
   const auto [worst_sliding, worst_stopped] = test::follow_along_y(
       sim, block, [&](double t) { return v0 - mu * g * t; }, t_stop, 0.0, v0);
-  const test::BodyMotion b = motion_of(sim.particles(), block);
-  const double lost = 0.5 * b.mass * (v0 * v0 - b.velocity(1) * b.velocity(1));
-  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
-  const LedgerRow r = sim.ledger().row();
+  const auto [lost, heat, energy_error] = test::slide_books(sim, block, v0);
   BOOST_TEST_MESSAGE("rigid floor: v_y against v0 - mu g t worst "
                      << worst_sliding << " v0 while sliding, " << worst_stopped
                      << " v0 after the stop; friction heat " << heat << " J against " << lost
-                     << " J of kinetic energy lost; energy_error " << r.energy_error);
+                     << " J of kinetic energy lost; energy_error " << energy_error);
   BOOST_TEST(worst_sliding < 0.02);
   BOOST_TEST(worst_stopped < 0.005);
   BOOST_TEST(std::abs(heat / lost - 1.0) < 0.03);
-  BOOST_TEST(std::abs(r.energy_error) < 0.01);
+  BOOST_TEST(std::abs(energy_error) < 0.01);
 }
 
 // The block of sliding_block_rigid.json crushed onto its floor (1 mm, two cells thick) by 1e11
@@ -239,20 +236,12 @@ BOOST_AUTO_TEST_CASE(the_spanning_blocks_energy_error_falls_with_h_in_uniaxial_s
           {"boundary",
            {{"y-", "symmetric"}, {"y+", "symmetric"}, {"z-", "symmetric"}, {"z+", "symmetric"}}}}}};
     Simulation sim(test::verification_scene("spanning_block_rigid.json", slab), kThreads);
-    double strain = 0.0, books = 0.0, w = 0.0;
-    while (!sim.finished()) {
-      sim.step();
-      const LedgerRow r = sim.ledger().row();
-      w = std::max(w, std::abs(r.energy_error));
-      if (sim.time() > 1.0e-5) {  // the second half: the share of the books held as strain energy
-        strain += r.strain_energy;
-        books += r.strain_energy + r.kinetic_energy;
-      }
-    }
-    worst[k] = w;
-    BOOST_TEST_MESSAGE("spanning slab, " << across[k] << " cells across: worst abs(energy_error) "
-                                         << w << ", strain energy's share over the second half "
-                                         << strain / books << " (exact bounce: 0.5)");
+    const test::BounceBooks b = test::bounce_books(sim, 1.0e-5);  // the second half of 20 us
+    worst[k] = b.worst;
+    BOOST_TEST_MESSAGE("spanning slab, "
+                       << across[k] << " cells across: worst abs(energy_error) " << b.worst
+                       << ", strain energy's share over the second half " << b.strain_share
+                       << " (exact bounce: 0.5)");
   }
   BOOST_TEST(worst[0] < 0.12);
   BOOST_TEST(worst[1] < 0.6 * worst[0]);  // an order above 0.74 at each halving

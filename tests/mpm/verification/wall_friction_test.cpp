@@ -90,10 +90,7 @@ BOOST_AUTO_TEST_CASE(a_wall_met_at_the_particles_follows_coulombs_law_and_keeps_
   const int block = test::object_index(scene, "block");
   const auto [worst_sliding, worst_stopped] = test::follow_along_y(
       sim, block, [&](double t) { return v0 - mu * g * t; }, t_stop, 0.0, v0);
-  const test::BodyMotion b = test::motion_of(sim.particles(), block);
-  const double lost = 0.5 * b.mass * (v0 * v0 - b.velocity(1) * b.velocity(1));
-  const double heat = test::ledger_sink(sim.ledger(), "friction_heat");
-  const double error = sim.ledger().row().energy_error;
+  const auto [lost, heat, error] = test::slide_books(sim, block, v0);
   BOOST_TEST_MESSAGE("at the particles: v_y against v0 - mu g t worst "
                      << worst_sliding << " v0 while sliding, " << worst_stopped
                      << " v0 after the stop; friction heat " << heat << " J against " << lost
