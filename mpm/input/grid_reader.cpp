@@ -241,13 +241,15 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
                      "\"particles\", or remove the key");
   // A moving face beside a no-slip face or a wall with friction: their edge nodes would be held by
   // both (the fixed face zeroes the velocity the moving one imposes, or the wall's friction slows
-  // it), with work booked at a velocity the nodes do not have. Refused.
+  // it), with work booked at a velocity the nodes do not have. Refused. A wall met at the
+  // particles holds no node (its friction acts on the particles), so it may be rough there.
   for (int f = 0; f < 6; ++f) {
     if (!g.face_velocity[f].set) continue;
     for (int o = 0; o < 6; ++o) {
       if (o / 2 == f / 2) continue;
       const bool fixed = g.faces[o] == FaceCondition::fixed;
-      const bool rough = g.faces[o] == FaceCondition::wall && g.wall_friction[o] > 0.0;
+      const bool rough = g.faces[o] == FaceCondition::wall && g.wall_friction[o] > 0.0 &&
+                         g.wall_contact != WallContact::particles;
       if (!fixed && !rough) continue;
       r.problems().add(r.key_path("face_velocity") + "/" + kFaceNames[f],
                        std::string("the face ") + kFaceNames[o] + " beside it is " +
