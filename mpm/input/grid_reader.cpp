@@ -255,7 +255,8 @@ void read_faces(JsonReader& r, const Json& grid, GridSpec& g, const std::string&
                        std::string("the face ") + kFaceNames[o] + " beside it is " +
                            (fixed ? "fixed" : "a wall with friction") +
                            ": their edge nodes would be held by both; expected the faces beside a "
-                           "moving face symmetric, free or a wall without friction");
+                           "moving face symmetric, free or a wall without friction, or the walls "
+                           "met at the particles (grid.wall_contact \"particles\")");
     }
   }
 }
