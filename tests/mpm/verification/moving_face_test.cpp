@@ -36,7 +36,8 @@ Books drive(const Json& patch) {
     sim.step();
     const LedgerRow r = sim.ledger().row();
     // After the first quarter: a sudden start books its first steps' velocity jump against the
-    // little work done by then (78 % after one step of the constant piston).
+    // little work done by then (78 % after one step of the constant piston, before the books'
+    // scale took 1/2 M V(0)^2 of a face that starts moving; docs/mpm.md, energy_error).
     if (sim.time() > 0.25 * 2e-5)
       b.worst_energy_error = std::max(b.worst_energy_error, std::abs(r.energy_error));
     // The bar starts at rest: its momentum is what the face gave it.

@@ -153,12 +153,13 @@ BOOST_AUTO_TEST_CASE(a_moving_face_pushes_a_block_along_a_rough_wall_met_at_the_
 }
 
 BOOST_AUTO_TEST_CASE(a_face_started_at_full_speed_under_a_sudden_load_runs) {
-  // The same block and face, the face at V = 1 m/s from t = 0 and the body force applied at once
-  // (a new user's scene). The face's first steps strain the block before its work is booked, so
-  // the books' scale E_in must be at least 1/2 M V^2, as for a moving rigid object (docs/mpm.md,
-  // energy_error): against the body force's first work alone the step-1 residual read +1872 and
-  // the energy check stopped the run. Asserted: it runs 20 us, its worst |energy_error| over
-  // every step below 0.1 (measured 0.046, the face's start-up residual; docs/scenes.md).
+  // The same block and face, the face at V = 1 m/s from t = 0 and the load applied at once
+  // (sliding_block.json's gravity; a new user's scene had the same as a body force). The face's
+  // first steps strain the block before its work is booked, so the books' scale E_in must be at
+  // least 1/2 M V^2, as for a moving rigid object (docs/mpm.md, energy_error): against the load's
+  // first work alone the step-1 residual read +1872 and the energy check stopped the run.
+  // Asserted: it runs 20 us, its worst |energy_error| over every step below 0.1 (measured 0.046,
+  // the face's start-up residual; docs/scenes.md).
   Simulation sim(
       test::verification_scene(
           "sliding_block.json",
