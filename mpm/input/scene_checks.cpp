@@ -473,7 +473,8 @@ void warn_of_face_travel(Scene& s) {
       m << key << "the face starts at " << travel.initial[f]
         << " m/s: the particles take that jump through the stress over the first steps (their "
            "velocities lag the face, and energy_error shows a start-up residual of a few "
-           "percent of 1/2 M V^2 over them); a ramp such as min(t/t_r,1)*V from 0 avoids it "
+           "percent of 1/2 M V^2 over them, M the deformable bodies' mass); a ramp such as "
+           "min(t/t_r,1)*V from 0 avoids it "
            "(docs/scenes.md#moving-faces)";
       s.warnings.push_back(m.str());
     }

@@ -20,11 +20,11 @@
 //                      transfers), the one term that is not physics
 // with E0 the initial kinetic energy and E_in the largest energy that has entered so far,
 // max over the run of E0 + external_work (the energy-growth check's reference), at least 1/2 M V^2
-// with a rigid object moving at V (start()): E0 when no body force works. Divided by E0 alone, a
-// body released at rest under gravity read in J and one released at 0.01 m/s read -7.4e4 (issue
-// 53). 1 J if nothing has entered (an absolute error). Column names carry their unit, `name [unit]`
-// (the point driver's convention); a plane-strain run's are per metre of thickness
-// (extensive_units.hpp).
+// with a rigid object moving at V or a face starting at V (start()): E0 when no body force works.
+// Divided by E0 alone, a body released at rest under gravity read in J and one released at 0.01 m/s
+// read -7.4e4 (issue 53). 1 J if nothing has entered (an absolute error). Column names carry their
+// unit, `name [unit]` (the point driver's convention); a plane-strain run's are per metre of
+// thickness (extensive_units.hpp).
 #pragma once
 
 #include <string>
@@ -89,12 +89,13 @@ class Ledger {
   const std::vector<std::string>& sink_names() const { return sink_names_; }
 
   /// The state at t = 0 (E0 and p0). `drive` [J]: the energy scale of a rigid object moving at
-  /// V, 1/2 M V^2 of the system's mass M (Simulation::restart_ledger; 0 without one): E_in is at
-  /// least that from the start (docs/mpm.md#ledger). A rigid body set moving against a body at
-  /// rest strains it from the first step, while contact books its work from the second (the
-  /// start pass corrects velocities the particles do not carry); against an E_in of round-off
-  /// the first step read energy_error 1e16 and the growth check stopped valid runs.
-  /// `stored` [J]: energy held at t = 0 in a column other than kinetic and strain (the rigid
+  /// V, or of a face that starts at V, 1/2 M V^2 of the system's mass M
+  /// (Simulation::restart_ledger; 0 without either): E_in is at least that from the start
+  /// (docs/mpm.md#ledger). A face strains its material before its work is booked likewise. A rigid
+  /// body set moving against a body at rest strains it from the first step, while contact books its
+  /// work from the second (the start pass corrects velocities the particles do not carry); against
+  /// an E_in of round-off the first step read energy_error 1e16 and the growth check stopped valid
+  /// runs. `stored` [J]: energy held at t = 0 in a column other than kinetic and strain (the rigid
   /// contact's contact_energy, where a body is seeded overlapping a rigid object): part of E0.
   void start(double time, double kinetic_energy, const Vec3& momentum, double drive = 0.0,
              double stored = 0.0);
