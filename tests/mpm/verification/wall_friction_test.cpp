@@ -103,6 +103,22 @@ BOOST_AUTO_TEST_CASE(a_wall_met_at_the_particles_follows_coulombs_law_and_keeps_
   BOOST_TEST(std::abs(error) < 0.002);
 }
 
+// The block of sliding_block.json at rest against the y- face, which moves at `face` [m/s], on
+// the rough x- wall met at the particles (damped 0.3); `patch` on top.
+Scene pushed_block(const Json& face, const Json& patch) {
+  Json scene = {{"objects",
+                 {{"block",
+                   {{"geometry", {{"lower", {0.0, 0.0, 0.002}}, {"upper", {0.002, 0.004, 0.004}}}},
+                    {"velocity", {0.0, 0.0, 0.0}}}}}},
+                {"grid",
+                 {{"boundary", {{"y-", "symmetric"}}},
+                  {"face_velocity", {{"y-", face}}},
+                  {"wall_contact", "particles"},
+                  {"wall_penalty_damping", 0.3}}}};
+  scene.merge_patch(patch);
+  return test::verification_scene("sliding_block.json", scene);
+}
+
 BOOST_AUTO_TEST_CASE(a_moving_face_pushes_a_block_along_a_rough_wall_met_at_the_particles) {
   // A moving face beside a rough wall: refused at the nodes, whose edge nodes both would hold
   // (docs/scenes.md#moving-faces), allowed at the particles, where the wall holds no node. The
@@ -114,20 +130,11 @@ BOOST_AUTO_TEST_CASE(a_moving_face_pushes_a_block_along_a_rough_wall_met_at_the_
   // springs lag and the heat falls short: 0.90 with the face ramped over 2 us and the load at
   // once, 0.76 with the face at full speed (docs/scenes.md#moving-faces).
   const double g = 1.0e5, mu = 0.25, V = 1.0;
-  const Scene scene = test::verification_scene(
-      "sliding_block.json",
-      {{"objects",
-        {{"block",
-          {{"geometry", {{"lower", {0.0, 0.0, 0.002}}, {"upper", {0.002, 0.004, 0.004}}}},
-           {"velocity", {0.0, 0.0, 0.0}},
-           {"body_force", {"-1e5*min(t/2e-5,1)", 0, 0}}}}}},
-       {"grid",
-        {{"boundary", {{"y-", "symmetric"}}},
-         {"face_velocity", {{"y-", "min(t/2e-5,1)*1.0"}}},
-         {"wall_contact", "particles"},
-         {"wall_penalty_damping", 0.3}}},
-       {"solver", {{"gravity", {0.0, 0.0, 0.0}}}},
-       {"time", {{"max_time", 1.2e-4}}}});
+  const Scene scene =
+      pushed_block("min(t/2e-5,1)*1.0",
+                   {{"objects", {{"block", {{"body_force", {"-1e5*min(t/2e-5,1)", 0, 0}}}}}},
+                    {"solver", {{"gravity", {0.0, 0.0, 0.0}}}},
+                    {"time", {{"max_time", 1.2e-4}}}});
   Simulation sim(scene, 1);  // a small grid: one thread runs it faster than two
   const int block = test::object_index(scene, "block");
   double y_half = 0.0, heat_half = 0.0;
@@ -160,20 +167,7 @@ BOOST_AUTO_TEST_CASE(a_face_started_at_full_speed_under_a_sudden_load_runs) {
   // first work alone the step-1 residual read +1872 and the energy check stopped the run.
   // Asserted: it runs 20 us, its worst |energy_error| over every step below 0.1 (measured 0.046,
   // the face's start-up residual; docs/scenes.md).
-  Simulation sim(
-      test::verification_scene(
-          "sliding_block.json",
-          {{"objects",
-            {{"block",
-              {{"geometry", {{"lower", {0.0, 0.0, 0.002}}, {"upper", {0.002, 0.004, 0.004}}}},
-               {"velocity", {0.0, 0.0, 0.0}}}}}},
-           {"grid",
-            {{"boundary", {{"y-", "symmetric"}}},
-             {"face_velocity", {{"y-", 1.0}}},
-             {"wall_contact", "particles"},
-             {"wall_penalty_damping", 0.3}}},
-           {"time", {{"max_time", 2.0e-5}}}}),
-      1);
+  Simulation sim(pushed_block(1.0, {{"time", {{"max_time", 2.0e-5}}}}), 1);
   double worst = 0.0;
   while (!sim.finished()) {
     sim.step();
