@@ -177,6 +177,8 @@ struct Bodies {
   Vec3 v[kMaxFields], grad[kMaxFields], v0[kMaxFields];
   /// A rigid object (SceneObject::rigid): a partner of infinite mass, never corrected.
   bool rigid[kMaxFields] = {};
+  /// A rigid object's Coulomb coefficient against the bodies (Grid::rigid_friction).
+  double rigid_mu[kMaxFields] = {};
   /// The rigid partner's one-sided mass differences, towards the lower and the upper neighbour
   /// along each axis (set where a rigid partner meets another body; normal_against_rigid).
   Vec3 rigid_lower = Vec3::Zero(), rigid_upper = Vec3::Zero();
@@ -257,8 +259,9 @@ int rigid_partner(const Bodies& B) {
 // `stick[b]` (the strain pass): the step's friction stuck body b, so all its velocity relative to
 // the centre of mass is removed. `approached[b]`: body b passed the approach test (the step's
 // decision); `stuck[b]`: and Coulomb took all its slip.
-bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bool* hold,
-             const bool* stick, Vec3* dv, double* heat, bool* approached, bool* stuck) {
+bool correct(const Bodies& B, double mu_between_bodies, ContactNormal rule, bool book,
+             const bool* hold, const bool* stick, Vec3* dv, double* heat, bool* approached,
+             bool* stuck) {
   double M = 0.0;
   Vec3 P = Vec3::Zero(), P0 = Vec3::Zero(), gradM = Vec3::Zero();
   for (int b = 0; b < B.n; ++b) {
@@ -276,6 +279,8 @@ bool correct(const Bodies& B, double mu, ContactNormal rule, bool book, const bo
     vcm = B.v[rigid];
     vcm_start = B.v0[rigid];
   }
+  // Against a rigid object its own coefficient (objects.<name>.mu), else contact.mu.
+  const double mu = rigid >= 0 ? B.rigid_mu[rigid] : mu_between_bodies;
   Vec3 net = Vec3::Zero();
   bool any = false;
   for (int b = 0; b < B.n; ++b) {
@@ -347,8 +352,10 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
   int body_of[kMaxFields];
   double inverse_density[kMaxFields];  // 1 / rho_f: the nodal volume m_f / rho_f
   bool rigid_field[kMaxFields];        // a rigid object's field (grid/rigid_fields.cpp)
+  double rigid_mu[kMaxFields];         // its Coulomb coefficient against the bodies
   for (int f = 0; f < nf; ++f) {
     rigid_field[f] = G.is_rigid_field(f);
+    rigid_mu[f] = G.rigid_friction(f, contact.mu);
     body_of[f] =
         f < static_cast<int>(G.settings().field_body.size()) ? G.settings().field_body[f] : f;
     inverse_density[f] = f < static_cast<int>(G.settings().field_density.size())
@@ -403,6 +410,7 @@ ContactTotals apply_contact(Grid& G, const ContactSpec& contact, std::vector<Vec
           B.volume[slot] = 0.0;
           B.grad[slot].setZero();
           B.rigid[slot] = rigid_field[active[a]];
+          B.rigid_mu[slot] = rigid_mu[active[a]];
           P[slot].setZero();
           P0[slot].setZero();
           members[slot] = 0;

@@ -24,6 +24,7 @@ RigidParticleContact::RigidParticleContact(const Scene& scene,
       prism_z_(scene.grid.per_metre_of_thickness()),
       axes_(scene.grid.dimensions()) {
   const std::vector<std::optional<Vec3>> rigid = scene.rigid_field_velocities();
+  const std::vector<double> rigid_mu = scene.rigid_field_friction();
   for (std::size_t f = 0; f < rigid.size(); ++f) {
     rigid_.push_back(rigid[f].has_value());
     if (!rigid[f] || !scene.rigid_contact_at_particles()) continue;
@@ -35,7 +36,7 @@ RigidParticleContact::RigidParticleContact(const Scene& scene,
     Surface s;
     s.geometry = std::move(surfaces[f]);
     s.velocity = f < velocities.size() ? velocities[f] : Vec3::Zero();
-    s.mu = scene.physics.contact.mu;
+    s.mu = rigid_mu[f];
     s.damping = scene.physics.contact.penalty_damping;
     surfaces_.push_back(std::move(s));
   }

@@ -3,7 +3,8 @@
 // against the `wall` faces of the grid (grid.wall_contact = "particles"; docs/scenes.md#grid),
 // instead of at their face nodes (grid/wall.cpp). A wall is a plane at rest, phi(x) = n . x -
 // offset with n its inward normal, its friction the face's wall_friction and its damping
-// grid.wall_penalty_damping; a rigid object's are contact.mu and contact.penalty_damping.
+// grid.wall_penalty_damping; a rigid object's are its mu (objects.<name>.mu, else contact.mu) and
+// contact.penalty_damping.
 // Why for walls: a wall's face nodes catch each arrival inelastically and hold and release a
 // ringing face layer, so a body that stays on a wall loses energy without converging (a block
 // spanning two walls: energy_error -0.94 at h, -0.87 at h/2; a block stuck under a tilted load
@@ -208,8 +209,8 @@ class RigidParticleContact {
     Vec3 inward = Vec3::Zero();        ///< a wall's plane, inward . x = offset [-, m]
     double offset = 0.0;
     Vec3 velocity = Vec3::Zero();  ///< V [m/s]
-    double mu = 0.0;               ///< contact.mu, or the wall face's wall_friction
-    double damping = 0.0;          ///< contact.penalty_damping, or grid.wall_penalty_damping
+    double mu = 0.0;       ///< the rigid object's (Scene::rigid_field_friction), or the wall face's
+    double damping = 0.0;  ///< contact.penalty_damping, or grid.wall_penalty_damping
   };
   /// phi(x) and the outward normal of surface s at time t.
   SurfaceDistance distance(const Surface& s, const Vec3& x, double t) const;

@@ -132,6 +132,9 @@ struct GridSettings {
   /// object's velocity [m/s] (Grid::hold_rigid_fields); both empty when no object is rigid.
   std::vector<std::uint8_t> rigid_field;
   std::vector<Vec3> rigid_velocity;
+  /// Per velocity field, the Coulomb coefficient of its rigid object against the bodies it meets
+  /// [-] (Scene::rigid_field_friction); empty when no object is rigid.
+  std::vector<double> rigid_friction;
   /// Per velocity field, the rigid object's surface at t = 0 (scene/rigid_surface.hpp), absent
   /// where its mass gradient serves; empty when no object is rigid.
   std::vector<std::optional<Geometry>> rigid_surface;
@@ -359,6 +362,13 @@ class Grid {
   /// Whether field f carries a rigid object.
   bool is_rigid_field(int f) const {
     return has_rigid_fields() && settings_.rigid_field[std::size_t(f)] != 0;
+  }
+  /// Rigid field f's Coulomb coefficient against the bodies it meets [-] (`fallback` where the
+  /// solver set none: a grid built without a scene).
+  double rigid_friction(int f, double fallback) const {
+    return std::size_t(f) < settings_.rigid_friction.size()
+               ? settings_.rigid_friction[std::size_t(f)]
+               : fallback;
   }
   /// The bits (1 << face) of the wall faces that a particle at `x` moving at `v`, of half-widths
   /// `half_width` [m], reaches within `dt`: n . (x - x_wall) - l_n + dt min(0, n . v) <= 1e-9 of

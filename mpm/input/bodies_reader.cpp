@@ -84,6 +84,17 @@ void read_objects(JsonReader& root, const Json& doc, const std::vector<SceneMate
     obj.rigid = o.boolean_or("rigid", false,
                              "a rigid body: it moves at `velocity` for ever, other bodies contact "
                              "it (docs/scenes.md#rigid-objects)");
+    // Unset, a rigid object takes physics.contact.mu (std::nullopt, not that number: the checks
+    // tell a key written on a deformable object from one left out).
+    constexpr std::string_view kMuMeaning =
+        "a rigid object's Coulomb coefficient against the bodies it meets [-]";
+    if (o.has("mu"))
+      obj.mu = o.number("mu", Range::closed(0.0, 10.0), kMuMeaning);
+    else
+      o.read_elsewhere("mu", [&] {
+        return KeyDescription{"number", Range::closed(0.0, 10.0).describe(), "physics.contact.mu",
+                              std::string(kMuMeaning)};
+      });
     obj.temperature = o.quantity_or("temperature", 294.0, Quantity::temperature,
                                     Range::open(0.0, 1e4), "initial temperature [K]");
     obj.particles_per_cell =

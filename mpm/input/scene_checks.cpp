@@ -314,8 +314,13 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
     }
   }
   for (const SceneObject& o : s.objects) {
-    if (!o.rigid) continue;
     const std::string key = "/objects/" + pointer_token(o.name);
+    if (!o.rigid && o.mu)
+      problems.add(key + "/mu",
+                   "only a rigid object takes a Coulomb coefficient of its own: between "
+                   "deformable bodies physics.contact.mu acts; remove the key, or set "
+                   "physics.contact.mu");
+    if (!o.rigid) continue;
     if (s.physics.contact.type == ContactType::single_velocity)
       problems.add(key + "/rigid",
                    "a rigid object meets the other bodies through multi-field contact: expected "
@@ -333,7 +338,21 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
     if (std::size_t(o.material) >= s.materials.size()) continue;  // its own problem already
     for (const SceneObject& other : s.objects) {
       if (&other == &o || other.material != o.material) continue;
-      if (other.rigid && other.velocity == o.velocity && !other.velocity_field.has_text()) continue;
+      if (other.rigid && other.velocity == o.velocity && !other.velocity_field.has_text()) {
+        // One material's rigid objects are one velocity field: one Coulomb coefficient.
+        const double mu = o.mu.value_or(s.physics.contact.mu);
+        const double other_mu = other.mu.value_or(s.physics.contact.mu);
+        if (mu != other_mu && &other < &o) {
+          std::ostringstream m;
+          m << "object \"" << other.name << "\" of material \""
+            << s.materials[std::size_t(o.material)].name << "\" meets the bodies with mu "
+            << other_mu << ", this one with " << mu
+            << ": a material's rigid objects are one body; expected one mu for them, or a "
+               "material each";
+          problems.add(key + "/mu", m.str());
+        }
+        continue;
+      }
       problems.add(key + "/material",
                    "material \"" + s.materials[std::size_t(o.material)].name +
                        "\" is also that of object \"" + other.name + "\", which " +

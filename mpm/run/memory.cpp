@@ -62,8 +62,7 @@ double estimated_grid_bytes(const Scene& scene) {
                nz = g.planar() ? 1.0 : g.cells[2] + 3.0;
   const double nodes = nx * ny * nz;
   const double fields = scene.field_count();
-  const bool contact_heat = fields > 1 && scene.physics.contact.type == ContactType::friction &&
-                            scene.physics.contact.mu > 0.0;
+  const bool contact_heat = scene.contact_friction();
   const bool musl = scene.solver.scheme == Scheme::musl;
   double per_entry = 64.0 + 8.0 + 4.0 * 24.0;                   // NodeData, mass, 4 velocities
   if (musl) per_entry += 24.0;                                  // re-map momentum

@@ -62,6 +62,14 @@ std::vector<std::optional<Vec3>> Scene::rigid_field_velocities() const {
   return v;
 }
 
+std::vector<double> Scene::rigid_field_friction() const {
+  if (!has_rigid_objects()) return {};
+  std::vector<double> mu(static_cast<std::size_t>(field_count()), physics.contact.mu);
+  for (const SceneObject& o : objects)
+    if (o.rigid) mu[std::size_t(parent_field(o.material))] = o.mu.value_or(physics.contact.mu);
+  return mu;
+}
+
 int Scene::parent_field(int material) const {
   return field_count() == 1 ? 0 : material;
 }

@@ -375,6 +375,9 @@ struct SceneObject {
   /// partner of infinite mass (Nairn's rigid material; contact/contact.hpp). Its material gives
   /// its density (the nodal masses the contact normals read) and its own velocity field.
   bool rigid = false;
+  /// A rigid object's Coulomb coefficient against the bodies it meets [-] (objects.<name>.mu);
+  /// unset: physics.contact.mu, which also acts between the deformable bodies.
+  std::optional<double> mu;
 
   bool has_body_force() const { return body_force.has_text() || !body_force.value.isZero(0.0); }
 };
@@ -417,8 +420,21 @@ struct Scene {
   /// wall_friction > 0), which keeps a stick spring's anchor per particle
   /// (Particles::friction_anchor).
   bool friction_at_particles() const {
-    return (rigid_contact_at_particles() && physics.contact.mu > 0.0) ||
+    return (rigid_contact_at_particles() && rigid_friction() > 0.0) ||
            (grid.walls_at_particles() && grid.has_wall_friction());
+  }
+  /// Whether multi-field contact has Coulomb friction somewhere (physics.contact.mu > 0, or a
+  /// rigid object's own mu > 0): its work is the ledger's friction_heat, kept per node.
+  bool contact_friction() const {
+    return field_count() > 1 && physics.contact.type == ContactType::friction &&
+           (physics.contact.mu > 0.0 || rigid_friction() > 0.0);
+  }
+  /// The largest Coulomb coefficient between a rigid object and the bodies [-] (0: none rigid).
+  double rigid_friction() const {
+    double mu = 0.0;
+    for (const SceneObject& o : objects)
+      if (o.rigid) mu = std::max(mu, o.mu.value_or(physics.contact.mu));
+    return mu;
   }
   /// Whether that contact's penalty is damped (contact.penalty_damping with rigid objects,
   /// grid.wall_penalty_damping with walls).
@@ -454,6 +470,10 @@ struct Scene {
   /// Per velocity field, the velocity of the rigid object it carries [m/s] (its material's parent
   /// field), empty for a field of deformable bodies; an empty vector when no object is rigid.
   std::vector<std::optional<Vec3>> rigid_field_velocities() const;
+  /// Per velocity field, the Coulomb coefficient between its rigid object and the bodies it
+  /// meets [-] (SceneObject::mu, else physics.contact.mu); physics.contact.mu for a field of
+  /// deformable bodies; an empty vector when no object is rigid.
+  std::vector<double> rigid_field_friction() const;
   /// The field a particle of material m starts in, and the companion it moves to on failure.
   int parent_field(int material) const;
   int companion_field(int material) const;

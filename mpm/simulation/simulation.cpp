@@ -103,8 +103,7 @@ Simulation::Simulation(const Scene& scene, int threads, const Communicator& comm
   // Contact's normal reaction does no work; friction's Coulomb work is heat (contact.hpp).
   // So is the Coulomb work of a wall face (grid/wall.cpp): one column for both, and the walls'
   // part itemised, which the energy-growth check leaves out (simulation/diagnosis.cpp).
-  if ((grid_.fields() > 1 && ph.contact.type == ContactType::friction && ph.contact.mu > 0.0) ||
-      scene_.grid.has_wall_friction())
+  if (scene_.contact_friction() || scene_.grid.has_wall_friction())
     sinks_.friction = ledger_.add_sink_column("friction_heat");
   if (grid_.spec().has_wall_friction())  // the walls at the nodes (at the particles: as rigid)
     sinks_.wall_friction = ledger_.add_sink_column("wall_friction_heat", /*in_balance=*/false,
@@ -127,9 +126,7 @@ GridSettings Simulation::grid_settings(int threads) const {
   GridSettings g;
   g.threads = threads;
   g.fields = scene_.field_count();
-  g.friction_heat = scene_.field_count() > 1 &&
-                    scene_.physics.contact.type == ContactType::friction &&
-                    scene_.physics.contact.mu > 0.0;
+  g.friction_heat = scene_.contact_friction();
   if (g.fields > 1) {  // contact bodies: a material's parent and companion fields
     g.field_body.assign(std::size_t(g.fields), 0);
     g.field_density.assign(std::size_t(g.fields), 1.0);
@@ -147,6 +144,7 @@ GridSettings Simulation::grid_settings(int threads) const {
     g.rigid_field.push_back(V.has_value());
     g.rigid_velocity.push_back(V.value_or(Vec3::Zero()));
   }
+  g.rigid_friction = scene_.rigid_field_friction();
   g.rigid_surface = rigid_field_surfaces(scene_);  // contact's normal against them
   // The light-node rule's mass (kLightNodeMassFraction in step/step.hpp), by the geometry's rule.
   const LightNode light = visit_geometry(scene_.grid.geometry, [&](auto geometry) {
