@@ -317,9 +317,13 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
     const std::string key = "/objects/" + pointer_token(o.name);
     if (!o.rigid && o.mu)
       problems.add(key + "/mu",
-                   "only a rigid object takes a Coulomb coefficient of its own: between "
-                   "deformable bodies physics.contact.mu acts; remove the key, or set "
-                   "physics.contact.mu");
+                   s.physics.contact.type == ContactType::friction
+                       ? "only a rigid object takes a Coulomb coefficient of its own: between "
+                         "deformable bodies physics.contact.mu acts; remove the key, or set "
+                         "physics.contact.mu"
+                       : "only a rigid object takes a Coulomb coefficient of its own, and "
+                         "under contact \"single_velocity\" bodies share one velocity field "
+                         "with no friction: remove the key");
     if (!o.rigid) continue;
     if (s.physics.contact.type == ContactType::single_velocity)
       problems.add(key + "/rigid",
@@ -343,10 +347,13 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
         const double mu = o.mu.value_or(s.physics.contact.mu);
         const double other_mu = other.mu.value_or(s.physics.contact.mu);
         if (mu != other_mu && &other < &o) {
+          const auto whence = [](const SceneObject& x) {
+            return x.mu ? "" : " (physics.contact.mu)";
+          };
           std::ostringstream m;
           m << "object \"" << other.name << "\" of material \""
             << s.materials[std::size_t(o.material)].name << "\" meets the bodies with mu "
-            << other_mu << ", this one with " << mu
+            << other_mu << whence(other) << ", this one with " << mu << whence(o)
             << ": a material's rigid objects are one body; expected one mu for them, or a "
                "material each";
           problems.add(key + "/mu", m.str());

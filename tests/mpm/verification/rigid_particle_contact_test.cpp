@@ -350,9 +350,12 @@ BOOST_AUTO_TEST_CASE(a_block_sliding_on_a_rigid_floor_with_friction_follows_coul
   const double v0 = 5.0, g = 1.0e5, mu = 0.25, t_stop = v0 / (mu * g) + 0.5 * kRamp;
   Json block = ramped_body_force(g, 0.0, kRamp);
   block["velocity"] = {0.0, v0, 0.0};
+  // The floor's own mu, contact.mu 0: the anchors must not wait for contact.mu.
   const Scene scene = test::verification_scene(
       "sliding_block_rigid.json",
-      at_particles({{"objects", {{"block", block}}}, {"solver", {{"gravity", {0, 0, 0}}}}}));
+      at_particles({{"objects", {{"block", block}, {"floor", {{"mu", mu}}}}},
+                    {"physics", {{"contact", {{"mu", 0.0}}}}},
+                    {"solver", {{"gravity", {0, 0, 0}}}}}));
   Simulation sim(scene, kThreads);
   const int id = object_index(scene, "block");
   const auto [worst_sliding, worst_stopped] = test::follow_along_y(
