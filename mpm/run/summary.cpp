@@ -115,7 +115,11 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
              : 0.5 * mass * scene.objects[o].velocity.squaredNorm()}};
     // A rigid object's motion is outside the books (docs/scenes.md#rigid-objects): its kinetic
     // energy above is not in E0.
-    if (scene.objects[o].rigid) objects[scene.objects[o].name]["rigid"] = true;
+    // Its Coulomb coefficient as the run takes it: its own mu, or physics.contact.mu.
+    if (scene.objects[o].rigid) {
+      objects[scene.objects[o].name]["rigid"] = true;
+      objects[scene.objects[o].name]["mu"] = scene.objects[o].mu.value_or(scene.physics.contact.mu);
+    }
     total_mass += mass;
     total += n;
   }
@@ -159,6 +163,7 @@ Json check_report(const Scene& scene, int threads, int ranks, std::vector<std::s
                      {"cells", "-"},
                      {"base_cells", "-"},
                      {"volume_ratio", "-"},
+                     {"mu", "-"},
                      {"estimated_steps", "-"},
                      {"max_estimated_steps", "-"},
                      {"estimated_particle_steps", "-"},
@@ -213,6 +218,7 @@ Json run_summary(const Simulation& sim, const Particles& P, const std::string& s
                       {"base_cells", "-"},
                       {"steps", "-"},
                       {"volume_ratio", "-"},
+                      {"mu", "-"},
                       {"failed_particles", "-"},
                       {"failed_by_cause", "-"},
                       {"converted_particles", "-"},

@@ -386,6 +386,36 @@ BOOST_AUTO_TEST_CASE(a_mistyped_contact_type_is_one_error_not_three) {
   BOOST_TEST(count(e, ": /") == 1u, e);
 }
 
+// A rigid object's Coulomb coefficient (objects.<name>.mu) is its field's, the deformable fields
+// keep contact.mu, and the friction switches see it with contact.mu 0 (block_on_block_rigid.json:
+// the floor's mu 0 beside contact.mu 0.25).
+BOOST_AUTO_TEST_CASE(a_rigid_objects_mu_is_its_fields_and_switches_friction_on) {
+  const std::string file = kScenes + "verification/block_on_block_rigid.json";
+  Json doc = load_scene_document(file);
+  const auto field_of = [](const Scene& s, const std::string& name) {
+    for (const SceneObject& o : s.objects)
+      if (o.name == name) return std::size_t(s.parent_field(o.material));
+    return std::size_t(-1);
+  };
+  Scene s = read_scene(doc, file);
+  BOOST_TEST(s.rigid_field_friction()[field_of(s, "floor")] == 0.0);
+  BOOST_TEST(s.rigid_field_friction()[field_of(s, "left")] == 0.25);
+  BOOST_TEST(s.contact_friction());
+  doc["objects"]["floor"].erase("mu");  // left out: contact.mu
+  BOOST_TEST(read_scene(doc, file).rigid_field_friction()[field_of(s, "floor")] == 0.25);
+  doc["objects"]["floor"]["mu"] = 0.4;
+  doc["physics"]["contact"]["mu"] = 0.0;
+  s = read_scene(doc, file);
+  BOOST_TEST(s.rigid_field_friction()[field_of(s, "floor")] == 0.4);
+  BOOST_TEST(s.rigid_friction() == 0.4);
+  BOOST_TEST(s.contact_friction());  // the ledger's friction_heat, the grid's heat
+  doc["physics"]["contact"]["rigid_contact"] = "particles";
+  BOOST_TEST(read_scene(doc, file).friction_at_particles());  // the anchors
+  doc["objects"]["floor"]["mu"] = 0.0;
+  BOOST_TEST(!read_scene(doc, file).friction_at_particles());
+  BOOST_TEST(!read_scene(doc, file).contact_friction());
+}
+
 // A rigid object's velocity given as an expression is refused; the warning that an initial
 // velocity reads t at 0 only was printed beside the refusal, noise to a user who must replace
 // the expression anyway (a new-user trial).
