@@ -344,8 +344,7 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
       if (&other == &o || other.material != o.material) continue;
       if (other.rigid && other.velocity == o.velocity && !other.velocity_field.has_text()) {
         // One material's rigid objects are one velocity field: one Coulomb coefficient.
-        const double mu = o.mu.value_or(s.physics.contact.mu);
-        const double other_mu = other.mu.value_or(s.physics.contact.mu);
+        const double mu = s.friction_of(o), other_mu = s.friction_of(other);
         if (mu != other_mu && &other < &o) {
           const auto whence = [](const SceneObject& x) {
             return x.mu ? "" : " (physics.contact.mu)";

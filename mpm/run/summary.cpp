@@ -118,7 +118,7 @@ Json particle_report(const Scene& scene, const Particles& P, int threads,
     // Its Coulomb coefficient as the run takes it: its own mu, or physics.contact.mu.
     if (scene.objects[o].rigid) {
       objects[scene.objects[o].name]["rigid"] = true;
-      objects[scene.objects[o].name]["mu"] = scene.objects[o].mu.value_or(scene.physics.contact.mu);
+      objects[scene.objects[o].name]["mu"] = scene.friction_of(scene.objects[o]);
     }
     total_mass += mass;
     total += n;

@@ -66,7 +66,7 @@ std::vector<double> Scene::rigid_field_friction() const {
   if (!has_rigid_objects()) return {};
   std::vector<double> mu(static_cast<std::size_t>(field_count()), physics.contact.mu);
   for (const SceneObject& o : objects)
-    if (o.rigid) mu[std::size_t(parent_field(o.material))] = o.mu.value_or(physics.contact.mu);
+    if (o.rigid) mu[std::size_t(parent_field(o.material))] = friction_of(o);
   return mu;
 }
 

@@ -429,11 +429,14 @@ struct Scene {
     return field_count() > 1 && physics.contact.type == ContactType::friction &&
            (physics.contact.mu > 0.0 || rigid_friction() > 0.0);
   }
+  /// Rigid object o's Coulomb coefficient against the bodies it meets, as the run takes it [-]:
+  /// its own mu, else physics.contact.mu.
+  double friction_of(const SceneObject& o) const { return o.mu.value_or(physics.contact.mu); }
   /// The largest Coulomb coefficient between a rigid object and the bodies [-] (0: none rigid).
   double rigid_friction() const {
     double mu = 0.0;
     for (const SceneObject& o : objects)
-      if (o.rigid) mu = std::max(mu, o.mu.value_or(physics.contact.mu));
+      if (o.rigid) mu = std::max(mu, friction_of(o));
     return mu;
   }
   /// Whether that contact's penalty is damped (contact.penalty_damping with rigid objects,
