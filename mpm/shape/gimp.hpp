@@ -33,11 +33,13 @@ inline void gimp_weight(double r, double l, double& w, double& dw) {
 }
 
 /// uGIMP stencil at position xi (cells from the lower corner) with half-widths l (cells, <= 1/2).
-/// Nodes may lie in the ghost layer (index -1 or cells+1) next to a face.
+/// Nodes may lie in the ghost layer (index -1 or cells+1) next to a face. Only the first `axes`
+/// axes are computed: a 2D grid's caller sets z itself (shape.hpp, flatten_z), and its particles
+/// then cost two axes of weights instead of three.
 inline Stencil<3> gimp_stencil(const Vec3& xi, const Vec3& inv_dx, const Vec3& l,
-                               const std::array<int, 3>& n) {
+                               const std::array<int, 3>& n, int axes = 3) {
   Stencil<3> s;
-  for (int d = 0; d < 3; ++d) {
+  for (int d = 0; d < axes; ++d) {
     const int i = std::min(static_cast<int>(std::floor(xi(d))), n[d] - 1);
     const int base = xi(d) - i < 0.5 ? i - 1 : i;
     s.base[d] = base;

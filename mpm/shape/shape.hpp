@@ -98,10 +98,10 @@ struct GimpShape : OnGrid<G, 3> {
   /// the box had to be narrowed to its cells (tartan.hpp).
   Stencil<3> at(const Vec3& x, int object, const Vec3* own = nullptr,
                 bool* narrowed = nullptr) const {
-    Stencil<3> s =
-        graded ? tartan_gimp_stencil(*graded, x, own ? *own : cell_half_width(x, object), narrowed,
-                                     GeometryOf<G>::kMeshAxes)
-               : gimp_stencil((x - lower).cwiseProduct(inv_dx), inv_dx, half_width[object], cells);
+    Stencil<3> s = graded ? tartan_gimp_stencil(*graded, x, own ? *own : cell_half_width(x, object),
+                                                narrowed, GeometryOf<G>::kMeshAxes)
+                          : gimp_stencil((x - lower).cwiseProduct(inv_dx), inv_dx,
+                                         half_width[object], cells, GeometryOf<G>::kMeshAxes);
     if constexpr (GeometryOf<G>::kMeshAxes < 3) flatten_z(s);
     return s;
   }
