@@ -5,8 +5,9 @@
 // when the last patch that touched the key set that key, one above it or one below it. A problem
 // at a material reference ("/materials/al/file: in material al.json: /density: ...") is the
 // patch's when the patch set that material's overrides at the same key (.../overrides/density).
-// An unknown key of the file in a block whose "type" a patch set is the patch's too: the new type
-// does not take it, and the patch can delete it.
+// An unknown key in a block whose "type" a later patch set (later than the one that set the key,
+// or than the file) is that patch's too: the new type does not take it, and the patch can delete
+// it.
 // The files of a scene's extends chain are merge patches too: a problem at a key a base scene
 // set names that base (mpm/input/scene_reader.hpp extends_origins).
 #pragma once
@@ -29,9 +30,10 @@ class PatchOrigins {
                const std::function<std::string(std::size_t)>& name, bool over_file = true)
       : file_(std::move(file)), over_file_(over_file) {
     for (std::size_t k = 0; k < patches.size(); ++k) {
-      std::vector<std::string> keys;
+      std::vector<std::pair<std::string, Json>> keys;
       leaves(patches[k], "", keys);
-      for (auto& key : keys) set_.push_back({std::move(key), name(k)});
+      for (auto& [key, value] : keys)
+        set_.push_back({std::move(key), name(k), k, std::move(value)});
     }
   }
 
@@ -49,24 +51,33 @@ class PatchOrigins {
     if (key == "/") key.clear();
     const std::string rest = message.substr(key_end + 2);
     const std::string* patch = nullptr;
-    for (const auto& [set_key, name] : set_) {
-      if (on_one_branch(key, set_key) || on_one_branch(override_key(key, rest), set_key)) {
-        patch = &name;
+    std::size_t after = 0;  // the patches after the last one that set the key
+    for (const Set& set : set_) {
+      if (on_one_branch(key, set.key) || on_one_branch(override_key(key, rest), set.key)) {
+        patch = &set.name;
+        after = set.patch + 1;
       }
     }
-    // A key of the file left without a meaning by a patch that changed its block's type: the
-    // patch's doing, and the patch can delete it.
+    // A key left without a meaning by a later patch that changed its block's type: that patch's
+    // doing (not the file's, or the base scene's that set the key), and that patch can delete it.
     const std::size_t leaf = key.rfind('/');
     std::string orphaned;
-    if (patch == nullptr && leaf != std::string::npos && rest.rfind("unknown key", 0) == 0) {
-      for (const auto& [set_key, name] : set_) {
-        if (set_key != key.substr(0, leaf) + "/type") continue;
-        patch = &name;
+    if (leaf != std::string::npos && rest.rfind("unknown key", 0) == 0) {
+      const std::string type = key.substr(0, leaf) + "/type";
+      const Json* before = nullptr;  // the type as the layers up to the key's own left it
+      for (const Set& set : set_)
+        if (set.patch < after && set.key == type) before = &set.value;
+      for (const Set& set : set_) {
+        // A later layer that writes the same type again (a derived scene often repeats it)
+        // leaves the key's meaning as it was: the key's own layer keeps its typo.
+        if (set.patch < after || set.key != type || (before && set.value == *before)) continue;
+        patch = &set.name;
         orphaned = "; the patch's type does not take it: delete it in the patch (\"" +
                    key.substr(leaf + 1) + "\": null)";
       }
     }
-    if (patch == nullptr || patch->empty()) return message;
+    if (patch == nullptr) return message;
+    if (patch->empty()) return message + orphaned;
     return (warning ? kWarning : "") + *patch + (over_file_ ? " (over " + file_ + ")" : "") + ": " +
            message.substr(key_start) + orphaned;
   }
@@ -82,13 +93,19 @@ class PatchOrigins {
   }
 
  private:
-  /// The key paths a merge patch sets: its non-object values (null deletes, an array replaces).
-  static void leaves(const Json& patch, const std::string& at, std::vector<std::string>& out) {
+  /// The key paths a merge patch sets, with their values: its non-object values (null deletes,
+  /// an array replaces). Each key escaped as the messages write it (RFC 6901: ~ as ~0, / as ~1).
+  static void leaves(const Json& patch, const std::string& at,
+                     std::vector<std::pair<std::string, Json>>& out) {
     if (!patch.is_object() || (patch.empty() && !at.empty())) {
-      out.push_back(at);
+      out.emplace_back(at, patch);
       return;
     }
-    for (const auto& [k, v] : patch.items()) leaves(v, at + "/" + k, out);
+    for (const auto& [k, v] : patch.items()) {
+      std::string token;
+      for (const char c : k) token += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+      leaves(v, at + "/" + token, out);
+    }
   }
 
   /// a == b, or one is a key above the other ("" only matches itself: a problem at the top of
@@ -120,7 +137,13 @@ class PatchOrigins {
 
   std::string file_;
   bool over_file_ = true;
-  std::vector<std::pair<std::string, std::string>> set_;  ///< (key path, patch name), in order
+  struct Set {
+    std::string key;    ///< the key path a patch set
+    std::string name;   ///< the patch's name in messages
+    std::size_t patch;  ///< its index, in merge order
+    Json value;         ///< what it set there
+  };
+  std::vector<Set> set_;  ///< every key path each patch set, in merge order
 };
 
 }  // namespace impact

@@ -13,7 +13,7 @@ namespace impact::mpm::commands {
 // scene, its warnings, why mpm run would refuse it ("" when it would not) and, unless the memory
 // estimate refuses it (then nothing is seeded), the report: particles, mass, memory, steps.
 int check_scene(const Scene& scene, const std::vector<std::string>& warnings, int threads,
-                int plan_ranks) {
+                int plan_ranks, const std::function<std::string(const std::string&)>& attribute) {
   Json out = {{"resolved", scene.resolved}, {"warnings", warnings}};
   const std::string memory = memory_refusal(scene);
   const std::string refusal = memory.empty() ? step_refusal(scene) : memory;
@@ -21,7 +21,8 @@ int check_scene(const Scene& scene, const std::vector<std::string>& warnings, in
   if (memory.empty()) {
     std::vector<std::string> seeding;
     out["report"] = check_report(scene, run_threads(threads), plan_ranks, &seeding);
-    for (const std::string& w : seeding) {
+    for (std::string& w : seeding) {
+      w = attribute(w);
       std::cerr << "mpm: warning: " << w << '\n';
       out["warnings"].push_back(w);
     }

@@ -46,9 +46,10 @@ void declare(CommandLine& c);
 int scene_command(CommandLine& c);
 /// `mpm study`, after the scene patches are read (study_command.cpp).
 int study_command(const CommandLine& c, const std::vector<Json>& patches);
-/// `mpm check` of a read scene: one JSON document on stdout (check_command.cpp).
+/// `mpm check` of a read scene: one JSON document on stdout (check_command.cpp); `attribute`
+/// names the source of a warning found after seeding (RunOptions::attribute_warning).
 int check_scene(const Scene& scene, const std::vector<std::string>& warnings, int threads,
-                int plan_ranks);
+                int plan_ranks, const std::function<std::string(const std::string&)>& attribute);
 /// `mpm keys` (keys_command.cpp).
 int keys_command(const std::string& format);
 

@@ -65,12 +65,18 @@ int run_or_check(CommandLine& c, const std::vector<Json>& patches, ExtendsChain&
   const std::vector<std::string> warnings = extends_origins(chain).attribute(
       cli::set_origins(c.scene_file, patches).attribute(scene.warnings));
   for (const std::string& w : warnings) std::cerr << "mpm: warning: " << w << '\n';
+  // The warnings found after seeding (the seeded volume) name their source likewise.
+  c.options.attribute_warning = [&](const std::string& w) {
+    return extends_origins(chain).attribute(cli::set_origins(c.scene_file, patches).attribute(w));
+  };
   if (c.verbosity.verbose) std::cerr << scene.resolved.dump(2) << '\n';
   if (c.check->parsed() && c.fingerprint_only) {
     std::cout << scene_fingerprint(scene.resolved) << '\n';
     return 0;
   }
-  if (c.check->parsed()) return check_scene(scene, warnings, c.options.threads, c.plan_ranks);
+  if (c.check->parsed())
+    return check_scene(scene, warnings, c.options.threads, c.plan_ranks,
+                       c.options.attribute_warning);
   if (const std::string clash = overwritten_scene(scene, c.options.out_dir); !clash.empty())
     throw InputError({clash});
   return run(scene, c.options);

@@ -174,7 +174,8 @@ Geometry read_geometry(JsonReader& r, const Json& node) {
   if (type == "box") {
     Box b{read_vec3(r, node, "lower", "lower corner [m]"),
           read_vec3(r, node, "upper", "upper corner [m]")};
-    if (!((b.upper - b.lower).array() > 0.0).all()) {
+    // (A corner missing or not numbers is NaN, reported by read_vec3: no second problem.)
+    if (!b.lower.hasNaN() && !b.upper.hasNaN() && !((b.upper - b.lower).array() > 0.0).all()) {
       r.problems().add(r.key_path("upper"), "expected upper > lower on every axis");
     }
     g.shape = b;
@@ -185,7 +186,7 @@ Geometry read_geometry(JsonReader& r, const Json& node) {
     const Vec3 bottom = read_vec3(r, node, "bottom", "centre of the bottom face [m]");
     const Vec3 top = read_vec3(r, node, "top", "centre of the top face [m]");
     const double radius = r.number("radius", Range::positive(), "outer radius [m]");
-    if (!((top - bottom).norm() > 0.0)) {
+    if (!bottom.hasNaN() && !top.hasNaN() && !((top - bottom).norm() > 0.0)) {
       r.problems().add(r.key_path("top"), "expected top different from bottom");
     }
     if (type == "cylinder") {

@@ -514,9 +514,17 @@ void read_grid(JsonReader& root, const Json& doc, GridSpec& g) {
   g.upper = read_vec3(r, n, "upper", "upper corner of the grid [m] ([x, y] on a 2D grid)");
   g.cells =
       read_int3(r, n, "cells", 1, 100000, "cells per axis ([x, y] on a 2D grid)", std::nullopt);
-  if (!((g.upper - g.lower).array() > 0.0).all()) {
+  const Vec3 extent = g.upper - g.lower;
+  if (g.lower.hasNaN() || g.upper.hasNaN()) {
+    // reported by read_vec3 (missing or not numbers): no second problem about their order
+  } else if (!(extent.array() > 0.0).all()) {
     r.problems().add(r.key_path("upper"), "expected upper > lower on every axis");
-  } else if (auto hint = unit_hint(Quantity::length, (g.upper - g.lower).maxCoeff())) {
+  } else if (!extent.allFinite()) {  // both finite, their difference beyond the doubles
+    std::ostringstream m;
+    m << "expected a finite extent upper - lower on every axis, got [" << extent(0) << ", "
+      << extent(1) << ", " << extent(2) << "] m (lower and upper overflow when subtracted)";
+    r.problems().add(r.key_path("upper"), m.str());
+  } else if (auto hint = unit_hint(Quantity::length, extent.maxCoeff())) {
     // A scene typed in millimetres shows in the grid, which spans every object.
     r.problems().warn(r.key_path("upper"),
                       "largest extent (upper - lower) " + *hint + "; the value is used as given");

@@ -26,6 +26,20 @@ std::string vec_text(const Vec3& v) {
   return o.str();
 }
 
+// Whether an object's material is the one its scene names: read_objects leaves an unknown
+// material, or one that failed to load, at index 0 (another material), with a problem of its
+// own; a check comparing objects' materials must not read that index as a shared material.
+bool material_resolved(const Scene& s, const SceneObject& o) {
+  if (std::size_t(o.material) >= s.materials.size() || !s.resolved.is_object()) return false;
+  const auto objects = s.resolved.find("objects");
+  if (objects == s.resolved.end() || !objects->is_object()) return false;
+  const auto object = objects->find(o.name);
+  if (object == objects->end() || !object->is_object()) return false;
+  const auto named = object->find("material");
+  return named != object->end() && named->is_string() &&
+         named->get<std::string>() == s.materials[std::size_t(o.material)].name;
+}
+
 }  // namespace
 
 // Below this fraction of its volume inside the grid a body is refused: a length typed in mm
@@ -206,6 +220,8 @@ void check_planar_scene(InputProblems& problems, Scene& s) {
 void check_initial_fields(InputProblems& problems, Scene& s) {
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
     SceneObject& o = s.objects[i];
+    // A body force of numbers is its own peak (the scaled norm: 1e160 squares beyond a double).
+    if (!o.body_force.has_text()) o.initial_body_force_peak = o.body_force.value.stableNorm();
     if (!o.velocity_field.has_text() && !o.body_force.has_text()) continue;
     const InitialFields f = initial_fields(s, i);
     const std::string key = "/objects/" + pointer_token(o.name);
@@ -298,11 +314,10 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
     // body cuts is seeded without the cut part, and its surface would be none of its own.
     for (std::size_t oi = 0; oi < s.objects.size(); ++oi) {
       const SceneObject& o = s.objects[oi];
-      if (!o.rigid || std::size_t(o.material) >= s.materials.size()) continue;
+      if (!o.rigid || !material_resolved(s, o)) continue;
       for (const std::size_t a : object_overlap(s, oi).by) {
         const SceneObject& by = s.objects[a];
-        if (std::size_t(by.material) >= s.materials.size() ||
-            s.parent_field(by.material) == s.parent_field(o.material))
+        if (!material_resolved(s, by) || s.parent_field(by.material) == s.parent_field(o.material))
           continue;
         problems.add("/objects/" + pointer_token(o.name) + "/geometry",
                      "the earlier object \"" + by.name +
@@ -339,9 +354,9 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
                    "a rigid object keeps its velocity, so a body force would not act on it: "
                    "remove the key");
     check_rigid_object_stays_in_grid(problems, s, o, key);
-    if (std::size_t(o.material) >= s.materials.size()) continue;  // its own problem already
+    if (!material_resolved(s, o)) continue;  // its own problem already
     for (const SceneObject& other : s.objects) {
-      if (&other == &o || other.material != o.material) continue;
+      if (&other == &o || other.material != o.material || !material_resolved(s, other)) continue;
       if (other.rigid && other.velocity == o.velocity && !other.velocity_field.has_text()) {
         // One material's rigid objects are one velocity field: one Coulomb coefficient.
         const double mu = s.friction_of(o), other_mu = s.friction_of(other);
@@ -349,13 +364,18 @@ void check_rigid_objects(InputProblems& problems, const Scene& s) {
           const auto whence = [](const SceneObject& x) {
             return x.mu ? "" : " (physics.contact.mu)";
           };
+          // Named at a mu that is written (an inherited one has no key of its own to point at):
+          // this object's, else the other's, whose message then speaks of this one.
+          const SceneObject& here = o.mu ? o : other;
+          const SceneObject& there = o.mu ? other : o;
           std::ostringstream m;
-          m << "object \"" << other.name << "\" of material \""
+          m << "object \"" << there.name << "\" of material \""
             << s.materials[std::size_t(o.material)].name << "\" meets the bodies with mu "
-            << other_mu << whence(other) << ", this one with " << mu << whence(o)
+            << s.friction_of(there) << whence(there) << ", this one with " << s.friction_of(here)
+            << whence(here)
             << ": a material's rigid objects are one body; expected one mu for them, or a "
                "material each";
-          problems.add(key + "/mu", m.str());
+          problems.add("/objects/" + pointer_token(here.name) + "/mu", m.str());
         }
         continue;
       }

@@ -403,7 +403,9 @@ int run_in(const Scene& scene, const std::string& scene_text, const RunOrigin& o
   }
   if (!resume)  // collective: every rank's particles summed
     for (const std::string& w : seeding_warnings(scene, sim.particles(), comm))
-      if (run.root) std::cerr << "mpm: warning: " << w << '\n';
+      if (run.root)
+        std::cerr << "mpm: warning: "
+                  << (run.options.attribute_warning ? run.options.attribute_warning(w) : w) << '\n';
   if (const int code = inject_faults(run, sim)) return code;
   // Every rank keeps its outputs: on several ranks the gauges, observables and snapshots read the
   // particles each rank holds (collective calls), rank 0 writes history.csv and the .pvd.

@@ -28,6 +28,9 @@ struct RunOptions {
   /// The command line's own lines: the outcome line on stdout at the end of a completed run, and
   /// a note when a previous run's files were replaced (mpm run; not mpm study, not Python).
   bool report = false;
+  /// A warning found after seeding ("FILE: /objects/...") as the command line names its source:
+  /// the --set patch or base scene that set the key (support/patch_origins.hpp); unset, as it is.
+  std::function<std::string(const std::string&)> attribute_warning;
   /// The ranks (docs/mpi.md); by default this process alone.
   std::reference_wrapper<const Communicator> comm = Communicator::one_rank();
 };

@@ -32,7 +32,9 @@ InitialFields initial_fields(const Scene& scene, std::size_t object) {
     if (b) {
       const Vec3 f = (*b)(x, 0.0);
       if (!f.allFinite() && !s.non_finite_body_force) s.non_finite_body_force = x;
-      s.body_force_peak = std::max(s.body_force_peak, f.norm());
+      const double norm = f.norm();  // inf beyond sqrt(max double): then the scaled norm
+      s.body_force_peak =
+          std::max(s.body_force_peak, std::isinf(norm) && f.allFinite() ? f.stableNorm() : norm);
     }
   });
   return s;

@@ -41,7 +41,10 @@ void BodyForces::evaluate(const Particles& P, double t) {
     for (std::ptrdiff_t p = 0; p < n; ++p) {
       std::optional<VectorField>& f = field[P.object[p]];
       b_[p] = f && !(outflow && P.removed[p]) ? (*f)(P.X[p], t) : Vec3::Zero();
-      const double size = b_[p].allFinite() ? b_[p].norm() : kInfinity;
+      // |b| beyond sqrt(max double) squares to inf: then the scaled norm (a finite 1e300 is
+      // a body force the step limit can name, not an overflow).
+      const double norm = b_[p].allFinite() ? b_[p].norm() : kInfinity;
+      const double size = std::isinf(norm) && b_[p].allFinite() ? b_[p].stableNorm() : norm;
       if (!std::isinf(peak) &&
           (size > peak || (size == peak && at >= 0 &&
                            seed_index(P, std::size_t(p)) < seed_index(P, std::size_t(at))))) {

@@ -1,15 +1,21 @@
 # impact_cli_test(<name> PROGRAM <target> CODE <exit code> ARGS <arg>... [EXPECT <regex>...]
-#                 [LABELS <label>...])
+#                 [REJECT <regex>...] [LABELS <label>...])
 # A CTest test that runs the program (a target name, e.g. mpm) with the arguments and passes only
-# if it exits with the code and its stderr matches every regular expression (at most 9). Label:
+# if it exits with the code, its stderr matches every EXPECT regular expression and none of the
+# REJECT ones (at most 9 each: a false second message is a defect too). Label:
 # `integration` unless LABELS says otherwise. Arguments must not contain '|' or ';'.
 function(impact_cli_test name)
-  cmake_parse_arguments(ARG "" "PROGRAM;CODE" "ARGS;EXPECT;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "PROGRAM;CODE" "ARGS;EXPECT;REJECT;LABELS" ${ARGN})
   set(expects)
   set(i 0)
   foreach(pattern IN LISTS ARG_EXPECT)
     math(EXPR i "${i} + 1")
     list(APPEND expects "-DEXPECT_${i}=${pattern}")
+  endforeach()
+  set(i 0)
+  foreach(pattern IN LISTS ARG_REJECT)
+    math(EXPR i "${i} + 1")
+    list(APPEND expects "-DREJECT_${i}=${pattern}")
   endforeach()
   string(REPLACE ";" "|" args "${ARG_ARGS}")  # ";" would not survive -D
   add_test(NAME ${name}

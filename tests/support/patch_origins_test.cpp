@@ -111,4 +111,57 @@ BOOST_AUTO_TEST_CASE(a_chain_of_files_names_the_file_that_set_the_key) {
              "s.json: /time/max_time: expected a number in (0, inf), got -1");
 }
 
+// A later layer that changes the type of a block whose keys an earlier one set: the keys the new
+// type does not take are the later layer's doing, not the earlier's that set them (a scene that
+// turns its base's box into a sphere was told its base's "lower" was an unknown key).
+BOOST_AUTO_TEST_CASE(keys_a_later_layers_type_orphans_are_that_layers) {
+  const std::vector<std::string> names = {"base.json (extended by s.json)", "", "--set patch 1"};
+  const auto chain = [&](std::size_t k) { return names[k]; };
+  const Json base = Json::parse(R"({"objects": {"b": {"geometry": {"type": "box",
+      "lower": [0, 0, 0], "upper": [1, 1, 1]}}}})");
+  const Json sphere = Json::parse(R"({"objects": {"b": {"geometry": {"type": "sphere"}}}})");
+  const std::string lower =
+      "s.json: /objects/b/geometry/lower: unknown key; known here: center, radius, type";
+  const std::string hint =
+      "; the patch's type does not take it: delete it in the patch "
+      "(\"lower\": null)";
+  // The scene file itself set the type: its name stays, with the hint.
+  const PatchOrigins file({"s.json"}, {base, sphere}, chain, /*over_file=*/false);
+  BOOST_TEST(file.attribute(lower) == lower + hint);
+  // A third layer set it: that one is named.
+  const PatchOrigins patch({"s.json"}, {base, Json::object(), sphere}, chain, false);
+  BOOST_TEST(patch.attribute(lower) ==
+             "--set patch 1: /objects/b/geometry/lower: unknown key; known here: center, radius, "
+             "type" +
+                 hint);
+  // A layer that sets both the type and the key: its own unknown key, without the hint.
+  const Json both = Json::parse(R"({"objects": {"b": {"geometry": {"type": "sphere",
+      "lower": [0, 0, 0]}}}})");
+  const PatchOrigins own({"s.json"}, {both, Json::object()}, chain, false);
+  BOOST_TEST(own.attribute(lower) ==
+             "base.json (extended by s.json): /objects/b/geometry/lower: unknown key; known "
+             "here: center, radius, type");
+}
+
+// A derived scene often writes its base's type again: a typo of the base stays the base's, with
+// no hint (the new rule above named the derived scene and told it to delete the key).
+BOOST_AUTO_TEST_CASE(a_layer_that_repeats_the_type_orphans_nothing) {
+  const std::vector<std::string> names = {"base.json (extended by s.json)", ""};
+  const PatchOrigins o(
+      {"s.json"},
+      {Json::parse(R"({"objects": {"b": {"geometry": {"type": "box", "lowr": [0, 0, 0]}}}})"),
+       Json::parse(R"({"objects": {"b": {"geometry": {"type": "box"}}}})")},
+      [&](std::size_t k) { return names[k]; }, /*over_file=*/false);
+  BOOST_TEST(o.attribute("s.json: /objects/b/geometry/lowr: unknown key (did you mean lower?)") ==
+             "base.json (extended by s.json): /objects/b/geometry/lowr: unknown key (did you "
+             "mean lower?)");
+}
+
+// Messages escape a key's / and ~ (RFC 6901: /objects/a~1b); the patches' keys are matched so.
+BOOST_AUTO_TEST_CASE(a_key_with_a_slash_is_matched_as_the_messages_escape_it) {
+  const PatchOrigins o("s.json", {Json::parse(R"({"objects": {"a/b~c": {"mu": 0.3}}})")}, cli_name);
+  BOOST_TEST(o.attribute("s.json: /objects/a~1b~0c/mu: expected ...") ==
+             "--set patch 1 (over s.json): /objects/a~1b~0c/mu: expected ...");
+}
+
 BOOST_AUTO_TEST_SUITE_END()
