@@ -163,6 +163,20 @@ std::string body_force_step_text(const Scene& scene) {
   return m.str();
 }
 
+// "time.multiplier 0.5 x the smallest cell 0.0005 m / the fastest signal 6123 m/s, the wave
+// speed ... of object block": how the wave step comes about, for the refusals.
+std::string wave_step_text(const Scene& scene, const StepEstimate& e) {
+  const SceneObject& o = scene.objects[e.fastest];
+  std::ostringstream m;
+  m.precision(3);
+  m << "time.multiplier " << scene.time.multiplier << " x the smallest cell "
+    << scene.grid.min_spacing() << " m / the fastest signal " << e.signal_speed
+    << " m/s, the wave speed " << e.wave_speed << " m/s of material "
+    << scene.materials[o.material].name << " plus the speed " << o.velocity.norm()
+    << " m/s of object " << o.name;
+  return m.str();
+}
+
 }  // namespace
 
 std::string step_refusal(const Scene& scene) {
@@ -179,6 +193,16 @@ std::string step_refusal(const Scene& scene) {
       << " or time.min_dt";
     return m.str();
   }
+  // Likewise a wave step below it: `mpm check` passed time.min_dt 1 s, and the run stopped at
+  // step 1.
+  if (!e.gravity_limited && !e.capped && e.dt < t.min_dt && !scene.objects.empty()) {
+    std::ostringstream m;
+    m.precision(3);
+    m << "refusing to start: the stable time step (" << wave_step_text(scene, e) << ") = " << e.dt
+      << " s is below time.min_dt = " << t.min_dt
+      << " s, so the run would stop at its first step; lower time.min_dt";
+    return m.str();
+  }
   if (!(e.steps > t.max_estimated_steps)) return particle_step_refusal(scene, e);
   std::ostringstream m;
   m.precision(3);
@@ -190,11 +214,7 @@ std::string step_refusal(const Scene& scene) {
     m << body_force_step_text(scene)
       << ", the step in which the body force alone carries a particle that far";
   } else {
-    const SceneObject& o = scene.objects[e.fastest];
-    m << "time.multiplier " << t.multiplier << " x the smallest cell " << scene.grid.min_spacing()
-      << " m / the fastest signal " << e.signal_speed << " m/s, the wave speed " << e.wave_speed
-      << " m/s of material " << scene.materials[o.material].name << " plus the speed "
-      << o.velocity.norm() << " m/s of object " << o.name;
+    m << wave_step_text(scene, e);
   }
   m << ") exceed time.max_estimated_steps = " << t.max_estimated_steps
     << "; the key that drives the count: " << e.driver
