@@ -11,15 +11,17 @@ import impact
 
 
 def test_failed_run_raises_run_error_with_the_reason(data, workdir):
-    """time.min_dt above the block's stable step (dx 5 mm / c ~ 5.4 km/s ~ 1e-6 s): the first
-    step stops the run (mpm run exits 3) with the solver's message."""
+    """A body force of 1e14 m/s^2 switched on after 1 us: its step, sqrt(0.5 x 5 mm / 1e14) =
+    5e-9 s, falls below time.min_dt = 1e-8 s during the run, which stops (mpm run exits 3) with
+    the solver's message. (A min_dt above the step at the start is refused before the run, exit 4.)"""
     scene = {"extends": data("scenes", "verification", "rigid_translation.json"),
-             "time": {"max_time": 2e-5, "min_dt": 1e-3, "max_dt": 1e-3}}
+             "objects": {"block": {"body_force": ["t > 1e-6 ? 1e14 : 0", 0, 0]}},
+             "time": {"max_time": 2e-5, "min_dt": 1e-8}}
     with pytest.raises(impact.RunError) as caught:
         impact.run_scene(scene, out="failed", threads=1)
     e = caught.value
     assert e.exit_code == 3 and e.directory == "failed"
-    assert "below time.min_dt = 0.001 s" in e.reason and e.reason in str(e)
+    assert "below time.min_dt = 1e-08 s: the body-force step" in e.reason and e.reason in str(e)
     # What the run wrote up to the failure comes with it: the row at t = 0 of a run at rest.
     assert e.result["status"]["status"] == "failed"
     assert e.result["status"]["message"] == e.reason
