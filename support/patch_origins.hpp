@@ -101,11 +101,7 @@ class PatchOrigins {
       out.emplace_back(at, patch);
       return;
     }
-    for (const auto& [k, v] : patch.items()) {
-      std::string token;
-      for (const char c : k) token += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-      leaves(v, at + "/" + token, out);
-    }
+    for (const auto& [k, v] : patch.items()) leaves(v, at + "/" + pointer_token(k), out);
   }
 
   /// a == b, or one is a key above the other ("" only matches itself: a problem at the top of
